@@ -1,0 +1,22 @@
+#pragma once
+/// Base of every typed object a command returns (maillage, modele, evol_noli ...).
+/// Concrete concepts live in commands/concepts.hpp; the catalogue only knows
+/// their type names.
+#include <memory>
+#include <string>
+
+namespace lunaster::catalog {
+
+class Concept {
+ public:
+  virtual ~Concept() = default;
+  /// code_aster type name: "maillage", "modele", "mater", "cham_mater", "char_meca",
+  /// "char_contact", "listr8", "list_inst", "fonction", "evol_noli", "table".
+  virtual std::string type_name() const = 0;
+  /// Name of the deck variable the concept was assigned to (set by the runner), for messages.
+  std::string user_name;
+};
+
+using ConceptPtr = std::shared_ptr<Concept>;
+
+}  // namespace lunaster::catalog

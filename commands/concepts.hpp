@@ -1,0 +1,93 @@
+#pragma once
+/// The concepts (typed results) commands return. Each wraps engine data.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "catalog/concept.hpp"
+#include "engine/contact/contact_definition.hpp"
+#include "engine/fe/fe_model.hpp"
+#include "engine/fields/fields.hpp"
+#include "engine/mesh/mesh.hpp"
+#include "engine/nonlinear/static_solver.hpp"
+
+namespace lunaster::cmd {
+
+using catalog::Concept;
+using catalog::ConceptPtr;
+
+/// LIRE_MAILLAGE, DEFI_GROUP (reuse), MODI_MAILLAGE (reuse).
+struct Maillage : Concept {
+  std::shared_ptr<engine::Mesh> mesh = std::make_shared<engine::Mesh>();
+  std::string source_file;  ///< file the mesh was read from, for messages
+  std::string type_name() const override { return "maillage"; }
+};
+
+/// AFFE_MODELE: which cells carry which mechanical element.
+struct Modele : Concept {
+  std::shared_ptr<Maillage> maillage;
+  int dim = 0;
+  std::vector<engine::Modelisation> modelisation;  ///< per cell
+  std::string type_name() const override { return "modele"; }
+};
+
+/// DEFI_MATERIAU.
+struct Mater : Concept {
+  engine::ElasticMaterial elas;
+  bool has_elas = false;
+  std::string type_name() const override { return "mater"; }
+};
+
+/// AFFE_MATERIAU: material per cell.
+struct ChamMater : Concept {
+  std::shared_ptr<Maillage> maillage;
+  std::vector<int> material;                      ///< per cell, index into materials, -1 none
+  std::vector<engine::ElasticMaterial> materials;
+  std::string type_name() const override { return "cham_mater"; }
+};
+
+/// AFFE_CHAR_MECA: Dirichlet values, pressures, nodal forces and (seed syntax) contact.
+/// Load indices inside are all 0; STAT_NON_LINE renumbers them per EXCIT.
+struct CharMeca : Concept {
+  std::shared_ptr<Modele> modele;
+  std::vector<engine::DirichletValue> dirichlet;
+  std::vector<engine::PressureLoad> pressures;
+  std::vector<engine::NodalForce> forces;
+  bool has_contact = false;
+  engine::ContactDefinition contact;
+  std::string type_name() const override { return "char_meca"; }
+};
+
+/// DEFI_CONTACT.
+struct CharContact : Concept {
+  std::shared_ptr<Modele> modele;
+  engine::ContactDefinition contact;
+  std::string type_name() const override { return "char_contact"; }
+};
+
+/// DEFI_LIST_REEL.
+struct ListR8 : Concept {
+  std::vector<double> values;
+  std::string type_name() const override { return "listr8"; }
+};
+
+/// DEFI_FONCTION: piecewise linear function of one parameter.
+struct Fonction : Concept {
+  std::string nom_para = "INST";
+  std::vector<double> abscissas, ordinates;
+  char prol_gauche = 'E', prol_droite = 'E';  ///< 'E' exclu, 'C' constant, 'L' linéaire
+  /// Value at x; throws DeckError outside the range when prolongation is 'E'.
+  double operator()(double x) const;
+  std::string type_name() const override { return "fonction"; }
+};
+
+/// STAT_NON_LINE result (and CALC_CHAMP reuse).
+struct EvolNoli : Concept {
+  std::shared_ptr<Modele> modele;
+  std::shared_ptr<ChamMater> cham_mater;
+  std::vector<engine::ResultStep> steps;
+  std::string type_name() const override { return "evol_noli"; }
+};
+
+}  // namespace lunaster::cmd

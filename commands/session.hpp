@@ -1,0 +1,64 @@
+#pragma once
+/// Per-run context handed to every command: the log, run options, where the
+/// deck and output live, the TEST_RESU report and phase timers. It holds no
+/// model data: commands take explicit inputs and return new concepts.
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "engine/core/error.hpp"
+#include "engine/core/log.hpp"
+
+namespace lunaster::cmd {
+
+/// One TEST_RESU check as reported.
+struct TestLine {
+  bool ok = false;
+  std::string text;  ///< the printed line
+};
+
+class Session {
+ public:
+  explicit Session(Log& log) : log_(log) {}
+
+  Log& log() { return log_; }
+  const Log& log() const { return log_; }
+
+  std::filesystem::path deck_path;   ///< the deck being run
+  std::filesystem::path output_dir;  ///< where output files go (created on demand)
+  /// Resolves a path given in a deck: relative paths are relative to the deck's folder.
+  std::filesystem::path resolve_input(const std::string& relative) const;
+  /// Path of an output file in output_dir (the folder is created).
+  std::filesystem::path output_file(const std::string& name) const;
+
+  /// Location of the command being run (for warnings and errors).
+  ErrorContext current;
+  /// Logs a warning prefixed with the current deck location and command.
+  void warn(const std::string& message);
+
+  // ---- TEST_RESU report ----
+  std::vector<TestLine> tests;
+  int n_ok() const;
+  int n_nook() const;
+
+  // ---- phase timers (seconds), e.g. "read", "assemble", "solve" ----
+  std::map<std::string, double> phase_seconds;
+  class Timer {
+   public:
+    Timer(Session& s, std::string phase) : s_(s), phase_(std::move(phase)), t0_(std::chrono::steady_clock::now()) {}
+    ~Timer() { s_.phase_seconds[phase_] += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count(); }
+   private:
+    Session& s_;
+    std::string phase_;
+    std::chrono::steady_clock::time_point t0_;
+  };
+
+  bool fin_called = false;
+
+ private:
+  Log& log_;
+};
+
+}  // namespace lunaster::cmd

@@ -1,0 +1,25 @@
+#pragma once
+/// Assembly of the elastic stiffness, internal forces and external loads.
+#include <vector>
+
+#include "engine/assembly/dof_map.hpp"
+#include "engine/fe/fe_model.hpp"
+#include "engine/solver/linear_solver.hpp"
+
+namespace lunaster::engine {
+
+/// Appends the stiffness of every volume cell of `model` as triplets.
+/// Full integration for every element type (see engine/fe/quadrature).
+void assemble_stiffness(const FeModel& model, const DofMap& dofs, std::vector<Triplet>& out);
+
+/// f_int = K u for linear elasticity, assembled cell by cell (no global matrix needed).
+void assemble_internal_forces(const FeModel& model, const DofMap& dofs, const Vector& u, Vector& f_int);
+
+/// Adds the consistent nodal forces of a pressure `pressure` (Pa, positive
+/// pushes against the boundary cell's normal, as PRES_REP) on boundary cells
+/// (SEG2/SEG3 in 2D, TRIA3/6 and QUAD4/8 in 3D) to `f_ext`. Cell normals follow
+/// the cell's node order (ORIE_PEAU makes them outward).
+void assemble_pressure(const Mesh& mesh, int dim, const std::vector<int>& cells, double pressure,
+                       const DofMap& dofs, Vector& f_ext);
+
+}  // namespace lunaster::engine

@@ -1,0 +1,45 @@
+#pragma once
+/// What a deck asked for in contact (from AFFE_CHAR_MECA/CONTACT or
+/// DEFI_CONTACT), in engine terms. Filled by commands/, read by engine/contact.
+#include <vector>
+
+namespace lunaster::engine {
+
+enum class ContactMethod {
+  Continuous,        ///< FORMULATION='CONTINUE' (ALGO_CONT='STANDARD'): augmented Lagrangian, LAGS_C
+  ContinuousPenalty, ///< FORMULATION='CONTINUE', ALGO_CONT='PENALISATION'
+  DiscreteLagrange,  ///< METHODE='CONTRAINTE' / FORMULATION='DISCRETE', ALGO_CONT='CONTRAINTE'
+  DiscretePenalty,   ///< METHODE='PENALISATION' / ALGO_CONT='PENALISATION'
+};
+
+enum class IntegrationScheme { Auto, Gauss, Simpson, NewtonCotes, Nodes };
+enum class ContactInit { No, Yes, Interpenetrated };
+enum class FixedPointOrNewton { FixedPoint, Newton };
+enum class GeometryUpdate { Automatic, Controlled, None };  ///< REAC_GEOM
+
+/// One contact zone: a slave and a master surface (boundary cells).
+struct ContactZone {
+  std::vector<int> slave_cells;
+  std::vector<int> master_cells;
+  IntegrationScheme integration = IntegrationScheme::Auto;
+  int integration_order = 0;     ///< ORDRE_INT; 0 = scheme default
+  int sub_elements = 1;          ///< seed's SIMPSON1/2, NCOTES1/2 variants map here
+  double coef_cont = 100.0;      ///< COEF_CONT / COEF_REGU_CONT (augmented Lagrangian rho)
+  double coef_pena = 0.0;        ///< E_N or COEF_PENA_CONT
+  ContactInit init = ContactInit::Interpenetrated;
+};
+
+struct ContactDefinition {
+  ContactMethod method = ContactMethod::Continuous;
+  std::vector<ContactZone> zones;
+  FixedPointOrNewton status_loop = FixedPointOrNewton::FixedPoint;  ///< ALGO_RESO_CONT
+  FixedPointOrNewton geometry_loop = FixedPointOrNewton::FixedPoint;  ///< ALGO_RESO_GEOM
+  GeometryUpdate reac_geom = GeometryUpdate::Automatic;
+  int iter_cont_maxi = 30;
+  int iter_geom_maxi = 10;
+  int nb_iter_geom = 2;      ///< with REAC_GEOM='CONTROLE'
+  double resi_geom = 0.01;
+  bool tangent_matrix = true;  ///< MATRICE 'TANGENTE' vs 'ELASTIQUE'
+};
+
+}  // namespace lunaster::engine

@@ -1,0 +1,83 @@
+#pragma once
+/// Error classes shared by every layer. The engine throws them without a deck
+/// location; the Lua trampoline fills the location (file:line, command) in
+/// before the message reaches the user. Exit codes follow STYLE.md §3.
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace lunaster {
+
+/// The class of an error; the value is the process exit code.
+enum class ErrorKind { Deck = 2, Solve = 3, Internal = 4 };
+
+/// Where in a deck an error arose. Empty fields are omitted when formatting.
+struct ErrorContext {
+  std::string file;          ///< deck file as given on the command line
+  int line = 0;              ///< line of the command call in the deck
+  std::string command;       ///< e.g. "STAT_NON_LINE"
+  std::string keyword_path;  ///< e.g. "EXCIT[2].CHARGE"
+};
+
+/// Base of all lunaster errors. `what()` returns the fully formatted message.
+class Error : public std::runtime_error {
+ public:
+  Error(ErrorKind kind, std::string message, std::vector<std::string> hints = {});
+
+  ErrorKind kind() const { return kind_; }
+  /// The bare message, without location prefix.
+  const std::string& message() const { return message_; }
+  const std::vector<std::string>& hints() const { return hints_; }
+  const ErrorContext& context() const { return context_; }
+  /// Fills the fields of the context that are still empty (inner layers win).
+  void fill_context(const ErrorContext& outer);
+  /// Adds a hint line printed indented below the first line.
+  void add_hint(std::string hint) { hints_.push_back(std::move(hint)); refresh(); }
+  /// "deck.lua:42: STAT_NON_LINE: EXCIT[2].CHARGE: message" plus hint lines.
+  std::string format() const;
+  const char* what() const noexcept override { return formatted_.c_str(); }
+
+ private:
+  void refresh() { formatted_ = format(); }
+  ErrorKind kind_;
+  std::string message_;
+  std::vector<std::string> hints_;
+  ErrorContext context_;
+  std::string formatted_;
+};
+
+/// The input is wrong (deck, keyword value, mesh file, group name ...).
+class DeckError : public Error {
+ public:
+  explicit DeckError(std::string message, std::vector<std::string> hints = {})
+      : Error(ErrorKind::Deck, std::move(message), std::move(hints)) {}
+  /// "expected <expected>, got <given>" at a keyword path.
+  static DeckError at(std::string keyword_path, const std::string& expected, const std::string& given,
+                      std::vector<std::string> hints = {});
+};
+
+/// The numerics failed: divergence, singular matrix, contact that did not settle.
+class SolveError : public Error {
+ public:
+  explicit SolveError(std::string message, std::vector<std::string> hints = {})
+      : Error(ErrorKind::Solve, std::move(message), std::move(hints)) {}
+};
+
+/// A bug in lunaster.
+class InternalError : public Error {
+ public:
+  explicit InternalError(std::string message) : Error(ErrorKind::Internal, std::move(message)) {}
+};
+
+[[noreturn]] void assertion_failed(const char* expr, const std::string& msg, const char* file, int line);
+
+}  // namespace lunaster
+
+/// Always-on cheap check; throws InternalError naming the expression and place.
+#define LUNASTER_ASSERT(cond, msg) \
+  do { if (!(cond)) ::lunaster::assertion_failed(#cond, (msg), __FILE__, __LINE__); } while (0)
+#ifndef NDEBUG
+#define LUNASTER_DASSERT(cond, msg) LUNASTER_ASSERT(cond, msg)
+#else
+#define LUNASTER_DASSERT(cond, msg) do { } while (0)
+#endif

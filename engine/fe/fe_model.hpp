@@ -1,0 +1,30 @@
+#pragma once
+/// The finite-element description a solve needs: which cells carry which
+/// mechanical element, and their material. Built by AFFE_MODELE/AFFE_MATERIAU.
+#include <vector>
+
+#include "engine/mesh/mesh.hpp"
+
+namespace lunaster::engine {
+
+enum class Modelisation { None, PlaneStrain, PlaneStress, Solid3D };
+
+/// Linear isotropic elasticity. Units: Pa, -, kg/m^3.
+struct ElasticMaterial {
+  double young = 0.0;
+  double poisson = 0.0;
+  double density = 0.0;
+};
+
+struct FeModel {
+  const Mesh* mesh = nullptr;
+  int dim = 0;                                ///< 2 (D_PLAN, C_PLAN) or 3
+  std::vector<Modelisation> modelisation;     ///< per mesh cell; None for cells not modelled
+  std::vector<int> material;                  ///< per mesh cell: index into materials, -1 none
+  std::vector<ElasticMaterial> materials;
+
+  /// Cells of the model's own dimension carrying a mechanical element.
+  std::vector<int> volume_cells() const;
+};
+
+}  // namespace lunaster::engine

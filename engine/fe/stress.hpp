@@ -1,0 +1,21 @@
+#pragma once
+/// Post-processing: stresses at cell nodes, nodal averages, equivalent stresses.
+#include "engine/assembly/dof_map.hpp"
+#include "engine/fe/fe_model.hpp"
+#include "engine/fields/fields.hpp"
+#include "engine/solver/linear_solver.hpp"
+
+namespace lunaster::engine {
+
+/// SIGM_ELNO: stresses at the nodes of every volume cell. Components
+/// SIXX SIYY SIZZ SIXY (2D) or SIXX SIYY SIZZ SIXY SIXZ SIYZ (3D), Pa.
+/// Computed at Gauss points and extrapolated to the nodes.
+ElnoField compute_sigm_elno(const FeModel& model, const DofMap& dofs, const Vector& u);
+
+/// *_NOEU from *_ELNO: arithmetic mean over the cells sharing each node (code_aster's rule).
+NodalField elno_to_noeu(const Mesh& mesh, const ElnoField& elno);
+
+/// SIEQ_ELNO from SIGM_ELNO: VMIS, TRESCA, PRIN_1, PRIN_2, PRIN_3, VMIS_SG, TRSIG.
+ElnoField compute_sieq_elno(const ElnoField& sigm);
+
+}  // namespace lunaster::engine

@@ -1,0 +1,80 @@
+#pragma once
+/// Quasi-static incremental solver: Newton iterations per instant, with an
+/// optional contact algorithm plugged in through `ContactHook`.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/assembly/dof_map.hpp"
+#include "engine/core/log.hpp"
+#include "engine/fe/fe_model.hpp"
+#include "engine/fields/fields.hpp"
+#include "engine/solver/linear_solver.hpp"
+
+namespace lunaster::engine {
+
+/// Imposed value of one displacement component; `load` indexes the multiplier.
+struct DirichletValue { int node; int component; double value; int load; };
+/// Pressure on boundary cells (PRES_REP), Pa.
+struct PressureLoad { std::vector<int> cells; double pressure; int load; };
+/// Nodal force (FORCE_NODALE), N.
+struct NodalForce { int node; int component; double value; int load; };
+
+/// Everything imposed on the model; value(t) = value * multipliers[load](t).
+struct MechanicalLoads {
+  std::vector<DirichletValue> dirichlet;
+  std::vector<PressureLoad> pressures;
+  std::vector<NodalForce> forces;
+  std::vector<std::function<double(double)>> multipliers;  ///< one per load index
+};
+
+struct NewtonOptions {
+  double resi_glob_rela = 1e-6;  ///< relative residual |r| / |f_ext + reactions|; <= 0: unused
+  double resi_glob_maxi = -1.0;  ///< absolute residual (N); <= 0: unused
+  int iter_glob_maxi = 10;
+  SolverKind solver = SolverKind::Cholmod;  ///< Cholmod falls back to Umfpack for indefinite systems
+};
+
+/// Contact algorithm seen by the Newton driver (implemented in engine/contact).
+class ContactHook {
+ public:
+  virtual ~ContactHook() = default;
+  /// Adds contact unknowns (LAGS_C ...) to the numbering, once, before any step.
+  virtual void add_dofs(DofMap& dofs) = 0;
+  /// Start of an instant, with the converged displacement of the previous one.
+  virtual void begin_step(const Vector& u, const Log& log) = 0;
+  /// Adds the contact tangent and residual at iterate u (residual = internal - external).
+  virtual void add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) = 0;
+  /// Called when Newton converged with the current statuses/geometry frozen.
+  /// Updates statuses and pairing; returns true when nothing changed (settled).
+  virtual bool settle(const Vector& u, const Log& log) = 0;
+  /// Kind of the assembled system once contact is in (Lagrange => indefinite).
+  virtual MatrixKind matrix_kind() const = 0;
+  /// Stores contact results (LAGS_C in DEPL is already in u; CONT_NOEU ...).
+  virtual void write_fields(const Vector& u, ResultStep& step) const = 0;
+};
+
+/// Runs the instants in turn from u = 0; returns one ResultStep per instant
+/// (nume_ordre 0 = initial state) with DEPL. Throws SolveError on divergence,
+/// naming the instant, the loop and the last residuals; steps converged before
+/// the failure are available through `converged_steps()`.
+class StaticSolver {
+ public:
+  StaticSolver(const FeModel& model, const MechanicalLoads& loads, NewtonOptions options, ContactHook* contact,
+               const Log& log);
+  std::vector<ResultStep> run(const std::vector<double>& instants);
+  const std::vector<ResultStep>& converged_steps() const { return steps_; }
+  const DofMap& dofs() const { return dofs_; }
+
+ private:
+  const FeModel& model_;
+  const MechanicalLoads& loads_;
+  NewtonOptions options_;
+  ContactHook* contact_;
+  const Log& log_;
+  DofMap dofs_;
+  std::vector<ResultStep> steps_;
+};
+
+}  // namespace lunaster::engine

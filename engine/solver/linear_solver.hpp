@@ -1,0 +1,41 @@
+#pragma once
+/// One interface for every direct solver. The assembled matrix is an Eigen
+/// compressed-column matrix built from (row, col, value) triplets: the same
+/// triplets are what a distributed MUMPS takes (ICN_loc/JCN_loc/A_loc), so
+/// moving to MPI means giving each rank its triplets, not changing assembly.
+#include <memory>
+#include <string>
+
+#include <Eigen/Sparse>
+
+namespace lunaster::engine {
+
+using Vector = Eigen::VectorXd;
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+using Triplet = Eigen::Triplet<double, int>;
+
+/// What the caller knows about the matrix; backends use it to pick a factorisation.
+enum class MatrixKind { SymmetricPositiveDefinite, SymmetricIndefinite, General };
+
+/// Available backends. Cholmod needs an SPD matrix; Umfpack and Mumps take any.
+enum class SolverKind { Cholmod, Umfpack, Mumps };
+
+/// Direct solver: factorise once, solve for many right-hand sides.
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+  /// Factorises A (square, full storage of both triangles). Throws SolveError if
+  /// A is singular / not positive definite; `failed_column()` then tells which
+  /// column (equation) broke down, or -1 if unknown.
+  virtual void factorize(const SparseMatrix& a, MatrixKind kind) = 0;
+  /// Solves A x = b with the last factorisation.
+  virtual Vector solve(const Vector& b) const = 0;
+  virtual std::string name() const = 0;
+  /// Equation where the last factorisation failed, -1 if none / unknown.
+  virtual int failed_column() const { return -1; }
+};
+
+/// Builds a backend. Never returns null.
+std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind);
+
+}  // namespace lunaster::engine
