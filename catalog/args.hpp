@@ -29,6 +29,8 @@ class Args {
   Args(const KwNode& node, const Keyword& spec, std::string path = {});
 
   bool has(const std::string& kw) const;
+  /// True if the spec (or an active block) declares `kw` here; never throws.
+  bool declares(const std::string& kw) const;
   double real(const std::string& kw) const;
   long long integer(const std::string& kw) const;
   std::string text(const std::string& kw) const;
@@ -72,6 +74,10 @@ class Args {
 /// defaults. Throws one DeckError listing every violation (at most 10), each
 /// with its keyword path and a "did you mean" hint for misspellings.
 void validate(const CommandSpec& spec, KwNode& node);
+
+/// Compact one-line rendering of a node, for the command echo:
+/// `{ E=2e+06, NU=0, AFFE=_F{ TOUT='OUI' } }`.
+std::string format_node(const KwNode& node);
 
 /// Edit-distance suggestion among `candidates`, or empty if none is close.
 std::string closest_name(const std::string& given, const std::vector<std::string>& candidates);

@@ -91,3 +91,20 @@ struct EvolNoli : Concept {
 };
 
 }  // namespace lunaster::cmd
+
+namespace lunaster::cmd {
+
+/// DEFI_LIST_INST: instants plus what to do when a step fails.
+struct ListInst : Concept {
+  std::vector<double> instants;
+  bool subdivide = false;  ///< ECHEC/ACTION='DECOUPE'
+  int subd_pas = 4;        ///< SUBD_PAS: sub-steps per failed step
+  int subd_niveau = 3;     ///< SUBD_NIVEAU: maximum nesting of subdivisions
+  std::string type_name() const override { return "list_inst"; }
+};
+
+/// Builds the engine model from AFFE_MODELE and AFFE_MATERIAU results; DeckError
+/// (at `kw`) naming the first modelled cell without a material.
+engine::FeModel build_fe_model(const Modele& mo, const ChamMater& cm, const catalog::Args& args, const std::string& kw);
+
+}  // namespace lunaster::cmd

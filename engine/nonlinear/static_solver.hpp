@@ -34,6 +34,14 @@ struct NewtonOptions {
   double resi_glob_maxi = -1.0;  ///< absolute residual (N); <= 0: unused
   int iter_glob_maxi = 10;
   SolverKind solver = SolverKind::Cholmod;  ///< Cholmod falls back to Umfpack for indefinite systems
+  int subdivide_levels = 0;  ///< on a Newton failure, split the step this many times at most (SUBD_NIVEAU)
+  int subdivide_parts = 4;   ///< sub-steps per split (SUBD_PAS)
+};
+
+/// Newton (or a contact loop) did not converge: a smaller step may help.
+class ConvergenceError : public SolveError {
+ public:
+  using SolveError::SolveError;
 };
 
 /// Contact algorithm seen by the Newton driver (implemented in engine/contact).
@@ -68,6 +76,14 @@ class StaticSolver {
   const DofMap& dofs() const { return dofs_; }
 
  private:
+  /// Advances u from instant t0 to t1, splitting the step on ConvergenceError.
+  void advance(double t0, double t1, int level, Vector& u);
+  /// Newton (+ contact loops) at instant t starting from u; throws on failure.
+  void solve_instant(double t, Vector& u);
+  NodalField make_depl(const Vector& u) const;
+  std::vector<Triplet> k_elastic_;
+  SparseMatrix k_full_;
+
   const FeModel& model_;
   const MechanicalLoads& loads_;
   NewtonOptions options_;

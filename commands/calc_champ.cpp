@@ -1,0 +1,69 @@
+// CALC_CHAMP: stresses (SIGM_ELNO, SIGM_NOEU) and equivalent stresses (SIEQ_*) from DEPL.
+#include <algorithm>
+
+#include "commands/commands.hpp"
+#include "commands/concepts.hpp"
+#include "engine/fe/stress.hpp"
+
+namespace lunaster::cmd {
+
+namespace {
+
+/// Rebuilds the displacement vector of a stored step from its DEPL field.
+engine::Vector displacement_vector(const engine::DofMap& dofs, const engine::NodalField& depl) {
+  engine::Vector u = engine::Vector::Zero(dofs.n_dofs());
+  const int ncmp = dofs.dim();
+  for (int node = 0; node < depl.n_nodes; ++node)
+    for (int c = 0; c < ncmp; ++c) {
+      const int eq = dofs.dof(node, c);
+      if (eq >= 0 && depl.has(node, c)) u[eq] = depl.value(node, c);
+    }
+  return u;
+}
+
+std::vector<size_t> selected_steps(const Args& args, const EvolNoli& resu) {
+  std::vector<size_t> out;
+  for (size_t i = 0; i < resu.steps.size(); ++i) {
+    const auto& s = resu.steps[i];
+    bool take = true;
+    if (args.has("NUME_ORDRE")) {
+      const auto wanted = args.integers("NUME_ORDRE");
+      take = std::find(wanted.begin(), wanted.end(), s.nume_ordre) != wanted.end();
+    } else if (args.has("INST")) {
+      take = false;
+      for (double t : args.reals("INST")) take |= std::abs(t - s.inst) <= 1e-6 * std::max(1.0, std::abs(t));
+    }
+    if (take) out.push_back(i);
+  }
+  if (out.empty()) throw args.error(args.has("INST") ? "INST" : "NUME_ORDRE", "a stored step of the result", "none matched");
+  return out;
+}
+
+}  // namespace
+
+ConceptPtr calc_champ(const Args& args, Session& session) {
+  Session::Timer timer(session, "post");
+  auto resu = args.concept_as<EvolNoli>("RESULTAT");
+  std::vector<std::string> wanted;
+  if (args.has("CONTRAINTE")) wanted = args.texts("CONTRAINTE");
+  if (args.has("CRITERES"))
+    for (const auto& c : args.texts("CRITERES")) wanted.push_back(c);
+  auto want = [&](const char* name) { return std::find(wanted.begin(), wanted.end(), name) != wanted.end(); };
+  const engine::FeModel model = build_fe_model(*resu->modele, *resu->cham_mater, args, "RESULTAT");
+  const engine::DofMap dofs(*model.mesh, model.volume_cells(), model.dim);
+  for (size_t i : selected_steps(args, *resu)) {
+    auto& step = resu->steps[i];
+    const engine::Vector u = displacement_vector(dofs, step.nodal.at("DEPL"));
+    engine::ElnoField sigm = engine::compute_sigm_elno(model, dofs, u);
+    if (want("SIGM_NOEU")) step.nodal["SIGM_NOEU"] = engine::elno_to_noeu(*model.mesh, sigm);
+    if (want("SIEQ_ELNO") || want("SIEQ_NOEU")) {
+      engine::ElnoField sieq = engine::compute_sieq_elno(sigm);
+      if (want("SIEQ_NOEU")) step.nodal["SIEQ_NOEU"] = engine::elno_to_noeu(*model.mesh, sieq);
+      step.elno["SIEQ_ELNO"] = std::move(sieq);
+    }
+    step.elno["SIGM_ELNO"] = std::move(sigm);  // *_NOEU needs *_ELNO: code_aster computes it too
+  }
+  return resu;
+}
+
+}  // namespace lunaster::cmd

@@ -1,0 +1,29 @@
+#pragma once
+/// Every command handler (one per file in commands/), listed in register_all.cpp.
+#include "catalog/args.hpp"
+#include "commands/session.hpp"
+
+namespace lunaster::cmd {
+
+using catalog::Args;
+using catalog::ConceptPtr;
+
+ConceptPtr debut(const Args& args, Session& session);
+ConceptPtr fin(const Args& args, Session& session);
+ConceptPtr lire_maillage(const Args& args, Session& session);
+ConceptPtr defi_group(const Args& args, Session& session);
+ConceptPtr modi_maillage(const Args& args, Session& session);
+ConceptPtr affe_modele(const Args& args, Session& session);
+ConceptPtr defi_materiau(const Args& args, Session& session);
+ConceptPtr affe_materiau(const Args& args, Session& session);
+ConceptPtr affe_char_meca(const Args& args, Session& session);
+ConceptPtr defi_contact(const Args& args, Session& session);
+ConceptPtr defi_list_reel(const Args& args, Session& session);
+ConceptPtr defi_list_inst(const Args& args, Session& session);
+ConceptPtr defi_fonction(const Args& args, Session& session);
+ConceptPtr stat_non_line(const Args& args, Session& session);
+ConceptPtr calc_champ(const Args& args, Session& session);
+ConceptPtr test_resu(const Args& args, Session& session);
+ConceptPtr impr_resu(const Args& args, Session& session);
+
+}  // namespace lunaster::cmd

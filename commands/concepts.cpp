@@ -1,0 +1,36 @@
+#include "commands/concepts.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace lunaster::cmd {
+
+double Fonction::operator()(double x) const {
+  const size_t n = abscissas.size();
+  if (n == 0) throw InternalError("empty function");
+  if (n == 1) return ordinates[0];
+  auto extrapolate = [&](char prol, size_t i0, size_t i1) {
+    if (prol == 'C') return ordinates[x < abscissas[0] ? 0 : n - 1];
+    if (prol == 'L') {
+      const double s = (x - abscissas[i0]) / (abscissas[i1] - abscissas[i0]);
+      return ordinates[i0] + s * (ordinates[i1] - ordinates[i0]);
+    }
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "function %s evaluated at %s = %g, outside [%g, %g] with prolongation EXCLU",
+                  user_name.empty() ? "DEFI_FONCTION" : user_name.c_str(), nom_para.c_str(), x, abscissas.front(),
+                  abscissas.back());
+    throw DeckError(buf, {"extend VALE or set PROL_GAUCHE / PROL_DROITE to 'CONSTANT' or 'LINEAIRE'"});
+  };
+  const double tol = 1e-12 * std::max(1.0, std::abs(abscissas.back() - abscissas.front()));
+  if (x < abscissas.front() - tol) return extrapolate(prol_gauche, 0, 1);
+  if (x > abscissas.back() + tol) return extrapolate(prol_droite, n - 2, n - 1);
+  auto it = std::upper_bound(abscissas.begin(), abscissas.end(), x);
+  size_t i1 = static_cast<size_t>(it - abscissas.begin());
+  if (i1 >= n) i1 = n - 1;
+  if (i1 == 0) i1 = 1;
+  const size_t i0 = i1 - 1;
+  const double s = (x - abscissas[i0]) / (abscissas[i1] - abscissas[i0]);
+  return ordinates[i0] + s * (ordinates[i1] - ordinates[i0]);
+}
+
+}  // namespace lunaster::cmd

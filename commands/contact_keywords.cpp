@@ -1,0 +1,107 @@
+#include "commands/contact_keywords.hpp"
+
+#include "commands/selection.hpp"
+
+namespace lunaster::cmd {
+
+namespace {
+
+using engine::IntegrationScheme;
+
+bool opt(const catalog::Args& a, const char* kw) { return a.declares(kw) && a.has(kw); }
+
+/// Seed names SIMPSON1/SIMPSON2 and NCOTES1/NCOTES2 mean the scheme on 2 / 3
+/// sub-elements of the slave cell (the seed: 'SIMPSON2' uses three
+/// sub-elements); current code_aster spells Simpson sub-elements as ORDRE_INT.
+void read_integration(const catalog::Args& zone, engine::ContactZone& z) {
+  const std::string name = opt(zone, "INTEGRATION") ? zone.text("INTEGRATION") : "AUTO";
+  std::string base = name;
+  int sub = 1;
+  if (!name.empty() && (name.back() == '1' || name.back() == '2')) {
+    sub = name.back() == '1' ? 2 : 3;
+    base = name.substr(0, name.size() - 1);
+  }
+  if (base == "GAUSS") z.integration = IntegrationScheme::Gauss;
+  else if (base == "SIMPSON") z.integration = IntegrationScheme::Simpson;
+  else if (base == "NCOTES") z.integration = IntegrationScheme::NewtonCotes;
+  else if (base == "NOEUD") z.integration = IntegrationScheme::Nodes;
+  else z.integration = IntegrationScheme::Auto;
+  if (z.integration == IntegrationScheme::Simpson) {
+    z.integration_order = sub;  // SIMPSONk: composite Simpson on k+1 sub-elements
+    sub = 1;
+  }
+  z.sub_elements = sub;
+  if (opt(zone, "ORDRE_INT")) z.integration_order = static_cast<int>(zone.integer("ORDRE_INT"));
+}
+
+std::vector<int> contact_surface(const catalog::Args& zone, const char* kw, const engine::Mesh& mesh, int model_dim) {
+  const std::string group = zone.text(kw);
+  const std::vector<int>& cells = cell_group(zone, kw, mesh, group);
+  for (int c : cells)
+    if (engine::cell_info(mesh.cell_types[c]).dim != model_dim - 1)
+      throw zone.error(kw, "a group of boundary cells (" + std::string(model_dim == 2 ? "SEG2/SEG3" : "TRIA/QUAD") + ")",
+                       "'" + group + "' containing " + std::string(engine::cell_info(mesh.cell_types[c]).name) +
+                           " cell " + mesh.cell_names[c]);
+  return cells;
+}
+
+}  // namespace
+
+engine::ContactZone read_contact_zone(const catalog::Args& zone, const engine::Mesh& mesh, int model_dim,
+                                      engine::ContactMethod method) {
+  engine::ContactZone z;
+  z.slave_cells = contact_surface(zone, "GROUP_MA_ESCL", mesh, model_dim);
+  z.master_cells = contact_surface(zone, "GROUP_MA_MAIT", mesh, model_dim);
+  read_integration(zone, z);
+  if (opt(zone, "COEF_CONT")) z.coef_cont = zone.real("COEF_CONT");
+  if (opt(zone, "COEF_REGU_CONT")) z.coef_cont = zone.real("COEF_REGU_CONT");
+  if (opt(zone, "E_N")) z.coef_pena = zone.real("E_N");
+  if (opt(zone, "COEF_PENA_CONT")) z.coef_pena = zone.real("COEF_PENA_CONT");
+  if ((method == engine::ContactMethod::DiscretePenalty || method == engine::ContactMethod::ContinuousPenalty) &&
+      z.coef_pena <= 0.0)
+    throw zone.error("E_N", "a positive penalty coefficient (E_N or COEF_PENA_CONT) with penalisation", "none");
+  if (opt(zone, "CONTACT_INIT")) {
+    const std::string init = zone.text("CONTACT_INIT");
+    z.init = init == "OUI" ? engine::ContactInit::Yes
+             : init == "NON" ? engine::ContactInit::No
+                             : engine::ContactInit::Interpenetrated;
+  }
+  return z;
+}
+
+void read_contact_loops(const catalog::Args& args, engine::ContactDefinition& def) {
+  using engine::FixedPointOrNewton;
+  if (opt(args, "ALGO_RESO_CONT"))
+    def.status_loop = args.text("ALGO_RESO_CONT") == "NEWTON" ? FixedPointOrNewton::Newton : FixedPointOrNewton::FixedPoint;
+  if (opt(args, "ALGO_RESO_GEOM"))
+    def.geometry_loop = args.text("ALGO_RESO_GEOM") == "NEWTON" ? FixedPointOrNewton::Newton : FixedPointOrNewton::FixedPoint;
+  if (opt(args, "REAC_GEOM")) {
+    const std::string r = args.text("REAC_GEOM");
+    def.reac_geom = r == "SANS" ? engine::GeometryUpdate::None
+                    : r == "CONTROLE" ? engine::GeometryUpdate::Controlled
+                                      : engine::GeometryUpdate::Automatic;
+  }
+  if (opt(args, "NB_ITER_GEOM")) def.nb_iter_geom = static_cast<int>(args.integer("NB_ITER_GEOM"));
+  if (opt(args, "ITER_GEOM_MAXI")) def.iter_geom_maxi = static_cast<int>(args.integer("ITER_GEOM_MAXI"));
+  if (opt(args, "ITER_CONT_MAXI")) def.iter_cont_maxi = static_cast<int>(args.integer("ITER_CONT_MAXI"));
+  if (opt(args, "RESI_GEOM")) def.resi_geom = args.real("RESI_GEOM");
+}
+
+void warn_incompatible_pairs(const engine::ContactDefinition& def, const engine::Mesh& mesh, Session& session) {
+  using engine::CellType;
+  for (const auto& zone : def.zones) {
+    bool slave_quad8 = false, slave_quad4 = false, master_tria6 = false;
+    for (int c : zone.slave_cells) {
+      slave_quad8 |= mesh.cell_types[c] == CellType::Quad8;
+      slave_quad4 |= mesh.cell_types[c] == CellType::Quad4;
+    }
+    for (int c : zone.master_cells) master_tria6 |= mesh.cell_types[c] == CellType::Tria6;
+    if (master_tria6 && (slave_quad8 || slave_quad4))
+      session.warn(std::string("contact pairing ") + (slave_quad8 ? "QUAD8" : "QUAD4") +
+                   " slave on TRIA6 master does not satisfy the compatibility conditions for integrating the "
+                   "contact terms (R5.03.52): results may be wrong. Swap the roles (TRIA6 slave on a quadrangle "
+                   "master) or mesh both surfaces with the same cell type.");
+  }
+}
+
+}  // namespace lunaster::cmd

@@ -1,0 +1,19 @@
+#pragma once
+/// Keyword -> engine mapping shared by AFFE_CHAR_MECA/CONTACT (seed syntax)
+/// and DEFI_CONTACT (current syntax).
+#include "catalog/args.hpp"
+#include "commands/session.hpp"
+#include "engine/contact/contact_definition.hpp"
+#include "engine/mesh/mesh.hpp"
+
+namespace lunaster::cmd {
+
+/// Reads one contact zone (slave/master groups, integration, coefficients, CONTACT_INIT).
+engine::ContactZone read_contact_zone(const catalog::Args& zone, const engine::Mesh& mesh, int model_dim,
+                                      engine::ContactMethod method);
+/// Reads the loop settings (ALGO_RESO_*, REAC_GEOM, ITER_*_MAXI, RESI_GEOM) present in `args`.
+void read_contact_loops(const catalog::Args& args, engine::ContactDefinition& def);
+/// Logs the compatibility warning for slave/master cell pairs the integration cannot handle.
+void warn_incompatible_pairs(const engine::ContactDefinition& def, const engine::Mesh& mesh, Session& session);
+
+}  // namespace lunaster::cmd

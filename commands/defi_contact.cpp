@@ -1,0 +1,36 @@
+// DEFI_CONTACT: contact definition in current code_aster syntax.
+#include "commands/commands.hpp"
+#include "commands/concepts.hpp"
+#include "commands/contact_keywords.hpp"
+
+namespace lunaster::cmd {
+
+ConceptPtr defi_contact(const Args& args, Session& session) {
+  auto result = std::make_shared<CharContact>();
+  result->modele = args.concept_as<Modele>("MODELE");
+  const Modele& mo = *result->modele;
+  auto& def = result->contact;
+  const bool continuous = args.text("FORMULATION") == "CONTINUE";
+  read_contact_loops(args, def);
+  for (const auto& zone : args.factors("ZONE")) {
+    const std::string algo = zone.has("ALGO_CONT") ? zone.text("ALGO_CONT") : (continuous ? "STANDARD" : "CONTRAINTE");
+    engine::ContactMethod method;
+    if (continuous) {
+      if (algo != "STANDARD" && algo != "PENALISATION")
+        throw zone.error("ALGO_CONT", "'STANDARD' or 'PENALISATION' with FORMULATION='CONTINUE'", "'" + algo + "'");
+      method = algo == "PENALISATION" ? engine::ContactMethod::ContinuousPenalty : engine::ContactMethod::Continuous;
+    } else {
+      if (algo != "CONTRAINTE" && algo != "PENALISATION")
+        throw zone.error("ALGO_CONT", "'CONTRAINTE' or 'PENALISATION' with FORMULATION='DISCRETE'", "'" + algo + "'");
+      method = algo == "PENALISATION" ? engine::ContactMethod::DiscretePenalty : engine::ContactMethod::DiscreteLagrange;
+    }
+    if (!def.zones.empty() && method != def.method)
+      throw zone.error("ALGO_CONT", "the same contact algorithm in every zone", "'" + algo + "'");
+    def.method = method;
+    def.zones.push_back(read_contact_zone(zone, *mo.maillage->mesh, mo.dim, method));
+  }
+  warn_incompatible_pairs(def, *mo.maillage->mesh, session);
+  return result;
+}
+
+}  // namespace lunaster::cmd

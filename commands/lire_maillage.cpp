@@ -1,0 +1,45 @@
+// LIRE_MAILLAGE: reads a MED or Gmsh mesh.
+#include <filesystem>
+
+#include "commands/commands.hpp"
+#include "commands/concepts.hpp"
+#include "engine/io/gmsh_reader.hpp"
+#include "engine/io/med_reader.hpp"
+
+namespace lunaster::cmd {
+
+namespace {
+
+/// UNITE 20 is the mesh of the study: <deck name>.med (or .msh) beside the deck;
+/// any other unit maps to fort.<UNITE> beside the deck, as in a code_aster study folder.
+std::filesystem::path mesh_path(const Args& args, const Session& session, const std::string& format) {
+  if (args.has("FICHIER")) return session.resolve_input(args.text("FICHIER"));
+  const long long unit = args.integer("UNITE");
+  if (unit == 20) {
+    std::filesystem::path p = session.deck_path;
+    p.replace_extension(format == "GMSH" ? ".msh" : ".med");
+    return p;
+  }
+  return session.deck_path.parent_path() / ("fort." + std::to_string(unit));
+}
+
+}  // namespace
+
+ConceptPtr lire_maillage(const Args& args, Session& session) {
+  Session::Timer timer(session, "read");
+  const std::string format = args.text("FORMAT");
+  const std::filesystem::path path = mesh_path(args, session, format);
+  auto result = std::make_shared<Maillage>();
+  result->source_file = path.string();
+  if (format == "GMSH") {
+    *result->mesh = engine::read_gmsh(path.string());
+  } else {
+    *result->mesh = engine::read_med(path.string(), args.has("NOM_MED") ? args.text("NOM_MED") : std::string());
+  }
+  const auto& mesh = *result->mesh;
+  session.log().info("  mesh " + path.filename().string() + ": " + std::to_string(mesh.n_nodes()) + " nodes, " +
+                     std::to_string(mesh.n_cells()) + " cells, dimension " + std::to_string(mesh.dim));
+  return result;
+}
+
+}  // namespace lunaster::cmd

@@ -1,0 +1,111 @@
+// STAT_NON_LINE: quasi-static incremental analysis (Newton), with contact.
+#include <memory>
+
+#include "commands/commands.hpp"
+#include "commands/concepts.hpp"
+#include "engine/contact/contact_factory.hpp"
+
+namespace lunaster::cmd {
+
+namespace {
+
+engine::SolverKind solver_kind(const std::string& methode) {
+  if (methode == "MUMPS") return engine::SolverKind::Mumps;
+  if (methode == "UMFPACK") return engine::SolverKind::Umfpack;
+  return engine::SolverKind::Cholmod;  // AUTO, CHOLMOD, LDLT, MULT_FRONT: Cholmod, Umfpack if indefinite
+}
+
+/// Instants to compute: LIST_INST restricted to [INST_INIT, INST_FIN].
+std::vector<double> instants(const Args& inc, engine::NewtonOptions& options) {
+  std::vector<double> all;
+  auto list = inc.concept_value("LIST_INST");
+  if (auto l = std::dynamic_pointer_cast<ListR8>(list)) {
+    all = l->values;
+  } else if (auto li = std::dynamic_pointer_cast<ListInst>(list)) {
+    all = li->instants;
+    if (li->subdivide) {
+      options.subdivide_levels = li->subd_niveau;
+      options.subdivide_parts = li->subd_pas;
+    }
+  } else {
+    throw inc.error("LIST_INST", "a listr8 or list_inst", list ? list->type_name() : "nothing");
+  }
+  const double t0 = inc.has("INST_INIT") ? inc.real("INST_INIT") : all.front();
+  const double t1 = inc.has("INST_FIN") ? inc.real("INST_FIN") : all.back();
+  std::vector<double> out;
+  if (t0 < all.front() - 1e-12) out.push_back(t0);
+  for (double t : all)
+    if (t >= t0 - 1e-12 && t <= t1 + 1e-12) out.push_back(t);
+  if (out.size() < 2)
+    throw inc.error("LIST_INST", "at least one instant after INST_INIT", std::to_string(out.size()) + " instant(s)");
+  return out;
+}
+
+void check_relation(const Args& args) {
+  for (const char* kw : {"COMP_ELAS", "COMPORTEMENT"})
+    for (const auto& occ : args.factors(kw))
+      if (occ.text("RELATION") != "ELAS")
+        throw occ.error("RELATION", "'ELAS' (the only behaviour lunaster implements)", "'" + occ.text("RELATION") + "'");
+}
+
+}  // namespace
+
+ConceptPtr stat_non_line(const Args& args, Session& session) {
+  auto result = std::make_shared<EvolNoli>();
+  result->modele = args.concept_as<Modele>("MODELE");
+  result->cham_mater = args.concept_as<ChamMater>("CHAM_MATER");
+  check_relation(args);
+  const engine::FeModel model = build_fe_model(*result->modele, *result->cham_mater, args, "CHAM_MATER");
+
+  engine::MechanicalLoads loads;
+  const engine::ContactDefinition* contact = nullptr;
+  std::string contact_source;
+  for (const auto& excit : args.factors("EXCIT")) {
+    auto charge = excit.concept_as<CharMeca>("CHARGE");
+    if (charge->modele != result->modele)
+      throw excit.error("CHARGE", "a load defined on MODELE", "'" + charge->user_name + "' defined on another model");
+    const int index = static_cast<int>(loads.multipliers.size());
+    if (excit.has("FONC_MULT")) {
+      auto f = excit.concept_as<Fonction>("FONC_MULT");
+      loads.multipliers.push_back([f](double t) { return (*f)(t); });
+    } else {
+      loads.multipliers.push_back([](double) { return 1.0; });
+    }
+    for (auto d : charge->dirichlet) { d.load = index; loads.dirichlet.push_back(d); }
+    for (auto p : charge->pressures) { p.load = index; loads.pressures.push_back(p); }
+    for (auto f : charge->forces) { f.load = index; loads.forces.push_back(f); }
+    if (charge->has_contact) {
+      if (contact) throw excit.error("CHARGE", "a single contact definition", "a second one in '" + charge->user_name + "'");
+      contact = &charge->contact;
+      contact_source = excit.path("CHARGE");
+    }
+  }
+  std::shared_ptr<CharContact> defi_contact;
+  if (args.has("CONTACT")) {
+    if (contact) throw args.error("CONTACT", "a single contact definition", "one here and one in " + contact_source);
+    defi_contact = args.concept_as<CharContact>("CONTACT");
+    contact = &defi_contact->contact;
+  }
+
+  engine::NewtonOptions options;
+  const Args conv = args.factor("CONVERGENCE");
+  // As code_aster: RESI_GLOB_RELA = 1e-6 unless only RESI_GLOB_MAXI is given.
+  if (conv.has("RESI_GLOB_MAXI")) options.resi_glob_maxi = conv.real("RESI_GLOB_MAXI");
+  options.resi_glob_rela = conv.has("RESI_GLOB_RELA") ? conv.real("RESI_GLOB_RELA")
+                           : conv.has("RESI_GLOB_MAXI") ? -1.0
+                                                        : 1e-6;
+  options.iter_glob_maxi = static_cast<int>(conv.integer("ITER_GLOB_MAXI"));
+  options.solver = solver_kind(args.factor("SOLVEUR").text("METHODE"));
+  const std::vector<double> times = instants(args.factor("INCREMENT"), options);
+
+  std::unique_ptr<engine::ContactHook> hook;
+  if (contact) hook = engine::make_contact_hook(*contact, *model.mesh, model.dim);
+  engine::StaticSolver solver(model, loads, options, hook.get(), session.log());
+  {
+    Session::Timer timer(session, "solve");
+    result->steps = solver.run(times);
+  }
+  return result;
+}
+
+}  // namespace lunaster::cmd

@@ -1,0 +1,91 @@
+#include "engine/nonlinear/rigid_body.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <numeric>
+
+namespace lunaster::engine {
+
+namespace {
+
+/// Connected component (by shared nodes) of the model's volume cells containing `node`.
+std::vector<int> body_of_node(const FeModel& model, int node) {
+  const Mesh& mesh = *model.mesh;
+  const std::vector<int> cells = model.volume_cells();
+  std::vector<int> parent(mesh.n_nodes());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int a) {
+    while (parent[a] != a) a = parent[a] = parent[parent[a]];
+    return a;
+  };
+  for (int c : cells)
+    for (int k = 1; k < mesh.cell_n_nodes(c); ++k) parent[find(mesh.cell(c)[k])] = find(mesh.cell(c)[0]);
+  std::vector<int> body;
+  const int root = find(node);
+  for (int c : cells)
+    if (find(mesh.cell(c)[0]) == root) body.push_back(c);
+  return body;
+}
+
+/// Names of the cell groups that contain every cell of `body`, smallest first.
+std::string body_name(const Mesh& mesh, const std::vector<int>& body) {
+  std::vector<std::pair<size_t, std::string>> names;
+  for (const auto& [name, cells] : mesh.cell_groups) {
+    if (cells.size() < body.size()) continue;
+    bool all = std::all_of(body.begin(), body.end(),
+                           [&](int c) { return std::binary_search(cells.begin(), cells.end(), c); });
+    if (all) names.emplace_back(cells.size(), name);
+  }
+  std::sort(names.begin(), names.end());
+  if (names.empty()) return "the body made of " + std::to_string(body.size()) + " cells";
+  return "the body " + names.front().second + " (" + std::to_string(body.size()) + " cells)";
+}
+
+}  // namespace
+
+SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, const std::vector<int>& free_index,
+                                    const std::vector<Triplet>& elastic, const SolveError& original, double t) {
+  // Reduced elastic matrix on the free displacement equations only.
+  std::vector<int> reduced(dofs.n_dofs(), -1), back;
+  for (int eq = 0; eq < dofs.n_dofs(); ++eq)
+    if (free_index[eq] >= 0 && dofs.component_of(eq) != LAGS_C) {
+      reduced[eq] = static_cast<int>(back.size());
+      back.push_back(eq);
+    }
+  std::vector<Triplet> trips;
+  trips.reserve(elastic.size());
+  for (const auto& tr : elastic) {
+    const int i = reduced[tr.row()], j = reduced[tr.col()];
+    if (i >= 0 && j >= 0) trips.emplace_back(i, j, tr.value());
+  }
+  SparseMatrix k(static_cast<int>(back.size()), static_cast<int>(back.size()));
+  k.setFromTriplets(trips.begin(), trips.end());
+  auto chol = make_linear_solver(SolverKind::Cholmod);
+  int column = -1;
+  try {
+    chol->factorize(k, MatrixKind::SymmetricPositiveDefinite);
+  } catch (const SolveError&) {
+    column = chol->failed_column();
+  }
+  char inst[32];
+  std::snprintf(inst, sizeof inst, "%.6e", t);
+  if (column < 0 || column >= static_cast<int>(back.size())) {
+    SolveError err("the system at instant " + std::string(inst) + " is singular: " + original.message(),
+                   {"the elastic stiffness alone is regular, so the singularity comes from the contact terms",
+                    "check that the contact surfaces face each other and that COEF_CONT / E_N are reasonable"});
+    return err;
+  }
+  const int eq = back[column];
+  const int node = dofs.node_of(eq);
+  const Mesh& mesh = *model.mesh;
+  const std::string who = body_name(mesh, body_of_node(model, node));
+  return SolveError(
+      "the stiffness matrix is singular at instant " + std::string(inst) + ": " + who +
+          " has a rigid-body mode (free to move along " + component_name(dofs.component_of(eq)) + ", detected at node " +
+          mesh.node_names[node] + ")",
+      {"nothing holds this body in that direction: add DDL_IMPO on it (AFFE_CHAR_MECA),",
+       "or, if only contact holds it, activate contact from the start with CONTACT_INIT='OUI'",
+       "so that the contact pressure carries the load from the first iteration"});
+}
+
+}  // namespace lunaster::engine

@@ -1,0 +1,23 @@
+#pragma once
+/// Diagnosis of a singular system: which body can move, in which direction,
+/// and what the user can do about it.
+#include <vector>
+
+#include "engine/assembly/dof_map.hpp"
+#include "engine/core/error.hpp"
+#include "engine/fe/fe_model.hpp"
+#include "engine/solver/linear_solver.hpp"
+
+namespace lunaster::engine {
+
+/// Builds the SolveError reported when the tangent could not be factorised at
+/// instant `t`. Refactorises the elastic part restricted to the free
+/// displacement equations with CHOLMOD to find an equation that carries a
+/// rigid-body mode, then names the node, the component and the body (the
+/// connected set of cells holding the node, named by the cell groups that
+/// contain it), with the remedies. Falls back to the original error when the
+/// elastic part alone is regular (the singularity then comes from contact).
+SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, const std::vector<int>& free_index,
+                                    const std::vector<Triplet>& elastic, const SolveError& original, double t);
+
+}  // namespace lunaster::engine

@@ -1,0 +1,215 @@
+#include "engine/nonlinear/static_solver.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "engine/assembly/assembly.hpp"
+#include "engine/core/error.hpp"
+#include "engine/nonlinear/rigid_body.hpp"
+
+namespace lunaster::engine {
+
+namespace {
+
+double inf_norm(const Vector& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
+
+std::string sci(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6e", v);
+  return buf;
+}
+
+/// Dirichlet conditions at one instant, applied by elimination.
+struct Constraints {
+  std::vector<int> free_index;   ///< per equation: index in the reduced system, -1 if constrained
+  std::vector<int> constrained;  ///< constrained equations
+  std::vector<double> values;    ///< imposed value per constrained equation
+  int n_free = 0;
+};
+
+Constraints build_constraints(const DofMap& dofs, const MechanicalLoads& loads, double t, const Mesh& mesh) {
+  Constraints c;
+  c.free_index.assign(dofs.n_dofs(), 0);
+  std::map<int, double> imposed;
+  for (const auto& d : loads.dirichlet) {
+    const int eq = dofs.dof(d.node, d.component);
+    if (eq < 0)
+      throw DeckError("imposed " + std::string(component_name(d.component)) + " on node " + mesh.node_names[d.node] +
+                      ", which carries no such unknown in the model");
+    imposed[eq] = d.value * loads.multipliers.at(d.load)(t);
+  }
+  for (const auto& [eq, value] : imposed) {
+    c.free_index[eq] = -1;
+    c.constrained.push_back(eq);
+    c.values.push_back(value);
+  }
+  for (int eq = 0; eq < dofs.n_dofs(); ++eq)
+    if (c.free_index[eq] == 0) c.free_index[eq] = c.n_free++;
+  return c;
+}
+
+Vector external_forces(const FeModel& model, const DofMap& dofs, const MechanicalLoads& loads, double t) {
+  Vector f = Vector::Zero(dofs.n_dofs());
+  for (const auto& p : loads.pressures)
+    assemble_pressure(*model.mesh, model.dim, p.cells, p.pressure * loads.multipliers.at(p.load)(t), dofs, f);
+  for (const auto& fn : loads.forces) {
+    const int eq = dofs.dof(fn.node, fn.component);
+    if (eq < 0)
+      throw DeckError("nodal force " + std::string(component_name(fn.component)) + " on node " +
+                      model.mesh->node_names[fn.node] + ", which carries no such unknown in the model");
+    f[eq] += fn.value * loads.multipliers.at(fn.load)(t);
+  }
+  return f;
+}
+
+}  // namespace
+
+StaticSolver::StaticSolver(const FeModel& model, const MechanicalLoads& loads, NewtonOptions options,
+                           ContactHook* contact, const Log& log)
+    : model_(model), loads_(loads), options_(options), contact_(contact), log_(log) {}
+
+NodalField StaticSolver::make_depl(const Vector& u) const {
+  std::vector<std::string> cmps = {"DX", "DY"};
+  std::vector<int> ids = {DX, DY};
+  if (model_.dim == 3) { cmps.push_back("DZ"); ids.push_back(DZ); }
+  bool has_lagrange = false;
+  for (int eq = 0; eq < dofs_.n_dofs() && !has_lagrange; ++eq) has_lagrange = dofs_.component_of(eq) == LAGS_C;
+  if (has_lagrange) { cmps.push_back("LAGS_C"); ids.push_back(LAGS_C); }
+  const Mesh& mesh = *model_.mesh;
+  NodalField depl(cmps, mesh.n_nodes());
+  for (int node = 0; node < mesh.n_nodes(); ++node)
+    for (size_t c = 0; c < ids.size(); ++c) {
+      const int eq = dofs_.dof(node, ids[c]);
+      if (eq >= 0) depl.set(node, static_cast<int>(c), u[eq]);
+    }
+  return depl;
+}
+
+std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
+  LUNASTER_ASSERT(!instants.empty(), "no instants");
+  dofs_ = DofMap(*model_.mesh, model_.volume_cells(), model_.dim);
+  if (contact_) contact_->add_dofs(dofs_);
+  const int n = dofs_.n_dofs();
+  k_elastic_.clear();
+  assemble_stiffness(model_, dofs_, k_elastic_);
+  k_full_ = SparseMatrix(n, n);
+  k_full_.setFromTriplets(k_elastic_.begin(), k_elastic_.end());
+
+  Vector u = Vector::Zero(n);
+  steps_.clear();
+  ResultStep initial;
+  initial.nume_ordre = 0;
+  initial.inst = instants[0];
+  initial.nodal["DEPL"] = make_depl(u);
+  steps_.push_back(std::move(initial));
+  for (size_t i = 1; i < instants.size(); ++i) advance(instants[i - 1], instants[i], 0, u);
+  return steps_;
+}
+
+void StaticSolver::advance(double t0, double t1, int level, Vector& u) {
+  Vector trial = u;
+  try {
+    solve_instant(t1, trial);
+  } catch (const ConvergenceError& err) {
+    if (level >= options_.subdivide_levels) {
+      if (options_.subdivide_levels == 0) throw;
+      ConvergenceError final(err.message(), err.hints());
+      final.add_hint("step [" + sci(t0) + ", " + sci(t1) + "] still failed after " + std::to_string(level) +
+                     " subdivision level(s) (SUBD_NIVEAU)");
+      throw final;
+    }
+    log_.warning("step to instant " + sci(t1) + " failed (" + err.message() + "); splitting it into " +
+                 std::to_string(options_.subdivide_parts) + " sub-steps (level " + std::to_string(level + 1) + ")");
+    double ta = t0;
+    for (int k = 1; k <= options_.subdivide_parts; ++k) {
+      const double tb = k == options_.subdivide_parts ? t1 : t0 + (t1 - t0) * k / options_.subdivide_parts;
+      advance(ta, tb, level + 1, u);
+      ta = tb;
+    }
+    return;
+  }
+  u = trial;
+  ResultStep result;
+  result.nume_ordre = static_cast<int>(steps_.size());
+  result.inst = t1;
+  result.nodal["DEPL"] = make_depl(u);
+  if (contact_) contact_->write_fields(u, result);
+  steps_.push_back(std::move(result));
+}
+
+void StaticSolver::solve_instant(double t, Vector& u) {
+  const int n = dofs_.n_dofs();
+  log_.info("Instant de calcul: " + sci(t));
+  const Constraints cons = build_constraints(dofs_, loads_, t, *model_.mesh);
+  for (size_t i = 0; i < cons.constrained.size(); ++i) u[cons.constrained[i]] = cons.values[i];
+  const Vector f_ext = external_forces(model_, dofs_, loads_, t);
+  if (contact_) contact_->begin_step(u, log_);
+
+  const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
+  SolverKind backend = options_.solver;
+  if (backend == SolverKind::Cholmod && kind != MatrixKind::SymmetricPositiveDefinite) backend = SolverKind::Umfpack;
+  auto solver = make_linear_solver(backend);
+
+  int total_newton = 0;
+  for (int fixed_point = 0;; ++fixed_point) {
+    bool converged = false;
+    double resi_rela = 0.0, resi_maxi = 0.0;
+    log_.info("  | ITER |  RESI_GLOB_RELA |  RESI_GLOB_MAXI |");
+    for (int iter = 0; iter <= options_.iter_glob_maxi; ++iter) {
+      std::vector<Triplet> k_contact;
+      Vector residual = k_full_ * u - f_ext;
+      if (contact_) contact_->add_to_system(u, k_contact, residual);
+      // RESI_GLOB_RELA as code_aster: free residual over the largest load or reaction.
+      double denom = inf_norm(f_ext);
+      Vector r_free(cons.n_free);
+      for (int eq = 0; eq < n; ++eq) {
+        const int k = cons.free_index[eq];
+        if (k >= 0) r_free[k] = residual[eq];
+        else denom = std::max(denom, std::abs(residual[eq]));
+      }
+      resi_maxi = inf_norm(r_free);
+      resi_rela = denom > 0.0 ? resi_maxi / denom : resi_maxi;
+      char line[96];
+      std::snprintf(line, sizeof line, "  | %4d |  %14.6e |  %14.6e |", iter, resi_rela, resi_maxi);
+      log_.info(line);
+      if (!std::isfinite(resi_maxi))
+        throw ConvergenceError("the residual became non-finite at instant " + sci(t));
+      const bool rela_ok = options_.resi_glob_rela <= 0.0 || resi_rela <= options_.resi_glob_rela;
+      const bool maxi_ok = options_.resi_glob_maxi <= 0.0 || resi_maxi <= options_.resi_glob_maxi;
+      if (iter > 0 && rela_ok && maxi_ok) { converged = true; break; }
+      if (iter == options_.iter_glob_maxi) break;
+
+      std::vector<Triplet> reduced;
+      reduced.reserve(k_elastic_.size() + k_contact.size());
+      for (const auto* list : {&k_elastic_, &k_contact})
+        for (const auto& tr : *list) {
+          const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
+          if (i >= 0 && j >= 0) reduced.emplace_back(i, j, tr.value());
+        }
+      SparseMatrix k_ff(cons.n_free, cons.n_free);
+      k_ff.setFromTriplets(reduced.begin(), reduced.end());
+      try {
+        solver->factorize(k_ff, kind);
+      } catch (const SolveError& err) {
+        throw diagnose_singular_system(model_, dofs_, cons.free_index, k_elastic_, err, t);
+      }
+      const Vector du = solver->solve(-r_free);
+      if (!du.allFinite())
+        throw SolveError("the linear solve at instant " + sci(t) + " produced non-finite values",
+                         {"the system is singular or badly scaled; check the boundary conditions"});
+      for (int eq = 0; eq < n; ++eq)
+        if (cons.free_index[eq] >= 0) u[eq] += du[cons.free_index[eq]];
+      ++total_newton;
+    }
+    if (!converged)
+      throw ConvergenceError("Newton did not converge at instant " + sci(t) + " within ITER_GLOB_MAXI = " +
+                                 std::to_string(options_.iter_glob_maxi) + " iterations",
+                             {"last residuals: RESI_GLOB_RELA = " + sci(resi_rela) + ", RESI_GLOB_MAXI = " + sci(resi_maxi),
+                              "loop: Newton (contact/geometry fixed-point pass " + std::to_string(fixed_point) + ")"});
+    if (!contact_ || contact_->settle(u, log_)) break;
+  }
+  log_.info("  converged in " + std::to_string(total_newton) + " Newton iteration(s)");
+}
+
+}  // namespace lunaster::engine

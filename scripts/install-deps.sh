@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs every Debian package lunaster needs to build, test and verify.
+# Idempotent: installs only what is missing. Needs root (or sudo) on Debian 12.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake make pkg-config git
+  liblua5.4-dev               # deck interpreter (Lua 5.4 C API, built as C++)
+  libeigen3-dev               # dense/sparse linear algebra containers
+  libsuitesparse-dev          # CHOLMOD (SPD), UMFPACK (general)
+  libmumps-seq-dev            # MUMPS sequential (MPI build later for large models)
+  libmedc-dev libhdf5-dev     # MED-file 4.1 on HDF5: meshes and results
+  libgtest-dev libgmock-dev   # unit tests
+  libbenchmark-dev            # tests/bench kernels
+  python3 python3-numpy python3-meshio  # MED interoperability checks (independent reader/writer)
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
