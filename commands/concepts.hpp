@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "catalog/args.hpp"
 #include "catalog/concept.hpp"
 #include "engine/contact/contact_definition.hpp"
 #include "engine/fe/fe_model.hpp"

@@ -74,15 +74,23 @@ ConceptPtr impr_resu(const Args& args, Session& session) {
     return nullptr;
   }
   const auto path = output_path(args, session, "rmed");
+  std::shared_ptr<engine::Mesh> mesh;
+  std::vector<engine::MedResult> results;
   for (const auto& occ : args.factors("RESU")) {
+    std::shared_ptr<engine::Mesh> this_mesh;
     if (occ.has("RESULTAT")) {
       auto resu = occ.concept_as<EvolNoli>("RESULTAT");
-      const std::string name = resu->user_name.empty() ? "RESU" : resu->user_name;
-      engine::write_med_result(path.string(), *resu->modele->maillage->mesh, resu->steps, name);
+      this_mesh = resu->modele->maillage->mesh;
+      results.push_back({resu->user_name.empty() ? "RESU" : resu->user_name, &resu->steps});
     } else if (occ.has("MAILLAGE")) {
-      engine::write_med_mesh(path.string(), *occ.concept_as<Maillage>("MAILLAGE")->mesh);
+      this_mesh = occ.concept_as<Maillage>("MAILLAGE")->mesh;
     }
+    if (mesh && this_mesh && this_mesh != mesh)
+      throw occ.error("RESULTAT", "results on the same mesh in one MED file", "a result on another mesh");
+    if (this_mesh) mesh = this_mesh;
   }
+  if (!mesh) throw args.error("RESU", "RESULTAT or MAILLAGE in RESU", "neither");
+  engine::write_med(path.string(), *mesh, results);
   session.log().info("  written " + path.string());
   return nullptr;
 }

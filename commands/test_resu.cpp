@@ -107,7 +107,8 @@ ConceptPtr test_resu(const Args& args, Session& session) {
     auto resu = occ.concept_as<EvolNoli>("RESULTAT");
     const engine::ResultStep& step = find_step(occ, *resu);
     const Probe p = probe_value(occ, *resu, step);
-    const std::string what = occ.text("NOM_CHAM") + "  " + p.where + "  " + occ.text("NOM_CMP");
+    std::string what = occ.text("NOM_CHAM") + "  " + p.where + "  " + occ.text("NOM_CMP");
+    if (occ.has("LEGENDE")) what += "  [" + occ.text("LEGENDE") + "]";
     const bool relative = occ.text("CRITERE") == "RELATIF";
     const double magnitude = occ.has("ORDRE_GRANDEUR") ? occ.real("ORDRE_GRANDEUR") : 0.0;
     bool any = false;

@@ -9,10 +9,10 @@ PACKAGES=(
   libeigen3-dev               # dense/sparse linear algebra containers
   libsuitesparse-dev          # CHOLMOD (SPD), UMFPACK (general)
   libmumps-seq-dev            # MUMPS sequential (MPI build later for large models)
-  libmedc-dev libhdf5-dev     # MED-file 4.1 on HDF5: meshes and results
+  libmedc-dev libhdf5-openmpi-dev libopenmpi-dev  # MED-file 4.1 (built on the OpenMPI HDF5): meshes, results
   libgtest-dev libgmock-dev   # unit tests
-  libbenchmark-dev            # tests/bench kernels
-  python3 python3-numpy python3-meshio  # MED interoperability checks (independent reader/writer)
+  libbenchmark-dev time       # tests/bench kernels and timings
+  python3 python3-numpy python3-h5py python3-meshio  # MED interoperability checks (independent reader/writer)
 )
 
 missing=()

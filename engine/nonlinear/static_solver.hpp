@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engine/assembly/dof_map.hpp"
+#include "engine/core/error.hpp"
 #include "engine/core/log.hpp"
 #include "engine/fe/fe_model.hpp"
 #include "engine/fields/fields.hpp"

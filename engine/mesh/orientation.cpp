@@ -1,0 +1,245 @@
+#include "engine/mesh/orientation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/error.hpp"
+#include "engine/mesh/cell_topology.hpp"
+
+namespace lunaster::engine {
+
+namespace {
+
+using Vec3 = std::array<double, 3>;
+
+Vec3 point(const Mesh& mesh, int node) {
+  const double* p = mesh.node(node);
+  return {p[0], p[1], p[2]};
+}
+Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+
+/// Number of vertices among the first nodes of a face listed by cell_faces.
+int face_n_vertices(CellType face_type) { return cell_info(face_type).n_vertices; }
+
+double max_edge_length(const Mesh& mesh, int c) {
+  const int* nodes = mesh.cell(c);
+  const int nv = cell_info(mesh.cell_types[c]).n_vertices;
+  double h = 0.0;
+  for (int i = 0; i < nv; ++i)
+    for (int j = i + 1; j < nv; ++j) h = std::max(h, norm(sub(point(mesh, nodes[i]), point(mesh, nodes[j]))));
+  return h;
+}
+
+/// Smallest corner Jacobian of a 2D cell (z-component of (n-v) x (p-v)).
+double min_corner_jacobian_2d(const Mesh& mesh, int c) {
+  const int* nodes = mesh.cell(c);
+  const int nv = cell_info(mesh.cell_types[c]).n_vertices;
+  double jmin = 1e300;
+  for (int i = 0; i < nv; ++i) {
+    const Vec3 v = point(mesh, nodes[i]);
+    const Vec3 e1 = sub(point(mesh, nodes[(i + 1) % nv]), v);
+    const Vec3 e2 = sub(point(mesh, nodes[(i + nv - 1) % nv]), v);
+    jmin = std::min(jmin, cross(e1, e2)[2]);
+  }
+  return jmin;
+}
+
+/// Smallest corner Jacobian of a 3D cell: at vertex v of an outward face with
+/// neighbours n (next) and p (previous), every other edge neighbour c of v must
+/// lie inside: det = ((n-v) x (p-v)) . (v-c) > 0.
+double min_corner_jacobian_3d(const Mesh& mesh, int c) {
+  const CellType type = mesh.cell_types[c];
+  const CellFaces& faces = cell_faces(type);
+  const int nv = cell_info(type).n_vertices;
+  const int* nodes = mesh.cell(c);
+  std::vector<std::vector<int>> neighbours(nv);
+  for (int f = 0; f < faces.n_faces; ++f) {
+    const int m = face_n_vertices(faces.face_type[f]);
+    for (int k = 0; k < m; ++k) {
+      const int v = faces.nodes[f][k], n = faces.nodes[f][(k + 1) % m];
+      neighbours[v].push_back(n);
+      neighbours[n].push_back(v);
+    }
+  }
+  double jmin = 1e300;
+  for (int f = 0; f < faces.n_faces; ++f) {
+    const int m = face_n_vertices(faces.face_type[f]);
+    for (int k = 0; k < m; ++k) {
+      const int v = faces.nodes[f][k], n = faces.nodes[f][(k + 1) % m], p = faces.nodes[f][(k + m - 1) % m];
+      const Vec3 x = point(mesh, nodes[v]);
+      const Vec3 normal = cross(sub(point(mesh, nodes[n]), x), sub(point(mesh, nodes[p]), x));
+      for (int other : neighbours[v]) {
+        const auto* begin = faces.nodes[f].data();
+        if (std::find(begin, begin + m, other) != begin + m) continue;
+        jmin = std::min(jmin, dot(normal, sub(x, point(mesh, nodes[other]))));
+      }
+    }
+  }
+  return jmin;
+}
+
+bool same_cyclic_orientation(const std::vector<int>& a, const std::vector<int>& b) {
+  const int m = static_cast<int>(a.size());
+  if (m == 2) return a == b;  // a segment has no cyclic rotation
+  const auto it = std::find(b.begin(), b.end(), a[0]);
+  const int k = static_cast<int>(it - b.begin());
+  return b[(k + 1) % m] == a[1];
+}
+
+bool contains_all(const Mesh& mesh, int cell, const std::vector<int>& nodes) {
+  const int* begin = mesh.cell(cell);
+  const int* end = begin + mesh.cell_n_nodes(cell);
+  for (int n : nodes)
+    if (std::find(begin, end, n) == end) return false;
+  return true;
+}
+
+/// Global vertex ids of the face of `volume` whose vertex set is `vertices`.
+std::vector<int> matching_face(const Mesh& mesh, int volume, const std::vector<int>& vertices) {
+  const CellFaces& faces = cell_faces(mesh.cell_types[volume]);
+  std::vector<int> sorted = vertices;
+  std::sort(sorted.begin(), sorted.end());
+  for (int f = 0; f < faces.n_faces; ++f) {
+    const int m = face_n_vertices(faces.face_type[f]);
+    if (m != static_cast<int>(vertices.size())) continue;
+    std::vector<int> face(m);
+    for (int k = 0; k < m; ++k) face[k] = mesh.cell(volume)[faces.nodes[f][k]];
+    std::vector<int> face_sorted = face;
+    std::sort(face_sorted.begin(), face_sorted.end());
+    if (face_sorted == sorted) return face;
+  }
+  return {};
+}
+
+bool is_boundary_type(CellType type, int mesh_dim) {
+  switch (type) {
+    case CellType::Seg2:
+    case CellType::Seg3: return mesh_dim == 2;
+    case CellType::Tria3:
+    case CellType::Tria6:
+    case CellType::Quad4:
+    case CellType::Quad8: return mesh_dim == 3;
+    default: return false;
+  }
+}
+
+}  // namespace
+
+std::vector<int> find_inverted_cells(const Mesh& mesh) {
+  std::vector<int> bad;
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    const int cdim = cell_info(mesh.cell_types[c]).dim;
+    if (cdim != mesh.dim || cdim < 2) continue;
+    const double h = max_edge_length(mesh, c);
+    const double jmin = cdim == 2 ? min_corner_jacobian_2d(mesh, c) : min_corner_jacobian_3d(mesh, c);
+    if (!(jmin > 1e-10 * std::pow(h, cdim))) bad.push_back(c);
+  }
+  return bad;
+}
+
+std::vector<std::string> inverted_cell_names(const Mesh& mesh) {
+  std::vector<std::string> names;
+  for (int c : find_inverted_cells(mesh)) names.push_back(mesh.cell_names[c]);
+  return names;
+}
+
+void check_cell_orientation(const Mesh& mesh, const std::string& source) {
+  const std::vector<int> bad = find_inverted_cells(mesh);
+  if (bad.empty()) return;
+  std::string list;
+  for (size_t i = 0; i < bad.size() && i < 5; ++i) {
+    if (i) list += ", ";
+    list += mesh.cell_names[bad[i]] + " (" + std::string(cell_info(mesh.cell_types[bad[i]]).name) + ")";
+  }
+  if (bad.size() > 5) list += ", ...";
+  throw DeckError("mesh file '" + source + "': " + std::to_string(bad.size()) +
+                      " inverted or degenerate cell(s) (non-positive Jacobian): " + list,
+                  {"check the node order of these cells (MED order is expected)"});
+}
+
+double cell_measure(const Mesh& mesh, int c) {
+  const CellType type = mesh.cell_types[c];
+  const CellInfo& info = cell_info(type);
+  const int* nodes = mesh.cell(c);
+  if (info.dim == 0) return 0.0;
+  if (info.dim == 1) return norm(sub(point(mesh, nodes[1]), point(mesh, nodes[0])));
+  if (info.dim == 2) {
+    Vec3 area{0, 0, 0};
+    const Vec3 o = point(mesh, nodes[0]);
+    for (int i = 1; i + 1 < info.n_vertices; ++i) {
+      const Vec3 t = cross(sub(point(mesh, nodes[i]), o), sub(point(mesh, nodes[i + 1]), o));
+      for (int k = 0; k < 3; ++k) area[k] += 0.5 * t[k];
+    }
+    if (mesh.dim == 2) return area[2];
+    return norm(area);
+  }
+  Vec3 centre{0, 0, 0};
+  for (int i = 0; i < info.n_vertices; ++i)
+    for (int k = 0; k < 3; ++k) centre[k] += point(mesh, nodes[i])[k] / info.n_vertices;
+  const CellFaces& faces = cell_faces(type);
+  double volume = 0.0;
+  for (int f = 0; f < faces.n_faces; ++f) {
+    const int m = face_n_vertices(faces.face_type[f]);
+    const Vec3 a = point(mesh, nodes[faces.nodes[f][0]]);
+    for (int k = 1; k + 1 < m; ++k) {
+      const Vec3 b = point(mesh, nodes[faces.nodes[f][k]]), d = point(mesh, nodes[faces.nodes[f][k + 1]]);
+      volume += dot(cross(sub(b, a), sub(d, a)), sub(a, centre)) / 6.0;
+    }
+  }
+  return volume;
+}
+
+std::array<double, 3> boundary_normal(const Mesh& mesh, int c) {
+  const int* nodes = mesh.cell(c);
+  const int cdim = cell_info(mesh.cell_types[c]).dim;
+  if (cdim == 1) {
+    const Vec3 t = sub(point(mesh, nodes[1]), point(mesh, nodes[0]));
+    return {t[1], -t[0], 0.0};
+  }
+  LUNASTER_ASSERT(cdim == 2, "boundary_normal needs a 1D or 2D cell");
+  const Vec3 x1 = point(mesh, nodes[0]);
+  return cross(sub(point(mesh, nodes[1]), x1), sub(point(mesh, nodes[2]), x1));
+}
+
+int orient_boundary_outward(Mesh& mesh, const std::vector<int>& boundary_cells) {
+  std::vector<std::vector<int>> volumes_of_node(mesh.n_nodes());
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    if (cell_info(mesh.cell_types[c]).dim != mesh.dim) continue;
+    for (int k = 0; k < cell_info(mesh.cell_types[c]).n_vertices; ++k) volumes_of_node[mesh.cell(c)[k]].push_back(c);
+  }
+  int flipped = 0;
+  for (int b : boundary_cells) {
+    const CellType type = mesh.cell_types[b];
+    const CellInfo& info = cell_info(type);
+    if (!is_boundary_type(type, mesh.dim))
+      throw DeckError("cell " + mesh.cell_names[b] + " (" + std::string(info.name) + ") is not a boundary cell of a " +
+                      std::to_string(mesh.dim) + "D mesh");
+    std::vector<int> vertices(mesh.cell(b), mesh.cell(b) + info.n_vertices);
+    std::vector<int> owners;
+    for (int v : volumes_of_node[vertices[0]])
+      if (contains_all(mesh, v, vertices)) owners.push_back(v);
+    if (owners.empty())
+      throw DeckError("cell " + mesh.cell_names[b] + " (" + std::string(info.name) + ") bounds no " +
+                      std::to_string(mesh.dim) + "D cell: cannot orient it");
+    if (owners.size() > 1)
+      throw DeckError("cell " + mesh.cell_names[b] + " is shared by cells " + mesh.cell_names[owners[0]] + " and " +
+                      mesh.cell_names[owners[1]] + ": it is not on the skin");
+    const std::vector<int> face = matching_face(mesh, owners[0], vertices);
+    if (face.empty())
+      throw DeckError("cell " + mesh.cell_names[b] + " is not a face of cell " + mesh.cell_names[owners[0]]);
+    if (same_cyclic_orientation(vertices, face)) continue;
+    const std::vector<int>& perm = cell_reverse_permutation(type);
+    std::vector<int> old(mesh.cell(b), mesh.cell(b) + info.n_nodes);
+    int* target = &mesh.cell_nodes[mesh.cell_offsets[b]];
+    for (int k = 0; k < info.n_nodes; ++k) target[k] = old[perm[k]];
+    ++flipped;
+  }
+  return flipped;
+}
+
+}  // namespace lunaster::engine

@@ -1,0 +1,51 @@
+#pragma once
+/// Cell orientation: detection of inverted cells and outward orientation of
+/// boundary (skin) cells.
+///
+/// Conventions (the FE pressure code relies on them):
+/// - A SEG2/SEG3 (n1, n2, ...) in the xy-plane has the normal (t_y, -t_x, 0)
+///   with t = x(n2) - x(n1): the normal is on the RIGHT of the direction of
+///   travel, so a counter-clockwise traversal of a 2D body gives outward normals.
+/// - A TRIA3/TRIA6/QUAD4/QUAD8 face has the normal (x2 - x1) x (x3 - x1) for its
+///   first three nodes (right-hand rule on the node order).
+/// - A valid 2D cell lists its vertices counter-clockwise in the xy-plane; a
+///   valid 3D cell follows the MED reference cells (cell_topology.hpp), so that
+///   every face listed by `cell_faces` has an outward normal.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "engine/mesh/mesh.hpp"
+
+namespace lunaster::engine {
+
+/// Indices of the cells of dimension `mesh.dim` (the "volume" cells: surfaces
+/// in 2D) whose corner Jacobian is negative (inverted) or near zero
+/// (degenerate, |J| < 1e-10 h^d) at any vertex. Lower-dimensional cells are not checked.
+std::vector<int> find_inverted_cells(const Mesh& mesh);
+
+/// Names of the cells returned by `find_inverted_cells`.
+std::vector<std::string> inverted_cell_names(const Mesh& mesh);
+
+/// Throws a DeckError naming `source` (the file read) and the first inverted
+/// cells if `find_inverted_cells` finds any.
+void check_cell_orientation(const Mesh& mesh, const std::string& source);
+
+/// Signed measure of a cell, exact for straight-sided cells: length (1D),
+/// area in the xy-plane (2D, positive when counter-clockwise; for faces in 3D
+/// the unsigned area), volume (3D, positive for a valid MED cell).
+double cell_measure(const Mesh& mesh, int cell);
+
+/// Normal of a boundary cell (SEG in 2D, TRIA/QUAD in 3D) by the convention
+/// above, not normalised, evaluated from its first vertices.
+std::array<double, 3> boundary_normal(const Mesh& mesh, int cell);
+
+/// ORIE_PEAU_2D / ORIE_PEAU_3D: reorders the nodes of each boundary cell
+/// (SEG2/SEG3 in a 2D mesh, TRIA3/TRIA6/QUAD4/QUAD8 in a 3D mesh) so that its
+/// normal points out of the single volume cell it bounds (the one that holds
+/// all its vertices). Returns the number of cells whose order was reversed.
+/// Throws DeckError if a cell has the wrong dimension, bounds no volume cell,
+/// or bounds two (then it is not on the skin).
+int orient_boundary_outward(Mesh& mesh, const std::vector<int>& boundary_cells);
+
+}  // namespace lunaster::engine

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Regenerates every committed mesh (testcases/*.med and testcases/meshes/*.med)
+# with lunaster-meshgen. Usage: tools/make_meshes.sh [path/to/lunaster-meshgen]
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+gen="${1:-$root/build/lunaster-meshgen}"
+tc="$root/testcases"
+m="$tc/meshes"
+mkdir -p "$m"
+
+# SSNP121 modelisations (A, B, C, G share ssnp121a.med)
+"$gen" --upper quad4:12 --lower quad4:11 -o "$tc/ssnp121a.med"
+"$gen" --upper quad4:12 --lower quad8:11 -o "$tc/ssnp121h.med"
+"$gen" --v1 hexa20:4x4x4 --v2 hexa20:4x4x4 -o "$tc/ssnp121d.med"
+"$gen" --v1 penta15:4x4x4 --v2 penta15:4x4x4 -o "$tc/ssnp121e.med"
+"$gen" --v1 penta15:4x4x4 --v2 hexa20:4x4x4 -o "$tc/ssnp121f.med"
+"$gen" --v1 hexa8:5x5x1 --v2 hexa20:4x4x1 -o "$tc/ssnp121i.med"
+"$gen" --v1 penta6:4x4x4 --v2 penta15:4x4x4 -o "$tc/ssnp121j.med"
+"$gen" --v1 penta6:4x4x4 --v2 hexa20:4x4x4 -o "$tc/ssnp121k.med"
+
+# Glued (conforming) versions: both blocks share the interface nodes
+"$gen" --upper quad4:4 --lower quad4:4 --glued -o "$m/glued2d_quad4.med"
+"$gen" --upper quad8:4 --lower quad8:4 --glued -o "$m/glued2d_quad8.med"
+"$gen" --v1 hexa8:3x3x3 --v2 hexa8:3x3x3 --glued -o "$m/glued3d_hexa8.med"
+"$gen" --v1 hexa20:2x2x2 --v2 hexa20:2x2x2 --glued -o "$m/glued3d_hexa20.med"
+
+# Distorted unit blocks for patch tests
+for t in quad4 quad8 tria3 tria6; do
+  "$gen" --block "$t:3" --distort 0.2 -o "$m/patch_$t.med"
+done
+for t in hexa8 hexa20 penta6 penta15 tetra4 tetra10; do
+  "$gen" --block "$t:2" --distort 0.15 -o "$m/patch_$t.med"
+done

@@ -1,0 +1,177 @@
+// lunaster-meshgen: generates the SSNP121 meshes and unit blocks as MED files,
+// and prints a summary of a mesh file (--info). Usage: lunaster-meshgen --help.
+#include <algorithm>
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "engine/core/error.hpp"
+#include "engine/io/gmsh_reader.hpp"
+#include "engine/io/med_reader.hpp"
+#include "engine/io/med_writer.hpp"
+#include "tools/ssnp121_mesh.hpp"
+
+namespace {
+
+using namespace lunaster;
+
+const char* kUsage =
+    "usage:\n"
+    "  lunaster-meshgen --upper TYPE:N --lower TYPE:N [--refine K] [--glued] [--name MESH] -o FILE.med\n"
+    "      SSNP121 2D: PLAQUE1 = [-1,1]x[0,1] (upper), PLAQUE2 = [-1,1]x[-1,0]; TYPE quad4|quad8|tria3|tria6\n"
+    "  lunaster-meshgen --v1 TYPE:NXxNYxNZ --v2 TYPE:NXxNYxNZ [--refine K] [--glued] [--name MESH] -o FILE.med\n"
+    "      SSNP121 3D: V1 = [0,1]^3, V2 = [0,1]^2x[1,2]; TYPE hexa8|hexa20|penta6|penta15|tetra4|tetra10\n"
+    "  lunaster-meshgen --block TYPE:N [--distort A] [--name MESH] -o FILE.med\n"
+    "      unit square/cube; --distort moves interior vertices by up to A cell sizes (default 0.2 if given without A)\n"
+    "  lunaster-meshgen --info FILE    (.med, or .msh for Gmsh)\n"
+    "  --test-result adds an analytic result RESU (2 steps, DEPL and SIGM_ELNO) for interop tests\n";
+
+struct Options {
+  std::map<std::string, std::string> values;
+  bool glued = false;
+  bool test_result = false;
+};
+
+Options parse(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--glued") {
+      o.glued = true;
+    } else if (a == "--test-result") {
+      o.test_result = true;
+    } else if (a == "--distort" && (i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0)) {
+      o.values["--distort"] = "0.2";
+    } else if (a == "-o" || a == "--upper" || a == "--lower" || a == "--v1" || a == "--v2" || a == "--block" ||
+               a == "--refine" || a == "--distort" || a == "--name" || a == "--info") {
+      if (i + 1 >= argc) throw DeckError("meshgen: option " + a + " needs a value");
+      o.values[a] = argv[++i];
+    } else {
+      throw DeckError("meshgen: unknown option '" + a + "'", {kUsage});
+    }
+  }
+  return o;
+}
+
+tools::BlockCells refined(const std::string& spec, int dim, int refine) {
+  tools::BlockCells cells = tools::parse_block_cells(spec, dim);
+  for (int a = 0; a < dim; ++a) cells.n[a] *= refine;
+  return cells;
+}
+
+/// Analytic result for interoperability tests (tests/quick/meshio_interop.py
+/// recomputes it): steps t = 0.5, 1.0; DEPL: DX = t x, DY = t (x + 2 y),
+/// [DZ = t z], LAGS_C = -1e5 t where x >= 0 (undefined, written 0, elsewhere);
+/// SIGM_ELNO on every cell: SIXX = t x(node), SIYY = t (y(node) + 10 k), k = local node.
+std::vector<engine::ResultStep> test_result(const engine::Mesh& mesh) {
+  std::vector<engine::ResultStep> steps(2);
+  for (int s = 0; s < 2; ++s) {
+    const double t = 0.5 * (s + 1);
+    steps[s].nume_ordre = s + 1;
+    steps[s].inst = t;
+    std::vector<std::string> cmps{"DX", "DY"};
+    if (mesh.dim == 3) cmps.push_back("DZ");
+    cmps.push_back("LAGS_C");
+    engine::NodalField depl(cmps, mesh.n_nodes());
+    const int lags = static_cast<int>(cmps.size()) - 1;
+    for (int n = 0; n < mesh.n_nodes(); ++n) {
+      const double* x = mesh.node(n);
+      depl.set(n, 0, t * x[0]);
+      depl.set(n, 1, t * (x[0] + 2 * x[1]));
+      if (mesh.dim == 3) depl.set(n, 2, t * x[2]);
+      if (x[0] >= 0) depl.set(n, lags, -1e5 * t);
+    }
+    engine::ElnoField sig;
+    sig.components = {"SIXX", "SIYY"};
+    sig.cell_offsets = {0};
+    for (int c = 0; c < mesh.n_cells(); ++c) {
+      const int rows = mesh.cell_n_nodes(c);
+      for (int k = 0; k < rows; ++k) {
+        const double* x = mesh.node(mesh.cell(c)[k]);
+        sig.values.push_back(t * x[0]);
+        sig.values.push_back(t * (x[1] + 10 * k));
+      }
+      sig.cell_offsets.push_back(sig.cell_offsets.back() + rows);
+    }
+    steps[s].nodal["DEPL"] = depl;
+    steps[s].elno["SIGM_ELNO"] = sig;
+  }
+  return steps;
+}
+
+int print_info(const std::string& path) {
+  const bool gmsh = path.size() > 4 && path.substr(path.size() - 4) == ".msh";
+  const engine::Mesh mesh = gmsh ? engine::read_gmsh(path) : engine::read_med(path);
+  std::cout << "mesh " << mesh.name << "\n";
+  std::cout << "dim " << mesh.dim << "\n";
+  std::cout << "nodes " << mesh.n_nodes() << "\n";
+  std::map<std::string, int> counts;
+  for (auto t : mesh.cell_types) ++counts[std::string(engine::cell_info(t).name)];
+  for (const auto& [name, n] : counts) std::cout << "cells " << name << " " << n << "\n";
+  for (const auto& [name, list] : mesh.cell_groups) std::cout << "cell_group " << name << " " << list.size() << "\n";
+  for (const auto& [name, list] : mesh.node_groups) std::cout << "node_group " << name << " " << list.size() << "\n";
+  return 0;
+}
+
+int run(int argc, char** argv) {
+  if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
+    std::cout << kUsage;
+    return argc < 2 ? 2 : 0;
+  }
+  const Options o = parse(argc, argv);
+  const auto get = [&](const std::string& key) {
+    const auto it = o.values.find(key);
+    return it == o.values.end() ? std::string() : it->second;
+  };
+  if (!get("--info").empty()) return print_info(get("--info"));
+  const std::string out = get("-o");
+  if (out.empty()) throw DeckError("meshgen: missing -o FILE.med", {kUsage});
+  const int refine = get("--refine").empty() ? 1 : std::stoi(get("--refine"));
+  if (refine < 1) throw DeckError("meshgen: --refine must be >= 1");
+  engine::Mesh mesh;
+  if (!get("--upper").empty() || !get("--lower").empty()) {
+    tools::Ssnp121Options2d opt;
+    opt.upper = refined(get("--upper").empty() ? "quad4:12" : get("--upper"), 2, refine);
+    opt.lower = refined(get("--lower").empty() ? "quad4:11" : get("--lower"), 2, refine);
+    opt.glued = o.glued;
+    mesh = tools::make_ssnp121_2d(opt);
+  } else if (!get("--v1").empty() || !get("--v2").empty()) {
+    tools::Ssnp121Options3d opt;
+    opt.v1 = refined(get("--v1").empty() ? "hexa20:4" : get("--v1"), 3, refine);
+    opt.v2 = refined(get("--v2").empty() ? "hexa20:4" : get("--v2"), 3, refine);
+    opt.glued = o.glued;
+    mesh = tools::make_ssnp121_3d(opt);
+  } else if (!get("--block").empty()) {
+    tools::BlockOptions opt;
+    const std::string spec = get("--block");
+    engine::CellType type;
+    std::string name = spec.substr(0, spec.find(':'));
+    std::transform(name.begin(), name.end(), name.begin(), ::toupper);
+    const int dim = engine::cell_type_from_name(name, type) ? engine::cell_info(type).dim : 3;
+    opt.cells = refined(spec, dim, refine);
+    opt.distort = get("--distort").empty() ? 0.0 : std::stod(get("--distort"));
+    mesh = tools::make_block(opt);
+  } else {
+    throw DeckError("meshgen: nothing to generate", {kUsage});
+  }
+  if (!get("--name").empty()) mesh.name = get("--name");
+  const std::vector<engine::ResultStep> steps = o.test_result ? test_result(mesh) : std::vector<engine::ResultStep>{};
+  engine::write_med(out, mesh, {{"RESU", &steps}});
+  std::cout << out << ": " << mesh.n_nodes() << " nodes, " << mesh.n_cells() << " cells\n";
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const lunaster::Error& e) {
+    std::cerr << e.format() << "\n";
+    return static_cast<int>(e.kind());
+  } catch (const std::exception& e) {
+    std::cerr << "meshgen: " << e.what() << "\n";
+    return 2;
+  }
+}

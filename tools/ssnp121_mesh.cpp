@@ -1,0 +1,316 @@
+#include "tools/ssnp121_mesh.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <tuple>
+
+#include "engine/core/error.hpp"
+#include "engine/mesh/cell_topology.hpp"
+#include "engine/mesh/orientation.hpp"
+
+namespace lunaster::tools {
+
+namespace {
+
+using engine::CellType;
+using engine::Mesh;
+using Vec3 = std::array<double, 3>;
+
+struct PendingCell {
+  CellType type;
+  std::vector<int> nodes;
+  std::string group;
+};
+
+/// Plane `axis = value` whose boundary cells form group `name`.
+struct FaceGroup {
+  std::string name;
+  int axis;
+  double value;
+};
+
+/// Collects nodes (merged by exact coordinates inside a pool) and cells, then
+/// builds the mesh with cells sorted by MED type order and named M1.., N1..
+class Builder {
+ public:
+  int new_pool() {
+    pools_.emplace_back();
+    return static_cast<int>(pools_.size()) - 1;
+  }
+  int node(int pool, const Vec3& p) {
+    const auto key = key_of(p);
+    const auto it = pools_[pool].find(key);
+    if (it != pools_[pool].end()) return it->second;
+    nodes_.push_back(p);
+    const int index = static_cast<int>(nodes_.size()) - 1;
+    pools_[pool].emplace(key, index);
+    return index;
+  }
+  int find(int pool, const Vec3& p) const {
+    const auto it = pools_[pool].find(key_of(p));
+    return it == pools_[pool].end() ? -1 : it->second;
+  }
+  const Vec3& position(int node) const { return nodes_[node]; }
+  void add_cell(CellType type, std::vector<int> nodes, const std::string& group) {
+    cells_.push_back({type, std::move(nodes), group});
+  }
+  void add_node_group(const std::string& name, int pool, const Vec3& p) {
+    const int n = find(pool, p);
+    if (n >= 0) node_groups_[name].push_back(n);
+  }
+  Mesh finish() const;
+
+ private:
+  static std::array<long long, 3> key_of(const Vec3& p) {
+    return {std::llround(p[0] * 1e9), std::llround(p[1] * 1e9), std::llround(p[2] * 1e9)};
+  }
+  std::vector<std::map<std::array<long long, 3>, int>> pools_;
+  std::vector<Vec3> nodes_;
+  std::vector<PendingCell> cells_;
+  std::map<std::string, std::vector<int>> node_groups_;
+};
+
+Mesh Builder::finish() const {
+  Mesh mesh;
+  for (const Vec3& p : nodes_) mesh.add_node(p[0], p[1], p[2]);
+  std::vector<int> order(cells_.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::stable_sort(order.begin(), order.end(), [this](int a, int b) {
+    return engine::med_type_rank(cells_[a].type) < engine::med_type_rank(cells_[b].type);
+  });
+  std::map<std::string, std::vector<int>> cell_groups;
+  for (int i : order) {
+    const int c = mesh.add_cell(cells_[i].type, cells_[i].nodes);
+    cell_groups[cells_[i].group].push_back(c);
+  }
+  for (const auto& [name, cells] : cell_groups) mesh.add_to_cell_group(name, cells);
+  for (const auto& [name, nodes] : node_groups_) mesh.add_to_node_group(name, nodes);
+  mesh.detect_dimension();
+  engine::check_cell_orientation(mesh, "generated mesh");
+  return mesh;
+}
+
+/// Geometry of one structured block.
+struct BlockGeom {
+  Vec3 lo{0, 0, 0}, hi{1, 1, 1};
+  int dim = 2;
+  double distort = 0.0;
+  std::string group;
+  std::vector<FaceGroup> faces;
+  int pool = 0;
+};
+
+/// Deterministic pseudo-random number in [-1, 1] (splitmix64 of the indices).
+double jitter(int i, int j, int k, int axis) {
+  uint64_t z = (static_cast<uint64_t>(i) * 73856093u) ^ (static_cast<uint64_t>(j) * 19349663u) ^
+               (static_cast<uint64_t>(k) * 83492791u) ^ (static_cast<uint64_t>(axis + 1) * 2654435761u);
+  z += 0x9e3779b97f4a7c15ull;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  z ^= z >> 31;
+  return 2.0 * static_cast<double>(z >> 11) / static_cast<double>(1ull << 53) - 1.0;
+}
+
+class BlockMesher {
+ public:
+  BlockMesher(Builder& builder, const BlockCells& cells, const BlockGeom& geom)
+      : b_(builder), cells_(cells), g_(geom) {}
+  void run();
+
+ private:
+  Vec3 vertex(int i, int j, int k) const;
+  void emit(CellType type, const std::vector<Vec3>& vertices);
+  void lattice_cell(int i, int j, int k);
+
+  Builder& b_;
+  BlockCells cells_;
+  BlockGeom g_;
+};
+
+Vec3 BlockMesher::vertex(int i, int j, int k) const {
+  const int idx[3] = {i, j, k};
+  Vec3 p{0, 0, 0};
+  bool interior = true;
+  for (int a = 0; a < g_.dim; ++a) {
+    const int n = cells_.n[a];
+    p[a] = idx[a] == n ? g_.hi[a] : g_.lo[a] + (g_.hi[a] - g_.lo[a]) * idx[a] / n;
+    interior = interior && idx[a] > 0 && idx[a] < n;
+  }
+  if (g_.dim == 2) p[2] = g_.lo[2];
+  if (interior && g_.distort > 0.0)
+    for (int a = 0; a < g_.dim; ++a) p[a] += g_.distort * (g_.hi[a] - g_.lo[a]) / cells_.n[a] * jitter(i, j, k, a);
+  return p;
+}
+
+/// Creates a cell from its vertex positions in MED order (mid-side nodes at
+/// edge midpoints) and the boundary cells of its faces lying on a group plane.
+void BlockMesher::emit(CellType type, const std::vector<Vec3>& vertices) {
+  std::vector<int> nodes;
+  for (const Vec3& v : vertices) nodes.push_back(b_.node(g_.pool, v));
+  for (const auto& [a, c] : engine::cell_mid_edges(type)) {
+    const Vec3 &p = vertices[a], &q = vertices[c];
+    nodes.push_back(b_.node(g_.pool, {0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1]), 0.5 * (p[2] + q[2])}));
+  }
+  b_.add_cell(type, nodes, g_.group);
+  const engine::CellFaces& faces = engine::cell_faces(type);
+  for (int f = 0; f < faces.n_faces; ++f) {
+    const int m = engine::cell_info(faces.face_type[f]).n_nodes;
+    std::vector<int> face(m);
+    for (int k = 0; k < m; ++k) face[k] = nodes[faces.nodes[f][k]];
+    for (const FaceGroup& fg : g_.faces) {
+      const bool on_plane = std::all_of(face.begin(), face.end(),
+                                        [&](int n) { return b_.position(n)[fg.axis] == fg.value; });
+      if (on_plane) b_.add_cell(faces.face_type[f], face, fg.name);
+    }
+  }
+}
+
+void BlockMesher::lattice_cell(int i, int j, int k) {
+  auto c = [&](int a, int b, int d) { return vertex(i + a, j + b, k + d); };
+  switch (engine::linear_type(cells_.type)) {
+    case CellType::Quad4: emit(cells_.type, {c(0, 0, 0), c(1, 0, 0), c(1, 1, 0), c(0, 1, 0)}); break;
+    case CellType::Tria3:
+      emit(cells_.type, {c(0, 0, 0), c(1, 0, 0), c(1, 1, 0)});
+      emit(cells_.type, {c(0, 0, 0), c(1, 1, 0), c(0, 1, 0)});
+      break;
+    case CellType::Hexa8:
+      emit(cells_.type, {c(0, 0, 0), c(0, 1, 0), c(1, 1, 0), c(1, 0, 0), c(0, 0, 1), c(0, 1, 1), c(1, 1, 1), c(1, 0, 1)});
+      break;
+    case CellType::Penta6:  // counter-clockwise xy triangles, reversed: MED's first face points down (out)
+      emit(cells_.type, {c(0, 0, 0), c(1, 1, 0), c(1, 0, 0), c(0, 0, 1), c(1, 1, 1), c(1, 0, 1)});
+      emit(cells_.type, {c(0, 0, 0), c(0, 1, 0), c(1, 1, 0), c(0, 0, 1), c(0, 1, 1), c(1, 1, 1)});
+      break;
+    case CellType::Tetra4: {  // Kuhn subdivision: 6 tetrahedra along the main diagonal, conforming
+      const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+      for (const auto& p : perms) {
+        std::array<int, 3> w1{0, 0, 0};
+        w1[p[0]] = 1;
+        std::array<int, 3> w2 = w1;
+        w2[p[1]] = 1;
+        // det[w1, w2, (1,1,1)] > 0 is the VTK/Gmsh orientation; MED wants the opposite.
+        const double det = w1[0] * (w2[1] - w2[2]) - w1[1] * (w2[0] - w2[2]) + w1[2] * (w2[0] - w2[1]);
+        if (det > 0) std::swap(w1, w2);
+        emit(cells_.type, {c(0, 0, 0), c(w1[0], w1[1], w1[2]), c(w2[0], w2[1], w2[2]), c(1, 1, 1)});
+      }
+      break;
+    }
+    default: throw DeckError("meshgen: unsupported block cell type " + std::string(engine::cell_info(cells_.type).name));
+  }
+}
+
+void BlockMesher::run() {
+  const int nz = g_.dim == 3 ? cells_.n[2] : 1;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < cells_.n[1]; ++j)
+      for (int i = 0; i < cells_.n[0]; ++i) lattice_cell(i, j, k);
+}
+
+void check_dim(const BlockCells& cells, int dim, const std::string& what) {
+  if (engine::cell_info(cells.type).dim != dim)
+    throw DeckError("meshgen: " + what + ": " + std::string(engine::cell_info(cells.type).name) + " is not a " +
+                    std::to_string(dim) + "D cell type");
+}
+
+}  // namespace
+
+BlockCells parse_block_cells(const std::string& spec, int dim) {
+  const auto colon = spec.find(':');
+  if (colon == std::string::npos) throw DeckError("meshgen: expected TYPE:N or TYPE:NXxNY[xNZ], got '" + spec + "'");
+  std::string name = spec.substr(0, colon);
+  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char ch) { return std::toupper(ch); });
+  BlockCells cells;
+  if (!engine::cell_type_from_name(name, cells.type)) throw DeckError("meshgen: unknown cell type '" + name + "'");
+  std::vector<int> counts;
+  std::string rest = spec.substr(colon + 1);
+  size_t pos = 0;
+  while (pos <= rest.size()) {
+    const size_t x = rest.find('x', pos);
+    const std::string part = rest.substr(pos, x == std::string::npos ? std::string::npos : x - pos);
+    if (part.empty() || part.find_first_not_of("0123456789") != std::string::npos || part.size() > 6)
+      throw DeckError("meshgen: bad cell count in '" + spec + "'");
+    counts.push_back(std::stoi(part));
+    if (x == std::string::npos) break;
+    pos = x + 1;
+  }
+  if (counts.size() == 1) counts.assign(dim, counts[0]);
+  if (static_cast<int>(counts.size()) != dim) throw DeckError("meshgen: '" + spec + "' needs " + std::to_string(dim) + " counts");
+  for (int a = 0; a < dim; ++a) {
+    if (counts[a] < 1) throw DeckError("meshgen: cell counts must be >= 1 in '" + spec + "'");
+    cells.n[a] = counts[a];
+  }
+  check_dim(cells, dim, spec);
+  return cells;
+}
+
+Mesh make_ssnp121_2d(const Ssnp121Options2d& o) {
+  check_dim(o.upper, 2, "upper block");
+  check_dim(o.lower, 2, "lower block");
+  if (o.glued && (o.upper.type != o.lower.type || o.upper.n[0] != o.lower.n[0]))
+    throw DeckError("meshgen: --glued needs the same cell type and count in both blocks");
+  Builder b;
+  const int up = b.new_pool();
+  const int low = o.glued ? up : b.new_pool();
+  BlockGeom upper{{-1, 0, 0}, {1, 1, 0}, 2, 0.0, "PLAQUE1",
+                  {{"AB", 1, 0.0}, {"BC", 0, 1.0}, {"CD", 1, 1.0}, {"DA", 0, -1.0}}, up};
+  BlockGeom lower{{-1, -1, 0}, {1, 0, 0}, 2, 0.0, "PLAQUE2",
+                  {{"EF", 1, 0.0}, {"FG", 0, 1.0}, {"GH", 1, -1.0}, {"HE", 0, -1.0}}, low};
+  BlockMesher(b, o.upper, upper).run();
+  BlockMesher(b, o.lower, lower).run();
+  for (const auto& [name, x, y] : std::vector<std::tuple<std::string, double, double>>{
+           {"A", -1, 0}, {"B", 1, 0}, {"C", 1, 1}, {"D", -1, 1}, {"O", 0, 0}})
+    b.add_node_group(name, up, {x, y, 0});
+  for (const auto& [name, x, y] : std::vector<std::tuple<std::string, double, double>>{
+           {"E", -1, 0}, {"F", 1, 0}, {"G", 1, -1}, {"H", -1, -1}})
+    b.add_node_group(name, low, {x, y, 0});
+  return b.finish();
+}
+
+Mesh make_ssnp121_3d(const Ssnp121Options3d& o) {
+  check_dim(o.v1, 3, "V1");
+  check_dim(o.v2, 3, "V2");
+  if (o.glued && (o.v1.type != o.v2.type || o.v1.n[0] != o.v2.n[0] || o.v1.n[1] != o.v2.n[1]))
+    throw DeckError("meshgen: --glued needs the same cell type and x/y counts in V1 and V2");
+  Builder b;
+  const int p1 = b.new_pool();
+  const int p2 = o.glued ? p1 : b.new_pool();
+  BlockGeom v1{{0, 0, 0}, {1, 1, 1}, 3, 0.0, "V1", {{"ENCAST", 2, 0.0}, {"SURESC", 2, 1.0}}, p1};
+  BlockGeom v2{{0, 0, 1}, {1, 1, 2}, 3, 0.0, "V2", {{"SURMAI", 2, 1.0}, {"SURCHA", 2, 2.0}}, p2};
+  BlockMesher(b, o.v1, v1).run();
+  BlockMesher(b, o.v2, v2).run();
+  b.add_node_group("A21", p1, {0, 0, 1});
+  b.add_node_group("A22", p1, {1, 0, 1});
+  b.add_node_group("A23", p1, {1, 1, 1});
+  b.add_node_group("A24", p1, {0, 1, 1});
+  return b.finish();
+}
+
+Mesh make_block(const BlockOptions& o) {
+  const int dim = engine::cell_info(o.cells.type).dim;
+  if (dim < 2) throw DeckError("meshgen: a block needs a 2D or 3D cell type");
+  Builder b;
+  const int pool = b.new_pool();
+  BlockGeom g{{0, 0, 0}, {1, 1, dim == 3 ? 1.0 : 0.0}, dim, o.distort, "BLOCK", {}, pool};
+  g.faces = {{"LEFT", 0, 0.0}, {"RIGHT", 0, 1.0}};
+  if (dim == 2) {
+    g.faces.push_back({"BOTTOM", 1, 0.0});
+    g.faces.push_back({"TOP", 1, 1.0});
+  } else {
+    g.faces.push_back({"FRONT", 1, 0.0});
+    g.faces.push_back({"BACK", 1, 1.0});
+    g.faces.push_back({"BOTTOM", 2, 0.0});
+    g.faces.push_back({"TOP", 2, 1.0});
+  }
+  BlockMesher(b, o.cells, g).run();
+  const int n_corners = dim == 2 ? 4 : 8;
+  for (int c = 0; c < n_corners; ++c) {
+    const int x = c & 1, y = (c >> 1) & 1, z = (c >> 2) & 1;
+    std::string name = "C" + std::to_string(x) + std::to_string(y) + (dim == 3 ? std::to_string(z) : "");
+    b.add_node_group(name, pool, {double(x), double(y), double(z)});
+  }
+  return b.finish();
+}
+
+}  // namespace lunaster::tools

@@ -1,0 +1,56 @@
+#pragma once
+/// Structured mesh generation for the SSNP121 geometry and unit blocks used by
+/// patch tests. Engine-free of keywords: it only fills an engine::Mesh.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "engine/mesh/mesh.hpp"
+
+namespace lunaster::tools {
+
+/// Element type and cell counts of one structured block.
+struct BlockCells {
+  engine::CellType type = engine::CellType::Quad4;  ///< volume (2D: surface) cell type
+  std::array<int, 3> n{1, 1, 1};                    ///< cells along x, y, z (z unused in 2D)
+};
+
+/// Parses "quad8:11", "quad4:12x6", "hexa20:4x4x4" or "penta6:4" (n in every
+/// direction). Throws DeckError on a bad spec or an unsupported type.
+BlockCells parse_block_cells(const std::string& spec, int dim);
+
+/// SSNP121 2D: upper block PLAQUE1 = [-1,1]x[0,1], lower PLAQUE2 = [-1,1]x[-1,0].
+struct Ssnp121Options2d {
+  BlockCells upper{engine::CellType::Quad4, {12, 12, 1}};
+  BlockCells lower{engine::CellType::Quad4, {11, 11, 1}};
+  bool glued = false;  ///< share interface nodes (needs equal types and counts)
+};
+
+/// SSNP121 3D: V1 = [0,1]^3 (lower), V2 = [0,1]^2 x [1,2] (upper).
+struct Ssnp121Options3d {
+  BlockCells v1{engine::CellType::Hexa20, {4, 4, 4}};
+  BlockCells v2{engine::CellType::Hexa20, {4, 4, 4}};
+  bool glued = false;
+};
+
+/// Unit block [0,1]^d for patch tests.
+struct BlockOptions {
+  BlockCells cells{engine::CellType::Hexa8, {3, 3, 3}};
+  double distort = 0.0;  ///< interior vertices moved by up to distort * cell size per direction
+};
+
+/// Groups: cells PLAQUE1, PLAQUE2; boundary cells AB BC CD DA (upper) and EF FG
+/// GH HE (lower), oriented outward (counter-clockwise traversal of each
+/// block); node groups A B C D O (upper block) and E F G H (lower block).
+engine::Mesh make_ssnp121_2d(const Ssnp121Options2d& options);
+
+/// Groups: cells V1, V2; outward faces ENCAST (V1 z=0), SURESC (V1 z=1),
+/// SURMAI (V2 z=1), SURCHA (V2 z=2); node groups A21..A24 (corners of SURESC, V1 nodes).
+engine::Mesh make_ssnp121_3d(const Ssnp121Options3d& options);
+
+/// Groups: cells BLOCK; outward boundary cells LEFT (x=0), RIGHT (x=1),
+/// BOTTOM (2D: y=0; 3D: z=0), TOP (2D: y=1; 3D: z=1), FRONT (3D: y=0), BACK
+/// (3D: y=1); corner node groups C00.. (2D) / C000.. (3D), digits = coordinates.
+engine::Mesh make_block(const BlockOptions& options);
+
+}  // namespace lunaster::tools
