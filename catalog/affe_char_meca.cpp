@@ -1,0 +1,79 @@
+#include "catalog/common/keywords.hpp"
+#include "catalog/specs.hpp"
+
+namespace lunaster::catalog {
+
+namespace {
+
+Keyword ddl_impo() {
+  return factor("DDL_IMPO",
+                {common::tout("Impose on every node"), common::group_no("Node groups to constrain"),
+                 common::noeud("Nodes to constrain"), common::group_ma("Constrain the nodes of these cell groups"),
+                 real("DX", "Imposed displacement along x (m)"), real("DY", "Imposed displacement along y (m)"),
+                 real("DZ", "Imposed displacement along z (m)")},
+                "Imposed displacements (Dirichlet conditions)")
+      .occurs(0, -1)
+      .with_rules({exactly_one({"TOUT", "GROUP_NO", "NOEUD", "GROUP_MA"}), at_least_one({"DX", "DY", "DZ"})});
+}
+
+Keyword pres_rep() {
+  return factor("PRES_REP",
+                {common::group_ma("Boundary cell groups loaded"), common::maille("Boundary cells loaded"),
+                 common::tout("Load every boundary cell of the model"),
+                 real("PRES", "Pressure (Pa), positive when pushing against the outward normal").required()},
+                "Pressure on boundary cells")
+      .occurs(0, -1)
+      .with_rules({exactly_one({"GROUP_MA", "MAILLE", "TOUT"})});
+}
+
+Keyword force_nodale() {
+  return factor("FORCE_NODALE",
+                {common::group_no("Node groups loaded"), common::noeud("Nodes loaded"),
+                 real("FX", "Force along x on each node (N)"), real("FY", "Force along y on each node (N)"),
+                 real("FZ", "Force along z on each node (N)")},
+                "Point forces on nodes")
+      .occurs(0, -1)
+      .with_rules({exactly_one({"GROUP_NO", "NOEUD"}), at_least_one({"FX", "FY", "FZ"})});
+}
+
+/// The seed's contact syntax (code_aster 8): one zone with the method inside.
+Keyword contact() {
+  std::vector<Keyword> children = {
+      text("METHODE", "Contact method: continuous (augmented Lagrangian), active set (Lagrange) or penalty")
+          .into_values({"CONTINUE", "CONTRAINTE", "PENALISATION"})
+          .def("CONTINUE"),
+      text("GROUP_MA_ESCL", "Slave boundary cell group").required(),
+      text("GROUP_MA_MAIT", "Master boundary cell group").required(),
+      text("CONTACT_INIT", "Initial contact status: all active, none, or where already interpenetrating")
+          .into_values({"OUI", "NON", "INTERPENETRE"}),
+      text("MODL_AXIS", "Axisymmetric model (only 'NON' supported)").into_values({"OUI", "NON"}).def("NON"),
+  };
+  for (auto& kw : common::contact_loop_keywords()) children.push_back(kw);
+  std::vector<Block> blocks = {
+      Block{"METHODE",
+            {"CONTINUE"},
+            {common::contact_integration(
+                 {"AUTO", "GAUSS", "SIMPSON", "SIMPSON1", "SIMPSON2", "NCOTES", "NCOTES1", "NCOTES2", "NOEUD"}),
+             real("COEF_REGU_CONT", "Augmentation coefficient of the contact Lagrangian (seed name of COEF_CONT)")
+                 .range(0.0, std::nullopt),
+             real("COEF_CONT", "Augmentation coefficient of the contact Lagrangian").range(0.0, std::nullopt)},
+            {at_most_one({"COEF_REGU_CONT", "COEF_CONT"})}},
+      Block{"METHODE", {"PENALISATION"}, {real("E_N", "Normal penalty stiffness (Pa/m)").required().range(0.0, std::nullopt)}, {}},
+  };
+  for (auto& block : common::ordre_int_blocks()) blocks.push_back(block);
+  return factor("CONTACT", children, "Frictionless contact zone (seed syntax; pass the load in STAT_NON_LINE EXCIT)")
+      .with_blocks(blocks);
+}
+
+}  // namespace
+
+const CommandSpec& affe_char_meca_spec() {
+  static const CommandSpec spec = make_command(
+      "AFFE_CHAR_MECA", "char_meca", "Define mechanical loads: imposed displacements, pressures, forces, contact",
+      {concept_kw("MODELE", {"modele"}, "Model the loads apply to").required(), ddl_impo(), pres_rep(),
+       force_nodale(), contact(), common::info()},
+      {at_least_one({"DDL_IMPO", "PRES_REP", "FORCE_NODALE", "CONTACT"})});
+  return spec;
+}
+
+}  // namespace lunaster::catalog

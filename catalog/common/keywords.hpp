@@ -1,0 +1,35 @@
+#pragma once
+/// Keywords shared by several commands: entity selections (TOUT, GROUP_MA,
+/// GROUP_NO, MAILLE, NOEUD), contact integration schemes and the TEST_RESU
+/// reference block.
+#include "catalog/spec.hpp"
+
+namespace lunaster::catalog::common {
+
+/// TOUT = 'OUI': the whole mesh.
+Keyword tout(std::string doc = "Apply to the whole mesh");
+/// GROUP_MA: one or several cell groups.
+Keyword group_ma(std::string doc = "Cell groups of the mesh");
+/// GROUP_NO: one or several node groups.
+Keyword group_no(std::string doc = "Node groups of the mesh");
+/// MAILLE: one or several cell names.
+Keyword maille(std::string doc = "Cell names of the mesh");
+/// NOEUD: one or several node names.
+Keyword noeud(std::string doc = "Node names of the mesh");
+/// INFO = 1|2: amount of printed information.
+Keyword info();
+
+/// INTEGRATION keyword of a contact zone with the given allowed schemes (default 'AUTO').
+Keyword contact_integration(std::vector<Scalar> schemes);
+/// Blocks declaring ORDRE_INT for INTEGRATION = GAUSS (1..6, default 3),
+/// SIMPSON (1..4, default 1) and NCOTES (3..8, default 3).
+std::vector<Block> ordre_int_blocks();
+/// Shared seed/current contact algorithm keywords (REAC_GEOM, ITER_GEOM_MAXI, ...).
+std::vector<Keyword> contact_loop_keywords();
+
+/// The two-tier check keywords of TEST_RESU (VALE_CALC, REFERENCE, VALE_REFE, ...).
+std::vector<Keyword> test_reference_keywords();
+/// Rules tying the reference keywords together.
+std::vector<Rule> test_reference_rules();
+
+}  // namespace lunaster::catalog::common

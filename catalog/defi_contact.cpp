@@ -1,0 +1,60 @@
+#include "catalog/common/keywords.hpp"
+#include "catalog/specs.hpp"
+
+namespace lunaster::catalog {
+
+namespace {
+
+std::vector<Keyword> zone_surfaces() {
+  return {text("GROUP_MA_ESCL", "Slave boundary cell group").required(),
+          text("GROUP_MA_MAIT", "Master boundary cell group").required()};
+}
+
+Keyword continuous_zone() {
+  std::vector<Keyword> children = zone_surfaces();
+  children.push_back(text("ALGO_CONT", "Contact algorithm: augmented Lagrangian or penalty")
+                         .into_values({"STANDARD", "PENALISATION"})
+                         .def("STANDARD"));
+  children.push_back(common::contact_integration({"AUTO", "GAUSS", "SIMPSON", "NCOTES"}));
+  children.push_back(text("CONTACT_INIT", "Initial contact status: all active, none, or where already interpenetrating")
+                         .into_values({"OUI", "NON", "INTERPENETRE"})
+                         .def("INTERPENETRE"));
+  std::vector<Block> blocks = {
+      Block{"ALGO_CONT", {"STANDARD"}, {real("COEF_CONT", "Augmentation coefficient rho of the contact Lagrangian").def(100.0).range(0.0, std::nullopt)}, {}},
+      Block{"ALGO_CONT", {"PENALISATION"}, {real("COEF_PENA_CONT", "Normal penalty coefficient").required().range(0.0, std::nullopt)}, {}},
+  };
+  for (auto& block : common::ordre_int_blocks()) blocks.push_back(block);
+  return factor("ZONE", children, "One contact zone (slave/master pair)").required().occurs(1, -1).with_blocks(blocks);
+}
+
+Keyword discrete_zone() {
+  std::vector<Keyword> children = zone_surfaces();
+  children.push_back(text("ALGO_CONT", "Contact algorithm: active set with Lagrange multipliers or penalty")
+                         .into_values({"CONTRAINTE", "PENALISATION"})
+                         .def("CONTRAINTE"));
+  std::vector<Block> blocks = {
+      Block{"ALGO_CONT", {"PENALISATION"}, {real("E_N", "Normal penalty stiffness (Pa/m)").required().range(0.0, std::nullopt)}, {}},
+  };
+  return factor("ZONE", children, "One contact zone (slave/master pair)").required().occurs(1, -1).with_blocks(blocks);
+}
+
+}  // namespace
+
+const CommandSpec& defi_contact_spec() {
+  std::vector<Keyword> keywords = {
+      concept_kw("MODELE", {"modele"}, "Model carrying the contact surfaces").required(),
+      text("FORMULATION", "Discrete (node-to-segment) or continuous (augmented Lagrangian) formulation")
+          .into_values({"DISCRETE", "CONTINUE"})
+          .def("DISCRETE"),
+      text("FROTTEMENT", "Friction (only frictionless contact is supported)").into_values({"SANS"}).def("SANS"),
+  };
+  for (auto& kw : common::contact_loop_keywords()) keywords.push_back(kw);
+  keywords.push_back(common::info());
+  static const CommandSpec spec = make_command(
+      "DEFI_CONTACT", "char_contact", "Define frictionless contact zones (pass to STAT_NON_LINE CONTACT)", keywords, {},
+      {Block{"FORMULATION", {"CONTINUE"}, {continuous_zone()}, {}},
+       Block{"FORMULATION", {"DISCRETE"}, {discrete_zone()}, {}}});
+  return spec;
+}
+
+}  // namespace lunaster::catalog

@@ -1,0 +1,25 @@
+#include "catalog/specs.hpp"
+
+namespace lunaster::catalog {
+
+const CommandSpec& impr_resu_spec() {
+  static const CommandSpec spec = make_command(
+      "IMPR_RESU", "", "Write results to a file in the output folder (MED, or text)",
+      {text("FORMAT", "File format").into_values({"MED", "RESULTAT"}).def("MED"),
+       integer("UNITE", "Logical unit: 80 writes <deck name>.rmed (MED) or .resu (RESULTAT)").def(80LL).range(1, 99),
+       text("FICHIER", "Output file name inside the output folder (overrides UNITE)"),
+       factor("RESU",
+              {concept_kw("RESULTAT", {"evol_noli"}, "Result to write"),
+               concept_kw("MAILLAGE", {"maillage"}, "Mesh to write"),
+               text("NOM_CHAM", "Fields to write (default: all)").many(),
+               integer("NUME_ORDRE", "Time steps to write (default: all)").many(),
+               text("GROUP_NO", "Restrict to these node groups").many(),
+               text("GROUP_MA", "Restrict to these cell groups").many()},
+              "What to write")
+           .required()
+           .occurs(1, -1)
+           .with_rules({at_least_one({"RESULTAT", "MAILLAGE"})})});
+  return spec;
+}
+
+}  // namespace lunaster::catalog

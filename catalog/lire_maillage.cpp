@@ -1,0 +1,17 @@
+#include "catalog/common/keywords.hpp"
+#include "catalog/specs.hpp"
+
+namespace lunaster::catalog {
+
+const CommandSpec& lire_maillage_spec() {
+  static const CommandSpec spec = make_command(
+      "LIRE_MAILLAGE", "maillage", "Read a mesh from a MED or Gmsh file",
+      {integer("UNITE", "Logical unit: 20 reads <deck name>.med beside the deck").def(20LL).range(1, 99),
+       text("FORMAT", "File format").into_values({"MED", "GMSH"}).def("MED"),
+       text("FICHIER", "Mesh file path, relative to the deck (overrides UNITE)"),
+       text("NOM_MED", "Name of the mesh inside the MED file (default: the first one)"),
+       common::info()});
+  return spec;
+}
+
+}  // namespace lunaster::catalog

@@ -1,0 +1,30 @@
+#pragma once
+/// One function per command, each defined in catalog/<command>.cpp and listed
+/// by all_commands() in catalog/catalog.cpp.
+#include "catalog/spec.hpp"
+
+namespace lunaster::catalog {
+
+const CommandSpec& debut_spec();
+const CommandSpec& fin_spec();
+const CommandSpec& lire_maillage_spec();
+const CommandSpec& defi_group_spec();
+const CommandSpec& modi_maillage_spec();
+const CommandSpec& affe_modele_spec();
+const CommandSpec& defi_materiau_spec();
+const CommandSpec& affe_materiau_spec();
+const CommandSpec& affe_char_meca_spec();
+const CommandSpec& defi_contact_spec();
+const CommandSpec& defi_list_reel_spec();
+const CommandSpec& defi_list_inst_spec();
+const CommandSpec& defi_fonction_spec();
+const CommandSpec& stat_non_line_spec();
+const CommandSpec& calc_champ_spec();
+const CommandSpec& test_resu_spec();
+const CommandSpec& impr_resu_spec();
+
+/// Builds a CommandSpec from its parts (the body is a root factor keyword).
+CommandSpec make_command(std::string name, std::string result_type, std::string doc, std::vector<Keyword> keywords,
+                         std::vector<Rule> rules = {}, std::vector<Block> blocks = {}, bool reuse_allowed = false);
+
+}  // namespace lunaster::catalog

@@ -1,0 +1,66 @@
+#include "catalog/common/keywords.hpp"
+#include "catalog/specs.hpp"
+
+namespace lunaster::catalog {
+
+namespace {
+
+Keyword behaviour(const std::string& name, const std::string& doc) {
+  return factor(name,
+                {text("RELATION", "Constitutive law (only linear elasticity)").into_values({"ELAS"}).def("ELAS"),
+                 text("DEFORMATION", "Strain measure (only small strains)").into_values({"PETIT"}).def("PETIT"),
+                 common::tout("Apply to every cell"), common::group_ma("Cell groups with this behaviour")},
+                doc)
+      .occurs(0, -1)
+      .with_rules({at_most_one({"TOUT", "GROUP_MA"})});
+}
+
+std::vector<Keyword> keywords() {
+  return {
+      concept_kw("MODELE", {"modele"}, "Model").required(),
+      concept_kw("CHAM_MATER", {"cham_mater"}, "Material field").required(),
+      factor("EXCIT",
+             {concept_kw("CHARGE", {"char_meca"}, "Load").required(),
+              concept_kw("FONC_MULT", {"fonction"}, "Time multiplier of the load (default: 1 at every time)")},
+             "Loads applied")
+          .occurs(0, -1),
+      concept_kw("CONTACT", {"char_contact"}, "Contact definition from DEFI_CONTACT"),
+      behaviour("COMP_ELAS", "Behaviour (seed syntax; same as COMPORTEMENT)").legacy(),
+      behaviour("COMPORTEMENT", "Behaviour (default: linear elasticity everywhere)"),
+      factor("INCREMENT",
+             {concept_kw("LIST_INST", {"listr8", "list_inst"}, "Time steps").required(),
+              real("INST_INIT", "First time computed (default: first of the list)"),
+              real("INST_FIN", "Last time computed (default: last of the list)")},
+             "Time stepping")
+          .required(),
+      factor("NEWTON",
+             {text("MATRICE", "Matrix used by Newton").into_values({"TANGENTE", "ELASTIQUE"}).def("TANGENTE"),
+              integer("REAC_ITER", "Rebuild the matrix every N iterations (0: never)").def(1LL).range(0, std::nullopt)},
+             "Newton's method")
+          .by_default(),
+      factor("CONVERGENCE",
+             {real("RESI_GLOB_RELA", "Largest free residual over the largest load or reaction; 1e-6 unless only RESI_GLOB_MAXI is given").range(0.0, std::nullopt),
+              real("RESI_GLOB_MAXI", "Largest residual component (N)").range(0.0, std::nullopt),
+              integer("ITER_GLOB_MAXI", "Maximum Newton iterations per step").def(10LL).range(1, std::nullopt)},
+             "Convergence criteria (both residual criteria must hold when both are given)")
+          .by_default(),
+      factor("SOLVEUR",
+             {text("METHODE", "Linear solver; AUTO = CHOLMOD for SPD matrices, else UMFPACK")
+                  .into_values({"AUTO", "MUMPS", "LDLT", "MULT_FRONT", "CHOLMOD", "UMFPACK"})
+                  .def("AUTO")},
+             "Linear solver")
+          .by_default(),
+      common::info(),
+  };
+}
+
+}  // namespace
+
+const CommandSpec& stat_non_line_spec() {
+  static const CommandSpec spec = make_command(
+      "STAT_NON_LINE", "evol_noli", "Quasi-static nonlinear analysis (Newton, contact)", keywords(),
+      {at_most_one({"COMP_ELAS", "COMPORTEMENT"})});
+  return spec;
+}
+
+}  // namespace lunaster::catalog

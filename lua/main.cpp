@@ -1,0 +1,135 @@
+/// The lunaster command line: run a deck, verify a suite, show help, dump the catalogue.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "catalog/args.hpp"
+#include "catalog/doc.hpp"
+#include "commands/registry.hpp"
+#include "lua/runner.hpp"
+#include "lua/verify.hpp"
+
+namespace fs = std::filesystem;
+using namespace lunaster;
+
+namespace {
+
+constexpr const char* kUsage = R"(usage:
+  lunaster run DECK.lua [--out DIR] [-v|-q]   run a deck (output folder default: ./out/<deck name>)
+  lunaster verify [PATHS...] [-j N] [--out DIR] [--junit FILE] [--json FILE]
+                                              run decks (default: testcases/) and summarise TEST_RESU
+  lunaster help [COMMAND]                     list commands, or the keywords of one command
+  lunaster --dump-catalog md [FILE]           the catalogue as Markdown (docs/commands.md)
+  lunaster --help                             this text
+exit status: 0 OK, 1 some TEST_RESU NOOK, 2 deck error, 3 solve error, 4 internal error
+)";
+
+int usage_error(const std::string& message) {
+  std::cerr << "lunaster: " << message << "\n" << kUsage;
+  return static_cast<int>(ErrorKind::Deck);
+}
+
+int run_command(const std::vector<std::string>& args) {
+  std::string deck;
+  fs::path out;
+  int verbosity = 1;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--out" && i + 1 < args.size()) out = args[++i];
+    else if (args[i] == "-v") verbosity = 2;
+    else if (args[i] == "-q") verbosity = 0;
+    else if (deck.empty() && args[i][0] != '-') deck = args[i];
+    else return usage_error("unexpected argument '" + args[i] + "'");
+  }
+  if (deck.empty()) return usage_error("run: no deck given");
+  if (out.empty()) out = fs::path("out") / fs::path(deck).stem();
+  Log log(std::cout, verbosity);
+  cmd::Session session(log);
+  session.deck_path = deck;
+  session.output_dir = out;
+  int code = lua::run_deck(deck, session, cmd::find_handler, std::cerr);
+  if (code <= 1) {
+    int n_ok = 0;
+    for (const auto& t : session.tests) n_ok += t.ok;
+    log.info("lunaster: " + std::to_string(n_ok) + " check(s) OK, " + std::to_string(session.tests.size() - n_ok) +
+             " NOOK");
+  }
+  return code;
+}
+
+int verify_command(const std::vector<std::string>& args) {
+  lua::VerifyOptions options;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const bool has_value = i + 1 < args.size();
+    if (args[i] == "-j" && has_value) {
+      try {
+        options.jobs = std::stoi(args[++i]);
+      } catch (const std::exception&) {
+        return usage_error("verify: -j expects a number, got '" + args[i] + "'");
+      }
+    } else if (args[i] == "--junit" && has_value) options.junit_file = args[++i];
+    else if (args[i] == "--json" && has_value) options.json_file = args[++i];
+    else if (args[i] == "--out" && has_value) options.out_dir = args[++i];
+    else if (args[i][0] == '-') return usage_error("verify: unexpected option '" + args[i] + "'");
+    else options.paths.emplace_back(args[i]);
+  }
+  options.executable = fs::read_symlink("/proc/self/exe");
+  return lua::verify(options, std::cout);
+}
+
+int help_command(const std::vector<std::string>& args) {
+  if (args.empty()) {
+    std::cout << "commands (name, result, description); `lunaster help COMMAND` for keywords:\n"
+              << catalog::command_list();
+    return 0;
+  }
+  if (const auto* spec = catalog::find_command(args[0])) {
+    std::cout << catalog::command_help(*spec);
+    return 0;
+  }
+  std::vector<std::string> names;
+  for (const auto& spec : catalog::all_commands()) names.push_back(spec.name);
+  std::string suggestion = catalog::closest_name(args[0], names);
+  std::cerr << "lunaster: unknown command '" << args[0] << "'"
+            << (suggestion.empty() ? "" : " (did you mean " + suggestion + "?)") << "\n";
+  return static_cast<int>(ErrorKind::Deck);
+}
+
+int dump_command(const std::vector<std::string>& args) {
+  if (args.empty() || args[0] != "md") return usage_error("--dump-catalog: only 'md' is supported");
+  const std::string text = catalog::catalog_markdown();
+  if (args.size() < 2) {
+    std::cout << text;
+    return 0;
+  }
+  std::ofstream file(args[1]);
+  file << text;
+  if (!file) {
+    std::cerr << "lunaster: cannot write " << args[1] << "\n";
+    return static_cast<int>(ErrorKind::Deck);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h") {
+    std::cout << kUsage;
+    return args.empty() ? static_cast<int>(ErrorKind::Deck) : 0;
+  }
+  const std::string verb = args[0];
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  try {
+    if (verb == "run") return run_command(rest);
+    if (verb == "verify") return verify_command(rest);
+    if (verb == "help") return help_command(rest);
+    if (verb == "--dump-catalog") return dump_command(rest);
+  } catch (const std::exception& e) {
+    std::cerr << "lunaster: internal error: " << e.what() << "\n";
+    return static_cast<int>(ErrorKind::Internal);
+  }
+  return usage_error("unknown verb '" + verb + "'");
+}

@@ -1,0 +1,71 @@
+#pragma once
+/// The deck runner: a sandboxed Lua state in which every catalogue command is a
+/// global function (one generic trampoline), `_F` is the identity, globals are
+/// strict, and concepts are typed userdata. Lua headers stay inside lua/*.cpp.
+#include <exception>
+#include <filesystem>
+#include <functional>
+#include <iosfwd>
+#include <string>
+
+#include "catalog/spec.hpp"
+#include "commands/registry.hpp"
+#include "commands/session.hpp"
+
+struct lua_State;
+
+namespace lunaster::lua {
+
+/// Finds the handler of a command (nullptr if it has none). main() passes
+/// cmd::find_handler; tests inject fakes.
+using HandlerLookup = std::function<cmd::Handler(const std::string&)>;
+
+/// Owns one lua_State for one run. Not copyable.
+class Runner {
+ public:
+  /// `session` must outlive the runner; `lookup` resolves command handlers.
+  Runner(cmd::Session& session, HandlerLookup lookup);
+  ~Runner();
+  Runner(const Runner&) = delete;
+  Runner& operator=(const Runner&) = delete;
+
+  /// Runs a deck file (text only). Rethrows the typed lunaster::Error a command
+  /// raised (with deck file:line and command filled in); Lua syntax and runtime
+  /// errors become DeckError with the location Lua reports.
+  void run_file(const std::filesystem::path& deck);
+  /// Runs deck text; `chunk_name` is the file name used in messages.
+  void run_string(const std::string& code, const std::string& chunk_name);
+  /// Lua traceback of the last failed run (shown for InternalError only).
+  const std::string& last_traceback() const { return traceback_; }
+
+  cmd::Session& session() { return session_; }
+  /// The Lua state (for tests and the bridge code in lua/).
+  lua_State* state() { return state_; }
+
+  // ---- used by the C callbacks in lua/*.cpp ----
+  /// Body of the generic trampoline: convert, validate, echo, run the handler, push the result.
+  int call_command(lua_State* L, const catalog::CommandSpec& spec);
+  /// Stores the traceback of the error being raised (message handler of the protected call).
+  void set_traceback(std::string traceback) { traceback_ = std::move(traceback); }
+  /// Folder of the deck being run (for `require`).
+  const std::filesystem::path& deck_dir() const { return deck_dir_; }
+
+ private:
+  void run_loaded(int load_status);
+  catalog::ConceptPtr execute(lua_State* L, const catalog::CommandSpec& spec, const ErrorContext& where);
+
+  cmd::Session& session_;
+  HandlerLookup lookup_;
+  lua_State* state_ = nullptr;
+  std::exception_ptr pending_;    ///< typed error raised by the last failing command
+  std::string pending_message_;   ///< its Lua error message, to recognise it at the top
+  std::string traceback_;
+  std::filesystem::path deck_dir_;
+};
+
+/// Runs one deck and maps the outcome to the exit code of STYLE.md §3
+/// (0 OK, 1 some TEST_RESU NOOK, 2 DeckError, 3 SolveError, 4 InternalError),
+/// printing any error to `err` (with a traceback for InternalError only).
+int run_deck(const std::filesystem::path& deck, cmd::Session& session, HandlerLookup lookup, std::ostream& err);
+
+}  // namespace lunaster::lua

@@ -1,0 +1,238 @@
+#include "lua/verify.hpp"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+extern char** environ;
+
+namespace lunaster::lua {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> collect_decks(const std::vector<fs::path>& paths) {
+  std::vector<fs::path> decks;
+  for (const auto& path : paths) {
+    if (!fs::is_directory(path)) {
+      decks.push_back(path);
+      continue;
+    }
+    for (auto it = fs::recursive_directory_iterator(path); it != fs::recursive_directory_iterator(); ++it) {
+      if (it->is_directory() && it->path().filename() == "errors") {
+        it.disable_recursion_pending();
+        continue;
+      }
+      if (it->is_regular_file() && it->path().extension() == ".lua") decks.push_back(it->path());
+    }
+  }
+  std::sort(decks.begin(), decks.end());
+  decks.erase(std::unique(decks.begin(), decks.end()), decks.end());
+  return decks;
+}
+
+void count_checks(const std::string& output, int& n_ok, int& n_nook) {
+  n_ok = n_nook = 0;
+  std::istringstream in(output);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind(" OK ", 0) == 0 || line.rfind("OK ", 0) == 0) ++n_ok;
+    else if (line.rfind("NOOK ", 0) == 0 || line.rfind(" NOOK ", 0) == 0) ++n_nook;
+  }
+}
+
+std::string deck_status(int exit_code, int n_nook) {
+  if (exit_code == 0) return n_nook ? "NOOK" : "OK";
+  if (exit_code == 1) return "NOOK";
+  return "ERROR";
+}
+
+DeckOutcome run_child(const fs::path& executable, const fs::path& deck, const fs::path& out_dir) {
+  DeckOutcome outcome;
+  outcome.deck = deck;
+  const auto start = std::chrono::steady_clock::now();
+  int fds[2];
+  if (pipe2(fds, O_CLOEXEC) != 0) {
+    outcome.status = "ERROR";
+    outcome.output = "cannot create a pipe";
+    return outcome;
+  }
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], 1);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], 2);
+  std::vector<std::string> words = {executable.string(), "run", deck.string(), "--out", out_dir.string()};
+  std::vector<char*> argv;
+  for (auto& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  int rc = posix_spawn(&pid, executable.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  close(fds[1]);
+  if (rc == 0) {
+    char buffer[4096];
+    ssize_t n;
+    while ((n = read(fds[0], buffer, sizeof buffer)) > 0) outcome.output.append(buffer, static_cast<std::size_t>(n));
+    int wstatus = 0;
+    waitpid(pid, &wstatus, 0);
+    outcome.exit_code = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : -1;
+    if (WIFSIGNALED(wstatus)) outcome.output += "\nkilled by signal " + std::to_string(WTERMSIG(wstatus)) + "\n";
+  } else {
+    outcome.output = "cannot start " + executable.string();
+  }
+  close(fds[0]);
+  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  count_checks(outcome.output, outcome.n_ok, outcome.n_nook);
+  outcome.status = deck_status(outcome.exit_code, outcome.n_nook);
+  return outcome;
+}
+
+namespace {
+
+std::string xml_escape(const std::string& s) {
+  std::string out;
+  for (char ch : s) {
+    switch (ch) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default:
+        if (static_cast<unsigned char>(ch) < 0x20 && ch != '\n' && ch != '\t') out += ' ';
+        else out += ch;
+    }
+  }
+  return out;
+}
+
+std::string json_escape(const std::string& s) {
+  std::string out = "\"";
+  for (char ch : s) {
+    switch (ch) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      default:
+        if (static_cast<unsigned char>(ch) < 0x20) {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\u%04x", ch);
+          out += buf;
+        } else {
+          out += ch;
+        }
+    }
+  }
+  return out + "\"";
+}
+
+/// The last `n_lines` lines of `text` (the end of a failed deck's output says why).
+std::string tail(const std::string& text, int n_lines) {
+  std::size_t pos = text.size();
+  if (pos > 0 && text[pos - 1] == '\n') --pos;
+  for (int i = 0; i < n_lines && pos != std::string::npos && pos > 0; ++i) pos = text.rfind('\n', pos - 1);
+  std::string out = (pos == std::string::npos || pos == 0) ? text : "[...]" + text.substr(pos);
+  if (!out.empty() && out.back() != '\n') out += '\n';
+  return out;
+}
+
+std::string seconds_text(double s) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(3) << s;
+  return out.str();
+}
+
+}  // namespace
+
+std::string junit_xml(const std::vector<DeckOutcome>& outcomes) {
+  int failures = 0, errors = 0;
+  double total = 0.0;
+  for (const auto& o : outcomes) {
+    failures += o.status == "NOOK";
+    errors += o.status == "ERROR";
+    total += o.seconds;
+  }
+  std::ostringstream out;
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites>\n"
+      << "  <testsuite name=\"lunaster.verify\" tests=\"" << outcomes.size() << "\" failures=\"" << failures
+      << "\" errors=\"" << errors << "\" time=\"" << seconds_text(total) << "\">\n";
+  for (const auto& o : outcomes) {
+    out << "    <testcase classname=\"decks\" name=\"" << xml_escape(o.deck.stem().string()) << "\" file=\""
+        << xml_escape(o.deck.string()) << "\" time=\"" << seconds_text(o.seconds) << "\">";
+    if (o.status == "NOOK")
+      out << "\n      <failure message=\"" << o.n_nook << " NOOK check(s)\">" << xml_escape(o.output) << "</failure>\n    ";
+    else if (o.status == "ERROR")
+      out << "\n      <error message=\"exit status " << o.exit_code << "\">" << xml_escape(o.output) << "</error>\n    ";
+    out << "</testcase>\n";
+  }
+  out << "  </testsuite>\n</testsuites>\n";
+  return out.str();
+}
+
+std::string json_report(const std::vector<DeckOutcome>& outcomes) {
+  int passed = 0;
+  std::ostringstream out;
+  out << "{\n  \"decks\": [";
+  for (std::size_t i = 0; i < outcomes.size(); ++i) {
+    const auto& o = outcomes[i];
+    passed += o.status == "OK";
+    out << (i ? "," : "") << "\n    {\"deck\": " << json_escape(o.deck.string()) << ", \"status\": \"" << o.status
+        << "\", \"exit_code\": " << o.exit_code << ", \"checks_ok\": " << o.n_ok << ", \"checks_nook\": " << o.n_nook
+        << ", \"seconds\": " << seconds_text(o.seconds) << ", \"output\": " << json_escape(o.output) << "}";
+  }
+  out << "\n  ],\n  \"passed\": " << passed << ",\n  \"failed\": " << outcomes.size() - passed << "\n}\n";
+  return out.str();
+}
+
+int verify(const VerifyOptions& options, std::ostream& out) {
+  std::vector<fs::path> paths = options.paths;
+  if (paths.empty()) paths.push_back("testcases");
+  for (const auto& p : paths)
+    if (!fs::exists(p)) {
+      out << "verify: no such deck or folder: " << p.string() << "\n";
+      return 2;
+    }
+  const auto decks = collect_decks(paths);
+  std::vector<DeckOutcome> outcomes(decks.size());
+  int jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  jobs = std::min<int>(jobs, std::max<std::size_t>(decks.size(), 1));
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i = next++; i < decks.size(); i = next++)
+      outcomes[i] = run_child(options.executable, decks[i], options.out_dir / decks[i].stem());
+  };
+  std::vector<std::thread> threads;
+  for (int j = 0; j < jobs; ++j) threads.emplace_back(worker);
+  for (auto& t : threads) t.join();
+
+  std::size_t width = 4;
+  for (const auto& d : decks) width = std::max(width, d.string().size());
+  int passed = 0;
+  out << std::left << std::setw(static_cast<int>(width)) << "deck" << "  status  checks OK/NOOK   time (s)\n";
+  for (const auto& o : outcomes) {
+    passed += o.status == "OK";
+    std::string checks = std::to_string(o.n_ok) + "/" + std::to_string(o.n_nook);
+    out << std::left << std::setw(static_cast<int>(width)) << o.deck.string() << "  " << std::setw(6) << o.status << "  "
+        << std::setw(15) << checks << "  " << std::right << std::setw(8) << seconds_text(o.seconds) << "\n";
+  }
+  for (const auto& o : outcomes)
+    if (o.status != "OK")
+      out << "\n---- " << o.deck.string() << " (" << o.status << ", exit " << o.exit_code << ")\n" << tail(o.output, 40);
+  if (!options.junit_file.empty()) std::ofstream(options.junit_file) << junit_xml(outcomes);
+  if (!options.json_file.empty()) std::ofstream(options.json_file) << json_report(outcomes);
+  const int failed = static_cast<int>(outcomes.size()) - passed;
+  out << passed << " passed, " << failed << " failed\n";
+  return failed == 0 ? 0 : 1;
+}
+
+}  // namespace lunaster::lua

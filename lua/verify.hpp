@@ -1,0 +1,48 @@
+#pragma once
+/// `lunaster verify`: runs decks as child processes in parallel, collects their
+/// TEST_RESU lines and exit codes, prints a summary and writes JUnit/JSON reports.
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace lunaster::lua {
+
+/// What `lunaster verify` was asked to do.
+struct VerifyOptions {
+  std::vector<std::filesystem::path> paths;  ///< decks or folders (default: testcases/)
+  int jobs = 0;                              ///< parallel children; 0 = number of cores
+  std::string junit_file;                    ///< JUnit XML report, if not empty
+  std::string json_file;                     ///< JSON report, if not empty
+  std::filesystem::path out_dir = "out/verify";  ///< each deck writes to out_dir/<deck name>
+  std::filesystem::path executable;          ///< the lunaster binary run as `exe run DECK --out DIR`
+};
+
+/// Result of one deck.
+struct DeckOutcome {
+  std::filesystem::path deck;
+  int exit_code = -1;    ///< child's exit status (-1 if killed by a signal or not started)
+  std::string status;    ///< "OK", "NOOK" or "ERROR"
+  int n_ok = 0, n_nook = 0;
+  double seconds = 0.0;  ///< wall time
+  std::string output;    ///< captured stdout + stderr
+};
+
+/// Decks named by `paths`: files as given; folders searched recursively for
+/// *.lua, skipping folders named `errors` (must-fail decks). Sorted, unique.
+std::vector<std::filesystem::path> collect_decks(const std::vector<std::filesystem::path>& paths);
+/// Counts TEST_RESU lines (" OK ..." and "NOOK ...") in a deck's output.
+void count_checks(const std::string& output, int& n_ok, int& n_nook);
+/// "OK" (exit 0, no NOOK), "NOOK" (exit 1, or NOOK lines) or "ERROR".
+std::string deck_status(int exit_code, int n_nook);
+/// Runs one deck as a child process and captures its output.
+DeckOutcome run_child(const std::filesystem::path& executable, const std::filesystem::path& deck,
+                      const std::filesystem::path& out_dir);
+/// JUnit XML for the outcomes (one testcase per deck).
+std::string junit_xml(const std::vector<DeckOutcome>& outcomes);
+/// JSON report for the outcomes.
+std::string json_report(const std::vector<DeckOutcome>& outcomes);
+/// Runs everything, prints the table and "N passed, M failed"; returns 0 if every deck is OK.
+int verify(const VerifyOptions& options, std::ostream& out);
+
+}  // namespace lunaster::lua
