@@ -1,0 +1,125 @@
+#pragma once
+/// Fixed-size element kernels shared by assembly and post-processing
+/// (internal to lunaster_fe). Templates run over the closed set of volume cell
+/// types through `dispatch_volume`, so each instantiation lives in the .cpp
+/// that calls it.
+#include <string>
+#include <type_traits>
+
+#include <Eigen/Dense>
+
+#include "engine/core/error.hpp"
+#include "engine/fe/fe_model.hpp"
+#include "engine/fe/reference_element.hpp"
+#include "engine/material/elasticity.hpp"
+
+namespace lunaster::engine::kernels {
+
+template <int N>
+using Int = std::integral_constant<int, N>;
+
+/// Calls f(Int<n_nodes>, Int<dim>) for a 2D/3D volume cell type.
+template <class F>
+decltype(auto) dispatch_volume(CellType type, F&& f) {
+  switch (type) {
+    case CellType::Tria3: return f(Int<3>{}, Int<2>{});
+    case CellType::Tria6: return f(Int<6>{}, Int<2>{});
+    case CellType::Quad4: return f(Int<4>{}, Int<2>{});
+    case CellType::Quad8: return f(Int<8>{}, Int<2>{});
+    case CellType::Tetra4: return f(Int<4>{}, Int<3>{});
+    case CellType::Tetra10: return f(Int<10>{}, Int<3>{});
+    case CellType::Penta6: return f(Int<6>{}, Int<3>{});
+    case CellType::Penta15: return f(Int<15>{}, Int<3>{});
+    case CellType::Hexa8: return f(Int<8>{}, Int<3>{});
+    case CellType::Hexa20: return f(Int<20>{}, Int<3>{});
+    default: break;
+  }
+  throw InternalError("element kernel: cell type is not a 2D/3D volume cell");
+}
+
+/// Number of Voigt stress components used by the kernels: 3 in 2D (xx, yy, xy), 6 in 3D.
+template <int DIM>
+constexpr int kVoigt = DIM == 2 ? 3 : 6;
+
+/// Node coordinates of a cell as an NN x DIM matrix.
+template <int NN, int DIM>
+Eigen::Matrix<double, NN, DIM> cell_coordinates(const Mesh& mesh, int cell) {
+  Eigen::Matrix<double, NN, DIM> x;
+  const int* nodes = mesh.cell(cell);
+  for (int a = 0; a < NN; ++a)
+    for (int k = 0; k < DIM; ++k) x(a, k) = mesh.coords[3 * static_cast<size_t>(nodes[a]) + k];
+  return x;
+}
+
+/// Physical shape-function gradients at quadrature point q; returns det J.
+template <int NN, int DIM>
+double physical_gradients(const ReferenceElement& re, int q, const Eigen::Matrix<double, NN, DIM>& x,
+                          Eigen::Matrix<double, NN, DIM>& grad) {
+  const Eigen::Map<const Eigen::Matrix<double, NN, DIM, Eigen::RowMajor>> dref(
+      &re.dn[static_cast<size_t>(q) * NN * DIM]);
+  const Eigen::Matrix<double, DIM, DIM> jac = x.transpose() * dref;  // J(i,j) = dx_i/dxi_j
+  const double det = jac.determinant();
+  grad.noalias() = dref * jac.inverse();
+  return det;
+}
+
+/// Strain-displacement matrix (engineering shears), DOFs ordered node by node.
+template <int NN, int DIM>
+void strain_matrix(const Eigen::Matrix<double, NN, DIM>& g, Eigen::Matrix<double, kVoigt<DIM>, NN * DIM>& b) {
+  b.setZero();
+  for (int a = 0; a < NN; ++a) {
+    const int c = DIM * a;
+    b(0, c) = g(a, 0);
+    b(1, c + 1) = g(a, 1);
+    if constexpr (DIM == 2) {
+      b(2, c) = g(a, 1);
+      b(2, c + 1) = g(a, 0);
+    } else {
+      b(2, c + 2) = g(a, 2);
+      b(3, c) = g(a, 1);
+      b(3, c + 1) = g(a, 0);
+      b(4, c) = g(a, 2);
+      b(4, c + 2) = g(a, 0);
+      b(5, c + 1) = g(a, 2);
+      b(5, c + 2) = g(a, 1);
+    }
+  }
+}
+
+/// Checks the Jacobian signs of a cell: all of one sign and non-zero. Cells of
+/// either orientation are accepted (|det J| weights the integrals, as
+/// code_aster does); a sign change or a zero means a tangled or degenerate cell.
+inline void check_jacobian(double det, double& first_sign, const Mesh& mesh, int cell) {
+  const double sign = det > 0 ? 1.0 : (det < 0 ? -1.0 : 0.0);
+  if (first_sign == 0.0) first_sign = sign;
+  if (sign == 0.0 || sign != first_sign) {
+    const std::string name = cell < static_cast<int>(mesh.cell_names.size()) ? mesh.cell_names[cell]
+                                                                                : "#" + std::to_string(cell + 1);
+    throw DeckError("cell " + name + ": degenerate or tangled cell (Jacobian changes sign or vanishes)");
+  }
+}
+
+/// Material of a cell; DeckError naming the cell if none was assigned.
+inline const ElasticMaterial& cell_material(const FeModel& model, int cell) {
+  const int m = cell < static_cast<int>(model.material.size()) ? model.material[cell] : -1;
+  if (m < 0 || m >= static_cast<int>(model.materials.size())) {
+    const Mesh& mesh = *model.mesh;
+    const std::string name = cell < static_cast<int>(mesh.cell_names.size()) ? mesh.cell_names[cell]
+                                                                                : "#" + std::to_string(cell + 1);
+    throw DeckError("cell " + name + " carries an element but no material");
+  }
+  return model.materials[m];
+}
+
+/// Hooke matrix of a cell in kernel Voigt order (3x3 in 2D, 6x6 in 3D).
+template <int DIM>
+Eigen::Matrix<double, kVoigt<DIM>, kVoigt<DIM>> cell_hooke(const FeModel& model, int cell) {
+  const ElasticMaterial& mat = cell_material(model, cell);
+  if constexpr (DIM == 2) {
+    return elasticity_2d(mat, model.modelisation[cell]);
+  } else {
+    return elasticity_3d(mat);
+  }
+}
+
+}  // namespace lunaster::engine::kernels

@@ -1,0 +1,79 @@
+/// Consistent nodal forces of a pressure on boundary cells:
+/// f_a = -p * integral N_a n dS, with n dS from the cell's own parametrisation:
+/// 2D SEG (n1 -> n2): n dS = (t_y, -t_x) dxi, t = dx/dxi;
+/// 3D faces: n dS = (dx/dxi x dx/deta) dxi deta, i.e. along (x2-x1) x (x3-x1).
+/// A positive pressure pushes against the normal (into the body when the
+/// normal is outward, as ORIE_PEAU makes it).
+#include "engine/assembly/assembly.hpp"
+
+#include <string>
+
+#include "engine/core/error.hpp"
+#include "engine/fe/reference_element.hpp"
+
+namespace lunaster::engine {
+namespace {
+
+bool is_boundary_type(CellType type, int dim) {
+  if (dim == 2) return type == CellType::Seg2 || type == CellType::Seg3;
+  return type == CellType::Tria3 || type == CellType::Tria6 || type == CellType::Quad4 || type == CellType::Quad8;
+}
+
+/// Adds the pressure forces of one boundary cell.
+void cell_pressure(const Mesh& mesh, int dim, int cell, double pressure, const DofMap& dofs, Vector& f_ext) {
+  const CellType type = mesh.cell_types[cell];
+  const ReferenceElement& re = reference_element(type);
+  const int* nodes = mesh.cell(cell);
+  const int nn = re.n_nodes, rd = re.dim;
+  for (int q = 0; q < re.n_qp; ++q) {
+    const double* n = &re.n[static_cast<size_t>(q) * nn];
+    const double* dn = &re.dn[static_cast<size_t>(q) * nn * rd];
+    double a1[3] = {0, 0, 0}, a2[3] = {0, 0, 0};
+    for (int a = 0; a < nn; ++a) {
+      const double* x = mesh.node(nodes[a]);
+      for (int k = 0; k < 3; ++k) {
+        a1[k] += dn[a * rd] * x[k];
+        if (rd == 2) a2[k] += dn[a * rd + 1] * x[k];
+      }
+    }
+    double ns[3];
+    if (dim == 2) {
+      ns[0] = a1[1], ns[1] = -a1[0], ns[2] = 0.0;
+    } else {
+      ns[0] = a1[1] * a2[2] - a1[2] * a2[1];
+      ns[1] = a1[2] * a2[0] - a1[0] * a2[2];
+      ns[2] = a1[0] * a2[1] - a1[1] * a2[0];
+    }
+    for (int a = 0; a < nn; ++a) {
+      const double s = -pressure * n[a] * re.weight[q];
+      for (int k = 0; k < dim; ++k) {
+        const int eq = dofs.dof(nodes[a], k);
+        if (eq < 0) {
+          const std::string name = nodes[a] < static_cast<int>(mesh.node_names.size())
+                                       ? mesh.node_names[nodes[a]]
+                                       : "#" + std::to_string(nodes[a] + 1);
+          throw DeckError("pressure on node " + name + ", which belongs to no modelled cell");
+        }
+        f_ext(eq) += s * ns[k];
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void assemble_pressure(const Mesh& mesh, int dim, const std::vector<int>& cells, double pressure,
+                       const DofMap& dofs, Vector& f_ext) {
+  if (f_ext.size() != dofs.n_dofs()) f_ext = Vector::Zero(dofs.n_dofs());
+  for (int cell : cells) {
+    if (!is_boundary_type(mesh.cell_types[cell], dim)) {
+      const std::string name = cell < static_cast<int>(mesh.cell_names.size()) ? mesh.cell_names[cell]
+                                                                                  : "#" + std::to_string(cell + 1);
+      throw DeckError("pressure on cell " + name + ": expected a boundary cell (" +
+                      std::string(dim == 2 ? "SEG2/SEG3" : "TRIA3/TRIA6/QUAD4/QUAD8") + ")");
+    }
+    cell_pressure(mesh, dim, cell, pressure, dofs, f_ext);
+  }
+}
+
+}  // namespace lunaster::engine

@@ -1,0 +1,62 @@
+/// Isotropic Hooke matrices (Lame form).
+#include "engine/material/elasticity.hpp"
+
+#include "engine/core/error.hpp"
+
+namespace lunaster::engine {
+namespace {
+
+void check(const ElasticMaterial& mat) {
+  if (!(mat.young > 0.0) || !(mat.poisson > -1.0 && mat.poisson < 0.5))
+    throw InternalError("elasticity: material needs E > 0 and -1 < nu < 0.5");
+}
+
+}  // namespace
+
+Eigen::Matrix<double, 6, 6> elasticity_3d(const ElasticMaterial& mat) {
+  check(mat);
+  const double e = mat.young, nu = mat.poisson;
+  const double lambda = e * nu / ((1 + nu) * (1 - 2 * nu)), mu = e / (2 * (1 + nu));
+  Eigen::Matrix<double, 6, 6> d = Eigen::Matrix<double, 6, 6>::Zero();
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) d(i, j) = lambda;
+    d(i, i) = lambda + 2 * mu;
+    d(3 + i, 3 + i) = mu;
+  }
+  return d;
+}
+
+Eigen::Matrix3d elasticity_2d(const ElasticMaterial& mat, Modelisation mod) {
+  check(mat);
+  const double e = mat.young, nu = mat.poisson;
+  Eigen::Matrix3d d = Eigen::Matrix3d::Zero();
+  if (mod == Modelisation::PlaneStress) {
+    const double c = e / (1 - nu * nu);
+    d << c, c * nu, 0, c * nu, c, 0, 0, 0, c * (1 - nu) / 2;
+  } else {
+    const double lambda = e * nu / ((1 + nu) * (1 - 2 * nu)), mu = e / (2 * (1 + nu));
+    d << lambda + 2 * mu, lambda, 0, lambda, lambda + 2 * mu, 0, 0, 0, mu;
+  }
+  return d;
+}
+
+double sigma_zz_2d(const ElasticMaterial& mat, Modelisation mod, double sxx, double syy) {
+  return mod == Modelisation::PlaneStress ? 0.0 : mat.poisson * (sxx + syy);
+}
+
+Eigen::Matrix4d elasticity_2d_full(const ElasticMaterial& mat, Modelisation mod) {
+  Eigen::Matrix4d d = Eigen::Matrix4d::Zero();
+  if (mod == Modelisation::PlaneStress) {
+    const Eigen::Matrix3d d2 = elasticity_2d(mat, mod);
+    const int map[3] = {0, 1, 3};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) d(map[i], map[j]) = d2(i, j);
+    return d;
+  }
+  const Eigen::Matrix<double, 6, 6> d3 = elasticity_3d(mat);
+  d.topLeftCorner<3, 3>() = d3.topLeftCorner<3, 3>();
+  d(3, 3) = d3(3, 3);
+  return d;
+}
+
+}  // namespace lunaster::engine

@@ -1,0 +1,24 @@
+#pragma once
+/// Hooke matrices of linear isotropic elasticity in Voigt notation with
+/// engineering shear strains (gamma_xy = 2 eps_xy). Units: Pa.
+#include <Eigen/Core>
+
+#include "engine/fe/fe_model.hpp"
+
+namespace lunaster::engine {
+
+/// 3D: order xx, yy, zz, xy, xz, yz.
+Eigen::Matrix<double, 6, 6> elasticity_3d(const ElasticMaterial& mat);
+
+/// In-plane 2D matrix, order xx, yy, xy: plane strain (eps_zz = 0) or plane
+/// stress (sig_zz = 0) depending on `mod`.
+Eigen::Matrix3d elasticity_2d(const ElasticMaterial& mat, Modelisation mod);
+
+/// Out-of-plane stress of a 2D state: nu (sxx + syy) in plane strain, 0 in plane stress.
+double sigma_zz_2d(const ElasticMaterial& mat, Modelisation mod, double sxx, double syy);
+
+/// Full 2D matrix in order xx, yy, zz, xy acting on (exx, eyy, ezz, gxy); in
+/// plane strain ezz = 0 is implied by the caller, in plane stress the row zz is zero.
+Eigen::Matrix4d elasticity_2d_full(const ElasticMaterial& mat, Modelisation mod);
+
+}  // namespace lunaster::engine

@@ -1,0 +1,21 @@
+#pragma once
+/// Backend constructors behind make_linear_solver (internal to lunaster_fe).
+#include <memory>
+
+#include "engine/solver/linear_solver.hpp"
+
+namespace lunaster::engine {
+
+/// CHOLMOD supernodal Cholesky (SPD matrices only).
+std::unique_ptr<LinearSolver> make_cholmod_solver();
+/// UMFPACK unsymmetric multifrontal LU (any square matrix).
+std::unique_ptr<LinearSolver> make_umfpack_solver();
+/// Sequential MUMPS (LDL^T for symmetric kinds, LU otherwise).
+std::unique_ptr<LinearSolver> make_mumps_solver();
+
+/// Pivot-ratio threshold used to call a factorisation singular: a pivot that
+/// lost more than this relative size against its matrix diagonal (about 10
+/// significant digits) marks a rigid-body mode or a missing boundary condition.
+constexpr double kSingularPivotRatio = 1e-10;
+
+}  // namespace lunaster::engine

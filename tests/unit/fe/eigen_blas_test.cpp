@@ -1,0 +1,142 @@
+// The Eigen-backed BLAS/LAPACK kernels interposed over the system BLAS
+// (engine/solver/eigen_blas.cpp) against plain dense Eigen expressions, for
+// every option combination, including sizes large enough for the two-thread path.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+extern "C" {
+void dgemm_(const char*, const char*, const int*, const int*, const int*, const double*, const double*, const int*,
+            const double*, const int*, const double*, double*, const int*);
+void dsyrk_(const char*, const char*, const int*, const int*, const double*, const double*, const int*, const double*,
+            double*, const int*);
+void dtrsm_(const char*, const char*, const char*, const char*, const int*, const int*, const double*, const double*,
+            const int*, double*, const int*);
+void dpotrf_(const char*, const int*, double*, const int*, int*);
+void dgemv_(const char*, const int*, const int*, const double*, const double*, const int*, const double*, const int*,
+            const double*, double*, const int*);
+void dtrsv_(const char*, const char*, const char*, const int*, const double*, const int*, double*, const int*);
+}
+
+namespace {
+
+using Eigen::MatrixXd;
+
+MatrixXd random(int r, int c, int seed) {
+  MatrixXd m(r, c);
+  for (int j = 0; j < c; ++j)
+    for (int i = 0; i < r; ++i) m(i, j) = std::sin(0.37 * i + 1.3 * j + seed) + 0.01 * seed;
+  return m;
+}
+
+TEST(EigenBlas, GemmAllTransposes) {
+  for (int size : {7, 180}) {
+    const int m = size, n = size + 3, k = size / 2 + 5;
+    for (const char* ta : {"N", "T"})
+      for (const char* tb : {"N", "T"}) {
+        const bool at = *ta == 'T', bt = *tb == 'T';
+        const MatrixXd a = random(at ? k : m, at ? m : k, 1), b = random(bt ? n : k, bt ? k : n, 2);
+        MatrixXd c = random(m + 2, n, 3);  // ldc = m + 2
+        MatrixXd ref = c;
+        const MatrixXd opa = at ? MatrixXd(a.transpose()) : a, opb = bt ? MatrixXd(b.transpose()) : b;
+        ref.topRows(m) = 0.5 * c.topRows(m) - 1.5 * opa * opb;
+        const double alpha = -1.5, beta = 0.5;
+        const int lda = static_cast<int>(a.rows()), ldb = static_cast<int>(b.rows()), ldc = m + 2;
+        dgemm_(ta, tb, &m, &n, &k, &alpha, a.data(), &lda, b.data(), &ldb, &beta, c.data(), &ldc);
+        EXPECT_LT((c - ref).norm(), 1e-11 * ref.norm()) << ta << tb << " " << size;
+      }
+  }
+}
+
+TEST(EigenBlas, SyrkLowerUpper) {
+  const int n = 40, k = 17;
+  for (const char* uplo : {"L", "U"})
+    for (const char* tr : {"N", "T"}) {
+      const bool t = *tr == 'T';
+      const MatrixXd a = random(t ? k : n, t ? n : k, 4);
+      MatrixXd c = random(n, n, 5);
+      const MatrixXd opa = t ? MatrixXd(a.transpose()) : a;
+      const MatrixXd full = 2.0 * c - 0.5 * opa * opa.transpose();
+      const double alpha = -0.5, beta = 2.0;
+      const int lda = static_cast<int>(a.rows());
+      const MatrixXd before = c;
+      dsyrk_(uplo, tr, &n, &k, &alpha, a.data(), &lda, &beta, c.data(), &n);
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          const bool in = *uplo == 'L' ? i >= j : i <= j;
+          EXPECT_NEAR(c(i, j), in ? full(i, j) : before(i, j), 1e-12) << uplo << tr;
+        }
+    }
+}
+
+TEST(EigenBlas, TrsmEveryVariant) {
+  for (int size : {9, 200}) {
+    const int m = size, n = size / 3 + 4;
+    for (const char* side : {"L", "R"})
+      for (const char* uplo : {"L", "U"})
+        for (const char* tr : {"N", "T"})
+          for (const char* diag : {"N", "U"}) {
+            const int na = *side == 'L' ? m : n;
+            MatrixXd a = random(na, na, 6) / na;  // small off-diagonals: well conditioned even with a unit diagonal
+            a.diagonal().array() += 3.0;
+            MatrixXd tri = *uplo == 'L' ? MatrixXd(a.triangularView<Eigen::Lower>()) : MatrixXd(a.triangularView<Eigen::Upper>());
+            if (*diag == 'U') tri.diagonal().setOnes();
+            const MatrixXd op = *tr == 'T' ? MatrixXd(tri.transpose()) : tri;
+            const MatrixXd b0 = random(m, n, 7);
+            MatrixXd b = b0;
+            const double alpha = 1.25;
+            dtrsm_(side, uplo, tr, diag, &m, &n, &alpha, a.data(), &na, b.data(), &m);
+            const MatrixXd back = *side == 'L' ? MatrixXd(op * b) : MatrixXd(b * op);
+            EXPECT_LT((back - alpha * b0).norm(), 1e-10 * b0.norm()) << side << uplo << tr << diag << size;
+          }
+  }
+}
+
+TEST(EigenBlas, PotrfFactorsAndReportsTheFailingMinor) {
+  const int n = 30;
+  MatrixXd a = random(n, n, 8);
+  MatrixXd spd = a * a.transpose() + n * MatrixXd::Identity(n, n);
+  MatrixXd l = spd;
+  int info = -1;
+  dpotrf_("L", &n, l.data(), &n, &info);
+  EXPECT_EQ(info, 0);
+  const MatrixXd low = l.triangularView<Eigen::Lower>();
+  EXPECT_LT((low * low.transpose() - spd).norm(), 1e-10 * spd.norm());
+  MatrixXd u = spd;
+  dpotrf_("U", &n, u.data(), &n, &info);
+  EXPECT_EQ(info, 0);
+  const MatrixXd up = u.triangularView<Eigen::Upper>();
+  EXPECT_LT((up.transpose() * up - spd).norm(), 1e-10 * spd.norm());
+  MatrixXd bad = spd;
+  bad(4, 4) = -1.0;  // leading minor of order 5 is indefinite
+  dpotrf_("L", &n, bad.data(), &n, &info);
+  EXPECT_EQ(info, 5);
+}
+
+TEST(EigenBlas, GemvAndTrsv) {
+  const int m = 25, n = 19;
+  const MatrixXd a = random(m, n, 9);
+  const Eigen::VectorXd x = random(m, 1, 10);  // long enough for both shapes
+  Eigen::VectorXd y = random(m, 1, 11);
+  const Eigen::VectorXd ref_n = 0.5 * y + 2.0 * a * x.head(n);
+  const double alpha = 2.0, beta = 0.5;
+  const int one = 1;
+  dgemv_("N", &m, &n, &alpha, a.data(), &m, x.data(), &one, &beta, y.data(), &one);
+  EXPECT_LT((y - ref_n).norm(), 1e-12 * ref_n.norm());
+  Eigen::VectorXd yt = random(n, 1, 12);
+  const Eigen::VectorXd ref_t = 0.5 * yt + 2.0 * a.transpose() * x;
+  dgemv_("T", &m, &n, &alpha, a.data(), &m, x.data(), &one, &beta, yt.data(), &one);
+  EXPECT_LT((yt - ref_t).norm(), 1e-12 * ref_t.norm());
+  MatrixXd t = random(n, n, 13);
+  t.diagonal().array() += 2.0 * n;
+  for (const char* uplo : {"L", "U"})
+    for (const char* tr : {"N", "T"}) {
+      MatrixXd tri = *uplo == 'L' ? MatrixXd(t.triangularView<Eigen::Lower>()) : MatrixXd(t.triangularView<Eigen::Upper>());
+      const MatrixXd op = *tr == 'T' ? MatrixXd(tri.transpose()) : tri;
+      Eigen::VectorXd v = x.head(n);
+      dtrsv_(uplo, tr, "N", &n, t.data(), &n, v.data(), &one);
+      EXPECT_LT((op * v - x.head(n)).norm(), 1e-12 * x.norm()) << uplo << tr;
+    }
+}
+
+}  // namespace
