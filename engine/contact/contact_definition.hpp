@@ -27,6 +27,7 @@ struct ContactZone {
   double coef_cont = 100.0;      ///< COEF_CONT / COEF_REGU_CONT (augmented Lagrangian rho)
   double coef_pena = 0.0;        ///< E_N or COEF_PENA_CONT
   ContactInit init = ContactInit::Interpenetrated;
+  double tole_proj_ext = 0.5;    ///< TOLE_PROJ_EXT: accepted projection distance outside a master cell (reference units)
 };
 
 struct ContactDefinition {

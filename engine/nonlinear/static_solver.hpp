@@ -84,6 +84,7 @@ class StaticSolver {
   NodalField make_depl(const Vector& u) const;
   std::vector<Triplet> k_elastic_;
   SparseMatrix k_full_;
+  double k_scale_ = 0.0;  ///< largest stiffness coefficient, for the residual reference
 
   const FeModel& model_;
   const MechanicalLoads& loads_;

@@ -1,0 +1,38 @@
+#include "engine/contact/compatibility.hpp"
+
+#include <map>
+
+#include "engine/contact/contact_hook_base.hpp"
+#include "engine/contact/surface_element.hpp"
+
+namespace lunaster::engine {
+
+bool contact_pairing_compatible(CellType slave, CellType master) {
+  const bool quad_slave = slave == CellType::Quad4 || slave == CellType::Quad8;
+  return !(quad_slave && master == CellType::Tria6);
+}
+
+std::string contact_pairing_warning(int zone_index, CellType slave, const std::string& slave_cell, CellType master,
+                                    const std::string& master_cell) {
+  return "contact zone " + std::to_string(zone_index + 1) + ": slave " + contact::surface_type_name(slave) +
+         " cell " + slave_cell + " faces master " + contact::surface_type_name(master) + " cell " + master_cell +
+         ": this pairing does not satisfy the compatibility conditions for integrating the contact terms "
+         "(R5.03.52), the contact pressure may be wrong; use the same element type on both surfaces "
+         "(QUAD8/QUAD8, TRIA6/TRIA6) or a triangle slave on a quadrangle master (e.g. TRIA6 slave on QUAD8 master)";
+}
+
+std::vector<std::string> check_contact_zone_compatibility(const Mesh& mesh, const ContactZone& zone,
+                                                          int zone_index) {
+  std::map<CellType, int> slave_first, master_first;
+  for (int c : zone.slave_cells) slave_first.emplace(mesh.cell_types[c], c);
+  for (int c : zone.master_cells) master_first.emplace(mesh.cell_types[c], c);
+  std::vector<std::string> out;
+  for (const auto& [st, sc] : slave_first)
+    for (const auto& [mt, mc] : master_first)
+      if (!contact_pairing_compatible(st, mt))
+        out.push_back(contact_pairing_warning(zone_index, st, contact::cell_label(mesh, sc), mt,
+                                              contact::cell_label(mesh, mc)));
+  return out;
+}
+
+}  // namespace lunaster::engine

@@ -1,0 +1,29 @@
+#pragma once
+/// Entry point of engine/contact: builds the contact algorithm the Newton
+/// driver (engine/nonlinear/static_solver) plugs in as a ContactHook.
+///
+/// Methods: ContactMethod::Continuous / ContinuousPenalty ->
+/// contact::ContinuousContact (continuous_contact.hpp), DiscreteLagrange /
+/// DiscretePenalty -> contact::DiscreteContact (discrete_contact.hpp).
+/// Unknowns: LAGS_C (Component::LAGS_C) on the slave nodes for Continuous,
+/// ContinuousPenalty and DiscreteLagrange (vertices only); none for
+/// DiscretePenalty. LAGS_C is in Pa, negative in compression.
+/// Fields: write_fields adds the nodal field "CONT_NOEU" on slave nodes with
+/// CONT (1 in contact, 0 not), JEU (gap, m, > 0 open), RN (norm of the nodal
+/// contact force, N), RNX, RNY[, RNZ] (force on the slave node), and for the
+/// discrete methods PRES (nodal contact pressure, Pa, negative in compression).
+#include <memory>
+
+#include "engine/contact/contact_definition.hpp"
+#include "engine/core/error.hpp"
+#include "engine/mesh/mesh.hpp"
+#include "engine/nonlinear/static_solver.hpp"
+
+namespace lunaster::engine {
+
+/// Builds the hook for `definition` on `mesh` (dim 2 or 3). The mesh and the
+/// definition are read at construction; the mesh must outlive the hook.
+/// Throws DeckError for unusable surfaces (non-boundary cells, E_N <= 0 ...).
+std::unique_ptr<ContactHook> make_contact_hook(const ContactDefinition& definition, const Mesh& mesh, int dim);
+
+}  // namespace lunaster::engine

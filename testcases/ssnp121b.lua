@@ -1,0 +1,41 @@
+-- SSNP121 B: the contact patch test with the DISCRETE formulation, ALGO_CONT='CONTRAINTE' (active set,
+--            Lagrange multipliers on slave nodes, node-to-segment), REAC_GEOM='AUTOMATIQUE'.
+-- Slave EF (11 SEG2, lower block), master AB (12 SEG2, upper block): the roles are swapped with
+-- respect to model A, as in code_aster's deck. Seed syntax: AFFE_CHAR_MECA/CONTACT with COMP_ELAS.
+-- Reference: analytical SIYY = -1e5 Pa and DY = -0.05 m at A, O, B (nodes of AB). SIYY is the nodal
+-- average of SIGM_ELNO (SIGM_NOEU). Node-to-segment fails the patch test on non-matching meshes:
+-- code_aster finds SIYY -0.99624e5 at O (0.38 %) and -1.06004e5 at A, B (6.0 %), DY -0.050173 at O
+-- (0.35 %) and -0.049167 at A, B (1.67 %). Tolerances are code_aster's. Runtime label: fast, contact.
+DEBUT()
+MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'ssnp121a.med' }
+MO = AFFE_MODELE{ MAILLAGE = MA,
+                  AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN' } }
+MAT = DEFI_MATERIAU{ ELAS = _F{ E = 2.0e6, NU = 0.0 } }
+CHMAT = AFFE_MATERIAU{ MAILLAGE = MA, AFFE = _F{ GROUP_MA = { 'PLAQUE1', 'PLAQUE2' }, MATER = MAT } }
+CHA1 = AFFE_CHAR_MECA{ MODELE = MO,
+                       DDL_IMPO = { _F{ GROUP_NO = 'CD', DX = 0.0, DY = -0.1 },
+                                    _F{ GROUP_NO = 'GH', DX = 0.0, DY = 0.0 } } }
+CHA2 = AFFE_CHAR_MECA{ MODELE = MO,
+                       CONTACT = _F{ METHODE = 'CONTRAINTE', GROUP_MA_ESCL = 'EF', GROUP_MA_MAIT = 'AB',
+                                     REAC_GEOM = 'AUTOMATIQUE' } }
+L_INST = DEFI_LIST_REEL{ DEBUT = 0.0, INTERVALLE = _F{ JUSQU_A = 1.0, NOMBRE = 1 } }
+RAMPE = DEFI_FONCTION{ NOM_PARA = 'INST', VALE = { 0.0, 0.0, 1.0, 1.0 } }
+RESU = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CHMAT,
+                      EXCIT = { _F{ CHARGE = CHA1, FONC_MULT = RAMPE }, _F{ CHARGE = CHA2 } },
+                      COMP_ELAS = _F{ RELATION = 'ELAS' },
+                      INCREMENT = _F{ LIST_INST = L_INST } }
+RESU = CALC_CHAMP{ reuse = RESU, RESULTAT = RESU, CONTRAINTE = { 'SIGM_ELNO', 'SIGM_NOEU' } }
+
+local function check(point, field, cmp, refe, precision)
+  return _F{ RESULTAT = RESU, NUME_ORDRE = 1, NOM_CHAM = field, GROUP_NO = point, NOM_CMP = cmp,
+             REFERENCE = 'ANALYTIQUE', VALE_REFE = refe, PRECISION = precision }
+end
+TEST_RESU{ RESU = {
+  check('O', 'SIGM_NOEU', 'SIYY', -1.0e5, 1.0e-2),
+  check('A', 'SIGM_NOEU', 'SIYY', -1.0e5, 6.1e-2),
+  check('B', 'SIGM_NOEU', 'SIYY', -1.0e5, 6.1e-2),
+  check('O', 'DEPL', 'DY', -0.05, 1.0e-2),
+  check('A', 'DEPL', 'DY', -0.05, 1.67e-2),
+  check('B', 'DEPL', 'DY', -0.05, 1.67e-2),
+} }
+FIN()

@@ -1,0 +1,164 @@
+// Surface shape functions, orthogonal projection and the master-surface index.
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "engine/contact/master_search.hpp"
+#include "engine/contact/surface_element.hpp"
+
+using namespace lunaster::engine;
+using namespace lunaster::engine::contact;
+
+namespace {
+
+const CellType kAll[] = {CellType::Seg2, CellType::Seg3, CellType::Tria3, CellType::Tria6, CellType::Quad4,
+                         CellType::Quad8};
+
+// Node coordinates of a curved cell: reference node positions mapped by a smooth map.
+std::vector<double> curved_cell(CellType t, double bend) {
+  std::vector<double> xyz;
+  for (int a = 0; a < surface_n_nodes(t); ++a) {
+    double xi[2];
+    surface_reference_node(t, a, xi);
+    const double x = 0.7 * xi[0] + 0.1 * xi[1], y = 0.5 * xi[1] - 0.05 * xi[0];
+    if (surface_ref_dim(t) == 1) xyz.insert(xyz.end(), {x, bend * x * x, 0.0});
+    else xyz.insert(xyz.end(), {x, y, bend * (x * x + 0.5 * y * y)});
+  }
+  return xyz;
+}
+
+}  // namespace
+
+TEST(ContactSurface, ShapeFunctionsInterpolateAndDerivativesMatchFiniteDifferences) {
+  std::mt19937 gen(3);
+  std::uniform_real_distribution<double> dist(-0.3, 0.3);
+  for (CellType t : kAll) {
+    const int nn = surface_n_nodes(t);
+    for (int b = 0; b < nn; ++b) {  // Kronecker property
+      double xi[2], n[8];
+      surface_reference_node(t, b, xi);
+      surface_shape(t, xi, n, nullptr, nullptr);
+      for (int a = 0; a < nn; ++a) EXPECT_NEAR(n[a], a == b ? 1.0 : 0.0, 1e-14);
+    }
+    double xi[2] = {0.25 + dist(gen), surface_ref_dim(t) == 1 ? 0.0 : 0.2 + dist(gen) * 0.5};
+    double n[8], dn[16], d2n[24], sum = 0;
+    surface_shape(t, xi, n, dn, d2n);
+    for (int a = 0; a < nn; ++a) sum += n[a];
+    EXPECT_NEAR(sum, 1.0, 1e-14);
+    const double h = 1e-6;
+    for (int k = 0; k < surface_ref_dim(t); ++k) {
+      double xp[2] = {xi[0], xi[1]}, xm[2] = {xi[0], xi[1]};
+      xp[k] += h, xm[k] -= h;
+      double np[8], nm[8], dnp[16], dnm[16];
+      surface_shape(t, xp, np, dnp, nullptr);
+      surface_shape(t, xm, nm, dnm, nullptr);
+      for (int a = 0; a < nn; ++a) {
+        EXPECT_NEAR(dn[2 * a + k], (np[a] - nm[a]) / (2 * h), 1e-8);
+        for (int l = 0; l < surface_ref_dim(t); ++l) {
+          const int m = k == 0 ? (l == 0 ? 0 : 1) : (l == 0 ? 1 : 2);
+          EXPECT_NEAR(d2n[3 * a + m], (dnp[2 * a + l] - dnm[2 * a + l]) / (2 * h), 1e-7);
+        }
+      }
+    }
+  }
+}
+
+TEST(ContactSurface, NormalFollowsNodeOrder) {
+  // 2D: tangent (-1,0) (top edge of a body traversed counter-clockwise) -> normal (0,1).
+  const double seg[] = {1, 0, 0, -1, 0, 0};
+  const double mid[2] = {0, 0};
+  const SurfacePoint p = surface_point(CellType::Seg2, seg, mid);
+  EXPECT_NEAR(p.n[0], 0.0, 1e-15);
+  EXPECT_NEAR(p.n[1], 1.0, 1e-15);
+  EXPECT_NEAR(p.jacobian, 1.0, 1e-15);
+  // 3D: counter-clockwise square seen from +z -> normal +z, jacobian = area/4.
+  const double quad[] = {0, 0, 1, 2, 0, 1, 2, 2, 1, 0, 2, 1};
+  const SurfacePoint q = surface_point(CellType::Quad4, quad, mid);
+  EXPECT_NEAR(q.n[2], 1.0, 1e-15);
+  EXPECT_NEAR(q.jacobian, 1.0, 1e-15);
+}
+
+TEST(ContactProjection, RecoversFootOfNormalOnCurvedCells) {
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> dist(-0.8, 0.8), gap(-0.2, 0.2);
+  for (CellType t : kAll) {
+    const std::vector<double> xyz = curved_cell(t, 0.3);
+    for (int trial = 0; trial < 20; ++trial) {
+      double xi0[2] = {dist(gen), surface_ref_dim(t) == 1 ? 0.0 : dist(gen)};
+      if (is_triangle(t)) xi0[0] = 0.5 * (xi0[0] + 0.8) / 1.6 * 0.9, xi0[1] = 0.4 * (xi0[1] + 0.8) / 1.6 + 0.02;
+      const SurfacePoint s = surface_point(t, xyz.data(), xi0);
+      const double d = gap(gen);
+      const double point[3] = {s.x[0] + d * s.n[0], s.x[1] + d * s.n[1], s.x[2] + d * s.n[2]};
+      const CellProjection cp = project_on_cell(t, xyz.data(), point);
+      ASSERT_TRUE(cp.converged) << surface_type_name(t);
+      EXPECT_NEAR(cp.xi[0], xi0[0], 1e-9) << surface_type_name(t);
+      EXPECT_NEAR(cp.xi[1], xi0[1], 1e-9) << surface_type_name(t);
+      EXPECT_EQ(cp.outside, 0.0);
+    }
+  }
+}
+
+TEST(ContactProjection, StraightSegmentOutsideIsClampedOrRejected) {
+  Mesh mesh;
+  mesh.dim = 2;
+  // Lower body QUAD4 [0,1]x[-1,0] and its top edge oriented outward (+y): nodes 2 -> 3.
+  mesh.add_node(0, -1, 0), mesh.add_node(1, -1, 0), mesh.add_node(1, 0, 0), mesh.add_node(0, 0, 0);
+  mesh.add_cell(CellType::Quad4, {0, 1, 2, 3});
+  const int edge = mesh.add_cell(CellType::Seg2, {2, 3});
+  MasterSurface master(mesh, {edge}, false);
+  EXPECT_EQ(master.n_flipped(), 0);
+  master.update(mesh.coords);
+  const double inside[3] = {0.25, 0.1, 0};
+  MasterProjection p = master.project(inside, 0.5);
+  ASSERT_TRUE(p.found);
+  EXPECT_NEAR(p.x[0], 0.25, 1e-14);
+  EXPECT_NEAR(p.normal[1], 1.0, 1e-14);
+  const double beyond[3] = {1.2, -0.05, 0};  // 0.4 reference units beyond the end: clamped
+  p = master.project(beyond, 0.5);
+  ASSERT_TRUE(p.found);
+  EXPECT_NEAR(p.x[0], 1.0, 1e-14);
+  EXPECT_NEAR(p.outside, 0.4, 1e-12);
+  const double far[3] = {1.6, 0.0, 0};  // 1.2 beyond: rejected
+  EXPECT_FALSE(master.project(far, 0.5).found);
+  // An edge listed against its body's orientation is flipped.
+  const int reversed = mesh.add_cell(CellType::Seg2, {3, 2});
+  MasterSurface flipped(mesh, {reversed}, false);
+  EXPECT_EQ(flipped.n_flipped(), 1);
+  flipped.update(mesh.coords);
+  EXPECT_NEAR(flipped.project(inside, 0.5).normal[1], 1.0, 1e-14);
+}
+
+TEST(ContactProjection, GridSearchMatchesBruteForce) {
+  // Wavy master line of 200 SEG3 cells; points above/below it.
+  Mesh mesh;
+  mesh.dim = 2;
+  const int n = 200;
+  for (int i = 0; i <= 2 * n; ++i) {
+    const double x = double(i) / (2 * n) * 10.0;
+    mesh.add_node(x, 0.2 * std::sin(x), 0);
+  }
+  std::vector<int> cells;
+  for (int i = 0; i < n; ++i) cells.push_back(mesh.add_cell(CellType::Seg3, {2 * i, 2 * i + 2, 2 * i + 1}));
+  MasterSurface master(mesh, cells, false);
+  master.update(mesh.coords);
+  std::mt19937 gen(11);
+  std::uniform_real_distribution<double> xs(0.1, 9.9), ys(-0.4, 0.4);
+  for (int trial = 0; trial < 100; ++trial) {
+    const double point[3] = {xs(gen), ys(gen), 0.0};
+    const MasterProjection p = master.project(point, 0.5);
+    ASSERT_TRUE(p.found);
+    double best = 1e300;
+    for (int c : cells) {
+      double xyz[9];
+      for (int a = 0; a < 3; ++a)
+        for (int i = 0; i < 3; ++i) xyz[3 * a + i] = mesh.node(mesh.cell(c)[a])[i];
+      CellProjection cp = project_on_cell(CellType::Seg3, xyz, point);
+      if (!cp.converged || cp.outside > 0.5) continue;
+      clamp_to_cell(CellType::Seg3, cp.xi);
+      const SurfacePoint s = surface_point(CellType::Seg3, xyz, cp.xi);
+      best = std::min(best, std::hypot(s.x[0] - point[0], s.x[1] - point[1]));
+    }
+    EXPECT_NEAR(p.distance, best, 1e-10);
+  }
+}
