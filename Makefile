@@ -3,7 +3,7 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build verify test test-asan docs meshes clean
+.PHONY: all deps build verify test test-asan fuzz docs meshes clean
 
 all: build
 
@@ -22,16 +22,29 @@ verify: build
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
+# The whole suite under AddressSanitizer + UBSan. -O1 keeps the deck suite fast enough;
+# leak checking stays on (detect_leaks=1), any UBSan report fails the test.
 test-asan: deps
-	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DLUNASTER_SANITIZE=ON $(CMAKE_FLAGS)
+	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" -DLUNASTER_SANITIZE=ON $(CMAKE_FLAGS)
 	cmake --build build-asan -j $(JOBS)
-	cd build-asan && ctest --output-on-failure -j $(JOBS)
+	cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+	  ctest --output-on-failure -j $(JOBS) --timeout 1500
+
+# libFuzzer runs of the MED reader, the Gmsh reader and the deck front end (clang,
+# ASan + UBSan), FUZZ_TIME seconds each, from the committed corpus tests/fuzz/corpus/.
+FUZZ_TIME ?= 20
+fuzz:
+	@bash scripts/install-deps.sh fuzz
+	cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+	  -DLUNASTER_FUZZ=ON -DLUNASTER_TESTS=OFF $(CMAKE_FLAGS)
+	cmake --build build-fuzz --target fuzzers -j $(JOBS)
+	bash tests/fuzz/run_fuzzers.sh build-fuzz $(FUZZ_TIME)
 
 docs: build
-	$(BUILD)/lunaster --dump-catalog md > docs/commands.md
+	$(BUILD)/lunaster --dump-catalog md docs/commands.md
 
 meshes: build
 	bash tools/make_meshes.sh $(BUILD)/lunaster-meshgen
 
 clean:
-	rm -rf $(BUILD) build-asan
+	rm -rf $(BUILD) build-asan build-fuzz

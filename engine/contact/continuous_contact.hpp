@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 /// Continuous (mixed, augmented Lagrangian) contact after code_aster's
 /// FORMULATION='CONTINUE' (R5.03.52), frictionless.
 ///
@@ -53,6 +54,9 @@ class ContinuousContact : public ContactHookBase {
   void add_dofs(DofMap& dofs) override;
   void add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) override;
   MatrixKind matrix_kind() const override;
+  int n_active() const override {
+    return static_cast<int>(std::count_if(points_.begin(), points_.end(), [](const auto& p) { return p.active; }));
+  }
   void write_fields(const Vector& u, ResultStep& step) const override;
 
   const std::vector<ContinuousPoint>& points() const { return points_; }

@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 /// Discrete node-to-segment (2D) / node-to-facet (3D) contact after code_aster's
 /// FORMULATION='DISCRETE' (R5.03.50), frictionless:
 ///  - ContactMethod::DiscreteLagrange (ALGO_CONT='CONTRAINTE'): one multiplier
@@ -49,6 +50,9 @@ class DiscreteContact : public ContactHookBase {
   void add_dofs(DofMap& dofs) override;
   void add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) override;
   MatrixKind matrix_kind() const override;
+  int n_active() const override {
+    return static_cast<int>(std::count_if(nodes_.begin(), nodes_.end(), [](const auto& n) { return n.active; }));
+  }
   void write_fields(const Vector& u, ResultStep& step) const override;
 
   const std::vector<DiscreteNode>& nodes() const { return nodes_; }

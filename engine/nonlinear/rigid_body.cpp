@@ -43,8 +43,9 @@ std::string body_name(const Mesh& mesh, const std::vector<int>& body) {
 
 }  // namespace
 
-SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, const std::vector<int>& free_index,
-                                    const std::vector<Triplet>& elastic, const SolveError& original, double t) {
+std::optional<SolveError> find_rigid_body_mode(const FeModel& model, const DofMap& dofs,
+                                               const std::vector<int>& free_index,
+                                               const std::vector<Triplet>& elastic, double t) {
   // Reduced elastic matrix on the free displacement equations only.
   std::vector<int> reduced(dofs.n_dofs(), -1), back;
   for (int eq = 0; eq < dofs.n_dofs(); ++eq)
@@ -69,12 +70,7 @@ SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, co
   }
   char inst[32];
   std::snprintf(inst, sizeof inst, "%.6e", t);
-  if (column < 0 || column >= static_cast<int>(back.size())) {
-    SolveError err("the system at instant " + std::string(inst) + " is singular: " + original.message(),
-                   {"the elastic stiffness alone is regular, so the singularity comes from the contact terms",
-                    "check that the contact surfaces face each other and that COEF_CONT / E_N are reasonable"});
-    return err;
-  }
+  if (column < 0 || column >= static_cast<int>(back.size())) return std::nullopt;
   const int eq = back[column];
   const int node = dofs.node_of(eq);
   const Mesh& mesh = *model.mesh;
@@ -86,6 +82,16 @@ SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, co
       {"nothing holds this body in that direction: add DDL_IMPO on it (AFFE_CHAR_MECA),",
        "or, if only contact holds it, activate contact from the start with CONTACT_INIT='OUI'",
        "so that the contact pressure carries the load from the first iteration"});
+}
+
+SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, const std::vector<int>& free_index,
+                                    const std::vector<Triplet>& elastic, const SolveError& original, double t) {
+  if (auto rigid = find_rigid_body_mode(model, dofs, free_index, elastic, t)) return *rigid;
+  char inst[32];
+  std::snprintf(inst, sizeof inst, "%.6e", t);
+  return SolveError("the system at instant " + std::string(inst) + " is singular: " + original.message(),
+                    {"the elastic stiffness alone is regular, so the singularity comes from the contact terms",
+                     "check that the contact surfaces face each other and that COEF_CONT / E_N are reasonable"});
 }
 
 }  // namespace lunaster::engine

@@ -1,6 +1,7 @@
 #pragma once
 /// Diagnosis of a singular system: which body can move, in which direction,
 /// and what the user can do about it.
+#include <optional>
 #include <vector>
 
 #include "engine/assembly/dof_map.hpp"
@@ -17,6 +18,12 @@ namespace lunaster::engine {
 /// connected set of cells holding the node, named by the cell groups that
 /// contain it), with the remedies. Falls back to the original error when the
 /// elastic part alone is regular (the singularity then comes from contact).
+/// The rigid-body error for the elastic part on the free displacement equations,
+/// or nothing if that part is regular (CHOLMOD with its pivot-ratio test).
+std::optional<SolveError> find_rigid_body_mode(const FeModel& model, const DofMap& dofs,
+                                               const std::vector<int>& free_index,
+                                               const std::vector<Triplet>& elastic, double t);
+
 SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, const std::vector<int>& free_index,
                                     const std::vector<Triplet>& elastic, const SolveError& original, double t);
 

@@ -1,8 +1,10 @@
 #include "engine/nonlinear/static_solver.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <memory>
 
 #include "engine/assembly/assembly.hpp"
 #include "engine/core/error.hpp"
@@ -11,6 +13,19 @@
 namespace lunaster::engine {
 
 namespace {
+
+/// Adds the wall time of its scope to a SolverStats counter.
+class Stopwatch {
+ public:
+  explicit Stopwatch(double& seconds) : seconds_(seconds), t0_(std::chrono::steady_clock::now()) {}
+  ~Stopwatch() { seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count(); }
+  Stopwatch(const Stopwatch&) = delete;
+  Stopwatch& operator=(const Stopwatch&) = delete;
+
+ private:
+  double& seconds_;
+  std::chrono::steady_clock::time_point t0_;
+};
 
 double inf_norm(const Vector& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
 
@@ -91,10 +106,15 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   dofs_ = DofMap(*model_.mesh, model_.volume_cells(), model_.dim);
   if (contact_) contact_->add_dofs(dofs_);
   const int n = dofs_.n_dofs();
-  k_elastic_.clear();
-  assemble_stiffness(model_, dofs_, k_elastic_);
-  k_full_ = SparseMatrix(n, n);
-  k_full_.setFromTriplets(k_elastic_.begin(), k_elastic_.end());
+  stats_ = SolverStats{};
+  stats_.n_dofs = n;
+  {
+    Stopwatch watch(stats_.assemble_seconds);
+    k_elastic_.clear();
+    assemble_stiffness(model_, dofs_, k_elastic_);
+    k_full_ = SparseMatrix(n, n);
+    k_full_.setFromTriplets(k_elastic_.begin(), k_elastic_.end());
+  }
   k_scale_ = k_full_.nonZeros() ? k_full_.coeffs().cwiseAbs().maxCoeff() : 0.0;
 
   Vector u = Vector::Zero(n);
@@ -104,7 +124,19 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   initial.inst = instants[0];
   initial.nodal["DEPL"] = make_depl(u);
   steps_.push_back(std::move(initial));
-  for (size_t i = 1; i < instants.size(); ++i) advance(instants[i - 1], instants[i], 0, u);
+  for (size_t i = 1; i < instants.size(); ++i) {
+    try {
+      advance(instants[i - 1], instants[i], 0, u);
+    } catch (SolveError& err) {
+      // Say how far the run got: the converged steps stay available (converged_steps()).
+      const ResultStep& last = steps_.back();
+      err.add_hint("failed in step " + std::to_string(i) + " of " + std::to_string(instants.size() - 1) + " [" +
+                   sci(instants[i - 1]) + ", " + sci(instants[i]) + "]; " + std::to_string(steps_.size() - 1) +
+                   " step(s) converged before, the last at instant " + sci(last.inst) + " (NUME_ORDRE " +
+                   std::to_string(last.nume_ordre) + ")");
+      throw;
+    }
+  }
   return steps_;
 }
 
@@ -131,6 +163,7 @@ void StaticSolver::advance(double t0, double t1, int level, Vector& u) {
     return;
   }
   u = trial;
+  ++stats_.instants;
   ResultStep result;
   result.nume_ordre = static_cast<int>(steps_.size());
   result.inst = t1;
@@ -145,7 +178,11 @@ void StaticSolver::solve_instant(double t, Vector& u) {
   const Constraints cons = build_constraints(dofs_, loads_, t, *model_.mesh);
   for (size_t i = 0; i < cons.constrained.size(); ++i) u[cons.constrained[i]] = cons.values[i];
   const Vector f_ext = external_forces(model_, dofs_, loads_, t);
-  if (contact_) contact_->begin_step(u, log_);
+  stats_.n_free = std::max(stats_.n_free, cons.n_free);
+  if (contact_) {
+    Stopwatch watch(stats_.contact_seconds);
+    contact_->begin_step(u, log_);
+  }
 
   const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
   SolverKind backend = options_.solver;
@@ -159,8 +196,15 @@ void StaticSolver::solve_instant(double t, Vector& u) {
     log_.info("  | ITER |  RESI_GLOB_RELA |  RESI_GLOB_MAXI |");
     for (int iter = 0; iter <= options_.iter_glob_maxi; ++iter) {
       std::vector<Triplet> k_contact;
-      Vector residual = k_full_ * u - f_ext;
-      if (contact_) contact_->add_to_system(u, k_contact, residual);
+      Vector residual;
+      {
+        Stopwatch watch(stats_.assemble_seconds);
+        residual = k_full_ * u - f_ext;
+      }
+      if (contact_) {
+        Stopwatch watch(stats_.contact_seconds);
+        contact_->add_to_system(u, k_contact, residual);
+      }
       // RESI_GLOB_RELA as code_aster: free residual over the largest load or reaction.
       double denom = inf_norm(f_ext);
       Vector r_free(cons.n_free);
@@ -185,6 +229,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       if (iter > 0 && rela_ok && maxi_ok) { converged = true; break; }
       if (iter == options_.iter_glob_maxi) break;
 
+      auto assemble_watch = std::make_unique<Stopwatch>(stats_.assemble_seconds);
       std::vector<Triplet> reduced;
       reduced.reserve(k_elastic_.size() + k_contact.size());
       for (const auto* list : {&k_elastic_, &k_contact})
@@ -192,14 +237,28 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
           if (i >= 0 && j >= 0) reduced.emplace_back(i, j, tr.value());
         }
+      // With no contact point active, the bodies must be held by Dirichlet
+      // conditions alone; the indefinite backends would not say when they are
+      // not (round-off hides the zero pivot), so check the elastic part once.
+      if (contact_ && !rigid_checked_ && contact_->n_active() == 0) {
+        if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, k_elastic_, t)) throw *rigid;
+        rigid_checked_ = true;
+      }
       SparseMatrix k_ff(cons.n_free, cons.n_free);
       k_ff.setFromTriplets(reduced.begin(), reduced.end());
+      assemble_watch.reset();
       try {
+        Stopwatch watch(stats_.factorize_seconds);
         solver->factorize(k_ff, kind);
       } catch (const SolveError& err) {
         throw diagnose_singular_system(model_, dofs_, cons.free_index, k_elastic_, err, t);
       }
-      const Vector du = solver->solve(-r_free);
+      Vector du;
+      {
+        Stopwatch watch(stats_.solve_seconds);
+        du = solver->solve(-r_free);
+      }
+      ++stats_.newton_iterations;
       if (!du.allFinite())
         throw SolveError("the linear solve at instant " + sci(t) + " produced non-finite values",
                          {"the system is singular or badly scaled; check the boundary conditions"});
@@ -212,7 +271,21 @@ void StaticSolver::solve_instant(double t, Vector& u) {
                                  std::to_string(options_.iter_glob_maxi) + " iterations",
                              {"last residuals: RESI_GLOB_RELA = " + sci(resi_rela) + ", RESI_GLOB_MAXI = " + sci(resi_maxi),
                               "loop: Newton (contact/geometry fixed-point pass " + std::to_string(fixed_point) + ")"});
-    if (!contact_ || contact_->settle(u, log_)) break;
+    if (!contact_) break;
+    ++stats_.contact_passes;
+    bool settled = false;
+    {
+      Stopwatch watch(stats_.contact_seconds);
+      try {
+        settled = contact_->settle(u, log_);
+      } catch (ConvergenceError& err) {
+        err.add_hint("at instant " + sci(t) + ", after " + std::to_string(total_newton) +
+                     " Newton iteration(s); last residuals: RESI_GLOB_RELA = " + sci(resi_rela) +
+                     ", RESI_GLOB_MAXI = " + sci(resi_maxi));
+        throw;
+      }
+    }
+    if (settled) break;
   }
   log_.info("  converged in " + std::to_string(total_newton) + " Newton iteration(s)");
 }

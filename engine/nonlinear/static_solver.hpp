@@ -60,8 +60,25 @@ class ContactHook {
   virtual bool settle(const Vector& u, const Log& log) = 0;
   /// Kind of the assembled system once contact is in (Lagrange => indefinite).
   virtual MatrixKind matrix_kind() const = 0;
+  /// Number of contact points (or slave nodes) currently active. With none, the
+  /// bodies must be held by Dirichlet conditions alone: the driver checks it.
+  virtual int n_active() const = 0;
   /// Stores contact results (LAGS_C in DEPL is already in u; CONT_NOEU ...).
   virtual void write_fields(const Vector& u, ResultStep& step) const = 0;
+};
+
+/// What one run cost, measured by the solver itself (wall seconds, counts).
+/// Read through `StaticSolver::stats()`; IMPR_MESURE writes it as a CSV row.
+struct SolverStats {
+  int n_dofs = 0;             ///< unknowns, contact multipliers included
+  int n_free = 0;             ///< unknowns left after eliminating Dirichlet conditions (largest over instants)
+  int instants = 0;           ///< converged instants (sub-steps included)
+  int newton_iterations = 0;  ///< linear solves, over all instants and contact passes
+  int contact_passes = 0;     ///< contact status/geometry fixed-point passes (calls to settle)
+  double assemble_seconds = 0.0;   ///< elastic stiffness, residuals, reduced matrices
+  double contact_seconds = 0.0;    ///< contact hook: pairing, statuses, contact terms
+  double factorize_seconds = 0.0;  ///< sparse factorisations
+  double solve_seconds = 0.0;      ///< forward/back substitutions
 };
 
 /// Runs the instants in turn from u = 0; returns one ResultStep per instant
@@ -75,6 +92,8 @@ class StaticSolver {
   std::vector<ResultStep> run(const std::vector<double>& instants);
   const std::vector<ResultStep>& converged_steps() const { return steps_; }
   const DofMap& dofs() const { return dofs_; }
+  /// Cost of the last `run` (also filled when it throws).
+  const SolverStats& stats() const { return stats_; }
 
  private:
   /// Advances u from instant t0 to t1, splitting the step on ConvergenceError.
@@ -84,7 +103,8 @@ class StaticSolver {
   NodalField make_depl(const Vector& u) const;
   std::vector<Triplet> k_elastic_;
   SparseMatrix k_full_;
-  double k_scale_ = 0.0;  ///< largest stiffness coefficient, for the residual reference
+  double k_scale_ = 0.0;
+  bool rigid_checked_ = false;  ///< elastic part proven free of rigid-body modes  ///< largest stiffness coefficient, for the residual reference
 
   const FeModel& model_;
   const MechanicalLoads& loads_;
@@ -93,6 +113,7 @@ class StaticSolver {
   const Log& log_;
   DofMap dofs_;
   std::vector<ResultStep> steps_;
+  SolverStats stats_;
 };
 
 }  // namespace lunaster::engine

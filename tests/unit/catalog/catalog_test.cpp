@@ -189,7 +189,7 @@ TEST(Catalog, DefiContactBlocksFollowFormulation) {
 TEST(Catalog, HelpAndMarkdownComeFromTheSpecs) {
   std::string md = catalog_markdown();
   EXPECT_NE(md.find("## STAT_NON_LINE"), std::string::npos);
-  EXPECT_NE(md.find("| `CONVERGENCE/RESI_GLOB_RELA` | real >= 0 | optional | `1e-06` |"), std::string::npos);
+  EXPECT_NE(md.find("| `CONVERGENCE/ITER_GLOB_MAXI` | integer >= 1 | optional | `10` |"), std::string::npos);
   EXPECT_NE(md.find("`ZONE/ORDRE_INT`"), std::string::npos);
   std::string help = command_help(*find_command("AFFE_MODELE"));
   EXPECT_NE(help.find("MODELISATION  [text in ('D_PLAN', 'C_PLAN', '3D'); required]"), std::string::npos);
