@@ -7,6 +7,13 @@
 --            AB, DY = U0/2 = -0.05 m on AB. Units SI. Runtime label: fast, contact.
 -- code_aster gets LAGS_C -1.00080e5 at A, B (0.08 %) and -1.00351e5 at O (0.35 %); DY -0.049997 at
 -- A, B and -0.049978 at O. The tolerances below are code_aster's (1 %).
+-- Where we stand: LAGS_C -1.000795e5 at A, B (0.080 %, slightly better than code_aster) and
+-- -1.003594e5 at O (0.359 %: 8.7 Pa, i.e. 0.009 points, WORSE than code_aster's 0.351 %); DY matches
+-- code_aster to 4e-9 m. The difference at O comes from the second pairing in the deformed geometry
+-- (REAC_GEOM='CONTROLE', NB_ITER_GEOM=2): pairing once (REAC_GEOM='SANS') gives -1.003530e5 (0.353 %)
+-- at O and -1.000847e5 at A, B; COEF_CONT has no effect. We could not find which detail of
+-- code_aster's geometric update we reproduce differently; this is an open problem, not a tolerance
+-- to loosen (see the closing note of the contact issue).
 DEBUT()
 MA = LIRE_MAILLAGE{ FORMAT = 'MED' }
 MO = AFFE_MODELE{ MAILLAGE = MA,
@@ -30,11 +37,17 @@ RESU = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CHMAT, CONTACT = CONT,
                       CONVERGENCE = _F{ RESI_GLOB_MAXI = 2e-8, ITER_GLOB_MAXI = 30 } }
 IMPR_RESU{ FORMAT = 'MED', RESU = _F{ RESULTAT = RESU } }
 
+-- VALE_CALC: lunaster's own values from a real run (non-regression, relative 1e-6).
+local calc = {
+  A = { DY = -4.999669690478e-02, LAGS_C = -1.000795227287e+05 },
+  O = { DY = -4.997830886910e-02, LAGS_C = -1.003593668221e+05 },
+  B = { DY = -4.999669690478e-02, LAGS_C = -1.000795227287e+05 },
+}
 local checks = {}
 for _, point in ipairs({ 'A', 'O', 'B' }) do
-  checks[#checks + 1] = _F{ RESULTAT = RESU, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', GROUP_NO = point, NOM_CMP = 'DY',
+  checks[#checks + 1] = _F{ RESULTAT = RESU, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', GROUP_NO = point, NOM_CMP = 'DY', VALE_CALC = calc[point].DY,
                             REFERENCE = 'ANALYTIQUE', VALE_REFE = -0.05, PRECISION = 1.0e-2 }
-  checks[#checks + 1] = _F{ RESULTAT = RESU, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', GROUP_NO = point, NOM_CMP = 'LAGS_C',
+  checks[#checks + 1] = _F{ RESULTAT = RESU, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', GROUP_NO = point, NOM_CMP = 'LAGS_C', VALE_CALC = calc[point].LAGS_C,
                             REFERENCE = 'ANALYTIQUE', VALE_REFE = -1.0e5, PRECISION = 1.0e-2 }
 end
 TEST_RESU{ RESU = checks }
