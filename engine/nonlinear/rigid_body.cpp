@@ -1,5 +1,7 @@
 #include "engine/nonlinear/rigid_body.hpp"
 
+#include "engine/nonlinear/reduction.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <numeric>
@@ -45,7 +47,7 @@ std::string body_name(const Mesh& mesh, const std::vector<int>& body) {
 
 std::optional<SolveError> find_rigid_body_mode(const FeModel& model, const DofMap& dofs,
                                                const std::vector<int>& free_index,
-                                               const std::vector<Triplet>& elastic, double t) {
+                                               const SparseMatrix& elastic, double t) {
   // Reduced elastic matrix on the free displacement equations only.
   std::vector<int> reduced(dofs.n_dofs(), -1), back;
   for (int eq = 0; eq < dofs.n_dofs(); ++eq)
@@ -53,14 +55,7 @@ std::optional<SolveError> find_rigid_body_mode(const FeModel& model, const DofMa
       reduced[eq] = static_cast<int>(back.size());
       back.push_back(eq);
     }
-  std::vector<Triplet> trips;
-  trips.reserve(elastic.size());
-  for (const auto& tr : elastic) {
-    const int i = reduced[tr.row()], j = reduced[tr.col()];
-    if (i >= 0 && j >= 0) trips.emplace_back(i, j, tr.value());
-  }
-  SparseMatrix k(static_cast<int>(back.size()), static_cast<int>(back.size()));
-  k.setFromTriplets(trips.begin(), trips.end());
+  SparseMatrix k = restrict_matrix(elastic, reduced, static_cast<int>(back.size()));
   auto chol = make_linear_solver(SolverKind::Cholmod);
   int column = -1;
   try {
@@ -85,7 +80,7 @@ std::optional<SolveError> find_rigid_body_mode(const FeModel& model, const DofMa
 }
 
 SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, const std::vector<int>& free_index,
-                                    const std::vector<Triplet>& elastic, const SolveError& original, double t) {
+                                    const SparseMatrix& elastic, const SolveError& original, double t) {
   if (auto rigid = find_rigid_body_mode(model, dofs, free_index, elastic, t)) return *rigid;
   char inst[32];
   std::snprintf(inst, sizeof inst, "%.6e", t);

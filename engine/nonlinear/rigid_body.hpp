@@ -22,9 +22,9 @@ namespace lunaster::engine {
 /// or nothing if that part is regular (CHOLMOD with its pivot-ratio test).
 std::optional<SolveError> find_rigid_body_mode(const FeModel& model, const DofMap& dofs,
                                                const std::vector<int>& free_index,
-                                               const std::vector<Triplet>& elastic, double t);
+                                               const SparseMatrix& elastic, double t);
 
 SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, const std::vector<int>& free_index,
-                                    const std::vector<Triplet>& elastic, const SolveError& original, double t);
+                                    const SparseMatrix& elastic, const SolveError& original, double t);
 
 }  // namespace lunaster::engine

@@ -3,11 +3,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <memory>
 
 #include "engine/assembly/assembly.hpp"
 #include "engine/core/error.hpp"
+#include "engine/nonlinear/reduction.hpp"
 #include "engine/nonlinear/rigid_body.hpp"
 
 namespace lunaster::engine {
@@ -110,11 +112,11 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   stats_.n_dofs = n;
   {
     Stopwatch watch(stats_.assemble_seconds);
-    k_elastic_.clear();
-    assemble_stiffness(model_, dofs_, k_elastic_);
+    std::vector<Triplet> triplets;
+    assemble_stiffness(model_, dofs_, triplets);
     k_full_ = SparseMatrix(n, n);
-    k_full_.setFromTriplets(k_elastic_.begin(), k_elastic_.end());
-  }
+    k_full_.setFromTriplets(triplets.begin(), triplets.end());
+  }  // the triplets are freed here: only the compressed matrix is kept
   k_scale_ = k_full_.nonZeros() ? k_full_.coeffs().cwiseAbs().maxCoeff() : 0.0;
 
   Vector u = Vector::Zero(n);
@@ -230,28 +232,30 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       if (iter == options_.iter_glob_maxi) break;
 
       auto assemble_watch = std::make_unique<Stopwatch>(stats_.assemble_seconds);
-      std::vector<Triplet> reduced;
-      reduced.reserve(k_elastic_.size() + k_contact.size());
-      for (const auto* list : {&k_elastic_, &k_contact})
-        for (const auto& tr : *list) {
-          const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
-          if (i >= 0 && j >= 0) reduced.emplace_back(i, j, tr.value());
-        }
       // With no contact point active, the bodies must be held by Dirichlet
       // conditions alone; the indefinite backends would not say when they are
       // not (round-off hides the zero pivot), so check the elastic part once.
-      if (contact_ && !rigid_checked_ && contact_->n_active() == 0) {
-        if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, k_elastic_, t)) throw *rigid;
+      // Without contact the same holds for UMFPACK and MUMPS, which return some
+      // solution of a singular but consistent system (a free rigid translation).
+      if (!rigid_checked_ && (contact_ ? contact_->n_active() == 0 : backend != SolverKind::Cholmod)) {
+        if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, k_full_, t)) throw *rigid;
         rigid_checked_ = true;
       }
-      SparseMatrix k_ff(cons.n_free, cons.n_free);
-      k_ff.setFromTriplets(reduced.begin(), reduced.end());
+      // Dirichlet by elimination: restrict to the free equations in one pass.
+      SparseMatrix k_ff;
+      if (k_contact.empty()) {
+        k_ff = restrict_matrix(k_full_, cons.free_index, cons.n_free);
+      } else {
+        SparseMatrix k_c(n, n);
+        k_c.setFromTriplets(k_contact.begin(), k_contact.end());
+        k_ff = restrict_matrix(k_full_ + k_c, cons.free_index, cons.n_free);
+      }
       assemble_watch.reset();
       try {
         Stopwatch watch(stats_.factorize_seconds);
         solver->factorize(k_ff, kind);
       } catch (const SolveError& err) {
-        throw diagnose_singular_system(model_, dofs_, cons.free_index, k_elastic_, err, t);
+        throw diagnose_singular_system(model_, dofs_, cons.free_index, k_full_, err, t);
       }
       Vector du;
       {
@@ -259,9 +263,18 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         du = solver->solve(-r_free);
       }
       ++stats_.newton_iterations;
-      if (!du.allFinite())
-        throw SolveError("the linear solve at instant " + sci(t) + " produced non-finite values",
-                         {"the system is singular or badly scaled; check the boundary conditions"});
+      // A direct solver may return a "solution" of a singular system without flagging it
+      // (MUMPS misses null pivots that are round-off rather than exact zeros): check the
+      // solve itself, and locate the rigid-body mode when it did not solve the system.
+      const double solve_error = du.allFinite() ? (k_ff * du + r_free).norm() /
+                                                      std::max(r_free.norm(), std::numeric_limits<double>::min())
+                                                : std::numeric_limits<double>::infinity();
+      if (!(solve_error <= 1e-6))
+        throw diagnose_singular_system(
+            model_, dofs_, cons.free_index, k_full_,
+            SolveError("the linear solver returned no solution (relative residual of the solve " + sci(solve_error) +
+                       ")"),
+            t);
       for (int eq = 0; eq < n; ++eq)
         if (cons.free_index[eq] >= 0) u[eq] += du[cons.free_index[eq]];
       ++total_newton;

@@ -101,7 +101,6 @@ class StaticSolver {
   /// Newton (+ contact loops) at instant t starting from u; throws on failure.
   void solve_instant(double t, Vector& u);
   NodalField make_depl(const Vector& u) const;
-  std::vector<Triplet> k_elastic_;
   SparseMatrix k_full_;
   double k_scale_ = 0.0;
   bool rigid_checked_ = false;  ///< elastic part proven free of rigid-body modes  ///< largest stiffness coefficient, for the residual reference

@@ -71,10 +71,11 @@ cholmod_sparse view(const SparseMatrix& a) {
   return s;
 }
 
-/// Fill-reducing ordering computed by METIS on the quotient graph whose
+/// Fill-reducing ordering computed by AMD on the quotient graph whose
 /// vertices are runs of consecutive columns with identical patterns (the DOFs
 /// of one node), expanded back to columns. Ordering the node graph instead of
-/// the DOF graph is several times cheaper for the same fill. Empty if the
+/// the DOF graph is several times cheaper for the same fill; on the SSNP121 2D
+/// family AMD beat METIS (136k unknowns: 0.68 s vs 1.00 s user in total). Empty if the
 /// matrix has no such runs or METIS fails (CHOLMOD then chooses itself).
 std::vector<int> node_graph_ordering(const SparseMatrix& a, cholmod_common* common) {
   const int n = static_cast<int>(a.cols());
@@ -112,7 +113,7 @@ std::vector<int> node_graph_ordering(const SparseMatrix& a, cholmod_common* comm
   q.sorted = 1;
   q.packed = 1;
   std::vector<int> gperm(ng);
-  if (!cholmod_metis(&q, nullptr, 0, 1, gperm.data(), common)) return {};
+  if (!cholmod_amd(&q, nullptr, 0, gperm.data(), common)) return {};
   std::vector<int> perm;
   perm.reserve(n);
   for (int g : gperm)

@@ -11,7 +11,7 @@ work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 printf "%6s %10s %10s %10s %12s\n" N nodes unknowns wall_s peak_MB
 for n in "${sizes[@]}"; do
   mesh="$work/glued_$n.med"
-  "$root/$build/lunaster-meshgen" ssnp121-2d --upper "quad4:$n" --lower "quad4:$n" --glued -o "$mesh" >/dev/null
+  "$root/$build/lunaster-meshgen" --upper "quad4:$n" --lower "quad4:$n" --glued -o "$mesh" >/dev/null
   deck="$work/glued_$n.lua"
   cat > "$deck" <<LUA
 DEBUT()
