@@ -43,6 +43,13 @@ fuzz:
 docs: build
 	$(BUILD)/lunaster --dump-catalog md docs/commands.md
 
+# The speed/accuracy study (tests/bench/study, under 15 min on 2 cores): charts, CSV and the
+# stability atlas under docs/study/. Needs matplotlib and CalculiX (install-deps.sh study).
+# Never a pass/fail test. STUDY_FLAGS=--quick for a 2-minute smoke run.
+study: build
+	bash scripts/install-deps.sh study
+	bash tests/bench/study/run_study.sh $(BUILD) $(STUDY_FLAGS)
+
 meshes: build
 	bash tools/make_meshes.sh $(BUILD)/lunaster-meshgen
 

@@ -22,6 +22,7 @@ const CommandSpec& stat_non_line_spec();
 const CommandSpec& calc_champ_spec();
 const CommandSpec& test_resu_spec();
 const CommandSpec& impr_resu_spec();
+const CommandSpec& impr_mesure_spec();
 
 /// Builds a CommandSpec from its parts (the body is a root factor keyword).
 CommandSpec make_command(std::string name, std::string result_type, std::string doc, std::vector<Keyword> keywords,

@@ -25,5 +25,6 @@ ConceptPtr stat_non_line(const Args& args, Session& session);
 ConceptPtr calc_champ(const Args& args, Session& session);
 ConceptPtr test_resu(const Args& args, Session& session);
 ConceptPtr impr_resu(const Args& args, Session& session);
+ConceptPtr impr_mesure(const Args& args, Session& session);
 
 }  // namespace lunaster::cmd

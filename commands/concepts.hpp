@@ -88,6 +88,7 @@ struct EvolNoli : Concept {
   std::shared_ptr<Modele> modele;
   std::shared_ptr<ChamMater> cham_mater;
   std::vector<engine::ResultStep> steps;
+  engine::SolverStats stats;  ///< cost of the STAT_NON_LINE that made it (IMPR_MESURE)
   std::string type_name() const override { return "evol_noli"; }
 };
 

@@ -22,6 +22,7 @@ const std::vector<CommandEntry>& all_handlers() {
       {"CALC_CHAMP", calc_champ},
       {"TEST_RESU", test_resu},
       {"IMPR_RESU", impr_resu},
+      {"IMPR_MESURE", impr_mesure},
   };
   return handlers;
 }

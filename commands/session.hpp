@@ -55,6 +55,10 @@ class Session {
     std::chrono::steady_clock::time_point t0_;
   };
 
+  // ---- IMPR_MESURE: the phase times and clock at its previous call ----
+  std::map<std::string, double> phase_seconds_measured;
+  std::chrono::steady_clock::time_point measure_mark = std::chrono::steady_clock::now();
+
   bool fin_called = false;
 
  private:

@@ -4,6 +4,7 @@
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
 #include "engine/contact/contact_factory.hpp"
+#include "engine/io/med_writer.hpp"
 
 namespace lunaster::cmd {
 
@@ -39,6 +40,21 @@ std::vector<double> instants(const Args& inc, engine::NewtonOptions& options) {
   if (out.size() < 2)
     throw inc.error("LIST_INST", "at least one instant after INST_INIT", std::to_string(out.size()) + " instant(s)");
   return out;
+}
+
+/// On a failed solve, the steps that converged are not lost: they go atomically to
+/// <deck>_converged.rmed in the output folder (the deck stops, exit 3, so the
+/// concept itself is never assigned) and the error says where they are.
+void save_converged_steps(const std::vector<engine::ResultStep>& steps, const engine::Mesh& mesh, Session& session,
+                          SolveError& err) {
+  if (steps.size() < 2) return;  // only the initial state
+  const auto path = session.output_file(session.deck_path.stem().string() + "_converged.rmed");
+  try {
+    engine::write_med(path.string(), mesh, {{"RESU", &steps}});
+    err.add_hint("the " + std::to_string(steps.size() - 1) + " converged step(s) are saved in " + path.string());
+  } catch (const Error& write_error) {
+    err.add_hint("the converged steps could not be saved: " + write_error.message());
+  }
 }
 
 void check_relation(const Args& args) {
@@ -103,8 +119,14 @@ ConceptPtr stat_non_line(const Args& args, Session& session) {
   engine::StaticSolver solver(model, loads, options, hook.get(), session.log());
   {
     Session::Timer timer(session, "solve");
-    result->steps = solver.run(times);
+    try {
+      result->steps = solver.run(times);
+    } catch (SolveError& err) {
+      save_converged_steps(solver.converged_steps(), *model.mesh, session, err);
+      throw;
+    }
   }
+  result->stats = solver.stats();
   return result;
 }
 

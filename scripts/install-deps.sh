@@ -15,6 +15,21 @@ PACKAGES=(
   python3 python3-numpy python3-h5py python3-meshio  # MED interoperability checks (independent reader/writer)
 )
 
+# `install-deps.sh study` (used by `make study` only, never by CI): the speed/accuracy
+# study's charts and its peer solver.
+if [ "${1:-}" = "study" ]; then
+  PACKAGES+=(
+    python3-matplotlib          # docs/study charts (SVG, PNG)
+    calculix-ccx                # CalculiX, the peer on the same meshes (tests/bench/study)
+  )
+fi
+
+# Optional: `install-deps.sh fuzz` adds what `make fuzz` needs (clang 14 and its
+# runtime libraries, which on Debian 12 include libFuzzer: libclang_rt.fuzzer).
+if [ "${1:-}" = "fuzz" ]; then
+  PACKAGES+=(clang libclang-rt-14-dev)
+fi
+
 missing=()
 for p in "${PACKAGES[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

@@ -1,0 +1,169 @@
+#!/usr/bin/python3
+"""Converts an SSNP121 MED mesh (from lunaster-meshgen) into a CalculiX input deck.
+
+The scene is SSNP121's: E = 2e6 Pa, nu = 0, frictionless contact between the two
+blocks, imposed displacement -0.1 on the top face, bottom face fixed (2D plane
+strain: CD / GH and AB / EF; 3D: SURCHA / ENCAST and SURESC / SURMAI).
+
+    med2inp.py MESH.med OUT.inp --contact {nts,sts,mortar} [--penalty K]
+
+nts    *CONTACT PAIR, TYPE=NODE TO SURFACE  (penalty, PRESSURE-OVERCLOSURE=LINEAR, slope K)
+sts    *CONTACT PAIR, TYPE=SURFACE TO SURFACE (penalty, same law)
+mortar *CONTACT PAIR, TYPE=MORTAR (PRESSURE-OVERCLOSURE=HARD)
+Slave = the upper block's face (AB / SURESC, as lunaster's CONTINUE decks), master = the other.
+Reads the mesh with meshio (Debian python3-meshio); PENTA15 meshes are not readable by it.
+"""
+import argparse
+import sys
+
+import meshio
+
+# meshio (VTK order, which equals Abaqus/CalculiX order for these types) -> CalculiX element, faces.
+# Faces: corner-node indices (0-based) of each face, in CalculiX face order S1, S2, ...
+ELEMENTS = {
+    "quad": ("CPE4", [(0, 1), (1, 2), (2, 3), (3, 0)]),
+    "quad8": ("CPE8", [(0, 1), (1, 2), (2, 3), (3, 0)]),
+    "hexahedron": ("C3D8", [(0, 1, 2, 3), (4, 7, 6, 5), (0, 4, 5, 1), (1, 5, 6, 2), (2, 6, 7, 3), (3, 7, 4, 0)]),
+    "hexahedron20": ("C3D20", [(0, 1, 2, 3), (4, 7, 6, 5), (0, 4, 5, 1), (1, 5, 6, 2), (2, 6, 7, 3), (3, 7, 4, 0)]),
+}
+SCENES = {
+    2: dict(bodies=("PLAQUE1", "PLAQUE2"), top="CD", bottom="GH", slave="AB", master="EF", normal=2),
+    3: dict(bodies=("V1", "V2"), top="SURCHA", bottom="ENCAST", slave="SURESC", master="SURMAI", normal=3),
+}
+
+
+def extrude(mesh):
+    """2D QUAD4 mesh -> one layer of HEXA8 (thickness 1/N of the slave face), same group names;
+    edge groups become the face groups of the layer, node groups keep their z = 0 node."""
+    n = len(mesh.points)
+    edge_count = sum(len(c.data) for c in mesh.cells if c.type == "line")
+    t = 1.0 / max(1.0, edge_count / 8.0)
+    pts = [[x[0], x[1], 0.0] for x in mesh.points] + [[x[0], x[1], t] for x in mesh.points]
+    cells, tags = [], []
+    for b, block in enumerate(mesh.cells):
+        if block.type == "quad":
+            data = [[*q, *(int(k) + n for k in q)] for q in block.data]
+            cells.append(("hexahedron", data))
+        elif block.type == "line":
+            data = [[e[0], e[1], int(e[1]) + n, int(e[0]) + n] for e in block.data]
+            cells.append(("quad", data))
+        else:
+            sys.exit(f"med2inp: --slab handles QUAD4 meshes only, got {block.type}")
+        tags.append(mesh.cell_data["cell_tags"][b])
+    point_tags = list(mesh.point_data["point_tags"]) + [0] * n
+    out = meshio.Mesh(pts, cells, cell_data={"cell_tags": tags}, point_data={"point_tags": point_tags})
+    out.cell_tags, out.point_tags = mesh.cell_tags, mesh.point_tags
+    return out
+
+
+def groups(mesh):
+    """cell group -> list of (block index, cell index); node group -> node indices."""
+    cells, nodes = {}, {}
+    for b, block in enumerate(mesh.cells):
+        for i, tag in enumerate(mesh.cell_data["cell_tags"][b]):
+            for name in mesh.cell_tags.get(int(tag), []):
+                cells.setdefault(name, []).append((b, i))
+    for n, tag in enumerate(mesh.point_data["point_tags"]):
+        for name in mesh.point_tags.get(int(tag), []):
+            nodes.setdefault(name, []).append(n)
+    return cells, nodes
+
+
+def face_surface(mesh, cells, group, volume_groups):
+    """(element id, face number) for each boundary cell of `group`, found on the volume cells."""
+    corner_index = {}
+    for gname in volume_groups:
+        for b, i in cells[gname]:
+            ctype = mesh.cells[b].type
+            elem_id = element_ids[(b, i)]
+            conn = mesh.cells[b].data[i]
+            for f, face in enumerate(ELEMENTS[ctype][1]):
+                corner_index[frozenset(int(conn[k]) for k in face)] = (elem_id, f + 1)
+    out = []
+    for b, i in cells[group]:
+        conn = mesh.cells[b].data[i]
+        ncorner = {"line": 2, "line3": 2, "quad": 4, "quad8": 4}[mesh.cells[b].type]
+        key = frozenset(int(n) for n in conn[:ncorner])
+        if key not in corner_index:
+            sys.exit(f"med2inp: face of {group} not found on a volume cell")
+        out.append(corner_index[key])
+    return out
+
+
+element_ids = {}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("mesh")
+    ap.add_argument("out")
+    ap.add_argument("--contact", choices=("nts", "sts", "mortar"), default="sts")
+    ap.add_argument("--penalty", type=float, default=1e9, help="LINEAR pressure-overclosure slope (Pa/m)")
+    ap.add_argument("--slab", action="store_true",
+                    help="2D meshes: one layer of C3D8 with DZ = 0 everywhere instead of CPE4 (CalculiX's mortar "
+                         "contact refuses the MPCs of its own 2D expansion)")
+    a = ap.parse_args()
+    mesh = meshio.read(a.mesh)
+    if a.slab:
+        mesh = extrude(mesh)
+    dim = 3 if any(c.type.startswith("hexa") for c in mesh.cells) else 2
+    sc = SCENES[2 if a.slab else dim]
+    cells, nodes = groups(mesh)
+    lines = ["*HEADING", f"SSNP121 {dim}D from {a.mesh} (lunaster tests/bench/study)", "*NODE, NSET=NALL"]
+    for n, x in enumerate(mesh.points):
+        z = x[2] if dim == 3 else 0.0
+        lines.append(f"{n + 1}, {x[0]:.12g}, {x[1]:.12g}, {z:.12g}")
+    next_id = 1
+    for body in sc["bodies"]:
+        by_type = {}
+        for b, i in cells[body]:
+            by_type.setdefault(mesh.cells[b].type, []).append((b, i))
+        for ctype, members in by_type.items():
+            lines.append(f"*ELEMENT, TYPE={ELEMENTS[ctype][0]}, ELSET={body}")
+            for b, i in members:
+                element_ids[(b, i)] = next_id
+                conn = ", ".join(str(int(n) + 1) for n in mesh.cells[b].data[i])
+                lines.append(f"{next_id}, {conn}")
+                next_id += 1
+    for name in (sc["top"], sc["bottom"], sc["slave"], sc["master"]):
+        members = sorted({int(n) + 1 for b, i in cells[name] for n in mesh.cells[b].data[i]})
+        lines.append(f"*NSET, NSET=N{name}")
+        lines += [", ".join(map(str, members[k:k + 12])) for k in range(0, len(members), 12)]
+    interface = set()
+    for name in (sc["slave"], sc["master"]):
+        faces = face_surface(mesh, cells, name, sc["bodies"])
+        interface |= {e for e, _ in faces}
+        lines.append(f"*SURFACE, NAME=S{name}, TYPE=ELEMENT")
+        lines += [f"{e}, S{f}" for e, f in faces]
+    members = sorted(interface)
+    lines.append("*ELSET, ELSET=EIFACE")
+    lines += [", ".join(map(str, members[k:k + 12])) for k in range(0, len(members), 12)]
+    lines += ["*MATERIAL, NAME=STEEL", "*ELASTIC", "2.0e6, 0.0"]
+    for body in sc["bodies"]:
+        lines.append(f"*SOLID SECTION, ELSET={body}, MATERIAL=STEEL")
+        if dim == 2:
+            lines.append("1.")
+    # CalculiX 2.20 turns HARD into LINEAR (K = 1e8 by default, with a warning) for every
+    # pair type, mortar included: the penalty slope is given explicitly instead.
+    lines += ["*SURFACE INTERACTION, NAME=SI1", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR",
+              f"{a.penalty:.6g}"]
+    ctype = {"nts": "NODE TO SURFACE", "sts": "SURFACE TO SURFACE", "mortar": "MORTAR"}[a.contact]
+    lines += [f"*CONTACT PAIR, INTERACTION=SI1, TYPE={ctype}", f"S{sc['slave']}, S{sc['master']}"]
+    top, bottom = "N" + sc["top"], "N" + sc["bottom"]
+    normal = sc["normal"]
+    lines += ["*STEP", "*STATIC", "1., 1.", "*BOUNDARY", f"{bottom}, 1, {dim}, 0.", f"{top}, 1, 1, 0.",
+              f"{top}, {normal}, {normal}, -0.1"]
+    if dim == 3 and normal == 3:
+        lines.append(f"{top}, 2, 2, 0.")
+    if a.slab:
+        lines.append("NALL, 3, 3, 0.")
+    lines += [
+              f"*NODE PRINT, NSET=N{sc['slave']}", "U", f"*NODE PRINT, NSET=N{sc['master']}", "U",
+              "*EL PRINT, ELSET=EIFACE", "S", "*CONTACT PRINT", "CSTR", "*END STEP"]
+    with open(a.out, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print(f"{a.out}: {len(mesh.points)} nodes, {next_id - 1} elements, contact {ctype}")
+
+
+if __name__ == "__main__":
+    main()

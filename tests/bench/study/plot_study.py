@@ -1,0 +1,280 @@
+#!/usr/bin/python3
+"""Draws the study's charts and writes its summary (docs/study/).
+
+    plot_study.py WORK_DIR DOCS_DIR
+
+Reads the CSV files the study decks wrote with IMPR_MESURE (WORK_DIR/out/*.csv) and
+CalculiX's rows (chart_2d_ccx.csv), copies them to DOCS_DIR, and draws SVG + PNG
+figures and README.md (per method, the cheapest run reaching 1 % and 0.1 %).
+Debian packages only: python3-matplotlib.
+"""
+import csv
+import datetime
+import os
+import platform
+import shutil
+import subprocess
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+FLOOR = 1e-10  # errors below are drawn at the floor (round-off: the method is exact)
+
+
+def read(path):
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def num(row, key):
+    try:
+        return float(row.get(key, ""))
+    except ValueError:
+        return None
+
+
+def save(fig, docs, name):
+    fig.tight_layout()
+    for ext in ("svg", "png"):
+        fig.savefig(os.path.join(docs, f"{name}.{ext}"), dpi=110)
+    plt.close(fig)
+
+
+def style(method):
+    colors = {"CONTINUE-GAUSS": "#1f77b4", "CONTINUE-SIMPSON": "#2ca02c", "CONTINUE-NCOTES": "#17becf",
+              "CONTRAINTE": "#d62728", "PENALISATION-1e7": "#ff7f0e", "PENALISATION-1e9": "#e377c2",
+              "PENALISATION-1e11": "#8c564b"}
+    if method.startswith("CalculiX"):
+        c = {"NTS": "#7f7f7f", "STS": "#000000", "MORTAR": "#9467bd"}[method.split("-")[1]]
+        return dict(color=c, ls="--", marker="s" if "1e11" in method else "D", mfc="white")
+    return dict(color=colors.get(method, "#333333"), ls="-", marker="o")
+
+
+def chart(rows, docs, name, title):
+    fig, ax = plt.subplots(figsize=(9, 6.5))
+    methods = []
+    for r in rows:
+        if r["method"] not in methods:
+            methods.append(r["method"])
+    for m in methods:
+        pts = [(num(r, "t_total"), max(num(r, "err_p"), FLOOR), r["k"]) for r in rows
+               if r["method"] == m and r["status"] == "ok" and num(r, "err_p") is not None]
+        if not pts:
+            continue
+        pts.sort(key=lambda p: float(p[2]))
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], label=m, lw=1.4, ms=5, **style(m))
+        for t, e, k in pts:
+            ax.annotate(k, (t, e), textcoords="offset points", xytext=(3, 3), fontsize=7, color=style(m)["color"])
+    for level in (1e-2, 1e-3):
+        ax.axhline(level, color="#bbbbbb", lw=0.8, ls=":")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("wall time of the run (s): read + assemble + contact + factorise/solve + post")
+    ax.set_ylabel("max relative error of the contact pressure over the interface")
+    ax.set_title(title + f"\n(points labelled by refinement k; errors < {FLOOR:g} drawn at {FLOOR:g})", fontsize=10)
+    ax.legend(fontsize=7.5, loc="center left", bbox_to_anchor=(1.0, 0.5))
+    ax.grid(True, which="major", color="#eeeeee")
+    save(fig, docs, name)
+
+
+def cheapest(rows, level):
+    out = {}
+    for r in rows:
+        e, t = num(r, "err_p"), num(r, "t_total")
+        if r["status"] != "ok" or e is None or e > level:
+            continue
+        if r["method"] not in out or t < num(out[r["method"]], "t_total"):
+            out[r["method"]] = r
+    return out
+
+
+def sweep(rows, docs, name, xkey, xlabel, extra=None):
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    for k in sorted({r["k"] for r in rows}, key=float):
+        sel = [r for r in rows if r["k"] == k]
+        ok = [r for r in sel if r["status"] == "ok"]
+        bad = [r for r in sel if r["status"] != "ok"]
+        axes[0].plot([num(r, xkey) for r in ok], [max(num(r, "err_p"), FLOOR) for r in ok], "o-", label=f"k = {k}")
+        for r in bad:
+            axes[0].plot(num(r, xkey), 1.0, "kx", ms=9)
+        axes[1].plot([num(r, xkey) for r in ok], [num(r, "newton_iter") for r in ok], "o-", label=f"Newton, k = {k}")
+        axes[1].plot([num(r, xkey) for r in ok], [num(r, "contact_passes") for r in ok], "s--", label=f"contact passes, k = {k}")
+    if extra:
+        extra(axes[0])
+    axes[0].set_xscale("log"); axes[0].set_yscale("log")
+    axes[0].set_xlabel(xlabel); axes[0].set_ylabel("max relative pressure error (x: failed run)")
+    axes[1].set_xscale("log"); axes[1].set_xlabel(xlabel); axes[1].set_ylabel("iterations")
+    for ax in axes:
+        ax.legend(fontsize=7); ax.grid(True, color="#eeeeee")
+    save(fig, docs, name)
+
+
+def main():
+    work, docs = sys.argv[1], sys.argv[2]
+    out = os.path.join(work, "out")
+    os.makedirs(docs, exist_ok=True)
+    for f in os.listdir(out):
+        if f.endswith(".csv"):
+            shutil.copy(os.path.join(out, f), os.path.join(docs, f))
+    c2 = read(os.path.join(out, "chart_2d.csv")) + read(os.path.join(out, "chart_2d_ccx.csv"))
+    c3 = read(os.path.join(out, "chart_3d.csv"))
+    chart(c2, docs, "chart_2d", "SSNP121 2D: 12k x 12k QUAD4 over 11k x 11k QUAD4 (non-matching); lunaster and CalculiX")
+    for fam in sorted({r["family"] for r in c3}):
+        chart([r for r in c3 if r["family"] == fam], docs, f"chart_{fam.lower().replace('-', '')}",
+              f"SSNP121 {fam}: every lunaster contact method")
+
+    pen = read(os.path.join(out, "atlas_penalty.csv"))
+    gap = {(r["k"], float(r["E_N"])): num(r, "penetration") for r in read(os.path.join(out, "atlas_penalty_gap.csv"))}
+
+    def penetration(ax):
+        for k in sorted({r["k"] for r in pen}, key=float):
+            xs = sorted(e for kk, e in gap if kk == k)
+            ax.plot(xs, [gap[(k, e)] / 0.05 for e in xs], "v:", label=f"penetration / 0.05 m, k = {k}")
+    sweep(pen, docs, "atlas_penalty", "E_N", "E_N (Pa/m), discrete PENALISATION", penetration)
+    sweep(read(os.path.join(out, "atlas_coef.csv")), docs, "atlas_coef", "COEF_CONT", "COEF_CONT, CONTINUE-SIMPSON")
+
+    ratio = read(os.path.join(out, "atlas_ratio.csv"))
+    fig, ax = plt.subplots(figsize=(9, 5.5))
+    for m in dict.fromkeys(r["method"] for r in ratio):
+        pts = sorted((num(r, "ratio"), max(num(r, "err_p"), FLOOR)) for r in ratio if r["method"] == m and r["status"] == "ok")
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], label=m, **style(m))
+    ax.set_xscale("log"); ax.set_yscale("log")
+    ax.set_xlabel("h_slave / h_master (slave AB, master EF with 24 cells)")
+    ax.set_ylabel("pressure oscillation: max relative error on the slave")
+    ax.axvline(1.0, color="#bbbbbb", lw=0.8)
+    ax.legend(fontsize=7.5, loc="center left", bbox_to_anchor=(1.0, 0.5)); ax.grid(True, color="#eeeeee")
+    save(fig, docs, "atlas_ratio")
+
+    inc = read(os.path.join(out, "atlas_incompat.csv"))
+    if inc:
+        fig, ax = plt.subplots(figsize=(9, 4.5))
+        pairs = list(dict.fromkeys(r["pairing"] for r in inc))
+        methods = list(dict.fromkeys(r["method"] for r in inc))
+        w = 0.8 / len(pairs)
+        for i, p in enumerate(pairs):
+            vals = []
+            for m in methods:
+                r = next((r for r in inc if r["pairing"] == p and r["method"] == m), None)
+                vals.append(max(num(r, "err_p") or 1.0, FLOOR) if r and r["status"] == "ok" else 1.0)
+            ax.bar([j + i * w for j in range(len(methods))], vals, w, label=p)
+        ax.set_xticks([j + 0.4 - w / 2 for j in range(len(methods))], methods, fontsize=8)
+        ax.set_yscale("log"); ax.set_ylabel("max relative pressure error"); ax.legend()
+        ax.set_title("Incompatible pairings (3D, 4x4x4): what each method gives", fontsize=10)
+        save(fig, docs, "atlas_incompat")
+
+    d23 = read(os.path.join(out, "atlas_2d3d.csv"))
+    if d23:
+        fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+        methods = list(dict.fromkeys(r["method"] for r in d23))
+        for m in methods:
+            two = {r["k"]: r for r in d23 if r["method"] == m and r["family"] == "2D" and r["status"] == "ok"}
+            three = {r["k"]: r for r in d23 if r["method"] == m and r["family"] == "3D-slab" and r["status"] == "ok"}
+            ks = sorted(set(two) & set(three), key=float)
+            axes[0].plot([max(num(two[k], "err_p"), FLOOR) for k in ks], [max(num(three[k], "err_p"), FLOOR) for k in ks],
+                         label=m, **style(m))
+            axes[1].plot([float(k) for k in ks], [num(three[k], "t_total") / num(two[k], "t_total") for k in ks], label=m, **style(m))
+        lims = [FLOOR, 1.0]
+        axes[0].plot(lims, lims, color="#bbbbbb", lw=0.8)
+        axes[0].set_xscale("log"); axes[0].set_yscale("log")
+        axes[0].set_xlabel("pressure error, 2D plane strain"); axes[0].set_ylabel("pressure error, 3D slab")
+        axes[1].set_xscale("log", base=2); axes[1].set_xlabel("refinement k"); axes[1].set_ylabel("wall time 3D / 2D")
+        for ax in axes:
+            ax.grid(True, color="#eeeeee")
+        axes[1].legend(fontsize=7)
+        save(fig, docs, "atlas_2d3d")
+
+    summary(work, docs, c2, c3)
+
+
+def summary(work, docs, c2, c3):
+    cpu = "unknown CPU"
+    for line in open("/proc/cpuinfo"):
+        if line.startswith("model name"):
+            cpu = line.split(":", 1)[1].strip()
+            break
+    lines = ["# SSNP121 speed/accuracy study (generated by `make study`)", "",
+             f"Run on {datetime.date.today().isoformat()}, {platform.node() or 'host'}: {cpu}, "
+             f"{os.cpu_count()} cores, {platform.system()} {platform.release()}.",
+             "Every number below comes from the CSV files next to this page, written by the decks of "
+             "tests/bench/study/ (IMPR_MESURE) and by tests/bench/study/ccx/ccx_run.py (CalculiX).", "",
+             "![2D chart](chart_2d.png)", ""]
+    for title, rows in (("2D family (12k x 12k over 11k x 11k QUAD4)", c2), ("3D families", c3)):
+        lines += [f"## Cheapest run reaching 1 % and 0.1 % pressure error: {title}", "",
+                  "| method | 1 %: k, time (s), error | 0.1 %: k, time (s), error | best error reached |", "|---|---|---|---|"]
+        one, milli = cheapest(rows, 1e-2), cheapest(rows, 1e-3)
+        for m in dict.fromkeys(r["method"] for r in rows):
+            fam = lambda r: f"{r['family']} k={r['k']}" if rows is c3 else f"k={r['k']}"
+            cell = lambda d: (f"{fam(d[m])}, {num(d[m], 't_total'):.3g}, {num(d[m], 'err_p'):.2g}" if m in d else "never")
+            errs = [num(r, "err_p") for r in rows if r["method"] == m and r["status"] == "ok" and num(r, "err_p") is not None]
+            lines.append(f"| {m} | {cell(one)} | {cell(milli)} | {min(errs):.2g} |" if errs else f"| {m} | failed | failed | - |")
+        lines.append("")
+    ratios = []
+    for m_l in dict.fromkeys(r["method"] for r in c2 if not r["method"].startswith("CalculiX")):
+        for m_c in dict.fromkeys(r["method"] for r in c2 if r["method"].startswith("CalculiX")):
+            for level in (1e-2, 1e-3):
+                a, b = cheapest([r for r in c2 if r["method"] == m_l], level), cheapest([r for r in c2 if r["method"] == m_c], level)
+                if m_l in a and m_c in b:
+                    ratios.append(f"| {m_l} | {m_c} | {level:g} | {num(a[m_l], 't_total') / num(b[m_c], 't_total'):.3g} |")
+    lines += ["## Time ratio lunaster / CalculiX at equal accuracy (2D, same run)", "",
+              "Cheapest lunaster run over cheapest CalculiX run that both reach the error level "
+              "(pairs where one of them never reaches it are left out).", "",
+              "| lunaster | CalculiX | error level | time ratio |", "|---|---|---|---|"] + ratios + [""]
+    lines += atlas_text(os.path.join(work, "out"))
+    with open(os.path.join(docs, "summary.md"), "w") as f:
+        f.write("\n".join(lines))
+
+
+def atlas_text(out):
+    """The stability atlas in words, from its CSV files."""
+    L = ["## Stability atlas", ""]
+    pen = read(os.path.join(out, "atlas_penalty.csv"))
+    L += ["### Penalty sweep (discrete PENALISATION, E_N = 1e3 .. 1e16): ![](atlas_penalty.png)", "",
+          "| k | E_N | status | pressure error | Newton iterations |", "|---|---|---|---|---|"]
+    L += [f"| {r['k']} | {r['E_N']} | {r['status'][:110]} | {r['err_p']} | {r['newton_iter']} |" for r in pen]
+    coef = read(os.path.join(out, "atlas_coef.csv"))
+    L += ["", "### COEF_CONT sweep (CONTINUE-SIMPSON, 1e-5 .. 1e16): ![](atlas_coef.png)", "",
+          "| k | COEF_CONT | status | pressure error | Newton | contact passes |", "|---|---|---|---|---|---|"]
+    L += [f"| {r['k']} | {r['COEF_CONT']} | {r['status'][:110]} | {r['err_p']} | {r['newton_iter']} | {r['contact_passes']} |"
+          for r in coef]
+    L += ["", "### Slave/master element size ratio 1/4 .. 4: ![](atlas_ratio.png)", "",
+          "Largest pressure deviation on the slave side (the oscillation), per method, over the ratios "
+          "(atlas_ratio.csv for every point):", "", "| method | min | max | at ratio 1 |", "|---|---|---|---|"]
+    ratio = read(os.path.join(out, "atlas_ratio.csv"))
+    for m in dict.fromkeys(r["method"] for r in ratio):
+        es = [(num(r, "err_p"), r["ratio"]) for r in ratio if r["method"] == m and r["status"] == "ok"]
+        one = [e for e, x in es if abs(float(x) - 1) < 1e-9]
+        if es:
+            L.append(f"| {m} | {min(es)[0]:.2g} (ratio {float(min(es)[1]):.3g}) | {max(es)[0]:.2g} (ratio {float(max(es)[1]):.3g}) | "
+                     f"{one[0]:.2g} |" if one else f"| {m} | {min(es)[0]:.2g} | {max(es)[0]:.2g} | - |")
+    L += ["", "### Incompatible pairings (3D, slave SURMAI on master SURESC): ![](atlas_incompat.png)", "",
+          "| pairing | method | status | pressure error |", "|---|---|---|---|"]
+    L += [f"| {r['pairing']} | {r['method']} | {r['status'][:110]} | {r['err_p']} |"
+          for r in read(os.path.join(out, "atlas_incompat.csv"))]
+    log = os.path.join(os.path.dirname(out), "logs", "atlas_incompat_full.log")
+    warns = sorted({l.strip()[:160] for l in open(log) if l.startswith("<A>") or "warning" in l.lower()}) \
+        if os.path.exists(log) else []
+    L += ["", "Warnings printed to the user:" if warns else "No warning was printed for these pairings.", ""]
+    L += [f"    {w[:200]}" for w in warns[:6]]
+    L += ["", "### Modelisation G (pressure-loaded block) and CONTACT_INIT", "", "| CONTACT_INIT | what the user gets | pressure error |",
+          "|---|---|---|"]
+    L += [f"| {r['CONTACT_INIT']} | {r['status']} | {r['err_p']} |" for r in read(os.path.join(out, "atlas_init.csv"))]
+    d23 = read(os.path.join(out, "atlas_2d3d.csv"))
+    L += ["", "### 2D plane strain against the same scene in 3D (one-cell slab): ![](atlas_2d3d.png)", "",
+          "| method | k | error 2D | error 3D | time 2D (s) | time 3D (s) | 3D / 2D |", "|---|---|---|---|---|---|---|"]
+    for r in d23:
+        if r["family"] != "2D" or r["status"] != "ok":
+            continue
+        t = next((x for x in d23 if x["family"] == "3D-slab" and x["method"] == r["method"] and x["k"] == r["k"]), None)
+        if t and t["status"] == "ok":
+            L.append(f"| {r['method']} | {r['k']} | {num(r, 'err_p'):.3g} | {num(t, 'err_p'):.3g} | {num(r, 't_total'):.3g} | "
+                     f"{num(t, 't_total'):.3g} | {num(t, 't_total') / num(r, 't_total'):.3g} |")
+    return L + [""]
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# The speed/accuracy study (`make study`): SSNP121 mesh families, every lunaster contact
+# method on each (Lua decks looping inside one lunaster run per family), CalculiX on the
+# same meshes, the stability atlas, then the charts and the summary under docs/study/.
+# Usage: tests/bench/study/run_study.sh [BUILD_DIR] [--quick]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../../.." && pwd)
+build=${1:-build}; quick=${2:-}
+[[ "$build" = /* ]] || build="$root/$build"
+here="$root/tests/bench/study"
+work="$build/study"
+gen="$build/lunaster-meshgen"
+lun="$build/lunaster"
+py=/usr/bin/python3
+rm -rf "$work"; mkdir -p "$work/meshes" "$work/out" "$work/ccx" "$work/logs"
+cp "$here"/*.lua "$work/"
+
+if [ "$quick" = "--quick" ]; then ks2d="1 2 4"; ks3di="1"; ks3dd="1"; ccx2d="1 2 4"; ratio="12 24 48"
+else ks2d="1 2 4 8 16 32"; ks3di="1 2"; ks3dd="1"; ccx2d="1 2 4 8 16"; ratio="96 60 48 36 28 24 20 17 13 12 9 7 6"
+fi
+lua_list() { echo "{ $(echo "$@" | sed 's/ /, /g') }"; }
+cat > "$work/config.lua" <<LUA
+-- written by run_study.sh
+return { ks_2d = $(lua_list $ks2d), max_k_2d = { CONTINUE = 16, ['PENALISATION-1e7'] = 16, ['PENALISATION-1e11'] = 16 }, ks_3d_i = $(lua_list $ks3di), ks_3d_d = $(lua_list $ks3dd),
+         ratio_ns = $(lua_list $ratio), atlas_ks = { 1, 4 } }
+LUA
+
+echo "study: meshes"
+for k in $ks2d; do "$gen" --upper quad4:12 --lower quad4:11 --refine "$k" -o "$work/meshes/ssnp121_2d_k$k.med" >/dev/null; done
+for k in $ks3di; do "$gen" --v1 hexa8:5x5x1 --v2 hexa20:4x4x1 --refine "$k" -o "$work/meshes/ssnp121_3di_k$k.med" >/dev/null; done
+for k in $ks3dd; do "$gen" --v1 hexa20:4x4x4 --v2 hexa20:4x4x4 --refine "$k" -o "$work/meshes/ssnp121_3dd_k$k.med" >/dev/null; done
+for n in $ratio; do "$gen" --upper "quad4:$n" --lower quad4:24 -o "$work/meshes/ratio_$n.med" >/dev/null; done
+for k in 1 2 4; do
+  [ -f "$work/meshes/ssnp121_2d_k$k.med" ] || "$gen" --upper quad4:12 --lower quad4:11 --refine "$k" -o "$work/meshes/ssnp121_2d_k$k.med" >/dev/null
+  "$gen" --v1 "hexa8:$((12 * k))x1x$((12 * k))" --v2 "hexa8:$((11 * k))x1x$((11 * k))" -o "$work/meshes/slab_k$k.med" >/dev/null
+done
+"$gen" --v1 penta15:4x4x4 --v2 hexa20:4x4x4 -o "$work/meshes/incompat_q8_t6.med" >/dev/null
+"$gen" --v1 penta15:4x4x4 --v2 hexa8:4x4x4 -o "$work/meshes/incompat_q4_t6.med" >/dev/null
+
+run_deck() {  # deck name; a deck that stops is reported, the study goes on
+  local t0=$SECONDS
+  if (cd "$work" && "$lun" run "$1.lua" --out out -q > "logs/$1.log" 2>&1); then status=ok; else status="exit $?"; fi
+  echo "study: $1 ($status, $((SECONDS - t0)) s)"
+}
+for deck in chart_2d atlas_penalty atlas_coef atlas_ratio atlas_init chart_3d atlas_incompat atlas_2d3d; do run_deck "$deck"; done
+# Warnings and errors the user sees, for the atlas text.
+(cd "$work" && "$lun" run atlas_incompat.lua --out out_v > logs/atlas_incompat_full.log 2>&1 || true)
+
+echo "study: CalculiX"
+csv="$work/out/chart_2d_ccx.csv"
+head -1 "$work/out/chart_2d.csv" | sed 's/,err_p,/,err_p,/' > "$csv"
+for k in $ccx2d; do
+  for c in nts sts; do
+    for pen in 1e9 1e11; do
+      $py "$here/ccx/ccx_run.py" "$csv" "$work/meshes/ssnp121_2d_k$k.med" 2D-Q4 "$k" --contact "$c" --penalty "$pen" --work "$work/ccx" || true
+    done
+  done
+  $py "$here/ccx/ccx_run.py" "$csv" "$work/meshes/ssnp121_2d_k$k.med" 2D-Q4 "$k" --contact mortar --penalty 1e11 --slab --work "$work/ccx" || true
+done
+
+echo "study: charts"
+$py "$here/plot_study.py" "$work" "$root/docs/study"
