@@ -188,7 +188,10 @@ void StaticSolver::solve_instant(double t, Vector& u) {
 
   const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
   SolverKind backend = options_.solver;
-  if (backend == SolverKind::Cholmod && kind != MatrixKind::SymmetricPositiveDefinite) backend = SolverKind::Umfpack;
+  // Contact with multipliers gives a symmetric indefinite system: MUMPS (LDLT with
+  // pivoting) beat UMFPACK (LU) on it: SSNP121 A refined 16 times, 3.2 s vs 3.6 s and
+  // 376 MB vs 608 MB.
+  if (backend == SolverKind::Cholmod && kind != MatrixKind::SymmetricPositiveDefinite) backend = SolverKind::Mumps;
   auto solver = make_linear_solver(backend);
 
   int total_newton = 0;
