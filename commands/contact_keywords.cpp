@@ -1,6 +1,10 @@
 #include "commands/contact_keywords.hpp"
 
+#include <cstdio>
+
 #include "commands/selection.hpp"
+#include "engine/contact/compatibility.hpp"
+#include "engine/mesh/mesh_checks.hpp"
 
 namespace lunaster::cmd {
 
@@ -88,20 +92,30 @@ void read_contact_loops(const catalog::Args& args, engine::ContactDefinition& de
 }
 
 void warn_incompatible_pairs(const engine::ContactDefinition& def, const engine::Mesh& mesh, Session& session) {
-  using engine::CellType;
-  for (const auto& zone : def.zones) {
-    bool slave_quad8 = false, slave_quad4 = false, master_tria6 = false;
-    for (int c : zone.slave_cells) {
-      slave_quad8 |= mesh.cell_types[c] == CellType::Quad8;
-      slave_quad4 |= mesh.cell_types[c] == CellType::Quad4;
-    }
-    for (int c : zone.master_cells) master_tria6 |= mesh.cell_types[c] == CellType::Tria6;
-    if (master_tria6 && (slave_quad8 || slave_quad4))
-      session.warn(std::string("contact pairing ") + (slave_quad8 ? "QUAD8" : "QUAD4") +
-                   " slave on TRIA6 master does not satisfy the compatibility conditions for integrating the "
-                   "contact terms (R5.03.52): results may be wrong. Swap the roles (TRIA6 slave on a quadrangle "
-                   "master) or mesh both surfaces with the same cell type.");
+  // One rule, in the engine (engine/contact/compatibility): the message names the cells.
+  for (size_t z = 0; z < def.zones.size(); ++z)
+    for (const auto& message : engine::check_contact_zone_compatibility(mesh, def.zones[z], static_cast<int>(z)))
+      session.warn(message);
+}
+
+void warn_coincident_slave_nodes(const catalog::Args& zone_args, const engine::ContactZone& zone, const Maillage& ma,
+                                 Session& session) {
+  const engine::Mesh& mesh = *ma.mesh;
+  const double tolerance = engine::coincidence_tolerance(mesh, zone.slave_cells);
+  const auto pairs = engine::coincident_nodes(mesh, mesh.nodes_of_cells(zone.slave_cells), tolerance);
+  if (pairs.empty()) return;
+  std::string list;
+  for (size_t i = 0; i < pairs.size() && i < 10; ++i) {
+    const double* p = mesh.node(pairs[i].first);
+    char at[96];
+    std::snprintf(at, sizeof at, " at (%g, %g, %g)", p[0], p[1], p[2]);
+    list += (i ? ", " : "") + mesh.node_names[pairs[i].first] + " and " + mesh.node_names[pairs[i].second] + at;
   }
+  if (pairs.size() > 10) list += ", ...";
+  session.warn(zone_args.path("GROUP_MA_ESCL") + ": slave surface '" + zone_args.text("GROUP_MA_ESCL") +
+               "' of mesh file '" + ma.source_file + "' has " + std::to_string(pairs.size()) +
+               " pair(s) of distinct nodes at the same position: " + list +
+               "; contact treats them as separate points (merge the nodes, or check the mesh for a crack)");
 }
 
 }  // namespace lunaster::cmd

@@ -17,6 +17,10 @@ mkdir -p "$m"
 "$gen" --v1 hexa8:5x5x1 --v2 hexa20:4x4x1 -o "$tc/ssnp121i.med"
 "$gen" --v1 penta6:4x4x4 --v2 penta15:4x4x4 -o "$tc/ssnp121j.med"
 "$gen" --v1 penta6:4x4x4 --v2 hexa20:4x4x4 -o "$tc/ssnp121k.med"
+# Incompatible pairings the seed warns about (decks assert the warning): QUAD8 slave on TRIA6
+# master (F with the roles swapped) and QUAD4 slave on TRIA6 master (K variant)
+"$gen" --v1 hexa20:4x4x4 --v2 penta15:4x4x4 -o "$tc/ssnp121f_quad8_on_tria6.med"
+"$gen" --v1 hexa8:4x4x4 --v2 penta15:4x4x4 -o "$tc/ssnp121k_quad4_on_tria6.med"
 
 # Glued (conforming) versions: both blocks share the interface nodes
 "$gen" --upper quad4:4 --lower quad4:4 --glued -o "$m/glued2d_quad4.med"

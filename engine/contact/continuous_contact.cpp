@@ -5,7 +5,6 @@
 #include <set>
 #include <sstream>
 
-#include "engine/contact/compatibility.hpp"
 #include "engine/contact/integration_rules.hpp"
 #include "engine/contact/surface_element.hpp"
 #include "engine/core/error.hpp"
@@ -142,14 +141,8 @@ int ContinuousContact::update_statuses(const Vector& u, const Log& log) {
 }
 
 void ContinuousContact::first_pairing_report(const Log& log) {
-  std::set<std::pair<CellType, CellType>> reported;
-  for (const auto& p : points_) {
-    if (!p.paired) continue;
-    const CellType st = mesh_.cell_types[p.slave_cell], mt = mesh_.cell_types[p.master_cell];
-    if (contact_pairing_compatible(st, mt) || !reported.insert({st, mt}).second) continue;
-    log.warning(contact_pairing_warning(p.zone, st, cell_label(mesh_, p.slave_cell), mt,
-                                        cell_label(mesh_, p.master_cell)));
-  }
+  // Incompatible slave/master cell types (compatibility.hpp) are reported once, by the
+  // command defining the zone (DEFI_CONTACT / AFFE_CHAR_MECA), not again here.
   for (size_t z = 0; z < masters_.size(); ++z)
     if (masters_[z]->n_flipped() > 0)
       log.warning("contact zone " + std::to_string(z + 1) + ": " + std::to_string(masters_[z]->n_flipped()) +

@@ -16,6 +16,7 @@ double dot3(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1]
 bool newton_project(CellType type, const double* xyz, const double* point, double* xi) {
   const int nn = surface_n_nodes(type), rdim = surface_ref_dim(type);
   double n[kMaxSurfaceNodes], dn[2 * kMaxSurfaceNodes], d2n[3 * kMaxSurfaceNodes];
+  int on_bound = 0;  // consecutive iterations stuck on the |xi| = 3 box: the minimiser is far outside
   for (int it = 0; it < 50; ++it) {
     surface_shape(type, xi, n, dn, d2n);
     double x[3] = {0, 0, 0}, t[2][3] = {{0, 0, 0}, {0, 0, 0}}, h[3][3] = {};
@@ -46,11 +47,15 @@ bool newton_project(CellType type, const double* xyz, const double* point, doubl
       step[1] = -(a11 * g2 - a12 * g1) / det;
     }
     // Damp long steps so that iterates stay near the reference cell.
-    const double len = std::hypot(step[0], step[1]);
+    const double len = std::sqrt(step[0] * step[0] + step[1] * step[1]);
     if (len > 1.0) step[0] /= len, step[1] /= len;
     xi[0] += step[0], xi[1] += step[1];
-    for (int k = 0; k < 2; ++k) xi[k] = std::clamp(xi[k], -3.0, 3.0);
     if (!std::isfinite(xi[0]) || !std::isfinite(xi[1])) return false;
+    bool clamped = false;
+    for (int k = 0; k < 2; ++k)
+      if (std::abs(xi[k]) > 3.0) xi[k] = std::clamp(xi[k], -3.0, 3.0), clamped = true;
+    on_bound = clamped ? on_bound + 1 : 0;
+    if (on_bound >= 3) return false;
     if (len < 1e-13) return true;
   }
   return false;
@@ -84,7 +89,9 @@ CellProjection project_on_cell(CellType type, const double* xyz, const double* p
       best_score = score;
       best.xi[0] = xi[0], best.xi[1] = xi[1], best.outside = out, best.converged = true;
     }
-    if (start < 0 && out == 0.0) break;  // inside from the centre: unique for the cell types used
+    // From the centre: inside is unique for the cell types used; more than one reference
+    // units outside, a start at a node cannot bring the foot back into the cell.
+    if (start < 0 && (out == 0.0 || out > 2.0)) break;
   }
   return best;
 }
@@ -159,7 +166,8 @@ void MasterSurface::update(const std::vector<double>& xyz) {
   grid_.clear();
   stamp_.assign(cells_.size(), 0);
   if (cells_.empty()) return;
-  std::vector<double> box(6 * cells_.size());
+  std::vector<double>& box = boxes_;
+  box.assign(6 * cells_.size(), 0.0);
   double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300}, size_sum = 0.0;
   for (size_t k = 0; k < cells_.size(); ++k) {
     double* b = &box[6 * k];
@@ -175,6 +183,9 @@ void MasterSurface::update(const std::vector<double>& xyz) {
       ext = std::max(ext, b[3 + i] - b[i]);
     }
     size_sum += ext;
+    // A curved quadratic cell may bulge out of its nodes' box: widen it by half its extent.
+    if (surface_n_nodes(types_[k]) > surface_n_vertices(types_[k]))
+      for (int i = 0; i < 6; ++i) b[i] += (i < 3 ? -0.5 : 0.5) * ext;
   }
   spacing_ = std::max(size_sum / cells_.size(), 1e-12);
   for (int i = 0; i < 3; ++i) {
@@ -223,9 +234,27 @@ std::vector<int> MasterSurface::candidates(const double* point) const {
 MasterProjection MasterSurface::project(const double* point, double tolerance) const {
   LUNASTER_ASSERT(xyz_ != nullptr, "MasterSurface::update must be called before project");
   MasterProjection best;
-  double best_score = 1e300;
   double xyz[3 * kMaxSurfaceNodes];
+  // Candidates by increasing distance to their box: a cell whose box is farther than the
+  // best projection found so far cannot hold a closer point (boxes contain the cells).
+  std::vector<std::pair<double, int>> order;
   for (int k : candidates(point)) {
+    const double* b = &boxes_[6 * static_cast<size_t>(k)];
+    double d2 = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      const double d = std::max({b[i] - point[i], 0.0, point[i] - b[3 + i]});
+      d2 += d * d;
+    }
+    order.emplace_back(std::sqrt(d2), k);
+  }
+  std::sort(order.begin(), order.end());
+  // Ties (a point on a node or edge shared by several master cells) are decided
+  // geometrically, not by round-off: within `tie` of the best distance, an inside
+  // projection beats a clamped one, then the lowest mesh cell index wins. The
+  // pairing is then reproducible even where the cells' normals differ (kinks).
+  const double tie = 1e-10 * spacing_;
+  for (const auto& [box_distance, k] : order) {
+    if (best.found && box_distance > best.distance + tie) break;
     gather(xyz_->data(), k, xyz);
     const CellProjection cp = project_on_cell(types_[k], xyz, point);
     if (!cp.converged || cp.outside > tolerance) continue;
@@ -235,10 +264,15 @@ MasterProjection MasterSurface::project(const double* point, double tolerance) c
     if (p.jacobian <= 0.0) continue;
     const double d[3] = {point[0] - p.x[0], point[1] - p.x[1], point[2] - p.x[2]};
     const double dist = std::sqrt(dot3(d, d));
-    // Inside projections win over clamped ones at equal distance (shared nodes).
-    const double score = dist * (1.0 + 1e-9) + 1e-9 * cp.outside * spacing_;
-    if (score < best_score) {
-      best_score = score;
+    bool better = !best.found || dist < best.distance - tie;
+    if (!better && dist <= best.distance + tie) {
+      const bool inside = cp.outside <= 1e-12, best_inside = best.outside <= 1e-12;
+      better = inside != best_inside ? inside
+                                     : (inside ? cells_[k] < best.cell
+                                               : cp.outside < best.outside - 1e-12 ||
+                                                     (cp.outside <= best.outside + 1e-12 && cells_[k] < best.cell));
+    }
+    if (better) {
       best.found = true, best.cell = cells_[k], best.distance = dist, best.outside = cp.outside;
       best.xi[0] = xi[0], best.xi[1] = xi[1];
       for (int i = 0; i < 3; ++i) best.x[i] = p.x[i], best.normal[i] = sign_[k] * p.n[i];

@@ -82,6 +82,7 @@ class MasterSurface {
   double spacing_ = 1.0;
   int n_grid_[3] = {1, 1, 1};
   std::unordered_map<std::int64_t, std::vector<int>> grid_;
+  std::vector<double> boxes_;  ///< per cell: min xyz, max xyz (widened for quadratic cells)
   mutable std::vector<int> stamp_;
   mutable int stamp_value_ = 0;
 };

@@ -162,3 +162,94 @@ TEST(ContactProjection, GridSearchMatchesBruteForce) {
     EXPECT_NEAR(p.distance, best, 1e-10);
   }
 }
+
+namespace {
+
+// Wavy 3D master surface z = 0.05 sin(3x) cos(2y) on [0,2]^2: n x n QUAD8 cells, or
+// each square split into two TRIA6 along its (i,j)-(i+1,j+1) diagonal.
+std::vector<int> wavy_surface(Mesh& mesh, int n, bool triangles) {
+  mesh.dim = 3;
+  const int m = 2 * n;
+  std::vector<int> grid((m + 1) * (m + 1));
+  for (int j = 0; j <= m; ++j)
+    for (int i = 0; i <= m; ++i) {
+      const double x = 2.0 * i / m, y = 2.0 * j / m;
+      grid[j * (m + 1) + i] = mesh.add_node(x, y, 0.05 * std::sin(3 * x) * std::cos(2 * y));
+    }
+  auto at = [&](int i, int j) { return grid[j * (m + 1) + i]; };
+  std::vector<int> cells;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int I = 2 * i, J = 2 * j;
+      if (triangles) {
+        cells.push_back(mesh.add_cell(CellType::Tria6, {at(I, J), at(I + 2, J), at(I + 2, J + 2), at(I + 1, J),
+                                                        at(I + 2, J + 1), at(I + 1, J + 1)}));
+        cells.push_back(mesh.add_cell(CellType::Tria6, {at(I, J), at(I + 2, J + 2), at(I, J + 2), at(I + 1, J + 1),
+                                                        at(I + 1, J + 2), at(I, J + 1)}));
+      } else {
+        cells.push_back(mesh.add_cell(CellType::Quad8, {at(I, J), at(I + 2, J), at(I + 2, J + 2), at(I, J + 2),
+                                                        at(I + 1, J), at(I + 2, J + 1), at(I + 1, J + 2),
+                                                        at(I, J + 1)}));
+      }
+    }
+  return cells;
+}
+
+}  // namespace
+
+TEST(ContactProjection, GridSearchMatchesBruteForceOn3dQuadraticSurfaces) {
+  // The box pruning of MasterSurface::project must never skip the closest cell,
+  // including on curved cells that bulge out of their nodes' bounding box.
+  for (bool triangles : {false, true}) {
+    Mesh mesh;
+    const std::vector<int> cells = wavy_surface(mesh, 12, triangles);
+    MasterSurface master(mesh, cells, false);
+    master.update(mesh.coords);
+    std::mt19937 gen(5);
+    std::uniform_real_distribution<double> xy(0.05, 1.95), z(-0.15, 0.15);
+    for (int trial = 0; trial < 300; ++trial) {
+      const double point[3] = {xy(gen), xy(gen), z(gen)};
+      const MasterProjection p = master.project(point, 0.5);
+      ASSERT_TRUE(p.found);
+      double best = 1e300;
+      for (int c : cells) {
+        const CellType t = mesh.cell_types[c];
+        double xyz[3 * kMaxSurfaceNodes];
+        for (int a = 0; a < surface_n_nodes(t); ++a)
+          for (int i = 0; i < 3; ++i) xyz[3 * a + i] = mesh.node(mesh.cell(c)[a])[i];
+        CellProjection cp = project_on_cell(t, xyz, point);
+        if (!cp.converged || cp.outside > 0.5) continue;
+        clamp_to_cell(t, cp.xi);
+        const SurfacePoint s = surface_point(t, xyz, cp.xi);
+        best = std::min(best, std::sqrt((s.x[0] - point[0]) * (s.x[0] - point[0]) +
+                                        (s.x[1] - point[1]) * (s.x[1] - point[1]) +
+                                        (s.x[2] - point[2]) * (s.x[2] - point[2])));
+      }
+      EXPECT_NEAR(p.distance, best, 1e-10) << (triangles ? "TRIA6" : "QUAD8") << " trial " << trial;
+    }
+  }
+}
+
+TEST(ContactProjection, TiesAtSharedNodesAreDecidedByCellIndexNotRoundOff) {
+  // A point on a node shared by six curved triangles (kinks between them), moved by
+  // round-off-sized offsets, must always pair with the same cell: the lowest index
+  // among the cells containing its foot. Otherwise a pairing flips between
+  // neighbouring cells of a kinked master from one geometry iteration to the next.
+  Mesh mesh;
+  const std::vector<int> cells = wavy_surface(mesh, 4, true);
+  MasterSurface master(mesh, cells, false);
+  master.update(mesh.coords);
+  const double* node = mesh.node(mesh.cell(cells[10])[0]);  // an interior vertex (x, y) = (1, 0.5)
+  int expected = -1;
+  for (int c : cells)
+    for (int a = 0; a < 6 && expected < 0; ++a)
+      if (mesh.cell(c)[a] == mesh.cell(cells[10])[0]) expected = c;
+  for (int s = 0; s < 27; ++s) {
+    const double eps = 1e-13;
+    const double point[3] = {node[0] + eps * (s % 3 - 1), node[1] + eps * (s / 3 % 3 - 1),
+                             node[2] + eps * (s / 9 - 1)};
+    const MasterProjection p = master.project(point, 0.5);
+    ASSERT_TRUE(p.found);
+    EXPECT_EQ(p.cell, expected) << "offset " << s;
+  }
+}

@@ -1,0 +1,12 @@
+# Decks whose output must carry a warning (include(decks/warnings.cmake) from tests/CMakeLists.txt).
+# The incompatible SSNP121 pairings (a quadrangle slave facing a TRIA6 master) must warn exactly once,
+# name the pairing to use instead, and still finish with every TEST_RESU check OK. PASS_REGULAR_EXPRESSION
+# replaces the exit-status test, hence the final "0 NOOK" line in the pattern; the deck.* test of the same
+# deck checks the exit status.
+foreach(case ssnp121f_quad8_on_tria6 ssnp121k_quad4_on_tria6)
+  add_test(NAME warning.${case}
+           COMMAND lunaster run ${CMAKE_SOURCE_DIR}/testcases/${case}.lua --out ${CMAKE_BINARY_DIR}/deck-out/warning-${case})
+  set_tests_properties(warning.${case} PROPERTIES LABELS "deck;warning"
+    PASS_REGULAR_EXPRESSION "<A> [^\n]*does not satisfy the compatibility conditions[^\n]*TRIA6 slave on.*lunaster: [0-9]+ check\\(s\\) OK, 0 NOOK"
+    FAIL_REGULAR_EXPRESSION "compatibility conditions.*compatibility conditions;\nNOOK (ANALYTIQUE|NON_REGRESSION)")
+endforeach()
