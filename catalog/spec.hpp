@@ -30,7 +30,18 @@ struct Rule {
   std::vector<std::string> names;
 };
 
-struct Block;
+struct Keyword;
+
+/// Conditional keywords (BLOC): active when `when_keyword` has one of
+/// `equals` (or, with `equals` empty, when `when_keyword` is present).
+// Defined before Keyword (which holds a vector of blocks and copies itself in its
+// inline members): clang instantiates those copies where they are written.
+struct Block {
+  std::string when_keyword;
+  std::vector<Scalar> equals;
+  std::vector<Keyword> keywords;
+  std::vector<Rule> rules;
+};
 
 /// A simple keyword (SIMP) or a factor keyword (FACT, with children).
 struct Keyword {
@@ -67,14 +78,6 @@ struct Keyword {
   Keyword help(std::string text) const { Keyword k = *this; k.doc = std::move(text); return k; }
 };
 
-/// Conditional keywords (BLOC): active when `when_keyword` has one of
-/// `equals` (or, with `equals` empty, when `when_keyword` is present).
-struct Block {
-  std::string when_keyword;
-  std::vector<Scalar> equals;
-  std::vector<Keyword> keywords;
-  std::vector<Rule> rules;
-};
 
 inline Keyword Keyword::with_blocks(std::vector<Block> b) const { Keyword k = *this; k.blocks = std::move(b); return k; }
 

@@ -69,6 +69,7 @@ ConceptPtr affe_char_meca(const Args& args, Session& session) {
     for (const auto& occ : args.factors("CONTACT")) {
       def.method = seed_method(occ.text("METHODE"));
       def.zones.push_back(read_contact_zone(occ, *mo.maillage->mesh, mo.dim, def.method));
+      warn_coincident_slave_nodes(occ, def.zones.back(), *mo.maillage, session);
       read_contact_loops(occ, def);
     }
     warn_incompatible_pairs(def, *mo.maillage->mesh, session);

@@ -2,6 +2,7 @@
 /// Keyword -> engine mapping shared by AFFE_CHAR_MECA/CONTACT (seed syntax)
 /// and DEFI_CONTACT (current syntax).
 #include "catalog/args.hpp"
+#include "commands/concepts.hpp"
 #include "commands/session.hpp"
 #include "engine/contact/contact_definition.hpp"
 #include "engine/mesh/mesh.hpp"
@@ -15,5 +16,9 @@ engine::ContactZone read_contact_zone(const catalog::Args& zone, const engine::M
 void read_contact_loops(const catalog::Args& args, engine::ContactDefinition& def);
 /// Logs the compatibility warning for slave/master cell pairs the integration cannot handle.
 void warn_incompatible_pairs(const engine::ContactDefinition& def, const engine::Mesh& mesh, Session& session);
+/// Warns when two distinct slave nodes of `zone` share one position (an unmerged
+/// mesh: contact sees two points there), naming the group, the file and the nodes.
+void warn_coincident_slave_nodes(const catalog::Args& zone_args, const engine::ContactZone& zone, const Maillage& ma,
+                                 Session& session);
 
 }  // namespace lunaster::cmd

@@ -28,6 +28,7 @@ ConceptPtr defi_contact(const Args& args, Session& session) {
       throw zone.error("ALGO_CONT", "the same contact algorithm in every zone", "'" + algo + "'");
     def.method = method;
     def.zones.push_back(read_contact_zone(zone, *mo.maillage->mesh, mo.dim, method));
+    warn_coincident_slave_nodes(zone, def.zones.back(), *mo.maillage, session);
   }
   warn_incompatible_pairs(def, *mo.maillage->mesh, session);
   return result;

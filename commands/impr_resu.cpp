@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
 #include "commands/selection.hpp"
@@ -62,14 +64,24 @@ ConceptPtr impr_resu(const Args& args, Session& session) {
   const std::string format = args.text("FORMAT");
   if (format == "RESULTAT") {
     const auto path = output_path(args, session, "resu");
-    const auto tmp = path.string() + ".tmp";
-    {
-      std::ofstream out(tmp);
-      for (const auto& occ : args.factors("RESU"))
-        if (occ.has("RESULTAT")) write_table(out, occ, *occ.concept_as<EvolNoli>("RESULTAT"));
-      if (!out) throw DeckError("cannot write " + tmp);
+    // Atomic: write a temporary file beside the target, rename it over the target only
+    // when complete; on any failure remove it, so a good file is never replaced by a
+    // truncated one and no temporary is left behind.
+    const auto tmp = path.parent_path() / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
+    try {
+      {
+        std::ofstream out(tmp);
+        for (const auto& occ : args.factors("RESU"))
+          if (occ.has("RESULTAT")) write_table(out, occ, *occ.concept_as<EvolNoli>("RESULTAT"));
+        out.flush();
+        if (!out) throw DeckError("cannot write " + tmp.string());
+      }
+      std::filesystem::rename(tmp, path);
+    } catch (...) {
+      std::error_code ec;
+      std::filesystem::remove(tmp, ec);
+      throw;
     }
-    std::filesystem::rename(tmp, path);  // atomic: never a truncated file in place of a good one
     session.log().info("  written " + path.string());
     return nullptr;
   }

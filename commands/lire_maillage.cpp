@@ -5,6 +5,7 @@
 #include "commands/concepts.hpp"
 #include "engine/io/gmsh_reader.hpp"
 #include "engine/io/med_reader.hpp"
+#include "engine/mesh/mesh_checks.hpp"
 
 namespace lunaster::cmd {
 
@@ -37,6 +38,13 @@ ConceptPtr lire_maillage(const Args& args, Session& session) {
     *result->mesh = engine::read_med(path.string(), args.has("NOM_MED") ? args.text("NOM_MED") : std::string());
   }
   const auto& mesh = *result->mesh;
+  if (const auto orphans = engine::unreferenced_nodes(mesh); !orphans.empty()) {
+    std::string names;
+    for (size_t i = 0; i < orphans.size() && i < 10; ++i) names += (i ? ", " : "") + mesh.node_names[orphans[i]];
+    if (orphans.size() > 10) names += ", ...";
+    session.warn("mesh file '" + path.string() + "': " + std::to_string(orphans.size()) +
+                 " node(s) belong to no cell and carry no unknown: " + names);
+  }
   session.log().info("  mesh " + path.filename().string() + ": " + std::to_string(mesh.n_nodes()) + " nodes, " +
                      std::to_string(mesh.n_cells()) + " cells, dimension " + std::to_string(mesh.dim));
   return result;

@@ -55,7 +55,10 @@ std::vector<int> node_group(const catalog::Args& args, const std::string& kw, co
   }
   auto cit = mesh.cell_groups.find(group);
   if (cit != mesh.cell_groups.end()) return mesh.nodes_of_cells(cit->second);
+  // GROUP_NO also accepts cell groups (their nodes): suggest among both.
   std::vector<std::string> names = keys_of(mesh.node_groups);
+  for (const auto& [name, cells] : mesh.cell_groups)
+    if (!mesh.node_groups.count(name)) names.push_back(name);
   throw args.error(kw, "a node group of the mesh", "'" + group + "'", suggestion(group, names));
 }
 
@@ -71,7 +74,8 @@ std::vector<int> select_cells(const catalog::Args& args, const engine::Mesh& mes
   if (declared_and_present(args, "MAILLE"))
     for (const auto& name : args.texts("MAILLE")) {
       const int c = mesh.find_cell(name);
-      if (c < 0) throw args.error("MAILLE", "a cell name of the mesh", "'" + name + "'");
+      if (c < 0)
+        throw args.error("MAILLE", "a cell name of the mesh", "'" + name + "'", suggestion(name, mesh.cell_names));
       cells.push_back(c);
     }
   sort_unique(cells);
@@ -90,7 +94,12 @@ std::vector<int> select_nodes(const catalog::Args& args, const engine::Mesh& mes
   if (declared_and_present(args, "NOEUD"))
     for (const auto& name : args.texts("NOEUD")) {
       const int n = mesh.find_node(name);
-      if (n < 0) throw args.error("NOEUD", "a node name of the mesh", "'" + name + "'");
+      if (n < 0) {
+        if (mesh.node_groups.count(name))
+          throw args.error("NOEUD", "a node name of the mesh", "'" + name + "'",
+                           {"'" + name + "' is a node group: use GROUP_NO = '" + name + "'"});
+        throw args.error("NOEUD", "a node name of the mesh", "'" + name + "'", suggestion(name, mesh.node_names));
+      }
       nodes.push_back(n);
     }
   if (declared_and_present(args, "GROUP_MA") || declared_and_present(args, "MAILLE")) {
@@ -100,7 +109,8 @@ std::vector<int> select_nodes(const catalog::Args& args, const engine::Mesh& mes
     if (declared_and_present(args, "MAILLE"))
       for (const auto& name : args.texts("MAILLE")) {
         const int c = mesh.find_cell(name);
-        if (c < 0) throw args.error("MAILLE", "a cell name of the mesh", "'" + name + "'");
+        if (c < 0)
+          throw args.error("MAILLE", "a cell name of the mesh", "'" + name + "'", suggestion(name, mesh.cell_names));
         cells.push_back(c);
       }
     merge(nodes, mesh.nodes_of_cells(cells));

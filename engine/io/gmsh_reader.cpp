@@ -42,7 +42,8 @@ const std::vector<GmshType>& gmsh_types() {
 
 class GmshParser {
  public:
-  GmshParser(const std::string& text, const std::string& source) : in_(text), source_(source) {}
+  GmshParser(const std::string& text, const std::string& source)
+      : in_(text), source_(source), text_size_(static_cast<long long>(text.size())) {}
   Mesh parse();
 
  private:
@@ -55,6 +56,9 @@ class GmshParser {
     if (!(in_ >> value)) fail(std::string("truncated or malformed input in ") + section_ + " (expected " + what + ")");
     return value;
   }
+  /// A count read from the file: negative or larger than what the rest of the
+  /// input could hold is a malformed (or fuzzed) file, not an allocation to try.
+  long long read_count(const char* what);
   void expect_end(const std::string& name);
   void skip_section(const std::string& name);
   void read_format();
@@ -69,6 +73,7 @@ class GmshParser {
 
   std::istringstream in_;
   std::string source_;
+  long long text_size_ = 0;
   std::string section_ = "header";
   double version_ = 0.0;
   Mesh mesh_;
@@ -77,6 +82,16 @@ class GmshParser {
   std::map<std::pair<int, int>, std::vector<int>> entity_physicals_;    ///< (dim, entity) -> physical tags
   std::map<std::string, std::vector<int>> cell_groups_, node_groups_;
 };
+
+long long GmshParser::read_count(const char* what) {
+  const long long n = read<long long>(what);
+  const std::streamoff pos = in_.tellg();
+  const long long left = pos < 0 ? 0 : text_size_ - static_cast<long long>(pos);
+  if (n < 0 || n > left / 2 + 1)
+    fail("malformed input in " + section_ + ": " + what + " " + std::to_string(n) + " is impossible for a file of " +
+         std::to_string(text_size_) + " bytes (truncated or corrupt file?)");
+  return n;
+}
 
 void GmshParser::expect_end(const std::string& name) {
   std::string token;
@@ -109,8 +124,8 @@ void GmshParser::read_format() {
 
 void GmshParser::read_physical_names() {
   section_ = "$PhysicalNames";
-  const int n = read<int>("count");
-  for (int i = 0; i < n; ++i) {
+  const long long n = read_count("count");
+  for (long long i = 0; i < n; ++i) {
     const int dim = read<int>("dimension");
     const int tag = read<int>("tag");
     std::string rest;
@@ -125,16 +140,16 @@ void GmshParser::read_physical_names() {
 void GmshParser::read_entities() {
   section_ = "$Entities";
   int counts[4];
-  for (int& c : counts) c = read<int>("entity count");
+  for (int& c : counts) c = static_cast<int>(read_count("entity count"));
   for (int dim = 0; dim < 4; ++dim) {
     for (int i = 0; i < counts[dim]; ++i) {
       const int tag = read<int>("entity tag");
       for (int k = 0; k < (dim == 0 ? 3 : 6); ++k) read<double>("bounding box");
-      const int n_phys = read<int>("physical count");
+      const int n_phys = static_cast<int>(read_count("physical count"));
       auto& phys = entity_physicals_[{dim, tag}];
       for (int k = 0; k < n_phys; ++k) phys.push_back(read<int>("physical tag"));
       if (dim > 0) {
-        const int n_bound = read<int>("bounding entity count");
+        const int n_bound = static_cast<int>(read_count("bounding entity count"));
         for (int k = 0; k < n_bound; ++k) read<int>("bounding entity");
       }
     }
@@ -144,7 +159,7 @@ void GmshParser::read_entities() {
 
 void GmshParser::read_nodes_22() {
   section_ = "$Nodes";
-  const long long n = read<long long>("node count");
+  const long long n = read_count("node count");
   for (long long i = 0; i < n; ++i) {
     const long long tag = read<long long>("node tag");
     const double x = read<double>("x"), y = read<double>("y"), z = read<double>("z");
@@ -156,7 +171,7 @@ void GmshParser::read_nodes_22() {
 
 void GmshParser::read_nodes_41() {
   section_ = "$Nodes";
-  const long long n_blocks = read<long long>("block count");
+  const long long n_blocks = read_count("block count");
   read<long long>("node count");
   read<long long>("min tag");
   read<long long>("max tag");
@@ -164,7 +179,7 @@ void GmshParser::read_nodes_41() {
     const int dim = read<int>("entity dimension");
     read<int>("entity tag");
     const int parametric = read<int>("parametric flag");
-    const long long n = read<long long>("block size");
+    const long long n = read_count("block size");
     std::vector<long long> tags(n);
     for (auto& t : tags) t = read<long long>("node tag");
     for (long long i = 0; i < n; ++i) {
@@ -204,11 +219,11 @@ void GmshParser::add_element(long long tag, int gmsh_type, const std::vector<lon
 
 void GmshParser::read_elements_22() {
   section_ = "$Elements";
-  const long long n = read<long long>("element count");
+  const long long n = read_count("element count");
   for (long long i = 0; i < n; ++i) {
     const long long tag = read<long long>("element tag");
     const int type = read<int>("element type");
-    const int n_tags = read<int>("tag count");
+    const int n_tags = static_cast<int>(read_count("tag count"));
     std::vector<int> tags(n_tags);
     for (int& t : tags) t = read<int>("element tag value");
     const GmshType* info = nullptr;
@@ -224,7 +239,7 @@ void GmshParser::read_elements_22() {
 
 void GmshParser::read_elements_41() {
   section_ = "$Elements";
-  const long long n_blocks = read<long long>("block count");
+  const long long n_blocks = read_count("block count");
   read<long long>("element count");
   read<long long>("min tag");
   read<long long>("max tag");
@@ -232,7 +247,7 @@ void GmshParser::read_elements_41() {
     const int dim = read<int>("entity dimension");
     const int entity = read<int>("entity tag");
     const int type = read<int>("element type");
-    const long long n = read<long long>("block size");
+    const long long n = read_count("block size");
     const GmshType* info = nullptr;
     for (const auto& t : gmsh_types())
       if (t.gmsh == type) info = &t;
@@ -277,6 +292,10 @@ Mesh GmshParser::parse() {
   if (!have_format) fail("empty file or not a Gmsh file");
   if (mesh_.n_nodes() == 0 || !have_elements) fail("no $Nodes or $Elements section (truncated file?)");
   for (auto& [name, cells] : cell_groups_) mesh_.add_to_cell_group(name, cells);
+  // A named physical group without elements stays an (empty) group, so that a deck
+  // using it is told "empty" rather than "unknown".
+  for (const auto& [key, name] : physical_names_)
+    if (!mesh_.cell_groups.count(name) && !mesh_.node_groups.count(name)) mesh_.cell_groups[name];
   for (auto& [name, nodes] : node_groups_) mesh_.add_to_node_group(name, nodes);
   mesh_.detect_dimension();
   check_cell_orientation(mesh_, source_);

@@ -32,11 +32,12 @@ std::vector<int> body_of_node(const FeModel& model, int node) {
 /// Names of the cell groups that contain every cell of `body`, smallest first.
 std::string body_name(const Mesh& mesh, const std::vector<int>& body) {
   std::vector<std::pair<size_t, std::string>> names;
-  for (const auto& [name, cells] : mesh.cell_groups) {
+  for (const auto& group : mesh.cell_groups) {
+    const std::vector<int>& cells = group.second;  // not a structured binding: clang 14 cannot capture those
     if (cells.size() < body.size()) continue;
     bool all = std::all_of(body.begin(), body.end(),
                            [&](int c) { return std::binary_search(cells.begin(), cells.end(), c); });
-    if (all) names.emplace_back(cells.size(), name);
+    if (all) names.emplace_back(cells.size(), group.first);
   }
   std::sort(names.begin(), names.end());
   if (names.empty()) return "the body made of " + std::to_string(body.size()) + " cells";

@@ -76,7 +76,7 @@ cholmod_sparse view(const SparseMatrix& a) {
 /// of one node), expanded back to columns. Ordering the node graph instead of
 /// the DOF graph is several times cheaper for the same fill; on the SSNP121 2D
 /// family AMD beat METIS (136k unknowns: 0.68 s vs 1.00 s user in total). Empty if the
-/// matrix has no such runs or METIS fails (CHOLMOD then chooses itself).
+/// matrix has no such runs or AMD fails (CHOLMOD then chooses itself).
 std::vector<int> node_graph_ordering(const SparseMatrix& a, cholmod_common* common) {
   const int n = static_cast<int>(a.cols());
   const int* p = a.outerIndexPtr();
