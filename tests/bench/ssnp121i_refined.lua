@@ -7,8 +7,8 @@
 -- The answer stays exact (master edges on the Simpson panel boundaries, as in SSNP121 I), so the
 -- checks are the analytical values at 1e-6. Runtime label: slow, benchmark.
 -- Measured (2-core machine shared with other jobs, load ~8): MUMPS 3 min 16 s wall, 188 s user,
--- peak RSS 13.4 GB, 12 checks OK. The default solver (UMFPACK, int version) fails after 4.5 min at
--- 12.4 GB with status -1 (out of memory), hence SOLVEUR METHODE='MUMPS'.
+-- peak RSS 13.4 GB, 12 checks OK. UMFPACK (int version) fails after 4.5 min at 12.4 GB with status -1
+-- (out of memory), hence SOLVEUR METHODE='MUMPS' (now also the default for contact systems).
 DEBUT()
 MA = LIRE_MAILLAGE{ FORMAT = 'MED' }
 MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = '3D' } }
