@@ -16,7 +16,7 @@ rm -rf "$work"; mkdir -p "$work/meshes" "$work/out" "$work/ccx" "$work/logs"
 cp "$here"/*.lua "$work/"
 
 if [ "$quick" = "--quick" ]; then ks2d="1 2 4"; ks3di="1"; ks3dd="1"; ccx2d="1 2 4"; ratio="12 24 48"
-else ks2d="1 2 4 8 16 32"; ks3di="1 2"; ks3dd="1"; ccx2d="1 2 4 8 16"; ratio="96 60 48 36 28 24 20 17 13 12 9 7 6"
+else ks2d="1 2 4 8 16 32"; ks3di="1 2 4"; ks3dd="1 2"; ccx2d="1 2 4 8 16"; ratio="96 60 48 36 28 24 20 17 13 12 9 7 6"
 fi
 lua_list() { echo "{ $(echo "$@" | sed 's/ /, /g') }"; }
 cat > "$work/config.lua" <<LUA
