@@ -62,13 +62,11 @@ std::vector<int> node_group(const catalog::Args& args, const std::string& kw, co
   throw args.error(kw, "a node group of the mesh", "'" + group + "'", suggestion(group, names));
 }
 
-std::vector<int> select_cells(const catalog::Args& args, const engine::Mesh& mesh) {
+namespace {
+
+/// Cells named by GROUP_MA and/or MAILLE (whichever the spec declares), unsorted.
+std::vector<int> named_cells(const catalog::Args& args, const engine::Mesh& mesh) {
   std::vector<int> cells;
-  if (declared_and_present(args, "TOUT")) {
-    cells.resize(mesh.n_cells());
-    for (int c = 0; c < mesh.n_cells(); ++c) cells[c] = c;
-    return cells;
-  }
   if (declared_and_present(args, "GROUP_MA"))
     for (const auto& g : args.texts("GROUP_MA")) merge(cells, cell_group(args, "GROUP_MA", mesh, g));
   if (declared_and_present(args, "MAILLE"))
@@ -78,6 +76,19 @@ std::vector<int> select_cells(const catalog::Args& args, const engine::Mesh& mes
         throw args.error("MAILLE", "a cell name of the mesh", "'" + name + "'", suggestion(name, mesh.cell_names));
       cells.push_back(c);
     }
+  return cells;
+}
+
+}  // namespace
+
+std::vector<int> select_cells(const catalog::Args& args, const engine::Mesh& mesh) {
+  std::vector<int> cells;
+  if (declared_and_present(args, "TOUT")) {
+    cells.resize(mesh.n_cells());
+    for (int c = 0; c < mesh.n_cells(); ++c) cells[c] = c;
+    return cells;
+  }
+  cells = named_cells(args, mesh);
   sort_unique(cells);
   return cells;
 }
@@ -102,19 +113,8 @@ std::vector<int> select_nodes(const catalog::Args& args, const engine::Mesh& mes
       }
       nodes.push_back(n);
     }
-  if (declared_and_present(args, "GROUP_MA") || declared_and_present(args, "MAILLE")) {
-    std::vector<int> cells;
-    if (declared_and_present(args, "GROUP_MA"))
-      for (const auto& g : args.texts("GROUP_MA")) merge(cells, cell_group(args, "GROUP_MA", mesh, g));
-    if (declared_and_present(args, "MAILLE"))
-      for (const auto& name : args.texts("MAILLE")) {
-        const int c = mesh.find_cell(name);
-        if (c < 0)
-          throw args.error("MAILLE", "a cell name of the mesh", "'" + name + "'", suggestion(name, mesh.cell_names));
-        cells.push_back(c);
-      }
-    merge(nodes, mesh.nodes_of_cells(cells));
-  }
+  if (declared_and_present(args, "GROUP_MA") || declared_and_present(args, "MAILLE"))
+    merge(nodes, mesh.nodes_of_cells(named_cells(args, mesh)));
   sort_unique(nodes);
   return nodes;
 }

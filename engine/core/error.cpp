@@ -19,7 +19,10 @@ std::string Error::format() const {
   std::string out;
   if (!context_.file.empty()) {
     out += context_.file;
-    if (context_.line > 0) out += ":" + std::to_string(context_.line);
+    if (context_.line > 0) {
+      out += ':';
+      out += std::to_string(context_.line);
+    }
     out += ": ";
   }
   if (!context_.command.empty()) out += context_.command + ": ";

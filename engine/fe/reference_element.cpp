@@ -1,6 +1,8 @@
 /// Per-type reference tables (shape data at quadrature points, extrapolation).
 #include "engine/fe/reference_element.hpp"
 
+#include "engine/mesh/cell_topology.hpp"
+
 #include <array>
 #include <mutex>
 
@@ -37,21 +39,10 @@ TypeFacts facts(CellType type) {
   return {0, 0, 0};
 }
 
-CellType linear_of(CellType type) {
-  switch (type) {
-    case CellType::Seg3: return CellType::Seg2;
-    case CellType::Tria6: return CellType::Tria3;
-    case CellType::Quad8: return CellType::Quad4;
-    case CellType::Tetra10: return CellType::Tetra4;
-    case CellType::Penta15: return CellType::Penta6;
-    case CellType::Hexa20: return CellType::Hexa8;
-    default: return type;
-  }
-}
 
 /// Least-squares Gauss -> vertex fit, then linear interpolation to every node.
 std::vector<double> build_extrapolation(const ReferenceElement& re, const std::vector<QuadraturePoint>& qp) {
-  const CellType lin = linear_of(re.type);
+  const CellType lin = linear_type(re.type);
   const int nv = cell_n_vertices(re.type);
   Eigen::MatrixXd m(re.n_qp, nv);
   double nl[kMaxCellNodes];
