@@ -34,8 +34,8 @@ std::vector<Keyword> keywords() {
              "Time stepping")
           .required(),
       factor("NEWTON",
-             {text("MATRICE", "Matrix used by Newton").into_values({"TANGENTE", "ELASTIQUE"}).def("TANGENTE"),
-              integer("REAC_ITER", "Rebuild the matrix every N iterations (0: never)").def(1LL).range(0, std::nullopt)},
+             {text("MATRICE", "Matrix used by Newton; with RELATION='ELAS' (the only behaviour) the tangent is the elastic matrix, so both give the same iterations; contact terms are always included").into_values({"TANGENTE", "ELASTIQUE"}).def("TANGENTE"),
+              integer("REAC_ITER", "Rebuild the matrix every N iterations (0: never); with RELATION='ELAS' only the contact terms change between iterations and they are always rebuilt").def(1LL).range(0, std::nullopt)},
              "Newton's method")
           .by_default(),
       factor("CONVERGENCE",
