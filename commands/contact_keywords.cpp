@@ -93,9 +93,15 @@ void read_contact_loops(const catalog::Args& args, engine::ContactDefinition& de
 
 void warn_incompatible_pairs(const engine::ContactDefinition& def, const engine::Mesh& mesh, Session& session) {
   // One rule, in the engine (engine/contact/compatibility): the message names the cells.
-  for (size_t z = 0; z < def.zones.size(); ++z)
+  for (size_t z = 0; z < def.zones.size(); ++z) {
     for (const auto& message : engine::check_contact_zone_compatibility(mesh, def.zones[z], static_cast<int>(z)))
       session.warn(message);
+    const bool continuous = def.method == engine::ContactMethod::Continuous ||
+                            def.method == engine::ContactMethod::ContinuousPenalty;
+    if (continuous)
+      for (const auto& message : engine::check_contact_zone_integration(mesh, def.zones[z], static_cast<int>(z)))
+        session.warn(message);
+  }
 }
 
 void warn_coincident_slave_nodes(const catalog::Args& zone_args, const engine::ContactZone& zone, const Maillage& ma,

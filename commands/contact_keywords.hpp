@@ -14,7 +14,8 @@ engine::ContactZone read_contact_zone(const catalog::Args& zone, const engine::M
                                       engine::ContactMethod method);
 /// Reads the loop settings (ALGO_RESO_*, REAC_GEOM, ITER_*_MAXI, RESI_GEOM) present in `args`.
 void read_contact_loops(const catalog::Args& args, engine::ContactDefinition& def);
-/// Logs the compatibility warning for slave/master cell pairs the integration cannot handle.
+/// Logs the compatibility warnings: slave/master cell pairs the integration cannot handle and,
+/// for the continuous method, rules with fewer points than a slave cell has LAGS_C unknowns.
 void warn_incompatible_pairs(const engine::ContactDefinition& def, const engine::Mesh& mesh, Session& session);
 /// Warns when two distinct slave nodes of `zone` share one position (an unmerged
 /// mesh: contact sees two points there), naming the group, the file and the nodes.

@@ -3,6 +3,7 @@
 #include <map>
 
 #include "engine/contact/contact_hook_base.hpp"
+#include "engine/contact/integration_rules.hpp"
 #include "engine/contact/surface_element.hpp"
 
 namespace lunaster::engine {
@@ -32,6 +33,24 @@ std::vector<std::string> check_contact_zone_compatibility(const Mesh& mesh, cons
       if (!contact_pairing_compatible(st, mt))
         out.push_back(contact_pairing_warning(zone_index, st, contact::cell_label(mesh, sc), mt,
                                               contact::cell_label(mesh, mc)));
+  return out;
+}
+
+std::vector<std::string> check_contact_zone_integration(const Mesh& mesh, const ContactZone& zone, int zone_index) {
+  std::map<CellType, int> slave_first;
+  for (int c : zone.slave_cells) slave_first.emplace(mesh.cell_types[c], c);
+  std::vector<std::string> out;
+  for (const auto& [type, cell] : slave_first) {
+    const size_t n_points =
+        contact::contact_integration_rule(type, zone.integration, zone.integration_order, zone.sub_elements).size();
+    const int n_multipliers = cell_info(type).n_nodes;
+    if (n_points < static_cast<size_t>(n_multipliers))
+      out.push_back("contact zone " + std::to_string(zone_index + 1) + ": the integration rule has " +
+                    std::to_string(n_points) + " point(s) on slave " + contact::surface_type_name(type) + " cell " +
+                    contact::cell_label(mesh, cell) + ", which carries " + std::to_string(n_multipliers) +
+                    " LAGS_C unknowns: the contact pressure is under-determined (singular system or wrong "
+                    "values); raise ORDRE_INT or use INTEGRATION='AUTO', 'SIMPSON' or 'NCOTES'");
+  }
   return out;
 }
 

@@ -27,4 +27,10 @@ std::string contact_pairing_warning(int zone_index, CellType slave, const std::s
 std::vector<std::string> check_contact_zone_compatibility(const Mesh& mesh, const ContactZone& zone,
                                                           int zone_index);
 
+/// Continuous method only: warnings for slave cell types on which the zone's
+/// integration rule has fewer points than the cell carries LAGS_C unknowns
+/// (e.g. GAUSS ORDRE_INT=1 on SEG2, GAUSS 3 on TRIA6): the multipliers are then
+/// under-determined and the answer is either a singular system or garbage.
+std::vector<std::string> check_contact_zone_integration(const Mesh& mesh, const ContactZone& zone, int zone_index);
+
 }  // namespace lunaster::engine

@@ -109,4 +109,19 @@ TEST(Ssnp121_3dCompatibility, QuadrangleSlaveOnTria6MasterIsFlagged) {
   }
 }
 
+// A rule with fewer points than a slave cell has LAGS_C unknowns leaves the
+// multipliers under-determined: the continuous method must say so.
+TEST(Ssnp121_3dCompatibility, TooFewIntegrationPointsAreFlagged) {
+  const Mesh mesh = load("ssnp121e");  // TRIA6 slave: 6 LAGS_C per cell
+  ContactZone z = zone_of(mesh, Case{"ssnp121e", IntegrationScheme::Gauss, 3, ContactInit::Interpenetrated, 0});
+  auto messages = check_contact_zone_integration(mesh, z, 0);
+  ASSERT_EQ(messages.size(), 1u);
+  EXPECT_NE(messages[0].find("6 LAGS_C unknowns"), std::string::npos) << messages[0];
+  z.integration_order = 4;  // the rule of SSNP121 E: 6 points, well posed
+  EXPECT_TRUE(check_contact_zone_integration(mesh, z, 0).empty());
+  z.integration = IntegrationScheme::Auto;
+  z.integration_order = 0;
+  EXPECT_TRUE(check_contact_zone_integration(mesh, z, 0).empty());
+}
+
 }  // namespace
