@@ -288,6 +288,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
                              {"last residuals: RESI_GLOB_RELA = " + sci(resi_rela) + ", RESI_GLOB_MAXI = " + sci(resi_maxi),
                               "loop: Newton (contact/geometry fixed-point pass " + std::to_string(fixed_point) + ")"});
     if (!contact_) break;
+    log_.info("contact: " + std::to_string(contact_->n_active()) + " active point(s) in this pass");
     ++stats_.contact_passes;
     bool settled = false;
     {
