@@ -32,13 +32,15 @@ test-asan: deps
 
 # libFuzzer runs of the MED reader, the Gmsh reader and the deck front end (clang,
 # ASan + UBSan), FUZZ_TIME seconds each, from the committed corpus tests/fuzz/corpus/.
+# FUZZ_SEED=0 picks a random seed; .ci/run uses a fixed one.
 FUZZ_TIME ?= 20
+FUZZ_SEED ?= 0
 fuzz:
 	@bash scripts/install-deps.sh fuzz
 	cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
 	  -DLUNASTER_FUZZ=ON -DLUNASTER_TESTS=OFF $(CMAKE_FLAGS)
 	cmake --build build-fuzz --target fuzzers -j $(JOBS)
-	bash tests/fuzz/run_fuzzers.sh build-fuzz $(FUZZ_TIME)
+	bash tests/fuzz/run_fuzzers.sh build-fuzz $(FUZZ_TIME) $(FUZZ_SEED)
 
 docs: build
 	$(BUILD)/lunaster --dump-catalog md docs/commands.md
