@@ -6,41 +6,89 @@ columns lunaster's IMPR_MESURE writes (family, method, k, status, nodes, unknown
     ccx_run.py CSV MESH.med FAMILY K --contact {nts,sts,mortar} --penalty K [--slab] [--work DIR]
 
 t_total is the wall time of `ccx` (conversion excluded), peak memory from
-getrusage of the child. err_p: contact pressure CSTR over the contact elements
-(node-to-surface: slave nodes; surface-to-surface: slave integration points), or,
-for mortar which prints no CSTR, the normal stress at the interface elements'
-integration points; err_sig: normal stress at those integration points (lunaster
-uses nodal SIGM_NOEU: close, not identical); err_u: normal displacement of the
-interface nodes. err_A/O/B are left empty. Never a pass/fail test.
+getrusage of the child. Errors are computed as lunaster's IMPR_MESURE computes them,
+from nodal values on the nodes med2inp.py lists in its .json sidecar:
+  err_p      CalculiX's contact pressure CPRESS (.frd, at the slave nodes) over the slave face
+  err_sig    the nodal normal stress (.frd, extrapolated and averaged at the nodes, as
+             SIGM_NOEU) over both interface faces
+  err_A/O/B  CPRESS at the points A, O, B (3D: A21, A22, A23), as lunaster's CONTINUE rows
+  err_u      the normal displacement over both interface faces
+The .frd prints 6 significant digits, so errors below ~1e-5 are not resolved.
+Never a pass/fail test.
 """
 import argparse
 import csv
+import json
 import os
 import re
-import resource
 import subprocess
 import sys
+import threading
 import time
+
+import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 P, U = 1.0e5, 0.05
 
 
-def blocks(dat):
-    """Yields (title, rows of floats) of each table of a CalculiX .dat file."""
-    title, rows = None, []
-    for line in open(dat):
-        s = line.strip()
-        if not s:
-            continue
-        if re.match(r"^[a-z]", s):
-            if title:
-                yield title, rows
-            title, rows = s, []
-        else:
-            rows.append([float(v) for v in s.split()])
-    if title:
-        yield title, rows
+def frd_results(frd):
+    """(node coordinates, element nodes, {block name: {node: [values]}}) of an ASCII .frd
+    file: the node block ('    2C'), the element block ('    3C') and the last step of each
+    nodal result block (DISP, STRESS, CONTACT). Node and result records are ' -1' + I10
+    number + E12.5 values; an element is a ' -1' record then ' -2' lines of I10 nodes."""
+    coords, elements, out = {}, {}, {}
+    section, name, values, elem = None, None, None, None
+    for line in open(frd):
+        key = line[:3]
+        if line.startswith("    2C"):
+            section = "nodes"
+        elif line.startswith("    3C"):
+            section = "elements"
+        elif key == " -4":
+            section, name, values = "results", line.split()[1], {}
+        elif key == " -3":
+            if section == "results":
+                out[name] = values  # a later step of the same block replaces an earlier one
+            section = None
+        elif section == "elements":
+            if key == " -1":
+                elem = int(line[3:13])
+                elements[elem] = []
+            elif key == " -2":
+                elements[elem] += [int(line[k:k + 10]) for k in range(3, len(line.rstrip()) - 9, 10)]
+        elif key == " -1" and section in ("nodes", "results"):
+            body = line[13:].rstrip("\n")
+            row = [float(body[k:k + 12]) for k in range(0, len(body) - 11, 12)]
+            (coords if section == "nodes" else values)[int(line[3:13])] = row
+    return coords, elements, out
+
+
+def node_values(coords, candidates, block, targets):
+    """For each target point, the mean of `block` over the candidate .frd nodes at its
+    coordinates (its first len(point) coordinates: a 2D point matches every node of the
+    layer CalculiX expands a 2D mesh into); None where no node of the block is there."""
+    ids = np.array([n for n in candidates if n in block and n in coords])
+    if len(ids) == 0:
+        return [None] * len(targets)
+    xyz = np.array([coords[n] for n in ids])
+    vals = np.array([block[n] for n in ids])
+    span = np.ptp(xyz, axis=0).max()
+    out = []
+    for t in targets:
+        d = np.abs(xyz[:, :len(t)] - np.array(t)).max(axis=1)
+        hit = d <= 1e-5 * span
+        out.append(vals[hit].mean(axis=0) if hit.any() else None)
+    return out
+
+
+def body_nodes(elements, first_last):
+    lo, hi = first_last
+    return {n for e, conn in elements.items() if lo <= e <= hi for n in conn}
+
+
+def max_rel(values, ref):
+    return f"{max(abs(v - ref) / abs(ref) for v in values):.6g}" if values else ""
 
 
 def main():
@@ -64,44 +112,50 @@ def main():
     env = dict(os.environ, OMP_NUM_THREADS="2")
     t0 = time.perf_counter()
     status = "ok"
-    try:
-        proc = subprocess.run(["ccx", name], cwd=a.work, env=env, capture_output=True, text=True, timeout=a.timeout)
-        log = proc.stdout + proc.stderr
-        if proc.returncode != 0 or "*ERROR" in log:
-            err = [l.strip() for l in log.splitlines() if "*ERROR" in l]
-            status = "failed: " + (err[0] if err else f"ccx exit {proc.returncode}")
-    except subprocess.TimeoutExpired:
-        log, status = "", f"failed: timeout {a.timeout:.0f} s"
+    logfile = os.path.join(a.work, name + ".log")
+    with open(logfile, "w") as out:
+        proc = subprocess.Popen(["ccx", name], cwd=a.work, env=env, stdout=out, stderr=subprocess.STDOUT)
+        # wait4 gives the peak memory of ccx alone (not of the converter run before it).
+        timer = threading.Timer(a.timeout, proc.kill)
+        timer.start()
+        _, wstatus, usage = os.wait4(proc.pid, 0)
+        timer.cancel()
     wall = time.perf_counter() - t0
-    peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024.0
-    with open(os.path.join(a.work, name + ".log"), "w") as f:
-        f.write(log)
+    peak = usage.ru_maxrss / 1024.0
+    code = proc.returncode = os.waitstatus_to_exitcode(wstatus)
+    log = open(logfile).read()
+    if code != 0 or "*ERROR" in log:
+        err = [l.strip() for l in log.splitlines() if "*ERROR" in l]
+        status = "failed: " + (err[0] if err else (f"timeout {a.timeout:.0f} s" if code < 0 else f"ccx exit {code}"))
     m = re.search(r"number of equations\s+(\d+)", log)
     eqs = m.group(1) if m else ""
     iters = len(re.findall(r"^ iteration \d+", log, re.M))
     incs = len(re.findall(r"^ increment \d+ attempt", log, re.M))
     row = dict(family=a.family, method=method, k=a.k, status=status, nodes="", unknowns=eqs, free_unknowns=eqs,
                instants=incs, newton_iter=iters, contact_passes="", t_total=f"{wall:.6g}", peak_rss_mb=f"{peak:.6g}")
-    dat = os.path.join(a.work, name + ".dat")
-    if status == "ok" and os.path.exists(dat):
-        press, sig, disp = [], [], []
-        normal = 2 if ("2D" in a.family) else 3
-        tables = list(blocks(dat))
-        final = max(float(t.split()[-1]) for t, _ in tables) if tables else 0.0
-        for title, rows in tables:
-            if abs(float(title.split()[-1]) - final) > 1e-9:
-                continue  # an intermediate increment
-            if title.startswith("contact stress"):
-                press += [r[-3] for r in rows]
-            elif title.startswith("stresses"):
-                sig += [r[2 + normal - 1] for r in rows]  # elem, ip, sxx, syy, szz, ...
-            elif title.startswith("displacements"):
-                disp += [r[normal] for r in rows]
-        if not press:
-            press = [-s for s in sig]
-        row["err_p"] = f"{max(abs(p - P) / P for p in press):.6g}" if press else ""
-        row["err_sig"] = f"{max(abs(s + P) / P for s in sig):.6g}" if sig else ""
-        row["err_u"] = f"{max(abs(u + U) / U for u in disp):.6g}" if disp else ""
+    frd = os.path.join(a.work, name + ".frd")
+    if status == "ok" and os.path.exists(frd):
+        with open(inp[:-4] + ".json") as f:
+            nodes = json.load(f)
+        coords, elements, res = frd_results(frd)
+        c = nodes["normal"] - 1
+        # Slave and master faces have coincident nodes: each is looked up among the nodes of
+        # the elements of its own body.
+        upper, lower = body_nodes(elements, nodes["slave_elements"]), body_nodes(elements, nodes["master_elements"])
+
+        def on_faces(block):
+            return [v for v in node_values(coords, upper, block, nodes["slave"]) +
+                    node_values(coords, lower, block, nodes["master"]) if v is not None]
+        # CPRESS is the 4th CONTACT component (COPEN, CSLIP1, CSLIP2, CPRESS, ...), positive in
+        # compression; a slave node with no contact record carries no pressure.
+        contact = node_values(coords, upper, res.get("CONTACT", {}), nodes["slave"] + nodes["point_xyz"])
+        press = [-v[3] if v is not None else 0.0 for v in contact]
+        n_slave = len(nodes["slave"])
+        row["err_p"] = max_rel(press[:n_slave], -P)
+        row["err_sig"] = max_rel([v[c] for v in on_faces(res.get("STRESS", {}))], -P)
+        for col, p in zip(("err_A", "err_O", "err_B"), press[n_slave:]):
+            row[col] = max_rel([p], -P)
+        row["err_u"] = max_rel([v[c] for v in on_faces(res.get("DISP", {}))], -U)
     with open(a.csv) as f:
         header = next(csv.reader(f))
     with open(a.csv, "a", newline="") as f:

@@ -5,15 +5,24 @@ The scene is SSNP121's: E = 2e6 Pa, nu = 0, frictionless contact between the two
 blocks, imposed displacement -0.1 on the top face, bottom face fixed (2D plane
 strain: CD / GH and AB / EF; 3D: SURCHA / ENCAST and SURESC / SURMAI).
 
-    med2inp.py MESH.med OUT.inp --contact {nts,sts,mortar} [--penalty K]
+    med2inp.py MESH.med OUT.inp --contact {nts,sts,mortar} [--penalty K] [--slab]
+
+Besides OUT.inp it writes OUT.json: the coordinates of the nodes of the slave face, the
+master face and the points A, O, B (2D) or A21, A22, A23 (3D), the element numbers of the
+body under each face (the two faces have coincident nodes) and the normal component, so that ccx_run.py computes the errors on the same nodes as lunaster.
+Results go to the .frd: nodal displacements, nodal stresses (extrapolated and averaged at
+the nodes, as lunaster's SIGM_NOEU) and the contact pressure at the slave nodes.
 
 nts    *CONTACT PAIR, TYPE=NODE TO SURFACE  (penalty, PRESSURE-OVERCLOSURE=LINEAR, slope K)
 sts    *CONTACT PAIR, TYPE=SURFACE TO SURFACE (penalty, same law)
 mortar *CONTACT PAIR, TYPE=MORTAR (PRESSURE-OVERCLOSURE=HARD)
 Slave = the upper block's face (AB / SURESC, as lunaster's CONTINUE decks), master = the other.
-Reads the mesh with meshio (Debian python3-meshio); PENTA15 meshes are not readable by it.
+Reads the mesh with meshio (Debian python3-meshio), which keeps MED's node order inside
+3D cells: HEXA8/HEXA20 are permuted to VTK (= CalculiX) order here (../shared/spec/med-facts.md).
+PENTA15 meshes are not readable by it.
 """
 import argparse
+import json
 import sys
 
 import meshio
@@ -26,10 +35,25 @@ ELEMENTS = {
     "hexahedron": ("C3D8", [(0, 1, 2, 3), (4, 7, 6, 5), (0, 4, 5, 1), (1, 5, 6, 2), (2, 6, 7, 3), (3, 7, 4, 0)]),
     "hexahedron20": ("C3D20", [(0, 1, 2, 3), (4, 7, 6, 5), (0, 4, 5, 1), (1, 5, 6, 2), (2, 6, 7, 3), (3, 7, 4, 0)]),
 }
-SCENES = {
-    2: dict(bodies=("PLAQUE1", "PLAQUE2"), top="CD", bottom="GH", slave="AB", master="EF", normal=2),
-    3: dict(bodies=("V1", "V2"), top="SURCHA", bottom="ENCAST", slave="SURESC", master="SURMAI", normal=3),
+# For each VTK position i, the MED position to read (vtk[i] = med[p[i]]).
+MED_TO_VTK = {
+    "hexahedron": [0, 3, 2, 1, 4, 7, 6, 5],
+    "hexahedron20": [0, 3, 2, 1, 4, 7, 6, 5, 11, 10, 9, 8, 15, 14, 13, 12, 16, 19, 18, 17],
 }
+SCENES = {
+    2: dict(bodies=("PLAQUE1", "PLAQUE2"), top="CD", bottom="GH", slave="AB", master="EF", normal=2,
+            points=("A", "O", "B")),
+    3: dict(bodies=("V1", "V2"), top="SURCHA", bottom="ENCAST", slave="SURESC", master="SURMAI", normal=3,
+            points=("A21", "A22", "A23")),
+}
+
+
+def to_vtk_order(mesh):
+    """Permutes the 3D cells meshio read from MED into VTK node order, in place."""
+    for block in mesh.cells:
+        p = MED_TO_VTK.get(block.type)
+        if p is not None:
+            block.data[:] = block.data[:, p]
 
 
 def extrude(mesh):
@@ -104,17 +128,29 @@ def main():
                          "contact refuses the MPCs of its own 2D expansion)")
     a = ap.parse_args()
     mesh = meshio.read(a.mesh)
+    to_vtk_order(mesh)
+    sc = SCENES[3 if any(c.type.startswith("hexa") for c in mesh.cells) else 2]
+    # Node numbers of the faces and points in the mesh as read (extrusion keeps them).
+    cells, nodes = groups(mesh)
+    face_nodes = {name: sorted({int(n) + 1 for b, i in cells[name] for n in mesh.cells[b].data[i]})
+                  for name in (sc["slave"], sc["master"])}
+    def where(ids):
+        return [[float(v) for v in mesh.points[n - 1][:sc["normal"]]] for n in ids]
+    points = [nodes[p][0] + 1 for p in sc["points"]]
+    sidecar = dict(normal=sc["normal"], points=list(sc["points"]), slave=where(face_nodes[sc["slave"]]),
+                   master=where(face_nodes[sc["master"]]), point_xyz=where(points))
     if a.slab:
         mesh = extrude(mesh)
+        cells, nodes = groups(mesh)
     dim = 3 if any(c.type.startswith("hexa") for c in mesh.cells) else 2
-    sc = SCENES[2 if a.slab else dim]
-    cells, nodes = groups(mesh)
     lines = ["*HEADING", f"SSNP121 {dim}D from {a.mesh} (lunaster tests/bench/study)", "*NODE, NSET=NALL"]
     for n, x in enumerate(mesh.points):
         z = x[2] if dim == 3 else 0.0
         lines.append(f"{n + 1}, {x[0]:.12g}, {x[1]:.12g}, {z:.12g}")
     next_id = 1
+    body_range = {}
     for body in sc["bodies"]:
+        first = next_id
         by_type = {}
         for b, i in cells[body]:
             by_type.setdefault(mesh.cells[b].type, []).append((b, i))
@@ -122,22 +158,23 @@ def main():
             lines.append(f"*ELEMENT, TYPE={ELEMENTS[ctype][0]}, ELSET={body}")
             for b, i in members:
                 element_ids[(b, i)] = next_id
-                conn = ", ".join(str(int(n) + 1) for n in mesh.cells[b].data[i])
-                lines.append(f"{next_id}, {conn}")
+                # At most 16 entries per line: a C3D20 continues on a second line.
+                entries = [str(next_id)] + [str(int(n) + 1) for n in mesh.cells[b].data[i]]
+                lines += [", ".join(entries[k:k + 16]) + ("," if k + 16 < len(entries) else "")
+                          for k in range(0, len(entries), 16)]
                 next_id += 1
+        body_range[body] = [first, next_id - 1]
     for name in (sc["top"], sc["bottom"], sc["slave"], sc["master"]):
         members = sorted({int(n) + 1 for b, i in cells[name] for n in mesh.cells[b].data[i]})
         lines.append(f"*NSET, NSET=N{name}")
         lines += [", ".join(map(str, members[k:k + 12])) for k in range(0, len(members), 12)]
-    interface = set()
+    name_role = {sc["slave"]: "slave", sc["master"]: "master"}
     for name in (sc["slave"], sc["master"]):
         faces = face_surface(mesh, cells, name, sc["bodies"])
-        interface |= {e for e, _ in faces}
+        owner = next(b for b, (lo, hi) in body_range.items() if lo <= faces[0][0] <= hi)
+        sidecar[name_role[name] + "_elements"] = body_range[owner]
         lines.append(f"*SURFACE, NAME=S{name}, TYPE=ELEMENT")
         lines += [f"{e}, S{f}" for e, f in faces]
-    members = sorted(interface)
-    lines.append("*ELSET, ELSET=EIFACE")
-    lines += [", ".join(map(str, members[k:k + 12])) for k in range(0, len(members), 12)]
     lines += ["*MATERIAL, NAME=STEEL", "*ELASTIC", "2.0e6, 0.0"]
     for body in sc["bodies"]:
         lines.append(f"*SOLID SECTION, ELSET={body}, MATERIAL=STEEL")
@@ -157,11 +194,15 @@ def main():
         lines.append(f"{top}, 2, 2, 0.")
     if a.slab:
         lines.append("NALL, 3, 3, 0.")
-    lines += [
-              f"*NODE PRINT, NSET=N{sc['slave']}", "U", f"*NODE PRINT, NSET=N{sc['master']}", "U",
-              "*EL PRINT, ELSET=EIFACE", "S", "*CONTACT PRINT", "CSTR", "*END STEP"]
+    # OUTPUT=3D: in 2D, CalculiX expands the mesh to one layer of 3D elements and writes the
+    # node-to-surface contact results on the expanded nodes; asking for the expanded mesh puts
+    # their coordinates in the .frd, and ccx_run.py maps every result back by coordinates.
+    out3d = ", OUTPUT=3D" if dim == 2 else ""
+    lines += [f"*NODE FILE{out3d}", "U", f"*EL FILE{out3d}", "S", "*CONTACT FILE", "CSTR", "*END STEP"]
     with open(a.out, "w") as f:
         f.write("\n".join(lines) + "\n")
+    with open(a.out[:-4] + ".json", "w") as f:
+        json.dump(sidecar, f)
     print(f"{a.out}: {len(mesh.points)} nodes, {next_id - 1} elements, contact {ctype}")
 
 
