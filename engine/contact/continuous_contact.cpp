@@ -150,7 +150,7 @@ void ContinuousContact::first_pairing_report(const Log& log) {
                   "(orient the master surface outwards, e.g. ORIE_PEAU)");
 }
 
-void ContinuousContact::add_point(const Vector& u, const ContinuousPoint& p, std::vector<Triplet>& tangent,
+void ContinuousContact::add_point(const Vector& u, const ContinuousPoint& p, LocalTangent& tangent,
                                   Vector& residual) const {
   const double r = rho(p.zone), wj = p.wjac, wm = wj;
   if (wj == 0.0) return;
@@ -160,29 +160,29 @@ void ContinuousContact::add_point(const Vector& u, const ContinuousPoint& p, std
   if (!p.active) {
     for (int a = 0; a < p.n_slave; ++a) {
       residual[leq[a]] += -(wm / r) * p.phi[a] * lambda;
-      for (int b = 0; b < p.n_slave; ++b) tangent.emplace_back(leq[a], leq[b], -(wm / r) * p.phi[a] * p.phi[b]);
+      for (int b = 0; b < p.n_slave; ++b) tangent.add(leq[a], leq[b], -(wm / r) * p.phi[a] * p.phi[b]);
     }
     return;
   }
   const double g = p.gap.value(u);
   if (penalty()) {
     add_gradient(p.gap, wj * r * g, residual);
-    add_outer(p.gap, p.gap, wj * r, tangent);
+    tangent.add_outer(p.gap, p.gap, wj * r);
     for (int a = 0; a < p.n_slave; ++a) {
       residual[leq[a]] += wj * p.phi[a] * (g - lambda / r);
-      for (int k = 0; k < p.gap.n; ++k) tangent.emplace_back(leq[a], p.gap.eq[k], wj * p.phi[a] * p.gap.coef[k]);
-      for (int b = 0; b < p.n_slave; ++b) tangent.emplace_back(leq[a], leq[b], -(wj / r) * p.phi[a] * p.phi[b]);
+      for (int k = 0; k < p.gap.n; ++k) tangent.add(leq[a], p.gap.eq[k], wj * p.phi[a] * p.gap.coef[k]);
+      for (int b = 0; b < p.n_slave; ++b) tangent.add(leq[a], leq[b], -(wj / r) * p.phi[a] * p.phi[b]);
     }
     return;
   }
   add_gradient(p.gap, wj * (lambda + r * g), residual);
-  add_outer(p.gap, p.gap, wj * r, tangent);
+  tangent.add_outer(p.gap, p.gap, wj * r);
   for (int a = 0; a < p.n_slave; ++a) {
     residual[leq[a]] += wj * p.phi[a] * g;
     for (int k = 0; k < p.gap.n; ++k) {
       const double v = wj * p.phi[a] * p.gap.coef[k];
-      tangent.emplace_back(leq[a], p.gap.eq[k], v);
-      tangent.emplace_back(p.gap.eq[k], leq[a], v);
+      tangent.add(leq[a], p.gap.eq[k], v);
+      tangent.add(p.gap.eq[k], leq[a], v);
     }
   }
 }
@@ -191,7 +191,15 @@ void ContinuousContact::add_to_system(const Vector& u, std::vector<Triplet>& tan
   if (def_.geometry_loop == FixedPointOrNewton::Newton) pair(u);
   if (statuses_in_newton())
     for (auto& p : points_) p.active = status_of(u, p);
-  for (const auto& p : points_) add_point(u, p, tangent, residual);
+  // The points of a slave cell are consecutive and share their DOFs: their terms are
+  // summed per cell and emitted once.
+  LocalTangent local;
+  int cell = -1;
+  for (const auto& p : points_) {
+    if (p.slave_cell != cell) local.flush(tangent), cell = p.slave_cell;
+    add_point(u, p, local, residual);
+  }
+  local.flush(tangent);
 }
 
 void ContinuousContact::write_fields(const Vector& u, ResultStep& step) const {

@@ -79,7 +79,7 @@ class ContinuousContact : public ContactHookBase {
   bool penalty() const { return def_.method == ContactMethod::ContinuousPenalty; }
   double rho(int zone) const;
   bool status_of(const Vector& u, const ContinuousPoint& p) const;
-  void add_point(const Vector& u, const ContinuousPoint& p, std::vector<Triplet>& tangent, Vector& residual) const;
+  void add_point(const Vector& u, const ContinuousPoint& p, LocalTangent& tangent, Vector& residual) const;
 
   std::vector<std::unique_ptr<MasterSurface>> masters_;  ///< one per zone
   std::vector<ContinuousPoint> points_;

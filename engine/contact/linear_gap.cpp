@@ -1,5 +1,7 @@
 #include "engine/contact/linear_gap.hpp"
 
+#include <algorithm>
+
 #include "engine/core/error.hpp"
 
 namespace lunaster::engine::contact {
@@ -38,6 +40,44 @@ void add_outer(const LinearGap& a, const LinearGap& b, double factor, std::vecto
 
 void add_gradient(const LinearGap& g, double factor, Vector& residual) {
   for (int i = 0; i < g.n; ++i) residual[g.eq[i]] += factor * g.coef[i];
+}
+
+int LocalTangent::index(int eq) {
+  const int n = static_cast<int>(eqs_.size());
+  for (int k = n - 1; k >= 0; --k)
+    if (eqs_[k] == eq) return k;
+  if (n == stride_) {  // grow, keeping the entries already summed
+    const int stride = std::max(64, 2 * stride_);
+    std::vector<double> dense(static_cast<size_t>(stride) * stride, 0.0);
+    for (int i = 0; i < n; ++i)
+      std::copy(dense_.begin() + static_cast<size_t>(i) * stride_, dense_.begin() + static_cast<size_t>(i) * stride_ + n,
+                dense.begin() + static_cast<size_t>(i) * stride);
+    dense_.swap(dense);
+    stride_ = stride;
+  }
+  eqs_.push_back(eq);
+  return n;
+}
+
+void LocalTangent::add_outer(const LinearGap& a, const LinearGap& b, double factor) {
+  int ia[LinearGap::kMaxTerms], ib[LinearGap::kMaxTerms];
+  for (int i = 0; i < a.n; ++i) ia[i] = index(a.eq[i]);
+  for (int j = 0; j < b.n; ++j) ib[j] = index(b.eq[j]);
+  for (int i = 0; i < a.n; ++i) {
+    double* row = dense_.data() + static_cast<size_t>(ia[i]) * stride_;
+    const double fa = factor * a.coef[i];
+    for (int j = 0; j < b.n; ++j) row[ib[j]] += fa * b.coef[j];
+  }
+}
+
+void LocalTangent::flush(std::vector<Triplet>& tangent) {
+  const int n = static_cast<int>(eqs_.size());
+  for (int i = 0; i < n; ++i) {
+    double* row = dense_.data() + static_cast<size_t>(i) * stride_;
+    for (int j = 0; j < n; ++j)
+      if (row[j] != 0.0) tangent.emplace_back(eqs_[i], eqs_[j], row[j]), row[j] = 0.0;
+  }
+  eqs_.clear();
 }
 
 }  // namespace lunaster::engine::contact

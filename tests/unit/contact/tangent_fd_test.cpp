@@ -100,7 +100,9 @@ TEST(ContactTangent, ContinuousMatchesFiniteDifferences) {
         hook.set_all_active(active == 1);
         const Vector u = random_state(s.dofs, gen, 1e-3, -1e5);
         EXPECT_LT(fd_mismatch(hook, u, gen, 1e-3, 1e4, s.dofs), 1e-8) << "quadratic " << quadratic;
-        if (m == ContactMethod::Continuous) EXPECT_TRUE(symmetric(hook, u));
+        if (m == ContactMethod::Continuous) {
+          EXPECT_TRUE(symmetric(hook, u));
+        }
       }
 }
 
