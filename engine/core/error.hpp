@@ -61,6 +61,14 @@ class SolveError : public Error {
  public:
   explicit SolveError(std::string message, std::vector<std::string> hints = {})
       : Error(ErrorKind::Solve, std::move(message), std::move(hints)) {}
+
+  /// A linear solver that could not allocate its factors: not a singular system, and
+  /// not to be diagnosed as one.
+  static SolveError out_of_memory(const std::string& backend, long long n_equations, const std::string& detail);
+  bool out_of_memory() const { return out_of_memory_; }
+
+ private:
+  bool out_of_memory_ = false;
 };
 
 /// A bug in lunaster.

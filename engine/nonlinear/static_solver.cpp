@@ -258,6 +258,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         Stopwatch watch(stats_.factorize_seconds);
         solver->factorize(k_ff, kind);
       } catch (const SolveError& err) {
+        if (err.out_of_memory()) throw;
         throw diagnose_singular_system(model_, dofs_, cons.free_index, k_full_, err, t);
       }
       Vector du;

@@ -176,6 +176,8 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
       common_.nmethods = 0;  // CHOLMOD's default strategy (AMD, then METIS if AMD fills badly)
       factor_ = cholmod_analyze(&s, &common_);
     }
+    if (!factor_ && common_.status == CHOLMOD_OUT_OF_MEMORY)
+      throw SolveError::out_of_memory("CHOLMOD", m->rows(), "symbolic analysis");
     if (!factor_) fail(-1, "symbolic analysis failed (status " + std::to_string(common_.status) + ")");
     outer_.assign(m->outerIndexPtr(), m->outerIndexPtr() + m->cols() + 1);
     inner_.assign(m->innerIndexPtr(), m->innerIndexPtr() + m->nonZeros());
@@ -185,6 +187,10 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     const auto* perm = static_cast<const int*>(factor_->Perm);
     const int minor = static_cast<int>(factor_->minor);
     fail(perm ? perm[minor] : minor, "matrix not positive definite");
+  }
+  if (common_.status == CHOLMOD_OUT_OF_MEMORY) {
+    ready_ = false;
+    throw SolveError::out_of_memory("CHOLMOD", m->rows(), "numeric factorisation");
   }
   if (!ok || common_.status < CHOLMOD_OK) fail(-1, "factorisation failed (status " + std::to_string(common_.status) + ")");
   const int weak = factor_->is_super ? smallest_pivot_column(*m) : -1;

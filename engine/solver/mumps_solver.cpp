@@ -2,6 +2,7 @@
 /// coordinate form (1-based); for symmetric kinds only the upper triangle is
 /// passed. Null-pivot detection (ICNTL(24) = 1) reports singular matrices and
 /// the first null pivot's equation.
+#include <algorithm>
 #include <dmumps_c.h>
 
 #include <string>
@@ -36,9 +37,17 @@ class MumpsSolver final : public LinearSolver {
     dmumps_c(&id_);
     initialised_ = false;
   }
+  static bool workspace_too_small(int infog1) {
+    return infog1 == -8 || infog1 == -9 || infog1 == -14 || infog1 == -15 || infog1 == -17 || infog1 == -20;
+  }
   void check(const char* phase) const {
     if (id_.infog[0] >= 0) return;
     const int code = id_.infog[0], detail = id_.infog[1];
+    // -13: an allocation failed; the others: a workspace was still too small after the
+    // retries of factorize() (INFOG(2) says by how much).
+    if (code == -13 || workspace_too_small(code))
+      throw SolveError::out_of_memory("MUMPS", id_.n, std::string("during ") + phase + ", INFOG(1) = " +
+                                      std::to_string(code) + ", INFOG(2) = " + std::to_string(detail));
     if (code == -10)
       throw SolveError(std::string("MUMPS: numerically singular matrix during ") + phase,
                        {"check the boundary conditions (rigid-body modes) and the contact definition"});
@@ -92,6 +101,14 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   id_.a = val_.data();
   id_.job = 4;  // analysis + factorisation
   dmumps_c(&id_);
+  // -8/-9/-14/-15/-17/-20: a workspace sized from the analysis' estimate was too small
+  // (off-diagonal pivoting on contact systems grows the factors): factorise again with
+  // twice the relaxation ICNTL(14), three times at most, before calling it out of memory.
+  for (int retry = 0; retry < 3 && workspace_too_small(id_.infog[0]); ++retry) {
+    id_.icntl[13] = 2 * std::max(20, id_.icntl[13]);
+    id_.job = 2;  // factorisation again, same analysis
+    dmumps_c(&id_);
+  }
   if (id_.infog[0] == -10 && sym == 1) {
     // LDL^T without pivoting met a zero/negative pivot: redo as symmetric
     // indefinite, whose null-pivot detection names the equation (or which

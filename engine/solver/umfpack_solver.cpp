@@ -67,6 +67,7 @@ void UmfpackSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   const int n = static_cast<int>(a_.rows());
   int status = umfpack_di_symbolic(n, n, a_.outerIndexPtr(), a_.innerIndexPtr(), a_.valuePtr(), &symbolic_,
                                    control_, info_);
+  if (status == UMFPACK_ERROR_out_of_memory) throw SolveError::out_of_memory("UMFPACK", n, "symbolic analysis, status -1");
   if (status != UMFPACK_OK) throw SolveError("UMFPACK: symbolic analysis failed (status " + std::to_string(status) + ")");
   status = umfpack_di_numeric(a_.outerIndexPtr(), a_.innerIndexPtr(), a_.valuePtr(), symbolic_, &numeric_, control_,
                               info_);
@@ -76,6 +77,10 @@ void UmfpackSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     release();
     throw SolveError("UMFPACK: singular matrix" + where,
                      {"check the boundary conditions (rigid-body modes) and the contact definition"});
+  }
+  if (status == UMFPACK_ERROR_out_of_memory) {
+    release();
+    throw SolveError::out_of_memory("UMFPACK", n, "numeric factorisation, status -1");
   }
   if (status != UMFPACK_OK) {
     release();

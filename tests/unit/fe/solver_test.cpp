@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <SuiteSparse_config.h>
 
 #include "engine/assembly/assembly.hpp"
 #include "engine/assembly/dof_map.hpp"
@@ -110,6 +111,39 @@ TEST(Solvers, SingularMatrixReportsFailedColumn) {
     auto s = make_linear_solver(kind);
     EXPECT_THROW(s->factorize(a, MatrixKind::SymmetricPositiveDefinite), SolveError) << s->name();
     EXPECT_EQ(s->failed_column(), dead) << s->name();
+  }
+}
+
+/// While alive, every SuiteSparse allocation fails (CHOLMOD and UMFPACK allocate through
+/// SuiteSparse_config), as when the factors do not fit in memory.
+class SuiteSparseOutOfMemory {
+ public:
+  SuiteSparseOutOfMemory() : saved_(SuiteSparse_config) {
+    SuiteSparse_config.malloc_func = [](size_t) -> void* { return nullptr; };
+    SuiteSparse_config.calloc_func = [](size_t, size_t) -> void* { return nullptr; };
+    SuiteSparse_config.realloc_func = [](void*, size_t) -> void* { return nullptr; };
+  }
+  ~SuiteSparseOutOfMemory() { SuiteSparse_config = saved_; }
+
+ private:
+  SuiteSparse_config_struct saved_;
+};
+
+TEST(Solvers, OutOfMemoryIsNotCalledSingular) {
+  const SparseMatrix a = spd_matrix(30);
+  for (SolverKind kind : {SolverKind::Cholmod, SolverKind::Umfpack}) {
+    auto s = make_linear_solver(kind);
+    try {
+      SuiteSparseOutOfMemory no_memory;
+      s->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+      ADD_FAILURE() << s->name() << ": factorised without memory";
+    } catch (const SolveError& e) {
+      EXPECT_TRUE(e.out_of_memory()) << e.what();
+      EXPECT_NE(std::string(e.what()).find("out of memory factorising 30 equations"), std::string::npos) << e.what();
+      EXPECT_EQ(std::string(e.what()).find("singular"), std::string::npos) << e.what();
+    }
+    s->factorize(a, MatrixKind::SymmetricPositiveDefinite);  // memory back: the same solver works
+    check_solution(a, s->solve(rhs(30)), s->name() + " after out of memory");
   }
 }
 
