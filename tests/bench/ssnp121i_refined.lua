@@ -6,9 +6,10 @@
 -- then: /usr/bin/time -v build/lunaster run tests/bench/ssnp121i_refined.lua -q
 -- The answer stays exact (master edges on the Simpson panel boundaries, as in SSNP121 I), so the
 -- checks are the analytical values at 1e-6. Runtime label: slow, benchmark.
--- Measured (2-core machine shared with other jobs, load ~8): MUMPS 3 min 16 s wall, 188 s user,
--- peak RSS 13.4 GB, 12 checks OK. UMFPACK (int version) fails after 4.5 min at 12.4 GB with status -1
--- (out of memory), hence SOLVEUR METHODE='MUMPS' (now also the default for contact systems).
+-- Measured (idle 2-core machine, 2026-11-22): MUMPS 3 min 06 s wall, 240 s user, peak RSS 7.9 GB,
+-- 12 checks OK (tests/bench/README.md compares with the code before per-cell contact assembly).
+-- UMFPACK (int version) runs out of memory at 12.4 GB, hence SOLVEUR METHODE='MUMPS' (now also
+-- the default for contact systems).
 DEBUT()
 MA = LIRE_MAILLAGE{ FORMAT = 'MED' }
 MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = '3D' } }
