@@ -36,13 +36,44 @@ std::vector<std::string> check_contact_zone_compatibility(const Mesh& mesh, cons
   return out;
 }
 
+namespace {
+
+/// True when every point of `rule` is a vertex of the reference cell of `type`.
+bool at_vertices_only(CellType type, const std::vector<contact::ContactQuadPoint>& rule) {
+  const bool simplex = type == CellType::Tria3 || type == CellType::Tria6;
+  for (const auto& q : rule) {
+    bool vertex = true;
+    for (int d = 0; d < 2; ++d) {
+      const double x = q.xi[d];
+      vertex = vertex && (simplex ? (x == 0.0 || x == 1.0) : (x == -1.0 || x == 1.0 || (d == 1 && (type == CellType::Seg2 || type == CellType::Seg3))));
+    }
+    if (!vertex) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 std::vector<std::string> check_contact_zone_integration(const Mesh& mesh, const ContactZone& zone, int zone_index) {
   std::map<CellType, int> slave_first;
   for (int c : zone.slave_cells) slave_first.emplace(mesh.cell_types[c], c);
   std::vector<std::string> out;
+  std::map<CellType, int> quadratic_master;
+  for (int c : zone.master_cells)
+    if (cell_info(mesh.cell_types[c]).order == 2) quadratic_master.emplace(mesh.cell_types[c], c);
   for (const auto& [type, cell] : slave_first) {
-    const size_t n_points =
-        contact::contact_integration_rule(type, zone.integration, zone.integration_order, zone.sub_elements).size();
+    const auto rule = contact::contact_integration_rule(type, zone.integration, zone.integration_order, zone.sub_elements);
+    const size_t n_points = rule.size();
+    if (cell_info(type).order == 1 && !quadratic_master.empty() && at_vertices_only(type, rule)) {
+      const auto& [mtype, mcell] = *quadratic_master.begin();
+      out.push_back("contact zone " + std::to_string(zone_index + 1) + ": linear slave " +
+                    contact::surface_type_name(type) + " cell " + contact::cell_label(mesh, cell) +
+                    " is integrated at its vertices only against quadratic master " +
+                    contact::surface_type_name(mtype) + " cell " + contact::cell_label(mesh, mcell) +
+                    ": where slave vertices fall on master vertices the master mid-side nodes receive no "
+                    "contact force and the pressure is wrong; use INTEGRATION='GAUSS' or 'SIMPSON', or a "
+                    "quadratic slave surface");
+    }
     const int n_multipliers = cell_info(type).n_nodes;
     if (n_points < static_cast<size_t>(n_multipliers))
       out.push_back("contact zone " + std::to_string(zone_index + 1) + ": the integration rule has " +

@@ -43,9 +43,9 @@ void add_gradient(const LinearGap& g, double factor, Vector& residual) {
 }
 
 int LocalTangent::index(int eq) {
+  if (eq >= static_cast<int>(pos_.size())) pos_.resize(std::max<size_t>(eq + 1, 2 * pos_.size()), -1);
+  if (pos_[eq] >= 0) return pos_[eq];
   const int n = static_cast<int>(eqs_.size());
-  for (int k = n - 1; k >= 0; --k)
-    if (eqs_[k] == eq) return k;
   if (n == stride_) {  // grow, keeping the entries already summed
     const int stride = std::max(64, 2 * stride_);
     std::vector<double> dense(static_cast<size_t>(stride) * stride, 0.0);
@@ -56,6 +56,7 @@ int LocalTangent::index(int eq) {
     stride_ = stride;
   }
   eqs_.push_back(eq);
+  pos_[eq] = n;
   return n;
 }
 
@@ -77,6 +78,7 @@ void LocalTangent::flush(std::vector<Triplet>& tangent) {
     for (int j = 0; j < n; ++j)
       if (row[j] != 0.0) tangent.emplace_back(eqs_[i], eqs_[j], row[j]), row[j] = 0.0;
   }
+  for (int eq : eqs_) pos_[eq] = -1;
   eqs_.clear();
 }
 

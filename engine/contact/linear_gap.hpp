@@ -60,7 +60,8 @@ class LocalTangent {
 
  private:
   int index(int eq);
-  std::vector<int> eqs_;
+  std::vector<int> eqs_;            ///< equations of the local rows/columns, in order of arrival
+  std::vector<int> pos_;            ///< equation -> local index, -1 when absent (sized on demand)
   std::vector<double> dense_;  ///< stride_ x stride_, row-major
   int stride_ = 0;
 };

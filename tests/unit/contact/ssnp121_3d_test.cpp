@@ -124,4 +124,21 @@ TEST(Ssnp121_3dCompatibility, TooFewIntegrationPointsAreFlagged) {
   EXPECT_TRUE(check_contact_zone_integration(mesh, z, 0).empty());
 }
 
+// A linear slave integrated at its vertices (AUTO) against a quadratic master leaves the
+// master mid-side nodes unloaded wherever the vertices coincide: the continuous method says so.
+TEST(Ssnp121_3dCompatibility, VertexRuleOnQuadraticMasterIsFlagged) {
+  const Mesh mesh = load("ssnp121i");  // QUAD4 slave SURESC on QUAD8 master SURMAI
+  ContactZone z = zone_of(mesh, Case{"ssnp121i", IntegrationScheme::Auto, 0, ContactInit::Interpenetrated, 0});
+  auto messages = check_contact_zone_integration(mesh, z, 0);
+  ASSERT_EQ(messages.size(), 1u);
+  EXPECT_NE(messages[0].find("linear slave QUAD4"), std::string::npos) << messages[0];
+  EXPECT_NE(messages[0].find("quadratic master QUAD8"), std::string::npos) << messages[0];
+  z.integration = IntegrationScheme::Simpson;  // SSNP121 I's own rule: interior points
+  z.integration_order = 4;
+  EXPECT_TRUE(check_contact_zone_integration(mesh, z, 0).empty());
+  z.integration = IntegrationScheme::Nodes;
+  z.integration_order = 0;
+  EXPECT_EQ(check_contact_zone_integration(mesh, z, 0).size(), 1u);
+}
+
 }  // namespace
