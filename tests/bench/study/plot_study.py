@@ -230,6 +230,22 @@ def summary(work, docs, c2, c3):
                         tl, tc = num(a[m_l], "t_total"), num(b[m_c], "t_total")
                         lines.append(f"| {fam} | {m_l} (k={a[m_l]['k']}) | {m_c} (k={b[m_c]['k']}) | {level:g} | "
                                      f"{tl:.3g} | {tc:.3g} | {tl / tc:.3g} |")
+    lines += ["", "## Time ratio lunaster / CalculiX on the same mesh (same run)", "",
+              "On the finest mesh each CalculiX formulation solved, lunaster's most accurate method on "
+              "that mesh: the cost of the same model, with the accuracy each reaches.", "",
+              "| family | k | CalculiX | time (s), error | lunaster | time (s), error | time ratio |",
+              "|---|---|---|---|---|---|---|"]
+    for fam in dict.fromkeys(r["family"] for r in both):
+        rows = [r for r in both if r["family"] == fam and r["status"] == "ok"]
+        for m_c in dict.fromkeys(r["method"] for r in rows if r["method"].startswith("CalculiX")):
+            c_rows = [r for r in rows if r["method"] == m_c]
+            c = max(c_rows, key=lambda r: float(r["k"]))
+            same = [r for r in rows if r["k"] == c["k"] and not r["method"].startswith("CalculiX")]
+            if same:
+                r = min(same, key=lambda r: (num(r, "err_p"), num(r, "t_total")))
+                lines.append(f"| {fam} | {c['k']} | {m_c} | {num(c, 't_total'):.3g}, {num(c, 'err_p'):.2g} | "
+                                 f"{r['method']} | {num(r, 't_total'):.3g}, {num(r, 'err_p'):.2g} | "
+                                 f"{num(r, 't_total') / num(c, 't_total'):.3g} |")
     lines += ["", "## Errors at the points (finest successful run of each method)", "",
               "Relative error of the contact pressure at A, O, B (2D) and A21, A22, A23 (3D): LAGS_C for "
               "CONTINUE, SIGM_NOEU for the discrete methods (slave EF), CalculiX's nodal CPRESS; "
