@@ -36,6 +36,7 @@ class MumpsSolver final : public LinearSolver {
     id_.job = -2;
     dmumps_c(&id_);
     initialised_ = false;
+    analysed_ = false;
   }
   static bool workspace_too_small(int infog1) {
     return infog1 == -8 || infog1 == -9 || infog1 == -14 || infog1 == -15 || infog1 == -17 || infog1 == -20;
@@ -57,6 +58,7 @@ class MumpsSolver final : public LinearSolver {
 
   mutable DMUMPS_STRUC_C id_{};
   bool initialised_ = false;
+  bool analysed_ = false;  ///< the analysis in id_ is valid for (sym, irn_, jcn_)
   std::vector<MUMPS_INT> irn_, jcn_;
   std::vector<double> val_;
   int failed_ = -1;
@@ -64,43 +66,57 @@ class MumpsSolver final : public LinearSolver {
 
 void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   failed_ = -1;
-  release();
   LUNASTER_ASSERT(a.rows() == a.cols(), "MUMPS: matrix is not square");
   const int sym = kind == MatrixKind::SymmetricPositiveDefinite ? 1 : (kind == MatrixKind::SymmetricIndefinite ? 2 : 0);
-  irn_.clear();
-  jcn_.clear();
-  val_.clear();
-  irn_.reserve(a.nonZeros());
-  jcn_.reserve(a.nonZeros());
-  val_.reserve(a.nonZeros());
+  std::vector<MUMPS_INT> irn, jcn;
+  std::vector<double> val;
+  irn.reserve(a.nonZeros());
+  jcn.reserve(a.nonZeros());
+  val.reserve(a.nonZeros());
   for (int c = 0; c < a.outerSize(); ++c)
     for (SparseMatrix::InnerIterator it(a, c); it; ++it) {
       if (sym != 0 && it.row() > c) continue;  // upper triangle only
-      irn_.push_back(it.row() + 1);
-      jcn_.push_back(c + 1);
-      val_.push_back(it.value());
+      irn.push_back(it.row() + 1);
+      jcn.push_back(c + 1);
+      val.push_back(it.value());
     }
-  id_ = DMUMPS_STRUC_C{};
-  id_.comm_fortran = kUseCommWorld;
-  id_.par = 1;
-  id_.sym = sym;
-  id_.job = -1;
-  dmumps_c(&id_);
-  check("initialisation");
-  initialised_ = true;
-  id_.icntl[0] = -1;  // ICNTL(1..4): silence error, diagnostic, global output and statistics
-  id_.icntl[1] = -1;
-  id_.icntl[2] = -1;
-  id_.icntl[3] = 0;
-  id_.icntl[23] = 1;  // ICNTL(24): null pivot detection
-  id_.n = static_cast<MUMPS_INT>(a.rows());
-  id_.nnz = static_cast<MUMPS_INT8>(val_.size());
-  id_.nz = static_cast<MUMPS_INT>(val_.size());
-  id_.irn = irn_.data();
-  id_.jcn = jcn_.data();
-  id_.a = val_.data();
-  id_.job = 4;  // analysis + factorisation
-  dmumps_c(&id_);
+  // The Newton and contact loops of a step factorise matrices of one pattern again and
+  // again: keep MUMPS's analysis (ordering, symbolic factorisation) while it holds.
+  const bool same_pattern = analysed_ && sym == id_.sym && static_cast<MUMPS_INT>(a.rows()) == id_.n &&
+                            irn == irn_ && jcn == jcn_;
+  irn_.swap(irn);
+  jcn_.swap(jcn);
+  val_.swap(val);
+  if (same_pattern) {
+    id_.a = val_.data();
+    id_.irn = irn_.data();
+    id_.jcn = jcn_.data();
+    id_.job = 2;  // factorisation with the analysis kept
+    dmumps_c(&id_);
+  } else {
+    release();
+    id_ = DMUMPS_STRUC_C{};
+    id_.comm_fortran = kUseCommWorld;
+    id_.par = 1;
+    id_.sym = sym;
+    id_.job = -1;
+    dmumps_c(&id_);
+    check("initialisation");
+    initialised_ = true;
+    id_.icntl[0] = -1;  // ICNTL(1..4): silence error, diagnostic, global output and statistics
+    id_.icntl[1] = -1;
+    id_.icntl[2] = -1;
+    id_.icntl[3] = 0;
+    id_.icntl[23] = 1;  // ICNTL(24): null pivot detection
+    id_.n = static_cast<MUMPS_INT>(a.rows());
+    id_.nnz = static_cast<MUMPS_INT8>(val_.size());
+    id_.nz = static_cast<MUMPS_INT>(val_.size());
+    id_.irn = irn_.data();
+    id_.jcn = jcn_.data();
+    id_.a = val_.data();
+    id_.job = 4;  // analysis + factorisation
+    dmumps_c(&id_);
+  }
   // -8/-9/-14/-15/-17/-20: a workspace sized from the analysis' estimate was too small
   // (off-diagonal pivoting on contact systems grows the factors): factorise again with
   // twice the relaxation ICNTL(14), three times at most, before calling it out of memory.
@@ -109,6 +125,7 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     id_.job = 2;  // factorisation again, same analysis
     dmumps_c(&id_);
   }
+  analysed_ = id_.infog[0] >= 0;  // reuse an analysis only after a good factorisation
   if (id_.infog[0] == -10 && sym == 1) {
     // LDL^T without pivoting met a zero/negative pivot: redo as symmetric
     // indefinite, whose null-pivot detection names the equation (or which

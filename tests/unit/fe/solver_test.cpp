@@ -147,6 +147,31 @@ TEST(Solvers, OutOfMemoryIsNotCalledSingular) {
   }
 }
 
+// One solver object factorises the matrices of a Newton loop in turn: same pattern with new
+// values (MUMPS keeps its analysis), then another pattern and size (it must redo it).
+TEST(Solvers, RefactorisationWithNewValuesAndNewPatterns) {
+  for (SolverKind kind : {SolverKind::Cholmod, SolverKind::Umfpack, SolverKind::Mumps}) {
+    auto s = make_linear_solver(kind);
+    SparseMatrix a = spd_matrix(25);
+    for (int round = 0; round < 3; ++round) {
+      s->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+      check_solution(a, s->solve(rhs(25)), s->name() + " round " + std::to_string(round));
+      a = a * (2.0 + round);  // same pattern, other values
+      a.coeffRef(3, 3) += 1.5 * round;
+    }
+    const SparseMatrix b = spd_matrix(31);  // other pattern and size
+    s->factorize(b, MatrixKind::SymmetricPositiveDefinite);
+    check_solution(b, s->solve(rhs(31)), s->name() + " new pattern");
+    if (kind != SolverKind::Cholmod) {
+      const SparseMatrix c = saddle_matrix(12);  // other kind
+      s->factorize(c, MatrixKind::SymmetricIndefinite);
+      check_solution(c, s->solve(rhs(14)), s->name() + " indefinite");
+      s->factorize(c * 3.0, MatrixKind::SymmetricIndefinite);
+      check_solution(c * 3.0, s->solve(rhs(14)), s->name() + " indefinite, new values");
+    }
+  }
+}
+
 TEST(Solvers, FloatingSpringIsDetectedByCholmod) {
   // Two free springs k(u1-u0)^2, k(u3-u2)^2 with node 0 fixed (by a penalty on u0):
   // equations 2 and 3 float (rigid translation); the failure must be one of them.
