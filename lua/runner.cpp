@@ -10,15 +10,19 @@ namespace lunaster::lua {
 
 namespace {
 
-/// File and line of the Lua code calling the running C function.
+/// File and line of the Lua code calling the running C function. A command called
+/// through a C function (`pcall(STAT_NON_LINE, {...})`) has that C function as its
+/// direct caller: the deck line is the first Lua frame above it.
 ErrorContext call_site(lua_State* L, const std::string& command) {
   ErrorContext where;
   where.command = command;
   lua_Debug ar;
-  if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "Sl", &ar)) {
+  for (int level = 1; lua_getstack(L, level, &ar); ++level) {
+    if (!lua_getinfo(L, "Sl", &ar) || ar.currentline <= 0) continue;  // C frame: no line
     const char* source = ar.source ? ar.source : "";
     where.file = (source[0] == '@' || source[0] == '=') ? std::string(source + 1) : std::string(ar.short_src);
-    where.line = ar.currentline > 0 ? ar.currentline : 0;
+    where.line = ar.currentline;
+    break;
   }
   return where;
 }
