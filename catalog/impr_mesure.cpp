@@ -25,7 +25,9 @@ const CommandSpec& impr_mesure_spec() {
   static const CommandSpec spec = make_command(
       "IMPR_MESURE", "",
       "Append one CSV row: the cost of a STAT_NON_LINE result (unknowns, iterations, wall time per phase since "
-      "the previous IMPR_MESURE, peak memory) and its errors against exact values",
+      "the previous IMPR_MESURE, peak memory), the accuracy of its solves (RESI_GLOB_RELA reached; largest "
+      "relative residual of one linear solve before and after iterative refinement, and the refinement steps) "
+      "and its errors against exact values",
       {concept_kw("RESULTAT", {"evol_noli"},
                   "Result measured; without it (a run that failed under pcall) only your columns, the phase "
                   "times and t_total are written (other columns left empty)"),

@@ -138,6 +138,10 @@ ConceptPtr impr_mesure(const Args& args, Session& session) {
   add("t_other", number(std::max(0.0, total - read - post - output - inner)));
   add("t_total", number(total));
   add("peak_rss_mb", number(peak_rss_mib()));
+  add("resi_glob_rela", resu ? number(st.resi_glob_rela) : std::string());
+  add("solve_resid_raw", resu ? number(st.solve_residual_raw) : std::string());
+  add("solve_resid", resu ? number(st.solve_residual) : std::string());
+  add("refinements", count(st.refinement_steps));
   for (const auto& occ : args.factors("ERREUR")) add(occ.text("NOM"), resu ? number(max_error(occ, *resu)) : std::string());
 
   std::ostringstream header, row;

@@ -85,9 +85,12 @@ SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, co
   if (auto rigid = find_rigid_body_mode(model, dofs, free_index, elastic, t)) return *rigid;
   char inst[32];
   std::snprintf(inst, sizeof inst, "%.6e", t);
-  return SolveError("the system at instant " + std::string(inst) + " is singular: " + original.message(),
-                    {"the elastic stiffness alone is regular, so the singularity comes from the contact terms",
-                     "check that the contact surfaces face each other and that COEF_CONT / E_N are reasonable"});
+  return SolveError("the system at instant " + std::string(inst) + " is singular or too ill-conditioned for the linear solver: " +
+                        original.message(),
+                    {"the elastic stiffness alone is regular, so the trouble comes from the contact terms",
+                     "check that the contact surfaces face each other, and that E_N (PENALISATION) or COEF_CONT "
+                     "(CONTINUE) is not many orders of magnitude above the material stiffness E / h: the condition "
+                     "number grows with it until double precision cannot resolve the system"});
 }
 
 }  // namespace lunaster::engine

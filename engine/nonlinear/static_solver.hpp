@@ -79,6 +79,14 @@ struct SolverStats {
   double contact_seconds = 0.0;    ///< contact hook: pairing, statuses, contact terms
   double factorize_seconds = 0.0;  ///< sparse factorisations
   double solve_seconds = 0.0;      ///< forward/back substitutions
+  /// Accuracy of the linear solves: largest relative residual |K du + r| / |r| of one
+  /// solve, straight from the factorisation and after iterative refinement. The first
+  /// grows with the condition number (a stiff penalty, a large COEF_CONT): it shows where
+  /// the linear solver starts to lose accuracy, before any run fails.
+  double solve_residual_raw = 0.0;
+  double solve_residual = 0.0;
+  int refinement_steps = 0;        ///< extra solves spent on iterative refinement
+  double resi_glob_rela = 0.0;     ///< RESI_GLOB_RELA reached at the last converged Newton iteration
 };
 
 /// Runs the instants in turn from u = 0; returns one ResultStep per instant

@@ -38,4 +38,23 @@ class LinearSolver {
 /// Builds a backend. Never returns null.
 std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind);
 
+/// |A x - b| / |b| (2-norms); +inf if x is not finite.
+double relative_residual(const SparseMatrix& a, const Vector& x, const Vector& b);
+
+/// Accuracy of one refined solve: relative residual straight from the factorisation
+/// and after refinement, and the extra solves spent.
+struct RefinedSolve {
+  double raw_residual = 0.0;
+  double residual = 0.0;
+  int steps = 0;
+};
+
+/// Solves A x = b with the solver's current factorisation of A, then refines
+/// iteratively (x -= A^-1 (A x - b)) while the relative residual is above
+/// `refine_above` and each step lowers it, `max_steps` at most. An ill-conditioned
+/// but regular system (a stiff penalty, badly scaled multipliers) is then solved to
+/// working accuracy; a singular one keeps its large residual for the caller to judge.
+RefinedSolve solve_with_refinement(const LinearSolver& solver, const SparseMatrix& a, const Vector& b, Vector& x,
+                                   int max_steps = 3, double refine_above = 1e-10);
+
 }  // namespace lunaster::engine

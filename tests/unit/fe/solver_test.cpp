@@ -243,5 +243,76 @@ TEST(Solvers, BackendsAgreeOnAnFeStiffness) {
   }
 }
 
+/// A solver that factorises A + shift * diag(A) instead of A: each solve is off by a
+/// relative error of about `shift`, as a direct solver is on an ill-conditioned system.
+class InexactSolver final : public LinearSolver {
+ public:
+  explicit InexactSolver(double shift) : shift_(shift) {}
+  void factorize(const SparseMatrix& a, MatrixKind kind) override {
+    SparseMatrix perturbed = a;
+    for (int i = 0; i < a.rows(); ++i) perturbed.coeffRef(i, i) *= 1.0 + shift_;
+    inner_->factorize(perturbed, kind);
+  }
+  Vector solve(const Vector& b) const override { return inner_->solve(b); }
+  std::string name() const override { return "inexact CHOLMOD"; }
+
+ private:
+  double shift_;
+  std::unique_ptr<LinearSolver> inner_ = make_linear_solver(SolverKind::Cholmod);
+};
+
+/// A solver whose answer is unrelated to the system: refinement cannot help.
+class UselessSolver final : public LinearSolver {
+ public:
+  void factorize(const SparseMatrix& /*a*/, MatrixKind /*kind*/) override {}
+  Vector solve(const Vector& b) const override { return Vector::Constant(b.size(), 1e3); }
+  std::string name() const override { return "useless"; }
+};
+
+TEST(Refinement, AnExactFactorisationNeedsNoRefinement) {
+  const SparseMatrix a = spd_matrix(40);
+  auto s = make_linear_solver(SolverKind::Cholmod);
+  s->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+  Vector x;
+  const RefinedSolve r = solve_with_refinement(*s, a, rhs(40), x);
+  EXPECT_EQ(r.steps, 0);
+  EXPECT_LT(r.raw_residual, 1e-14);
+  EXPECT_EQ(r.residual, r.raw_residual);
+  check_solution(a, x, "CHOLMOD");
+}
+
+TEST(Refinement, AnInexactFactorisationIsRefinedToWorkingAccuracy) {
+  const SparseMatrix a = spd_matrix(40);
+  InexactSolver s(1e-5);
+  s.factorize(a, MatrixKind::SymmetricPositiveDefinite);
+  Vector x;
+  const RefinedSolve r = solve_with_refinement(s, a, rhs(40), x);
+  EXPECT_GT(r.raw_residual, 1e-6);  // alone, the solve would miss the driver's 1e-6 bar
+  EXPECT_LT(r.residual, 1e-10);     // each step gains about five digits
+  EXPECT_EQ(r.steps, 2);
+  check_solution(a, x, "refined");
+  // With fewer steps allowed, the residual reached is reported as it is.
+  Vector y;
+  const RefinedSolve one = solve_with_refinement(s, a, rhs(40), y, 1);
+  EXPECT_EQ(one.steps, 1);
+  EXPECT_GT(one.residual, r.residual);
+  EXPECT_LT(one.residual, one.raw_residual);
+}
+
+TEST(Refinement, AUselessSolveIsNeverMadeWorseAndStaysVisiblyWrong) {
+  const SparseMatrix a = spd_matrix(40);
+  UselessSolver s;
+  s.factorize(a, MatrixKind::SymmetricPositiveDefinite);
+  Vector x;
+  const RefinedSolve r = solve_with_refinement(s, a, rhs(40), x);
+  // x = 1000 (residual 1.4e3), then x - 1000 = 0 (residual 1: better, kept), then -1000
+  // (worse: refused, stop). The caller sees a residual of 1 and rejects the solve.
+  EXPECT_EQ(r.steps, 2);
+  EXPECT_GT(r.raw_residual, 1e3);
+  EXPECT_NEAR(r.residual, 1.0, 1e-15);
+  EXPECT_NEAR(relative_residual(a, x, rhs(40)), r.residual, 1e-15);
+  EXPECT_EQ(x, Vector::Zero(40));
+}
+
 }  // namespace
 }  // namespace lunaster::engine
