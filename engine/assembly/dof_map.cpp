@@ -11,6 +11,9 @@ const char* component_name(int component) {
     case DY: return "DY";
     case DZ: return "DZ";
     case LAGS_C: return "LAGS_C";
+    case LAGR_DX: return "LAGR_DX";
+    case LAGR_DY: return "LAGR_DY";
+    case LAGR_DZ: return "LAGR_DZ";
     default: return "?";
   }
 }

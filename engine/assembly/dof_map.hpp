@@ -10,7 +10,11 @@
 namespace lunaster::engine {
 
 /// Component ids used across the engine.
-enum Component : int { DX = 0, DY = 1, DZ = 2, LAGS_C = 3, N_COMPONENTS = 4 };
+/// LAGR_DX.. are the multipliers of linear relations between displacement components
+/// (the mid-side ties of discrete contact on QUAD8 faces), carried by the tied node.
+enum Component : int { DX = 0, DY = 1, DZ = 2, LAGS_C = 3, LAGR_DX = 4, LAGR_DY = 5, LAGR_DZ = 6, N_COMPONENTS = 7 };
+/// True for DX, DY, DZ; false for the multipliers.
+inline bool is_displacement(int component) { return component >= DX && component <= DZ; }
 const char* component_name(int component);
 
 class DofMap {

@@ -14,7 +14,7 @@ namespace lunaster::engine::contact {
 
 DiscreteContact::DiscreteContact(const ContactDefinition& definition, const Mesh& mesh, int dim)
     : ContactHookBase(definition, mesh, dim) {
-  std::set<int> geometry;
+  std::set<int> geometry, tied;
   for (size_t z = 0; z < def_.zones.size(); ++z) {
     const ContactZone& zone = def_.zones[z];
     if (!lagrange() && !(zone.coef_pena > 0.0))
@@ -42,6 +42,25 @@ DiscreteContact::DiscreteContact(const ContactDefinition& definition, const Mesh
       }
       for (int a = 0; a < mesh.cell_n_nodes(c); ++a) geometry.insert(mesh.cell(c)[a]);
     }
+    // QUAD8 faces on either side: tie each mid-side node to its edge (code_aster CONTACT_8).
+    std::vector<int> faces = zone.slave_cells;
+    faces.insert(faces.end(), zone.master_cells.begin(), zone.master_cells.end());
+    for (int c : faces) {
+      if (mesh.cell_types[c] != CellType::Quad8) continue;
+      const auto nodes = mesh.cell(c);
+      for (int e = 0; e < 4; ++e) {
+        MidSideTie tie;
+        tie.mid = nodes[4 + e];
+        tie.a = nodes[e];
+        tie.b = nodes[(e + 1) % 4];
+        if (!tied.insert(tie.mid).second) continue;
+        for (int i = 0; i < 3; ++i) {
+          const double d = mesh.node(tie.a)[i] - mesh.node(tie.b)[i];
+          tie.scale += d * d;
+        }
+        ties_.push_back(tie);
+      }
+    }
     for (const auto& [node, a] : area) {
       DiscreteNode dn;
       dn.zone = static_cast<int>(z);
@@ -53,14 +72,23 @@ DiscreteContact::DiscreteContact(const ContactDefinition& definition, const Mesh
   geometry_nodes_.assign(geometry.begin(), geometry.end());
 }
 
+void DiscreteContact::set_dirichlet(const std::vector<DirichletValue>& dirichlet) {
+  for (const auto& d : dirichlet) fixed_.insert({d.node, d.component});
+}
+
 void DiscreteContact::add_dofs(DofMap& dofs) {
   if (lagrange())
     for (const auto& n : nodes_) dofs.add(n.node, LAGS_C);
+  for (auto& tie : ties_)
+    for (int k = 0; k < dim_; ++k) {
+      const bool imposed = fixed_.count({tie.mid, k}) && fixed_.count({tie.a, k}) && fixed_.count({tie.b, k});
+      tie.lagr[k] = imposed ? -1 : dofs.add(tie.mid, LAGR_DX + k);
+    }
   store_dofs(dofs);
 }
 
 MatrixKind DiscreteContact::matrix_kind() const {
-  return lagrange() ? MatrixKind::SymmetricIndefinite : MatrixKind::SymmetricPositiveDefinite;
+  return lagrange() || !ties_.empty() ? MatrixKind::SymmetricIndefinite : MatrixKind::SymmetricPositiveDefinite;
 }
 
 void DiscreteContact::set_all_active(bool active) {
@@ -160,16 +188,40 @@ void DiscreteContact::first_pairing_report(const Log& log) {
       log.warning("contact zone " + std::to_string(z + 1) + ": " + std::to_string(masters_[z]->n_flipped()) +
                   " master cell(s) oriented towards their own body; their normal was reversed "
                   "(orient the master surface outwards, e.g. ORIE_PEAU)");
-  bool quadratic = false;
-  for (const auto& zone : def_.zones)
-    for (int c : zone.slave_cells) quadratic |= linear_type(mesh_.cell_types[c]) != mesh_.cell_types[c];
-  if (quadratic)
-    log.warning("discrete contact on quadratic cells: only vertex nodes are slave nodes and master cells are "
-                "linearised; mid-side nodes are not constrained (discrete methods are not adapted to QUAD8 bases)");
+  bool free_mid_side = false;
+  for (const auto& zone : def_.zones) {
+    std::vector<int> faces = zone.slave_cells;
+    faces.insert(faces.end(), zone.master_cells.begin(), zone.master_cells.end());
+    for (int c : faces)
+      free_mid_side |= linear_type(mesh_.cell_types[c]) != mesh_.cell_types[c] && mesh_.cell_types[c] != CellType::Quad8;
+  }
+  if (!ties_.empty())
+    log.info("discrete contact on QUAD8 faces: " + std::to_string(ties_.size()) +
+             " mid-side node(s) tied to the mean of their edge's vertices (linear relations, as code_aster's "
+             "CONTACT_8); only vertex nodes are slave nodes");
+  if (free_mid_side)
+    log.warning("discrete contact on quadratic SEG3/TRIA6 faces: only vertex nodes are slave nodes and master cells "
+                "are linearised; their mid-side nodes are not constrained and may penetrate (use FORMULATION="
+                "'CONTINUE' for quadratic faces)");
 }
 
 void DiscreteContact::add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) {
   if (def_.geometry_loop == FixedPointOrNewton::Newton) pair(u);
+  // Mid-side ties: s (u_m - (u_a + u_b) / 2) = 0, always active.
+  for (const auto& tie : ties_)
+    for (int k = 0; k < dim_; ++k) {
+      const int leq = tie.lagr[k];
+      if (leq < 0) continue;
+      const int eqs[3] = {dofs_.dof(tie.mid, k), dofs_.dof(tie.a, k), dofs_.dof(tie.b, k)};
+      const double coef[3] = {tie.scale, -0.5 * tie.scale, -0.5 * tie.scale};
+      const double lambda = u[leq];
+      for (int j = 0; j < 3; ++j) {
+        residual[leq] += coef[j] * u[eqs[j]];
+        residual[eqs[j]] += coef[j] * lambda;
+        tangent.emplace_back(leq, eqs[j], coef[j]);
+        tangent.emplace_back(eqs[j], leq, coef[j]);
+      }
+    }
   for (const auto& n : nodes_) {
     if (!lagrange()) {
       if (!n.active) continue;

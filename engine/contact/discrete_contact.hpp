@@ -8,9 +8,16 @@
 ///    stiffness E_N (N/m, per slave node, not weighted by area) on the violated gap.
 ///
 /// Each slave vertex is projected on the master surface (master normal, g > 0
-/// open, see linear_gap.hpp). Quadratic cells are linearised as code_aster's
-/// discrete methods do: only vertices are slave nodes and masters are
-/// their vertex-only linear cells (mid-side nodes are not constrained).
+/// open, see linear_gap.hpp). Quadratic cells are linearised: only vertices are
+/// slave nodes and masters are their vertex-only linear cells. On QUAD8 faces
+/// (slave and master) each mid-side node is tied to the mean of its edge's two
+/// vertices, u_m = (u_a + u_b) / 2 in every displacement component, as code_aster's
+/// discrete formulation does (message CONTACT_8): a QUAD8 face then moves as the
+/// QUAD4 the contact sees, and the patch test on matching HEXA20 meshes is exact.
+/// Each relation is dualised by a multiplier LAGR_DX.. on the mid-side node,
+/// scaled by the squared edge length; one whose three components are all imposed
+/// by DDL_IMPO is left out (it would hold anyway and leave a singular system).
+/// Mid-side nodes of SEG3 / TRIA6 faces stay free (a warning says so).
 ///
 /// Lagrange multipliers are stored as LAGS_C DOFs on the slave vertices and
 /// scaled as a pressure: the constraint of node i is weighted by its
@@ -23,6 +30,8 @@
 /// otherwise the active node with the most tensile multiplier is removed.
 /// Penalty: active iff g < 0, r_u += E_N g dg/du, K += E_N dg/du (x) dg/du.
 #include <memory>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "engine/contact/contact_hook_base.hpp"
@@ -30,6 +39,13 @@
 #include "engine/contact/master_search.hpp"
 
 namespace lunaster::engine::contact {
+
+/// A mid-side node of a QUAD8 contact face tied to its edge's vertices.
+struct MidSideTie {
+  int mid = -1, a = -1, b = -1;  ///< nodes: mid-side, edge ends
+  double scale = 0.0;            ///< squared edge length, m^2 (conditioning only)
+  int lagr[3] = {-1, -1, -1};    ///< multiplier equation per component, -1 if left out
+};
 
 /// One slave node of a discrete zone and its pairing.
 struct DiscreteNode {
@@ -47,6 +63,7 @@ class DiscreteContact : public ContactHookBase {
  public:
   DiscreteContact(const ContactDefinition& definition, const Mesh& mesh, int dim);
 
+  void set_dirichlet(const std::vector<DirichletValue>& dirichlet) override;
   void add_dofs(DofMap& dofs) override;
   void add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) override;
   MatrixKind matrix_kind() const override;
@@ -56,6 +73,7 @@ class DiscreteContact : public ContactHookBase {
   void write_fields(const Vector& u, ResultStep& step) const override;
 
   const std::vector<DiscreteNode>& nodes() const { return nodes_; }
+  const std::vector<MidSideTie>& ties() const { return ties_; }
   /// Forces the statuses (tests).
   void set_all_active(bool active);
 
@@ -74,6 +92,8 @@ class DiscreteContact : public ContactHookBase {
 
   std::vector<std::unique_ptr<MasterSurface>> masters_;
   std::vector<DiscreteNode> nodes_;
+  std::vector<MidSideTie> ties_;
+  std::set<std::pair<int, int>> fixed_;  ///< (node, component) imposed by DDL_IMPO
   std::vector<int> geometry_nodes_;
   std::vector<double> min_edge_;
 };

@@ -52,7 +52,7 @@ std::optional<SolveError> find_rigid_body_mode(const FeModel& model, const DofMa
   // Reduced elastic matrix on the free displacement equations only.
   std::vector<int> reduced(dofs.n_dofs(), -1), back;
   for (int eq = 0; eq < dofs.n_dofs(); ++eq)
-    if (free_index[eq] >= 0 && dofs.component_of(eq) != LAGS_C) {
+    if (free_index[eq] >= 0 && is_displacement(dofs.component_of(eq))) {
       reduced[eq] = static_cast<int>(back.size());
       back.push_back(eq);
     }

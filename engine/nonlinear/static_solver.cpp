@@ -112,7 +112,10 @@ NodalField StaticSolver::make_depl(const Vector& u) const {
 std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   LUNASTER_ASSERT(!instants.empty(), "no instants");
   dofs_ = DofMap(*model_.mesh, model_.volume_cells(), model_.dim);
-  if (contact_) contact_->add_dofs(dofs_);
+  if (contact_) {
+    contact_->set_dirichlet(loads_.dirichlet);
+    contact_->add_dofs(dofs_);
+  }
   const int n = dofs_.n_dofs();
   stats_ = SolverStats{};
   stats_.n_dofs = n;

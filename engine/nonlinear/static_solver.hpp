@@ -49,6 +49,9 @@ class ConvergenceError : public SolveError {
 class ContactHook {
  public:
   virtual ~ContactHook() = default;
+  /// The Dirichlet conditions of the run, once, before add_dofs (a hook that ties
+  /// unknowns together skips the relations these already impose).
+  virtual void set_dirichlet(const std::vector<DirichletValue>& /*dirichlet*/) {}
   /// Adds contact unknowns (LAGS_C ...) to the numbering, once, before any step.
   virtual void add_dofs(DofMap& dofs) = 0;
   /// Start of an instant, with the converged displacement of the previous one.

@@ -1,0 +1,92 @@
+// Discrete contact on QUAD8 faces ties every mid-side node to the mean of its edge's
+// vertices (code_aster's CONTACT_8 relations), on the slave and the master face; a
+// relation whose three nodes are all imposed by DDL_IMPO in a component is left out.
+// The deck testcases/ssnp121d_discrete.lua shows what the ties buy: the patch test on
+// the matching HEXA20 mesh of SSNP121 D to round-off.
+#include <set>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "engine/assembly/dof_map.hpp"
+#include "engine/contact/discrete_contact.hpp"
+#include "engine/io/med_reader.hpp"
+
+namespace {
+
+using namespace lunaster::engine;
+using lunaster::engine::contact::DiscreteContact;
+
+Mesh load(const std::string& name) {
+  return read_med(std::string(LUNASTER_SOURCE_DIR) + "/testcases/" + name + ".med");
+}
+
+ContactDefinition discrete(const Mesh& mesh, ContactMethod method) {
+  ContactDefinition def;
+  def.method = method;
+  ContactZone z;
+  z.slave_cells = mesh.cell_groups.at("SURMAI");
+  z.master_cells = mesh.cell_groups.at("SURESC");
+  z.coef_pena = 1.0e12;
+  def.zones.push_back(z);
+  return def;
+}
+
+std::vector<int> volume_cells(const Mesh& mesh) {
+  std::vector<int> cells;
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    if (mesh.cell_types[c] == CellType::Hexa20) cells.push_back(c);
+  return cells;
+}
+
+TEST(MidSideTie, EveryQuad8MidSideNodeOfBothFacesIsTiedOnce) {
+  const Mesh mesh = load("ssnp121d");  // 4x4 QUAD8 per face: 2 * 4 * 5 = 40 mid-side nodes each
+  DiscreteContact hook(discrete(mesh, ContactMethod::DiscretePenalty), mesh, 3);
+  ASSERT_EQ(hook.ties().size(), 80u);
+  std::set<int> mids;
+  for (const auto& t : hook.ties()) {
+    EXPECT_TRUE(mids.insert(t.mid).second) << "node tied twice: " << mesh.node_names[t.mid];
+    for (int i = 0; i < 3; ++i)  // the mid-side node sits halfway along its edge
+      EXPECT_NEAR(mesh.node(t.mid)[i], 0.5 * (mesh.node(t.a)[i] + mesh.node(t.b)[i]), 1e-12);
+    EXPECT_NEAR(t.scale, 0.25 * 0.25, 1e-12);  // squared edge length of a 4x4 face
+  }
+  // The ties are multipliers: even penalty contact then solves a symmetric indefinite system.
+  EXPECT_EQ(hook.matrix_kind(), MatrixKind::SymmetricIndefinite);
+}
+
+TEST(MidSideTie, RelationsImposedByDirichletConditionsAreLeftOut) {
+  const Mesh mesh = load("ssnp121d");
+  DiscreteContact hook(discrete(mesh, ContactMethod::DiscreteLagrange), mesh, 3);
+  // DX imposed on every node of the slave face SURMAI: its 40 DX relations hold already.
+  std::vector<DirichletValue> fixed;
+  std::set<int> slave_nodes;
+  for (int c : mesh.cell_groups.at("SURMAI"))
+    for (int a = 0; a < mesh.cell_n_nodes(c); ++a) slave_nodes.insert(mesh.cell(c)[a]);
+  for (int n : slave_nodes) fixed.push_back({n, DX, 0.0, 0});
+  hook.set_dirichlet(fixed);
+  DofMap dofs(mesh, volume_cells(mesh), 3);
+  hook.add_dofs(dofs);
+  int left_out = 0, kept = 0;
+  for (const auto& t : hook.ties()) {
+    const bool on_slave = slave_nodes.count(t.mid) > 0;
+    EXPECT_EQ(t.lagr[DX] < 0, on_slave) << mesh.node_names[t.mid];
+    EXPECT_GE(t.lagr[DY], 0);
+    EXPECT_GE(t.lagr[DZ], 0);
+    if (t.lagr[DX] >= 0) {
+      EXPECT_EQ(dofs.component_of(t.lagr[DX]), LAGR_DX);
+    }
+    (t.lagr[DX] < 0 ? left_out : kept)++;
+  }
+  EXPECT_EQ(left_out, 40);
+  EXPECT_EQ(kept, 40);
+}
+
+TEST(MidSideTie, LinearFacesAreNotTied) {
+  const Mesh mesh = load("ssnp121j");  // PENTA6 below (TRIA3 face), PENTA15 above (TRIA6 face)
+  ContactDefinition def = discrete(mesh, ContactMethod::DiscretePenalty);
+  DiscreteContact hook(def, mesh, 3);
+  EXPECT_TRUE(hook.ties().empty());
+  EXPECT_EQ(hook.matrix_kind(), MatrixKind::SymmetricPositiveDefinite);
+}
+
+}  // namespace
