@@ -8,11 +8,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
 #include "commands/selection.hpp"
+#include "engine/io/atomic_file.hpp"
 
 namespace lunaster::cmd {
 
@@ -154,10 +156,18 @@ ConceptPtr impr_mesure(const Args& args, Session& session) {
   if (!old.empty() && old != header.str())
     throw args.error("FICHIER", "a new file or one with the same columns (" + header.str() + ")",
                      "'" + path.string() + "' with columns " + old, {"use another FICHIER for another set of columns"});
-  std::ofstream out(path, std::ios::app);
-  if (old.empty()) out << header.str() << '\n';
-  out << row.str() << '\n';
-  if (!out) throw DeckError("cannot write " + path.string());
+  // Appended atomically: the file is rewritten whole through a temporary, so a run
+  // killed while writing leaves the previous rows, never a half-written last one.
+  std::string previous;
+  if (!old.empty()) {
+    std::ifstream in(path, std::ios::binary);
+    previous.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    if (!previous.empty() && previous.back() != '\n') previous += '\n';
+  }
+  engine::write_file_atomically(path, [&](std::ostream& out) {
+    if (old.empty()) out << header.str() << '\n';
+    out << previous << row.str() << '\n';
+  });
   session.log().info("  measured: " + row.str());
 
   session.phase_seconds_measured = session.phase_seconds;

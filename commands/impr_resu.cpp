@@ -9,6 +9,7 @@
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
 #include "commands/selection.hpp"
+#include "engine/io/atomic_file.hpp"
 #include "engine/io/med_writer.hpp"
 
 namespace lunaster::cmd {
@@ -64,24 +65,11 @@ ConceptPtr impr_resu(const Args& args, Session& session) {
   const std::string format = args.text("FORMAT");
   if (format == "RESULTAT") {
     const auto path = output_path(args, session, "resu");
-    // Atomic: write a temporary file beside the target, rename it over the target only
-    // when complete; on any failure remove it, so a good file is never replaced by a
-    // truncated one and no temporary is left behind.
-    const auto tmp = path.parent_path() / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
-    try {
-      {
-        std::ofstream out(tmp);
-        for (const auto& occ : args.factors("RESU"))
-          if (occ.has("RESULTAT")) write_table(out, occ, *occ.concept_as<EvolNoli>("RESULTAT"));
-        out.flush();
-        if (!out) throw DeckError("cannot write " + tmp.string());
-      }
-      std::filesystem::rename(tmp, path);
-    } catch (...) {
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      throw;
-    }
+    // Atomic: a good file is never replaced by a truncated one.
+    engine::write_file_atomically(path, [&](std::ostream& out) {
+      for (const auto& occ : args.factors("RESU"))
+        if (occ.has("RESULTAT")) write_table(out, occ, *occ.concept_as<EvolNoli>("RESULTAT"));
+    });
     session.log().info("  written " + path.string());
     return nullptr;
   }

@@ -8,6 +8,7 @@
 #include "catalog/args.hpp"
 #include "catalog/doc.hpp"
 #include "commands/registry.hpp"
+#include "engine/io/atomic_file.hpp"
 #include "lua/runner.hpp"
 #include "lua/verify.hpp"
 
@@ -103,10 +104,10 @@ int dump_command(const std::vector<std::string>& args) {
     std::cout << text;
     return 0;
   }
-  std::ofstream file(args[1]);
-  file << text;
-  if (!file) {
-    std::cerr << "lunaster: cannot write " << args[1] << "\n";
+  try {
+    engine::write_file_atomically(args[1], [&](std::ostream& file) { file << text; });
+  } catch (const Error& e) {
+    std::cerr << "lunaster: " << e.message() << "\n";
     return static_cast<int>(ErrorKind::Deck);
   }
   return 0;

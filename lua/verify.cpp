@@ -15,6 +15,8 @@
 #include <sstream>
 #include <thread>
 
+#include "engine/io/atomic_file.hpp"
+
 extern char** environ;
 
 namespace lunaster::lua {
@@ -228,8 +230,11 @@ int verify(const VerifyOptions& options, std::ostream& out) {
   for (const auto& o : outcomes)
     if (o.status != "OK")
       out << "\n---- " << o.deck.string() << " (" << o.status << ", exit " << o.exit_code << ")\n" << tail(o.output, 40);
-  if (!options.junit_file.empty()) std::ofstream(options.junit_file) << junit_xml(outcomes);
-  if (!options.json_file.empty()) std::ofstream(options.json_file) << json_report(outcomes);
+  // Reports are replaced atomically: an interrupted run leaves the previous report whole.
+  if (!options.junit_file.empty())
+    engine::write_file_atomically(options.junit_file, [&](std::ostream& f) { f << junit_xml(outcomes); });
+  if (!options.json_file.empty())
+    engine::write_file_atomically(options.json_file, [&](std::ostream& f) { f << json_report(outcomes); });
   const int failed = static_cast<int>(outcomes.size()) - passed;
   out << passed << " passed, " << failed << " failed\n";
   return failed == 0 ? 0 : 1;

@@ -1,7 +1,7 @@
 // Robustness of the commands, run through the real catalogue (validation and
 // defaults) and the real handlers: mesh warnings (nodes in no cell, coincident
 // slave nodes on a contact surface) and atomic output (a failing IMPR_RESU never
-// replaces a good file and leaves no temporary behind).
+// replaces a good file and leaves no temporary behind; IMPR_MESURE appends through one).
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -184,6 +184,37 @@ TEST(AtomicOutput, FailingMedWriteKeepsThePreviousFile) {
   const auto steps = engine::read_med_nodal_field(file.string(), "RESU____DEPL");
   ASSERT_EQ(steps.size(), 2u);
   EXPECT_DOUBLE_EQ(steps[1].field.value(5, 1), 1e-3 * 2 * 5);
+}
+
+TEST(AtomicOutput, MeasureRowsAreAppendedThroughATemporary) {
+  Harness h("atomic_measure");
+  auto resu = make_result(h);
+  const auto row = [&](const std::string& label) {
+    KwNode node = simple({{"FICHIER", std::string("m.csv")}, {"RESULTAT", resu}});
+    node.simple["PARA"] = {Value(std::string("case"))};
+    node.simple["VALE_K"] = {Value(label)};
+    return node;
+  };
+  h.run("IMPR_MESURE", row("first"));
+  h.run("IMPR_MESURE", row("second"));
+  const fs::path file = h.session.output_dir / "m.csv";
+  std::istringstream lines(slurp(file));
+  std::string header, first, second, extra;
+  std::getline(lines, header);
+  std::getline(lines, first);
+  std::getline(lines, second);
+  EXPECT_EQ(header.rfind("case,nodes,unknowns,", 0), 0u) << header;
+  EXPECT_NE(header.find(",resi_glob_rela,solve_resid_raw,solve_resid,refinements"), std::string::npos) << header;
+  EXPECT_EQ(first.rfind("first,", 0), 0u) << first;
+  EXPECT_EQ(second.rfind("second,", 0), 0u) << second;
+  EXPECT_FALSE(std::getline(lines, extra));
+  EXPECT_TRUE(strays(h.session.output_dir, "m.csv").empty());
+  // Another set of columns is refused before anything is written.
+  const std::string before = slurp(file);
+  KwNode other = row("third");
+  other.simple["PARA"] = {Value(std::string("method"))};
+  EXPECT_THROW(h.run("IMPR_MESURE", other), DeckError);
+  EXPECT_EQ(slurp(file), before);
 }
 
 /// DY at node group `group` of every step of field `field` in a MED file.
