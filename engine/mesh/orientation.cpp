@@ -159,7 +159,8 @@ void check_cell_orientation(const Mesh& mesh, const std::string& source) {
   if (bad.size() > 5) list += ", ...";
   throw DeckError("mesh file '" + source + "': " + std::to_string(bad.size()) +
                       " inverted or degenerate cell(s) (non-positive Jacobian): " + list,
-                  {"check the node order of these cells (MED order is expected)"});
+                  {"check the node order of these cells (MED order is expected), and that no two of their "
+                   "corners are the same node or at the same point"});
 }
 
 double cell_measure(const Mesh& mesh, int c) {
