@@ -93,8 +93,11 @@ def cheapest(rows, level):
     return out
 
 
+SOLVE_BAR = 1e-6  # relative residual of one linear solve that lunaster accepts (static_solver.cpp)
+
+
 def sweep(rows, docs, name, xkey, xlabel, extra=None):
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    fig, axes = plt.subplots(1, 3, figsize=(16, 5.6))
     for k in sorted({r["k"] for r in rows}, key=float):
         sel = [r for r in rows if r["k"] == k]
         ok = [r for r in sel if r["status"] == "ok"]
@@ -104,13 +107,30 @@ def sweep(rows, docs, name, xkey, xlabel, extra=None):
             axes[0].plot(num(r, xkey), 1.0, "kx", ms=9)
         axes[1].plot([num(r, xkey) for r in ok], [num(r, "newton_iter") for r in ok], "o-", label=f"Newton, k = {k}")
         axes[1].plot([num(r, xkey) for r in ok], [num(r, "contact_passes") for r in ok], "s--", label=f"contact passes, k = {k}")
+        acc = [r for r in ok if num(r, "solve_resid_raw") is not None]
+        if acc:
+            line, = axes[2].plot([num(r, xkey) for r in acc], [max(num(r, "solve_resid_raw"), 1e-17) for r in acc], "o-",
+                                 label=f"one solve, from the factorisation, k = {k}")
+            axes[2].plot([num(r, xkey) for r in acc], [max(num(r, "solve_resid"), 1e-17) for r in acc], "s:",
+                         color=line.get_color(), label=f"after iterative refinement, k = {k}")
+            axes[2].plot([num(r, xkey) for r in acc], [max(num(r, "resi_glob_rela"), 1e-17) for r in acc], "^--",
+                         color=line.get_color(), alpha=0.6, label=f"RESI_GLOB_RELA reached, k = {k}")
+    axes[2].axhline(SOLVE_BAR, color="#d62728", lw=0.8, ls=":")
+    axes[2].annotate("1e-6: a solve is accepted below, and Newton's RESI_GLOB_RELA bar", (0.02, SOLVE_BAR),
+                     xycoords=("axes fraction", "data"), textcoords="offset points", xytext=(0, 3), fontsize=7,
+                     color="#d62728")
+    axes[2].set_xscale("log"); axes[2].set_yscale("log"); axes[2].set_xlabel(xlabel)
+    axes[2].set_ylabel("relative residual |K du + r| / |r| (largest of the run)")
+    axes[2].set_title("accuracy: linear solves and the Newton residual reached", fontsize=9)
     if extra:
         extra(axes[0])
     axes[0].set_xscale("log"); axes[0].set_yscale("log")
     axes[0].set_xlabel(xlabel); axes[0].set_ylabel("max relative pressure error (x: failed run)")
     axes[1].set_xscale("log"); axes[1].set_xlabel(xlabel); axes[1].set_ylabel("iterations")
-    for ax in axes:
+    for ax in axes[:2]:
         ax.legend(fontsize=7); ax.grid(True, color="#eeeeee")
+    axes[2].legend(fontsize=6.5, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=2)
+    axes[2].grid(True, color="#eeeeee")
     save(fig, docs, name)
 
 
@@ -271,17 +291,61 @@ def summary(work, docs, c2, c3):
         f.write("\n".join(lines))
 
 
+def loss_of_accuracy(rows, xkey, resi_bar=1e-6):
+    """Per k, in words: how accurate the linear solves were, what residual Newton could
+    reach, and where runs start failing, from the rows of a sweep."""
+    L = []
+    for k in sorted({r["k"] for r in rows}, key=float):
+        sel = sorted((r for r in rows if r["k"] == k), key=lambda r: float(r[xkey]))
+        ok = [r for r in sel if r["status"] == "ok" and num(r, "solve_resid_raw") is not None]
+        if not ok:
+            continue
+        worst = max(ok, key=lambda r: num(r, "solve_resid_raw"))
+        words = (f"- k = {k}: the least accurate linear solve of a run left a relative residual from "
+                 f"{min(num(r, 'solve_resid_raw') for r in ok):.1e} to {num(worst, 'solve_resid_raw'):.1e} "
+                 f"(at {xkey} = {worst[xkey]}) straight from the factorisation")
+        refined = [r for r in ok if (num(r, "refinements") or 0) > 0]
+        if refined:
+            words += (f"; iterative refinement was used in {len(refined)} of {len(ok)} runs and left at most "
+                      f"{max(num(r, 'solve_resid') for r in refined):.1e}")
+        reached = [r for r in ok if num(r, "resi_glob_rela") is not None]
+        if reached:
+            words += (f". The residual Newton reached (RESI_GLOB_RELA) went from {num(reached[0], 'resi_glob_rela'):.1e} "
+                      f"at {xkey} = {reached[0][xkey]} to {num(reached[-1], 'resi_glob_rela'):.1e} at {reached[-1][xkey]}")
+            near = [r for r in reached if num(r, "resi_glob_rela") > 0.1 * resi_bar]
+            if near:
+                words += (f", within a factor 10 of the convergence bar {resi_bar:g} from {xkey} = {near[0][xkey]}: "
+                          "there the round-off of the terms scaled by " + xkey + ", not the linear solver, "
+                          "decides whether Newton can converge")
+        failed = [r for r in sel if r["status"] != "ok"]
+        if failed:
+            words += f". The first failed run is at {xkey} = {failed[0][xkey]} ({failed[0]['status'][8:110].strip()}...)"
+        L.append(words + ".")
+    return L
+
+
 def atlas_text(out):
     """The stability atlas in words, from its CSV files."""
     L = ["## Stability atlas", ""]
     pen = read(os.path.join(out, "atlas_penalty.csv"))
+    gap = {(r["k"], float(r["E_N"])): r["penetration"] for r in read(os.path.join(out, "atlas_penalty_gap.csv"))}
     L += ["### Penalty sweep (discrete PENALISATION, E_N = 1e3 .. 1e16): ![](atlas_penalty.png)", "",
-          "| k | E_N | status | pressure error | Newton iterations |", "|---|---|---|---|---|"]
-    L += [f"| {r['k']} | {r['E_N']} | {r['status'][:110]} | {r['err_p']} | {r['newton_iter']} |" for r in pen]
+          "Right panel: the largest relative residual |K du + r| / |r| of one linear solve, straight from the "
+          f"factorisation and after iterative refinement (lunaster accepts a solve below {SOLVE_BAR:g} and refines "
+          "one above 1e-10), and the RESI_GLOB_RELA Newton reached.", ""]
+    L += loss_of_accuracy(pen, "E_N")
+    L += ["", "| k | E_N | status | pressure error | penetration (m) | Newton iterations | solve residual: raw / refined | RESI_GLOB_RELA |",
+          "|---|---|---|---|---|---|---|---|"]
+    L += [f"| {r['k']} | {r['E_N']} | {r['status'][:160]} | {r['err_p']} | {gap.get((r['k'], float(r['E_N'])), '')} | "
+          f"{r['newton_iter']} | {r.get('solve_resid_raw', '')} / {r.get('solve_resid', '')} | {r.get('resi_glob_rela', '')} |"
+          for r in pen]
     coef = read(os.path.join(out, "atlas_coef.csv"))
-    L += ["", "### COEF_CONT sweep (CONTINUE-SIMPSON, 1e-5 .. 1e16): ![](atlas_coef.png)", "",
-          "| k | COEF_CONT | status | pressure error | Newton | contact passes |", "|---|---|---|---|---|---|"]
-    L += [f"| {r['k']} | {r['COEF_CONT']} | {r['status'][:110]} | {r['err_p']} | {r['newton_iter']} | {r['contact_passes']} |"
+    L += ["", "### COEF_CONT sweep (CONTINUE-SIMPSON, 1e-5 .. 1e16): ![](atlas_coef.png)", ""]
+    L += loss_of_accuracy(coef, "COEF_CONT")
+    L += ["", "| k | COEF_CONT | status | pressure error | Newton | contact passes | solve residual: raw / refined |",
+          "|---|---|---|---|---|---|---|"]
+    L += [f"| {r['k']} | {r['COEF_CONT']} | {r['status'][:160]} | {r['err_p']} | {r['newton_iter']} | {r['contact_passes']} | "
+          f"{r.get('solve_resid_raw', '')} / {r.get('solve_resid', '')} |"
           for r in coef]
     L += ["", "### Slave/master element size ratio 1/4 .. 4: ![](atlas_ratio.png)", "",
           "Largest pressure deviation on the slave side (the oscillation), per method, over the ratios "
