@@ -10,25 +10,39 @@
 
 namespace lunaster::engine {
 
-void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write) {
-  const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  const std::filesystem::path tmp = folder / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
+namespace fs = std::filesystem;
+
+void replace_file_atomically(const fs::path& path, const std::function<void(const fs::path& temp)>& create) {
+  const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec))
+    throw DeckError("cannot write '" + path.string() + "': cannot create a file in '" + folder.string() +
+                    "' (no such folder)");
+  const fs::path temp = folder / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
+  fs::remove(temp, ec);
   try {
-    {
-      std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-      if (!out) throw DeckError("cannot write '" + path.string() + "': cannot create a file in '" + folder.string() + "'");
-      write(out);
-      out.flush();
-      if (!out) throw DeckError("cannot write '" + path.string() + "' (disk full or file system error)");
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) throw DeckError("cannot write '" + path.string() + "': " + ec.message());
+    create(temp);
   } catch (...) {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
+    fs::remove(temp, ec);
     throw;
   }
+  fs::rename(temp, path, ec);
+  if (ec) {
+    const std::string reason = ec.message();
+    fs::remove(temp, ec);
+    throw DeckError("cannot write '" + path.string() + "': cannot replace the file (" + reason + ")");
+  }
+}
+
+void write_file_atomically(const fs::path& path, const std::function<void(std::ostream&)>& write) {
+  replace_file_atomically(path, [&](const fs::path& temp) {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    if (!out)
+      throw DeckError("cannot write '" + path.string() + "': cannot create a file in '" + temp.parent_path().string() + "'");
+    write(out);
+    out.flush();
+    if (!out) throw DeckError("cannot write '" + path.string() + "' (disk full or file system error)");
+  });
 }
 
 }  // namespace lunaster::engine

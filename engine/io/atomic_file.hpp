@@ -9,7 +9,14 @@
 
 namespace lunaster::engine {
 
-/// Writes `path` with `write`; throws DeckError naming the file if it cannot be written.
+/// Calls `create(temp)` to write the whole file at `temp`, a path beside `path`, then
+/// renames it over `path`. For writers that open files themselves (MED). Throws
+/// DeckError naming `path` if its folder does not exist or the rename fails.
+void replace_file_atomically(const std::filesystem::path& path,
+                             const std::function<void(const std::filesystem::path& temp)>& create);
+
+/// Writes `path` with `write` through a stream; throws DeckError naming the file if it
+/// cannot be written.
 void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
 
 }  // namespace lunaster::engine

@@ -1,12 +1,11 @@
 #include "engine/io/med_writer.hpp"
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <map>
 #include <set>
 
 #include "engine/core/error.hpp"
+#include "engine/io/atomic_file.hpp"
 #include "engine/io/med_common.hpp"
 #include "engine/mesh/cell_topology.hpp"
 
@@ -218,31 +217,14 @@ std::string med_field_name(const std::string& result, const std::string& field) 
 }
 
 void write_med(const std::string& path, const Mesh& mesh, const std::vector<MedResult>& results) {
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  fs::path folder = target.parent_path();
-  if (folder.empty()) folder = ".";
-  std::error_code ec;
-  if (!fs::is_directory(folder, ec)) throw DeckError("writing '" + path + "': folder does not exist");
-  const fs::path temp = folder / ("." + target.filename().string() + ".tmp" + std::to_string(getpid()));
-  fs::remove(temp, ec);
-  try {
+  replace_file_atomically(path, [&](const std::filesystem::path& temp) {
     MedFile file(MEDfileOpen(temp.c_str(), MED_ACC_CREAT));
-    if (!file.ok()) throw DeckError("writing '" + path + "': cannot create a file in " + folder.string());
+    if (!file.ok()) throw DeckError("writing '" + path + "': cannot create a file in " + temp.parent_path().string());
     MedWriter writer(file.id(), path, mesh);
     writer.write_mesh();
     for (const auto& r : results) writer.write_result(r);
     if (!file.close()) throw DeckError("writing '" + path + "': closing the MED file failed");
-  } catch (...) {
-    fs::remove(temp, ec);
-    throw;
-  }
-  fs::rename(temp, target, ec);
-  if (ec) {
-    const std::string reason = ec.message();
-    fs::remove(temp, ec);
-    throw DeckError("writing '" + path + "': cannot replace the file (" + reason + ")");
-  }
+  });
 }
 
 }  // namespace lunaster::engine
