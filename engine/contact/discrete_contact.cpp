@@ -42,11 +42,14 @@ DiscreteContact::DiscreteContact(const ContactDefinition& definition, const Mesh
       }
       for (int a = 0; a < mesh.cell_n_nodes(c); ++a) geometry.insert(mesh.cell(c)[a]);
     }
-    // QUAD8 faces on either side: tie each mid-side node to its edge (code_aster CONTACT_8).
+    // QUAD8 faces on either side: tie each mid-side node to its edge (code_aster CONTACT_8);
+    // other quadratic faces keep free mid-side nodes (first_pairing_report warns).
     std::vector<int> faces = zone.slave_cells;
     faces.insert(faces.end(), zone.master_cells.begin(), zone.master_cells.end());
     for (int c : faces) {
-      if (mesh.cell_types[c] != CellType::Quad8) continue;
+      const CellType type = mesh.cell_types[c];
+      free_mid_side_ |= linear_type(type) != type && type != CellType::Quad8;  // SEG3, TRIA6
+      if (type != CellType::Quad8) continue;
       const auto nodes = mesh.cell(c);
       for (int e = 0; e < 4; ++e) {
         MidSideTie tie;
@@ -188,18 +191,11 @@ void DiscreteContact::first_pairing_report(const Log& log) {
       log.warning("contact zone " + std::to_string(z + 1) + ": " + std::to_string(masters_[z]->n_flipped()) +
                   " master cell(s) oriented towards their own body; their normal was reversed "
                   "(orient the master surface outwards, e.g. ORIE_PEAU)");
-  bool free_mid_side = false;
-  for (const auto& zone : def_.zones) {
-    std::vector<int> faces = zone.slave_cells;
-    faces.insert(faces.end(), zone.master_cells.begin(), zone.master_cells.end());
-    for (int c : faces)
-      free_mid_side |= linear_type(mesh_.cell_types[c]) != mesh_.cell_types[c] && mesh_.cell_types[c] != CellType::Quad8;
-  }
   if (!ties_.empty())
     log.info("discrete contact on QUAD8 faces: " + std::to_string(ties_.size()) +
              " mid-side node(s) tied to the mean of their edge's vertices (linear relations, as code_aster's "
              "CONTACT_8); only vertex nodes are slave nodes");
-  if (free_mid_side)
+  if (free_mid_side_)
     log.warning("discrete contact on quadratic SEG3/TRIA6 faces: only vertex nodes are slave nodes and master cells "
                 "are linearised; their mid-side nodes are not constrained and may penetrate (use FORMULATION="
                 "'CONTINUE' for quadratic faces)");

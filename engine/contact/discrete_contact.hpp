@@ -93,6 +93,7 @@ class DiscreteContact : public ContactHookBase {
   std::vector<std::unique_ptr<MasterSurface>> masters_;
   std::vector<DiscreteNode> nodes_;
   std::vector<MidSideTie> ties_;
+  bool free_mid_side_ = false;  ///< a SEG3/TRIA6 contact face: mid-side nodes neither slave nor tied
   std::set<std::pair<int, int>> fixed_;  ///< (node, component) imposed by DDL_IMPO
   std::vector<int> geometry_nodes_;
   std::vector<double> min_edge_;
