@@ -2,16 +2,20 @@
 /// Entry point of engine/contact: builds the contact algorithm the Newton
 /// driver (engine/nonlinear/static_solver) plugs in as a ContactHook.
 ///
-/// Methods: ContactMethod::Continuous / ContinuousPenalty ->
-/// contact::ContinuousContact (continuous_contact.hpp), DiscreteLagrange /
-/// DiscretePenalty -> contact::DiscreteContact (discrete_contact.hpp).
-/// Unknowns: LAGS_C (Component::LAGS_C) on the slave nodes for Continuous,
-/// ContinuousPenalty and DiscreteLagrange (vertices only); none for
-/// DiscretePenalty. LAGS_C is in Pa, negative in compression.
+/// Every method is a discretisation times a law, assembled by the shared part
+/// contact::ContactProblem (contact_problem.hpp):
+/// | ContactMethod      | discretisation (discretisation.hpp) | law (contact_law.hpp) |
+/// |--------------------|-------------------------------------|-----------------------|
+/// | Continuous         | integration points                  | augmented Lagrangian  |
+/// | ContinuousPenalty  | integration points                  | penalty (Pa/m)        |
+/// | DiscreteLagrange   | node to segment                     | active set            |
+/// | DiscretePenalty    | node to segment                     | penalty (N/m per node)|
+/// Unknowns: LAGS_C (Component::LAGS_C) on the slave nodes for every law but the nodal
+/// penalty (vertices only for node-to-segment). LAGS_C is in Pa, negative in compression.
 /// Fields: write_fields adds the nodal field "CONT_NOEU" on slave nodes with
 /// CONT (1 in contact, 0 not), JEU (gap, m, > 0 open), RN (norm of the nodal
-/// contact force, N), RNX, RNY[, RNZ] (force on the slave node), and for the
-/// discrete methods PRES (nodal contact pressure, Pa, negative in compression).
+/// contact force, N), RNX, RNY[, RNZ] (force on the slave node), and for
+/// node-to-segment PRES (nodal contact pressure, Pa, negative in compression).
 #include <memory>
 
 #include "engine/contact/contact_definition.hpp"

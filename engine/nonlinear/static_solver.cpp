@@ -153,9 +153,12 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
 
 void StaticSolver::advance(double t0, double t1, int level, Vector& u) {
   Vector trial = u;
+  const ContactSnapshot contact_state = contact_ ? contact_->snapshot() : ContactSnapshot{};
   try {
     solve_instant(t1, trial);
   } catch (const ConvergenceError& err) {
+    // The sub-steps start from the statuses of the step, not from the diverged attempt's.
+    if (contact_) contact_->restore(contact_state);
     if (level >= options_.subdivide_levels) {
       if (options_.subdivide_levels == 0) throw;
       ConvergenceError final(err.message(), err.hints());
@@ -195,13 +198,6 @@ void StaticSolver::solve_instant(double t, Vector& u) {
     contact_->begin_step(u, log_);
   }
 
-  const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
-  SolverKind backend = options_.solver;
-  // Contact with multipliers gives a symmetric indefinite system: MUMPS (LDLT with
-  // pivoting) beat UMFPACK (LU) on it: SSNP121 A refined 16 times, 3.2 s vs 3.6 s and
-  // 376 MB vs 608 MB.
-  if (backend == SolverKind::Cholmod && kind != MatrixKind::SymmetricPositiveDefinite) backend = SolverKind::Mumps;
-  auto solver = make_linear_solver(backend);
 
   int total_newton = 0;
   for (int fixed_point = 0;; ++fixed_point) {
@@ -253,6 +249,34 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       // not (round-off hides the zero pivot), so check the elastic part once.
       // Without contact the same holds for UMFPACK and MUMPS, which return some
       // solution of a singular but consistent system (a free rigid translation).
+      // The system of this iteration: the contact law may condense its multipliers out
+      // (then it is SPD), and says which kind of matrix is left.
+      const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
+      SolverKind backend = options_.solver;
+      // Contact with multipliers gives a symmetric indefinite system: MUMPS (LDLT with
+      // pivoting) beat UMFPACK (LU) on it: SSNP121 A refined 16 times, 3.2 s vs 3.6 s and
+      // 376 MB vs 608 MB.
+      if (backend == SolverKind::Cholmod && kind != MatrixKind::SymmetricPositiveDefinite) backend = SolverKind::Mumps;
+      auto& solver = solvers_[static_cast<int>(backend)];
+      if (!solver) solver = make_linear_solver(backend);
+      const std::vector<int>& condensed = contact_ ? contact_->condensed_equations() : std::vector<int>{};
+      // Equations of this solve: the free ones less those the contact law condenses.
+      std::vector<int> solve_index;
+      int n_solve = cons.n_free;
+      Vector r_solve;
+      if (condensed.empty()) {
+        r_solve = r_free;
+      } else {
+        solve_index = cons.free_index;
+        for (int eq : condensed) solve_index[eq] = -1;
+        n_solve = 0;
+        for (int eq = 0; eq < n; ++eq)
+          if (solve_index[eq] >= 0) solve_index[eq] = n_solve++;
+        r_solve.resize(n_solve);
+        for (int eq = 0; eq < n; ++eq)
+          if (solve_index[eq] >= 0) r_solve[solve_index[eq]] = residual[eq];
+      }
+      const std::vector<int>& index = condensed.empty() ? cons.free_index : solve_index;
       if (!rigid_checked_ && (contact_ ? contact_->n_active() == 0 : backend != SolverKind::Cholmod)) {
         if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, k_full_, t)) throw *rigid;
         rigid_checked_ = true;
@@ -260,11 +284,11 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       // Dirichlet by elimination: restrict to the free equations in one pass.
       SparseMatrix k_ff;
       if (k_contact.empty()) {
-        k_ff = restrict_matrix(k_full_, cons.free_index, cons.n_free);
+        k_ff = restrict_matrix(k_full_, index, n_solve);
       } else {
         SparseMatrix k_c(n, n);
         k_c.setFromTriplets(k_contact.begin(), k_contact.end());
-        k_ff = restrict_matrix(k_full_ + k_c, cons.free_index, cons.n_free);
+        k_ff = restrict_matrix(k_full_ + k_c, index, n_solve);
       }
       assemble_watch.reset();
       try {
@@ -278,7 +302,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       RefinedSolve accuracy;
       {
         Stopwatch watch(stats_.solve_seconds);
-        accuracy = solve_with_refinement(*solver, k_ff, -r_free, du);
+        accuracy = solve_with_refinement(*solver, k_ff, -r_solve, du);
       }
       ++stats_.newton_iterations;
       stats_.refinement_steps += accuracy.steps;
@@ -296,7 +320,11 @@ void StaticSolver::solve_instant(double t, Vector& u) {
                        sci(kSolveTolerance) + ")"),
             t);
       for (int eq = 0; eq < n; ++eq)
-        if (cons.free_index[eq] >= 0) u[eq] += du[cons.free_index[eq]];
+        if (index[eq] >= 0) u[eq] += du[index[eq]];
+      if (!condensed.empty()) {
+        Stopwatch watch(stats_.contact_seconds);
+        contact_->recover(u);
+      }
       ++total_newton;
     }
     if (!converged)

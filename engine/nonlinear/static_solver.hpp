@@ -11,24 +11,11 @@
 #include "engine/core/log.hpp"
 #include "engine/fe/fe_model.hpp"
 #include "engine/fields/fields.hpp"
+#include "engine/nonlinear/contact_hook.hpp"
+#include "engine/nonlinear/loads.hpp"
 #include "engine/solver/linear_solver.hpp"
 
 namespace lunaster::engine {
-
-/// Imposed value of one displacement component; `load` indexes the multiplier.
-struct DirichletValue { int node; int component; double value; int load; };
-/// Pressure on boundary cells (PRES_REP), Pa.
-struct PressureLoad { std::vector<int> cells; double pressure; int load; };
-/// Nodal force (FORCE_NODALE), N.
-struct NodalForce { int node; int component; double value; int load; };
-
-/// Everything imposed on the model; value(t) = value * multipliers[load](t).
-struct MechanicalLoads {
-  std::vector<DirichletValue> dirichlet;
-  std::vector<PressureLoad> pressures;
-  std::vector<NodalForce> forces;
-  std::vector<std::function<double(double)>> multipliers;  ///< one per load index
-};
 
 struct NewtonOptions {
   double resi_glob_rela = 1e-6;  ///< relative residual |r| / |f_ext + reactions|; <= 0: unused
@@ -43,31 +30,6 @@ struct NewtonOptions {
 class ConvergenceError : public SolveError {
  public:
   using SolveError::SolveError;
-};
-
-/// Contact algorithm seen by the Newton driver (implemented in engine/contact).
-class ContactHook {
- public:
-  virtual ~ContactHook() = default;
-  /// The Dirichlet conditions of the run, once, before add_dofs (a hook that ties
-  /// unknowns together skips the relations these already impose).
-  virtual void set_dirichlet(const std::vector<DirichletValue>& /*dirichlet*/) {}
-  /// Adds contact unknowns (LAGS_C ...) to the numbering, once, before any step.
-  virtual void add_dofs(DofMap& dofs) = 0;
-  /// Start of an instant, with the converged displacement of the previous one.
-  virtual void begin_step(const Vector& u, const Log& log) = 0;
-  /// Adds the contact tangent and residual at iterate u (residual = internal - external).
-  virtual void add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) = 0;
-  /// Called when Newton converged with the current statuses/geometry frozen.
-  /// Updates statuses and pairing; returns true when nothing changed (settled).
-  virtual bool settle(const Vector& u, const Log& log) = 0;
-  /// Kind of the assembled system once contact is in (Lagrange => indefinite).
-  virtual MatrixKind matrix_kind() const = 0;
-  /// Number of contact points (or slave nodes) currently active. With none, the
-  /// bodies must be held by Dirichlet conditions alone: the driver checks it.
-  virtual int n_active() const = 0;
-  /// Stores contact results (LAGS_C in DEPL is already in u; CONT_NOEU ...).
-  virtual void write_fields(const Vector& u, ResultStep& step) const = 0;
 };
 
 /// What one run cost, measured by the solver itself (wall seconds, counts).
@@ -113,6 +75,8 @@ class StaticSolver {
   void solve_instant(double t, Vector& u);
   NodalField make_depl(const Vector& u) const;
   SparseMatrix k_full_;
+  /// One solver per backend for the whole run (each keeps its analysis while the pattern holds).
+  std::unique_ptr<LinearSolver> solvers_[3];
   double k_scale_ = 0.0;
   bool rigid_checked_ = false;  ///< elastic part proven free of rigid-body modes  ///< largest stiffness coefficient, for the residual reference
 

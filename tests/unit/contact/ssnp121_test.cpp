@@ -1,13 +1,13 @@
 // End-to-end contact solves on the SSNP121 2D geometry (two blocks pressed
 // together, E = 2e6, nu = 0; exact answer: LAGS_C = -1e5 Pa, interface DY =
-// -0.05 m) with the engine's FE assembly and a minimal Newton driver. Each
+// -0.05 m) with the engine's FE assembly and the production Newton driver. Each
 // modelisation must be at least as accurate as code_aster's published value.
 #include <cmath>
 #include <cstdio>
 
 #include <gtest/gtest.h>
 
-#include "engine/contact/discrete_contact.hpp"
+#include "engine/contact/contact_problem.hpp"
 #include "two_blocks.hpp"
 
 using namespace contact_test;
@@ -128,7 +128,7 @@ TEST(ContactSsnp121, ModelB_DiscreteLagrange) {
   EXPECT_LE(rel(dy(r, tb.node_o), -0.05), 0.02);
   EXPECT_LE(rel(dy(r, tb.node_e), -0.05), 0.02);
   // No penetration of the slave nodes.
-  for (const auto& n : dynamic_cast<const lunaster::engine::contact::DiscreteContact&>(*hook).nodes())
+  for (const auto& n : dynamic_cast<const lunaster::engine::contact::ContactProblem&>(*hook).points())
     EXPECT_GE(n.gap.value(r.u), -1e-12);
 }
 

@@ -5,15 +5,22 @@
 #include <gtest/gtest.h>
 
 #include "engine/contact/compatibility.hpp"
-#include "engine/contact/continuous_contact.hpp"
-#include "engine/contact/discrete_contact.hpp"
+#include "engine/contact/contact_factory.hpp"
+#include "engine/contact/contact_problem.hpp"
 #include "two_blocks.hpp"
 
 using namespace contact_test;
-using lunaster::engine::contact::ContinuousContact;
-using lunaster::engine::contact::DiscreteContact;
+using lunaster::engine::contact::ContactProblem;
 
 namespace {
+
+/// The shared contact part of a method, never condensing its multipliers: the whole
+/// tangent, multiplier rows included, is checked against finite differences.
+std::unique_ptr<ContactProblem> make_problem(const ContactDefinition& def, const Mesh& mesh) {
+  std::unique_ptr<ContactProblem> p(dynamic_cast<ContactProblem*>(make_contact_hook(def, mesh, 2).release()));
+  p->allow_condensation(false);
+  return p;
+}
 
 struct Fixture {
   TwoBlocks tb;
@@ -93,7 +100,8 @@ TEST(ContactTangent, ContinuousMatchesFiniteDifferences) {
     for (ContactMethod m : {ContactMethod::Continuous, ContactMethod::ContinuousPenalty})
       for (int active = 0; active < 2; ++active) {
         Fixture s = make_setup(quadratic);
-        ContinuousContact hook(definition(s.tb, m, true), s.tb.mesh, 2);
+        auto hook_owner = make_problem(definition(s.tb, m, true), s.tb.mesh);
+        ContactProblem& hook = *hook_owner;
         hook.add_dofs(s.dofs);
         lunaster::Log log(std::cout, 0);
         hook.begin_step(Vector::Zero(s.dofs.n_dofs()), log);
@@ -111,7 +119,8 @@ TEST(ContactTangent, GeneralisedNewtonStatusesMatchFiniteDifferences) {
   Fixture s = make_setup(false);
   ContactDefinition def = definition(s.tb, ContactMethod::Continuous, true);
   def.status_loop = FixedPointOrNewton::Newton;
-  ContinuousContact hook(def, s.tb.mesh, 2);
+  auto hook_owner = make_problem(def, s.tb.mesh);
+  ContactProblem& hook = *hook_owner;
   hook.add_dofs(s.dofs);
   lunaster::Log log(std::cout, 0);
   hook.begin_step(Vector::Zero(s.dofs.n_dofs()), log);
@@ -130,7 +139,8 @@ TEST(ContactTangent, DiscreteMatchesFiniteDifferences) {
     for (ContactMethod m : {ContactMethod::DiscreteLagrange, ContactMethod::DiscretePenalty})
       for (int active = 0; active < 2; ++active) {
         Fixture s = make_setup(quadratic);
-        DiscreteContact hook(definition(s.tb, m, false), s.tb.mesh, 2);
+        auto hook_owner = make_problem(definition(s.tb, m, false), s.tb.mesh);
+        ContactProblem& hook = *hook_owner;
         hook.add_dofs(s.dofs);
         lunaster::Log log(std::cout, 0);
         hook.begin_step(Vector::Zero(s.dofs.n_dofs()), log);
@@ -145,7 +155,8 @@ TEST(ContactTangent, DiscreteMatchesFiniteDifferences) {
 TEST(ContactTangent, InactiveContinuousDrivesMultipliersToZeroWithoutNaN) {
   // CONTACT_INIT='NON' before contact: the LAGS_C block is -(1/rho) M, regular and finite.
   Fixture s = make_setup(false);
-  ContinuousContact hook(definition(s.tb, ContactMethod::Continuous, true), s.tb.mesh, 2);
+  auto hook_owner = make_problem(definition(s.tb, ContactMethod::Continuous, true), s.tb.mesh);
+  ContactProblem& hook = *hook_owner;
   hook.add_dofs(s.dofs);
   lunaster::Log log(std::cout, 0);
   hook.begin_step(Vector::Zero(s.dofs.n_dofs()), log);
@@ -154,7 +165,7 @@ TEST(ContactTangent, InactiveContinuousDrivesMultipliersToZeroWithoutNaN) {
   SparseMatrix k;
   evaluate(hook, Vector::Zero(s.dofs.n_dofs()), r, k);
   EXPECT_TRUE(r.allFinite());
-  for (int node : hook.slave_nodes()) {
+  for (int node : hook.multiplier_nodes()) {
     const int eq = s.dofs.dof(node, LAGS_C);
     EXPECT_LT(k.coeff(eq, eq), 0.0);
     EXPECT_TRUE(std::isfinite(k.coeff(eq, eq)));

@@ -1,8 +1,8 @@
 #pragma once
 // Test helpers: the SSNP121 2D geometry (two blocks [-1,1]x[0,1] over
-// [-1,1]x[-1,0], independent meshes) and a minimal Newton driver with the
-// contact hook, independent of engine/nonlinear (Dirichlet by elimination,
-// UMFPACK, fixed-point contact loops through settle()).
+// [-1,1]x[-1,0], independent meshes) and one load step through the production
+// Newton driver (engine/nonlinear/static_solver: elimination, solver choice,
+// condensation, refinement, contact loops).
 #include <cmath>
 #include <memory>
 #include <sstream>
@@ -13,6 +13,7 @@
 #include "engine/core/error.hpp"
 #include "engine/fe/fe_model.hpp"
 #include "engine/mesh/mesh.hpp"
+#include "engine/nonlinear/static_solver.hpp"
 #include "engine/solver/linear_solver.hpp"
 
 namespace contact_test {
@@ -103,51 +104,34 @@ struct Imposed { int node, component; double value; };
 struct SolveResult {
   DofMap dofs;
   Vector u;
-  int n_settle = 0;
+  int n_settle = 0;  ///< contact passes (calls to settle)
 };
 
-/// Newton with contact loops: one load step from u = 0.
+/// One load step from u = 0 to the imposed values and pressures, through StaticSolver.
 inline SolveResult solve(const FeModel& model, const std::vector<Imposed>& imposed,
                          const std::vector<std::pair<std::vector<int>, double>>& pressures, ContactHook& hook,
                          const lunaster::Log& log) {
+  MechanicalLoads loads;
+  loads.multipliers.push_back([](double t) { return t; });
+  for (const auto& d : imposed) loads.dirichlet.push_back({d.node, d.component, d.value, 0});
+  for (const auto& [cells, p] : pressures) loads.pressures.push_back({cells, p, 0});
+  NewtonOptions options;
+  options.resi_glob_rela = 1e-8;  // 100 times the default; round-off leaves ~1e-10
+  options.iter_glob_maxi = 25;
+  StaticSolver solver(model, loads, options, &hook, log);
+  const std::vector<ResultStep> steps = solver.run({0.0, 1.0});
   SolveResult res;
-  res.dofs = DofMap(*model.mesh, model.volume_cells(), model.dim);
-  hook.add_dofs(res.dofs);
-  const int n = res.dofs.n_dofs();
-  std::vector<Triplet> k_el;
-  assemble_stiffness(model, res.dofs, k_el);
-  Vector f_ext = Vector::Zero(n);
-  for (const auto& [cells, p] : pressures) assemble_pressure(*model.mesh, 2, cells, p, res.dofs, f_ext);
-  std::vector<char> fixed(n, 0);
-  res.u = Vector::Zero(n);
-  hook.begin_step(res.u, log);
-  for (const auto& d : imposed) {
-    const int eq = res.dofs.dof(d.node, d.component);
-    fixed[eq] = 1, res.u[eq] = d.value;
+  res.dofs = solver.dofs();
+  res.n_settle = solver.stats().contact_passes;
+  // The unknowns back from the DEPL field (LAGR_* relation multipliers are not results).
+  const NodalField& depl = steps.back().nodal.at("DEPL");
+  res.u = Vector::Zero(res.dofs.n_dofs());
+  for (int eq = 0; eq < res.dofs.n_dofs(); ++eq) {
+    const int cmp = res.dofs.component_of(eq);
+    if (cmp > LAGS_C) continue;
+    res.u[eq] = depl.value(res.dofs.node_of(eq), depl.component_index(component_name(cmp)));
   }
-  auto solver = make_linear_solver(SolverKind::Umfpack);
-  for (res.n_settle = 0; res.n_settle < 60; ++res.n_settle) {
-    for (int it = 0; it < 25; ++it) {
-      Vector r;
-      assemble_internal_forces(model, res.dofs, res.u, r);
-      r -= f_ext;
-      std::vector<Triplet> trip = k_el;
-      hook.add_to_system(res.u, trip, r);
-      std::vector<Triplet> kept;
-      for (const auto& t : trip)
-        if (!fixed[t.row()] && !fixed[t.col()]) kept.push_back(t);
-      for (int i = 0; i < n; ++i)
-        if (fixed[i]) kept.emplace_back(i, i, 1.0), r[i] = 0.0;
-      SparseMatrix k(n, n);
-      k.setFromTriplets(kept.begin(), kept.end());
-      solver->factorize(k, MatrixKind::General);
-      const Vector du = solver->solve(-r);
-      res.u += du;
-      if (du.norm() <= 1e-11 * (1.0 + res.u.norm()) && it > 0) break;
-    }
-    if (hook.settle(res.u, log)) return res;
-  }
-  throw lunaster::SolveError("contact test driver: contact loops did not settle");
+  return res;
 }
 
 /// DY of a node, LAGS_C of a node.

@@ -1,0 +1,26 @@
+#include "engine/contact/contact_law.hpp"
+
+namespace lunaster::engine::contact {
+
+bool ContactLaw::initial_status(ContactInit init, double g, double tolerance) const {
+  switch (init) {
+    case ContactInit::Yes: return true;
+    case ContactInit::No: return false;
+    case ContactInit::Interpenetrated: return g <= tolerance;
+  }
+  return false;
+}
+
+int ContactLaw::update_statuses(std::vector<ContactPoint>& points, const StatusInputs& in,
+                                const std::vector<double>& rho_of_zone) const {
+  int changed = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    ContactPoint& p = points[i];
+    const bool s = p.paired && status(in.lambda[i], in.gap[i], rho_of_zone[p.zone]);
+    changed += s != p.active;
+    p.active = s;
+  }
+  return changed;
+}
+
+}  // namespace lunaster::engine::contact

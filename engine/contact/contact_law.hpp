@@ -1,0 +1,72 @@
+#pragma once
+/// How contact conditions are enforced: a law decides the status of each contact
+/// point and the coefficients of its terms; it does not know where the points come
+/// from (discretisation.hpp). With lambda = sum_a phi_a LAGS_C_a the pressure at a
+/// point and g its gap (g > 0 open), every law is a choice, per point, of four
+/// coefficients (PointCoefficients) in
+///
+///   r_u      += (alpha lambda + beta g) dg/du          K_uu      += beta dg/du (x) dg/du
+///                                                      K_u,lambda_b += alpha phi_b dg/du
+///   r_lambda_a += phi_a (sigma g - kappa lambda)       K_lambda_a,u += sigma phi_a dg/du
+///                                                      K_lambda_a,lambda_b += -kappa phi_a phi_b
+///
+/// | law (file)                                   | active point                      | inactive point       |
+/// |----------------------------------------------|-----------------------------------|----------------------|
+/// | augmented Lagrangian (CONTINUE, ALGO_CONT='STANDARD') | alpha = sigma = w, beta = w rho | kappa = w / rho |
+/// | active set (CONTRAINTE)                      | alpha = sigma = w, beta = 0        | kappa = w / c (scaling) |
+/// | penalty (PENALISATION)                       | beta = w rho (or E_N per node); sigma = w, kappa = w / rho when LAGS_C is reported | kappa = w / rho |
+///
+/// w is the point's weight (contact_point.hpp). When no point has alpha != 0 the
+/// multipliers do not enter the displacement equations: the shared part then
+/// condenses them out of the linear solve (the system is SPD) and recovers them from
+/// their own rows, (sum kappa phi phi^T) LAGS_C = sum sigma g phi.
+#include <memory>
+#include <vector>
+
+#include "engine/contact/contact_definition.hpp"
+#include "engine/contact/contact_point.hpp"
+
+namespace lunaster::engine::contact {
+
+struct PointCoefficients {
+  double alpha = 0.0, beta = 0.0, sigma = 0.0, kappa = 0.0;
+};
+
+/// What a law reads when it updates statuses (one entry per point, or per zone).
+struct StatusInputs {
+  const std::vector<double>& lambda;    ///< pressure at each point (Pa)
+  const std::vector<double>& gap;       ///< gap at each point (m)
+  const std::vector<double>& min_edge;  ///< smallest slave edge of each zone (m)
+};
+
+class ContactLaw {
+ public:
+  virtual ~ContactLaw() = default;
+  virtual const char* name() const = 0;
+  /// True: the slave nodes carry LAGS_C unknowns.
+  virtual bool has_multipliers() const = 0;
+  /// The zone's coefficient the law works with (penalty, augmentation or scaling); > 0.
+  virtual double coefficient(const ContactZone& zone) const = 0;
+  /// Status of the first pairing: CONTACT_INIT, given the gap at the start.
+  virtual bool initial_status(ContactInit init, double g, double tolerance) const;
+  /// Status of one paired point from its pressure and gap (fixed point, Newton statuses, CONT_NOEU).
+  virtual bool status(double lambda, double g, double rho) const = 0;
+  /// Updates the statuses of every point after a converged Newton; returns how many changed.
+  /// Default: `status` point by point (unpaired points inactive).
+  virtual int update_statuses(std::vector<ContactPoint>& points, const StatusInputs& in,
+                              const std::vector<double>& rho_of_zone) const;
+  /// True when statuses may be updated inside Newton (ALGO_RESO_CONT='NEWTON').
+  virtual bool statuses_in_newton_allowed() const { return true; }
+  /// Coefficients of a paired point with its current status.
+  virtual PointCoefficients coefficients(const ContactPoint& p, double rho) const = 0;
+  /// Contact pressure of an active point (Pa, negative in compression).
+  virtual double pressure(const ContactPoint& p, double lambda, double g, double rho) const = 0;
+};
+
+std::unique_ptr<ContactLaw> make_augmented_lagrangian_law();
+std::unique_ptr<ContactLaw> make_active_set_law();
+/// `spring_per_node`: the coefficient is a nodal stiffness (N/m, discrete E_N), not a
+/// pressure per gap (Pa/m), and no LAGS_C is reported.
+std::unique_ptr<ContactLaw> make_penalty_law(bool spring_per_node);
+
+}  // namespace lunaster::engine::contact

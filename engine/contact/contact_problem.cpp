@@ -1,0 +1,460 @@
+#include "engine/contact/contact_problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <Eigen/SparseCholesky>
+
+#include "engine/contact/surface_element.hpp"
+#include "engine/core/error.hpp"
+#include "engine/nonlinear/static_solver.hpp"
+
+namespace lunaster::engine::contact {
+
+std::string cell_label(const Mesh& mesh, int cell) {
+  if (cell >= 0 && cell < static_cast<int>(mesh.cell_names.size())) return mesh.cell_names[cell];
+  return "#" + std::to_string(cell);
+}
+
+std::string node_label(const Mesh& mesh, int node) {
+  if (node >= 0 && node < static_cast<int>(mesh.node_names.size())) return mesh.node_names[node];
+  return "#" + std::to_string(node);
+}
+
+double smallest_edge(const Mesh& mesh, const std::vector<int>& cells) {
+  double h = 1e300;
+  for (int c : cells) {
+    const CellType t = mesh.cell_types[c];
+    const int nv = surface_n_vertices(t);
+    const int n_edges = nv == 2 ? 1 : nv;
+    for (int e = 0; e < n_edges; ++e) {
+      const double* a = mesh.node(mesh.cell(c)[e]);
+      const double* b = mesh.node(mesh.cell(c)[(e + 1) % nv]);
+      h = std::min(h, std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                                (a[2] - b[2]) * (a[2] - b[2])));
+    }
+  }
+  return h;
+}
+
+/// The multiplier rows of a condensed pass: M LAGS_C = b with M = sum kappa phi phi^T
+/// (SPD on the nodes that some paired point touches), factorised once per pairing.
+struct ContactProblem::Recovery {
+  std::vector<int> local;                     ///< multiplier node index -> row of M, -1 if untouched
+  SparseMatrix m;
+  Eigen::SimplicialLDLT<SparseMatrix> ldlt;
+  bool ready = false;
+};
+
+ContactProblem::ContactProblem(const ContactDefinition& definition, const Mesh& mesh, int dim,
+                               std::unique_ptr<Discretisation> discretisation, std::unique_ptr<ContactLaw> law)
+    : def_(definition), mesh_(mesh), dim_(dim), disc_(std::move(discretisation)), law_(std::move(law)),
+      recovery_(std::make_shared<Recovery>()) {
+  LUNASTER_ASSERT(dim == 2 || dim == 3, "contact: dimension must be 2 or 3");
+  std::set<int> geometry, mult;
+  for (size_t z = 0; z < def_.zones.size(); ++z) {
+    const ContactZone& zone = def_.zones[z];
+    const double coefficient = law_->coefficient(zone);
+    if (!(coefficient > 0.0) || !std::isfinite(coefficient))
+      throw DeckError("contact zone " + std::to_string(z + 1) + ": the " + law_->name() +
+                      " coefficient must be a finite number > 0, got " + std::to_string(coefficient));
+    rho_.push_back(coefficient);
+    for (int c : zone.slave_cells) {
+      const CellType t = mesh.cell_types[c];
+      if (!is_surface_type(t) || topological_dim(t) != dim - 1)
+        throw DeckError("contact zone " + std::to_string(z + 1) + ": slave cell " + cell_label(mesh, c) +
+                        " is a " + surface_type_name(t) + ", expected a boundary cell of dimension " +
+                        std::to_string(dim - 1));
+    }
+    masters_.push_back(std::make_unique<MasterSurface>(mesh, zone.master_cells, disc_->linear_master()));
+    min_edge_.push_back(smallest_edge(mesh, zone.slave_cells));
+    const size_t first = points_.size();
+    disc_->build_points(mesh, dim, static_cast<int>(z), zone, points_);
+    disc_->build_relations(mesh, dim, zone, relations_);
+    for (size_t i = first; i < points_.size(); ++i)
+      for (int a = 0; a < points_[i].n_slave; ++a) mult.insert(points_[i].slave_nodes[a]);
+    for (int c : zone.master_cells)
+      for (int a = 0; a < mesh.cell_n_nodes(c); ++a) geometry.insert(mesh.cell(c)[a]);
+    for (int c : zone.slave_cells)
+      for (int a = 0; a < mesh.cell_n_nodes(c); ++a) geometry.insert(mesh.cell(c)[a]);
+  }
+  if (law_->has_multipliers()) multiplier_nodes_.assign(mult.begin(), mult.end());
+  geometry_nodes_.assign(geometry.begin(), geometry.end());
+}
+
+void ContactProblem::set_dirichlet(const std::vector<DirichletValue>& dirichlet) {
+  for (const auto& d : dirichlet) imposed_.insert({d.node, d.component});
+}
+
+void ContactProblem::add_dofs(DofMap& dofs) {
+  for (int node : multiplier_nodes_) multiplier_eqs_.push_back(dofs.add(node, LAGS_C));
+  relations_.add_dofs(dofs, imposed_);
+  dofs_ = dofs;
+}
+
+double ContactProblem::multiplier(const Vector& u, const ContactPoint& p) const {
+  if (multiplier_nodes_.empty()) return 0.0;
+  double lambda = 0.0;
+  for (int a = 0; a < p.n_slave; ++a) {
+    const int eq = dofs_.dof(p.slave_nodes[a], LAGS_C);
+    if (eq >= 0) lambda += p.phi[a] * u[eq];
+  }
+  return lambda;
+}
+
+void ContactProblem::set_all_active(bool active) {
+  for (auto& p : points_) p.active = active && p.paired;
+}
+
+int ContactProblem::n_active() const {
+  return static_cast<int>(std::count_if(points_.begin(), points_.end(), [](const auto& p) { return p.active; }));
+}
+
+bool ContactProblem::statuses_in_newton() const {
+  return def_.status_loop == FixedPointOrNewton::Newton && law_->statuses_in_newton_allowed();
+}
+
+bool ContactProblem::coupled() const {
+  if (multiplier_nodes_.empty()) return false;
+  if (!allow_condensation_) return true;
+  for (const auto& p : points_)
+    if (p.paired && p.active && law_->coefficients(p, rho(p.zone)).alpha != 0.0) return true;
+  return false;
+}
+
+const std::vector<int>& ContactProblem::condensed_equations() const {
+  static const std::vector<int> none;
+  return coupled() ? none : multiplier_eqs_;
+}
+
+MatrixKind ContactProblem::matrix_kind() const {
+  if (coupled() || !relations_.empty()) return MatrixKind::SymmetricIndefinite;
+  return MatrixKind::SymmetricPositiveDefinite;
+}
+
+std::vector<double> ContactProblem::current_coordinates(const Vector& u) const {
+  std::vector<double> xyz(mesh_.coords);
+  const int n = static_cast<int>(xyz.size() / 3);
+  const int nmap = dofs_.n_nodes();
+  for (int node = 0; node < std::min(n, nmap); ++node)
+    for (int k = 0; k < dim_; ++k) {
+      const int eq = dofs_.dof(node, k);
+      if (eq >= 0 && eq < u.size()) xyz[3 * static_cast<size_t>(node) + k] += u[eq];
+    }
+  return xyz;
+}
+
+void ContactProblem::pair(const Vector& u) {
+  const std::vector<double> xyz = current_coordinates(u);
+  for (auto& m : masters_) m->update(xyz);
+  recovery_->ready = false;
+  double slave_xyz[3 * kMaxSurfaceNodes];
+  for (auto& p : points_) {
+    double x[3];
+    bool regular = true;
+    if (p.slave_cell >= 0) {
+      const CellType t = mesh_.cell_types[p.slave_cell];
+      for (int a = 0; a < p.n_slave; ++a)
+        for (int i = 0; i < 3; ++i) slave_xyz[3 * a + i] = xyz[3 * static_cast<size_t>(p.slave_nodes[a]) + i];
+      const SurfacePoint sp = surface_point(t, slave_xyz, p.xi);
+      std::copy(sp.x, sp.x + 3, x);
+      regular = sp.jacobian > 0.0 && std::isfinite(sp.jacobian);
+      p.wjac = regular ? p.weight * sp.jacobian : 0.0;
+    } else {
+      for (int i = 0; i < 3; ++i) {
+        x[i] = 0.0;
+        for (int a = 0; a < p.n_slave; ++a) x[i] += p.phi[a] * xyz[3 * static_cast<size_t>(p.slave_nodes[a]) + i];
+      }
+      p.wjac = p.weight;
+    }
+    const MasterSurface& master = *masters_[p.zone];
+    const MasterProjection mp = master.project(x, def_.zones[p.zone].tole_proj_ext);
+    p.paired = mp.found && regular;
+    p.gap = LinearGap{};
+    if (!p.paired) {
+      p.active = false;
+      p.master_cell = -1;
+      continue;
+    }
+    p.master_cell = mp.cell;
+    p.xi_master[0] = mp.xi[0], p.xi_master[1] = mp.xi[1];
+    std::copy(mp.normal, mp.normal + 3, p.normal);
+    const int k = master.local_index(mp.cell);
+    double nm[kMaxSurfaceNodes];
+    surface_shape(master.geometry_type(k), mp.xi, nm, nullptr, nullptr);
+    const auto& mnodes = master.cell_nodes(k);
+    p.gap = make_linear_gap(mesh_.coords, dofs_, dim_, p.slave_nodes, p.phi, p.n_slave, mnodes.data(), nm,
+                            static_cast<int>(mnodes.size()), p.normal);
+  }
+}
+
+void ContactProblem::pair_and_record(const Vector& u) {
+  pair(u);
+  u_at_pairing_ = u;
+  ++n_pairings_;
+}
+
+double ContactProblem::geometric_residual(const Vector& u) const {
+  double du_max = 0.0, u_max = 0.0;
+  for (int node : geometry_nodes_) {
+    double du2 = 0.0, u2 = 0.0;
+    for (int k = 0; k < dim_; ++k) {
+      const int eq = dofs_.dof(node, k);
+      if (eq < 0) continue;
+      const double prev = eq < u_at_pairing_.size() ? u_at_pairing_[eq] : 0.0;
+      du2 += (u[eq] - prev) * (u[eq] - prev);
+      u2 += u[eq] * u[eq];
+    }
+    du_max = std::max(du_max, std::sqrt(du2));
+    u_max = std::max(u_max, std::sqrt(u2));
+  }
+  return u_max > 0.0 ? du_max / u_max : 0.0;
+}
+
+void ContactProblem::first_pairing_report(const Log& log) const {
+  // Incompatible slave/master cell types (compatibility.hpp) are reported once, by the
+  // command defining the zone, not again here.
+  for (size_t z = 0; z < masters_.size(); ++z)
+    if (masters_[z]->n_flipped() > 0)
+      log.warning("contact zone " + std::to_string(z + 1) + ": " + std::to_string(masters_[z]->n_flipped()) +
+                  " master cell(s) oriented towards their own body; their normal was reversed "
+                  "(orient the master surface outwards, e.g. ORIE_PEAU)");
+  disc_->report(log);
+}
+
+void ContactProblem::init_statuses(const Vector& u, const Log& log) {
+  int n_active = 0, n_unpaired = 0;
+  for (auto& p : points_) {
+    const ContactZone& zone = def_.zones[p.zone];
+    p.active = p.paired && law_->initial_status(zone.init, p.gap.value(u), 1e-6 * min_edge_[p.zone]);
+    n_active += p.active;
+    n_unpaired += !p.paired;
+  }
+  std::ostringstream msg;
+  msg << "contact: " << points_.size() << (disc_->nodal() ? " slave nodes, " : " contact points, ") << n_active
+      << " initially in contact, " << n_unpaired << " not paired with the master surface";
+  log.info(msg.str());
+}
+
+int ContactProblem::update_statuses(const Vector& u) {
+  std::vector<double> lambda(points_.size()), gap(points_.size());
+  for (size_t i = 0; i < points_.size(); ++i) {
+    lambda[i] = multiplier(u, points_[i]);
+    gap[i] = points_[i].paired ? points_[i].gap.value(u) : 0.0;
+  }
+  return law_->update_statuses(points_, StatusInputs{lambda, gap, min_edge_}, rho_);
+}
+
+void ContactProblem::begin_step(const Vector& u, const Log& log) {
+  n_status_iter_ = 0;
+  n_geom_iter_ = 0;
+  n_pairings_ = 0;
+  pair_and_record(u);
+  if (first_step_) {
+    first_pairing_report(log);
+    init_statuses(u, log);
+    first_step_ = false;
+  }
+}
+
+ContactSnapshot ContactProblem::snapshot() const {
+  ContactSnapshot s;
+  s.first_step = first_step_;
+  s.active.reserve(points_.size());
+  for (const auto& p : points_) s.active.push_back(p.active);
+  return s;
+}
+
+void ContactProblem::restore(const ContactSnapshot& state) {
+  if (state.active.size() != points_.size()) return;  // a snapshot of nothing (taken before add_dofs)
+  first_step_ = state.first_step;
+  for (size_t i = 0; i < points_.size(); ++i) points_[i].active = state.active[i] != 0;
+}
+
+bool ContactProblem::settle(const Vector& u, const Log& log) {
+  // Status loop (inside the geometry loop, as code_aster's fixed points).
+  const int changed = update_statuses(u);
+  if (changed > 0) {
+    ++n_status_iter_;
+    std::ostringstream msg;
+    msg << "contact: " << changed << " status change(s), status iteration " << n_status_iter_;
+    log.info(msg.str());
+    if (n_status_iter_ > def_.iter_cont_maxi)
+      throw ConvergenceError("contact status loop did not settle after " + std::to_string(def_.iter_cont_maxi) +
+                                 " iterations (ITER_CONT_MAXI): " + std::to_string(changed) +
+                                 " contact point(s) still change status",
+                             {"points cycling between contact and no contact: try ALGO_RESO_CONT='NEWTON', "
+                              "a different COEF_CONT, or a finer/compatible mesh"});
+    return false;
+  }
+  if (def_.geometry_loop == FixedPointOrNewton::Newton) return true;  // paired at every iteration
+  switch (def_.reac_geom) {
+    case GeometryUpdate::None: return true;
+    case GeometryUpdate::Controlled:
+      if (n_pairings_ >= def_.nb_iter_geom) return true;
+      break;
+    case GeometryUpdate::Automatic: {
+      const double resi = geometric_residual(u);
+      std::ostringstream msg;
+      msg << "contact: geometric residual " << resi << " (RESI_GEOM " << def_.resi_geom << ")";
+      log.info(msg.str());
+      if (resi <= def_.resi_geom) return true;
+      if (n_geom_iter_ >= def_.iter_geom_maxi)
+        throw ConvergenceError("contact geometry loop did not converge after " + std::to_string(def_.iter_geom_maxi) +
+                                   " iterations (ITER_GEOM_MAXI): geometric residual " + std::to_string(resi) +
+                                   " > RESI_GEOM " + std::to_string(def_.resi_geom),
+                               {"increase ITER_GEOM_MAXI, use smaller load increments or ALGO_RESO_GEOM='NEWTON'"});
+      break;
+    }
+  }
+  ++n_geom_iter_;
+  n_status_iter_ = 0;
+  pair_and_record(u);
+  log.info("contact: new pairing (geometry iteration " + std::to_string(n_geom_iter_) + ")");
+  return false;
+}
+
+void ContactProblem::add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) {
+  if (def_.geometry_loop == FixedPointOrNewton::Newton) pair(u);
+  if (statuses_in_newton())
+    for (auto& p : points_) p.active = p.paired && law_->status(multiplier(u, p), p.gap.value(u), rho(p.zone));
+  relations_.add_to_system(dofs_, u, tangent, residual);
+  const bool condensed = !coupled();
+  // The points of a slave cell are consecutive and share their DOFs: their terms are
+  // summed per cell and emitted once.
+  LocalTangent local;
+  int group = -1;
+  int leq[8];
+  for (size_t i = 0; i < points_.size(); ++i) {
+    const ContactPoint& p = points_[i];
+    const int key = p.slave_cell >= 0 ? p.slave_cell : -2 - static_cast<int>(i);
+    if (key != group) local.flush(tangent), group = key;
+    if (p.wjac == 0.0) continue;  // unpaired inactive points still hold their multiplier rows
+    const PointCoefficients c = law_->coefficients(p, rho(p.zone));
+    const double lambda = multiplier(u, p);
+    const double g = p.gap.value(u);
+    if (c.alpha != 0.0 || c.beta != 0.0) add_gradient(p.gap, c.alpha * lambda + c.beta * g, residual);
+    if (c.beta != 0.0) local.add_outer(p.gap, p.gap, c.beta);
+    if (multiplier_nodes_.empty()) continue;
+    for (int a = 0; a < p.n_slave; ++a) leq[a] = dofs_.dof(p.slave_nodes[a], LAGS_C);
+    for (int a = 0; a < p.n_slave; ++a) residual[leq[a]] += p.phi[a] * (c.sigma * g - c.kappa * lambda);
+    if (condensed) continue;  // the multiplier rows are solved in recover()
+    for (int a = 0; a < p.n_slave; ++a) {
+      if (c.kappa != 0.0)
+        for (int b = 0; b < p.n_slave; ++b) local.add(leq[a], leq[b], -c.kappa * p.phi[a] * p.phi[b]);
+      for (int k = 0; k < p.gap.n; ++k) {
+        if (c.sigma != 0.0) local.add(leq[a], p.gap.eq[k], c.sigma * p.phi[a] * p.gap.coef[k]);
+        if (c.alpha != 0.0) local.add(p.gap.eq[k], leq[a], c.alpha * p.phi[a] * p.gap.coef[k]);
+      }
+    }
+  }
+  local.flush(tangent);
+}
+
+void ContactProblem::recover(Vector& u) {
+  if (multiplier_nodes_.empty() || coupled()) return;
+  Recovery& r = *recovery_;
+  const int n_mult = static_cast<int>(multiplier_nodes_.size());
+  std::vector<int> index_of_eq;  // LAGS_C equation -> multiplier index
+  auto mult_index = [&](int eq) {
+    return static_cast<int>(std::lower_bound(multiplier_eqs_.begin(), multiplier_eqs_.end(), eq) - multiplier_eqs_.begin());
+  };
+  std::vector<int> eqs(8);
+  if (!r.ready) {
+    // kappa depends on the weights only (not on the statuses): one factorisation per pairing.
+    std::vector<Triplet> t;
+    std::vector<char> touched(n_mult, 0);
+    for (const auto& p : points_) {
+      if (p.wjac == 0.0) continue;
+      const double kappa = law_->coefficients(p, rho(p.zone)).kappa;
+      for (int a = 0; a < p.n_slave; ++a) {
+        const int ia = mult_index(dofs_.dof(p.slave_nodes[a], LAGS_C));
+        touched[ia] = 1;
+        for (int b = 0; b < p.n_slave; ++b)
+          t.emplace_back(ia, mult_index(dofs_.dof(p.slave_nodes[b], LAGS_C)), kappa * p.phi[a] * p.phi[b]);
+      }
+    }
+    r.local.assign(n_mult, -1);
+    int n_local = 0;
+    for (int i = 0; i < n_mult; ++i)
+      if (touched[i]) r.local[i] = n_local++;
+    for (auto& x : t) x = Triplet(r.local[x.row()], r.local[x.col()], x.value());
+    r.m = SparseMatrix(n_local, n_local);
+    r.m.setFromTriplets(t.begin(), t.end());
+    r.ldlt.compute(r.m);
+    if (r.ldlt.info() != Eigen::Success)
+      throw InternalError("contact: the multiplier recovery matrix could not be factorised");
+    r.ready = true;
+  }
+  Vector b = Vector::Zero(r.m.rows());
+  for (const auto& p : points_) {
+    if (!p.paired || p.wjac == 0.0) continue;
+    const double sigma = law_->coefficients(p, rho(p.zone)).sigma;
+    if (sigma == 0.0) continue;
+    const double g = p.gap.value(u);
+    for (int a = 0; a < p.n_slave; ++a) b[r.local[mult_index(dofs_.dof(p.slave_nodes[a], LAGS_C))]] += sigma * g * p.phi[a];
+  }
+  const Vector lambda = r.ldlt.solve(b);
+  for (int i = 0; i < n_mult; ++i) u[multiplier_eqs_[i]] = r.local[i] >= 0 ? lambda[r.local[i]] : 0.0;
+}
+
+void ContactProblem::write_fields(const Vector& u, ResultStep& step) const {
+  std::vector<std::string> cmps = {"CONT", "JEU", "RN", "RNX", "RNY"};
+  if (dim_ == 3) cmps.push_back("RNZ");
+  const bool nodal = disc_->nodal();
+  if (nodal) cmps.push_back("PRES");
+  NodalField field(cmps, mesh_.n_nodes());
+  // Nodal contact forces on the slave nodes: f_a = -sum w p phi_a n over the active points.
+  std::vector<double> force(3 * static_cast<size_t>(mesh_.n_nodes()), 0.0);
+  for (const auto& p : points_) {
+    if (!p.active) continue;
+    const double pressure = law_->pressure(p, multiplier(u, p), p.gap.value(u), rho(p.zone));
+    for (int a = 0; a < p.n_slave; ++a)
+      for (int k = 0; k < 3; ++k)
+        force[3 * static_cast<size_t>(p.slave_nodes[a]) + k] -= p.wjac * pressure * p.phi[a] * p.normal[k];
+  }
+  auto set_force = [&](int node) {
+    const double* f = &force[3 * static_cast<size_t>(node)];
+    field.set(node, 2, std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]));
+    for (int k = 0; k < dim_; ++k) field.set(node, 3 + k, f[k]);
+  };
+  if (nodal) {
+    // One point per slave node: its status, frozen-pairing gap and pressure.
+    const int pres = static_cast<int>(cmps.size()) - 1;
+    for (const auto& p : points_) {
+      const int node = p.slave_nodes[0];
+      const double g = p.paired ? p.gap.value(u) : 0.0;
+      field.set(node, 0, p.active ? 1.0 : 0.0);
+      field.set(node, 1, g);
+      set_force(node);
+      field.set(node, pres, p.active ? law_->pressure(p, multiplier(u, p), g, rho(p.zone)) : 0.0);
+    }
+    step.nodal["CONT_NOEU"] = std::move(field);
+    return;
+  }
+  // Integration points: each slave node projected on the master surface in the current configuration.
+  const std::vector<double> xyz = current_coordinates(u);
+  std::vector<std::unique_ptr<MasterSurface>> current;
+  for (const auto& m : masters_) {
+    current.push_back(std::make_unique<MasterSurface>(*m));
+    current.back()->update(xyz);
+  }
+  std::vector<int> zone_of(mesh_.n_nodes(), -1);
+  for (const auto& p : points_)
+    for (int a = 0; a < p.n_slave; ++a) zone_of[p.slave_nodes[a]] = p.zone;
+  for (int node : multiplier_nodes_) {
+    const int z = zone_of[node];
+    const MasterProjection mp = current[z]->project(&xyz[3 * static_cast<size_t>(node)], def_.zones[z].tole_proj_ext);
+    double gap = 0.0;
+    if (mp.found)
+      for (int k = 0; k < 3; ++k) gap += (xyz[3 * static_cast<size_t>(node) + k] - mp.x[k]) * mp.normal[k];
+    const double lambda = u[dofs_.dof(node, LAGS_C)];
+    field.set(node, 0, mp.found && law_->status(lambda, gap, rho(z)) ? 1.0 : 0.0);
+    field.set(node, 1, gap);
+    set_force(node);
+  }
+  step.nodal["CONT_NOEU"] = std::move(field);
+}
+
+}  // namespace lunaster::engine::contact

@@ -1,0 +1,104 @@
+#pragma once
+/// The shared part of every contact method: a discretisation (where the conditions
+/// live, discretisation.hpp) times a law (how they are enforced, contact_law.hpp).
+/// Here, once for all methods: LAGS_C and linear-relation unknowns, pairing with the
+/// master surface, initial statuses (CONTACT_INIT), the status and geometry
+/// fixed-point loops, assembly of the point terms, condensation of multipliers that
+/// no active point couples to the displacements, the first-pairing report, and the
+/// CONT_NOEU field.
+///
+/// Conventions: gap g > 0 open (linear_gap.hpp); LAGS_C is the normal traction on the
+/// slave, negative in compression (code_aster's user-visible sign).
+#include <memory>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "engine/assembly/linear_relations.hpp"
+#include "engine/contact/contact_definition.hpp"
+#include "engine/contact/contact_law.hpp"
+#include "engine/contact/discretisation.hpp"
+#include "engine/contact/master_search.hpp"
+#include "engine/nonlinear/contact_hook.hpp"
+
+namespace lunaster::engine::contact {
+
+class ContactProblem final : public ContactHook {
+ public:
+  ContactProblem(const ContactDefinition& definition, const Mesh& mesh, int dim,
+                 std::unique_ptr<Discretisation> discretisation, std::unique_ptr<ContactLaw> law);
+
+  void set_dirichlet(const std::vector<DirichletValue>& dirichlet) override;
+  void add_dofs(DofMap& dofs) override;
+  void begin_step(const Vector& u, const Log& log) override;
+  void add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) override;
+  const std::vector<int>& condensed_equations() const override;
+  void recover(Vector& u) override;
+  bool settle(const Vector& u, const Log& log) override;
+  MatrixKind matrix_kind() const override;
+  int n_active() const override;
+  void write_fields(const Vector& u, ResultStep& step) const override;
+  ContactSnapshot snapshot() const override;
+  void restore(const ContactSnapshot& state) override;
+
+  // ---- inspection (tests, reports) ----
+  const std::vector<ContactPoint>& points() const { return points_; }
+  /// Nodes carrying LAGS_C (sorted); empty for a law without multipliers.
+  const std::vector<int>& multiplier_nodes() const { return multiplier_nodes_; }
+  const LinearRelations& relations() const { return relations_; }
+  /// Pressure interpolated at a point from LAGS_C (0 without multipliers).
+  double multiplier(const Vector& u, const ContactPoint& p) const;
+  /// Forces the statuses of the paired points (tests).
+  void set_all_active(bool active);
+  /// With false, multipliers are never condensed out: the tangent holds every row (tests).
+  void allow_condensation(bool allow) { allow_condensation_ = allow; }
+  int n_status_iterations() const { return n_status_iter_; }
+  int n_pairings() const { return n_pairings_; }
+
+ private:
+  double rho(int zone) const { return rho_[zone]; }
+  /// True when an active point couples LAGS_C to the displacements (no condensation).
+  bool coupled() const;
+  std::vector<double> current_coordinates(const Vector& u) const;
+  void pair(const Vector& u);
+  void pair_and_record(const Vector& u);
+  double geometric_residual(const Vector& u) const;
+  void init_statuses(const Vector& u, const Log& log);
+  int update_statuses(const Vector& u);
+  void first_pairing_report(const Log& log) const;
+  bool statuses_in_newton() const;
+
+  const ContactDefinition def_;
+  const Mesh& mesh_;
+  const int dim_;
+  std::unique_ptr<Discretisation> disc_;
+  std::unique_ptr<ContactLaw> law_;
+  std::vector<std::unique_ptr<MasterSurface>> masters_;  ///< one per zone
+  std::vector<ContactPoint> points_;
+  std::vector<int> multiplier_nodes_;
+  std::vector<int> multiplier_eqs_;  ///< LAGS_C equation per multiplier node
+  std::vector<int> geometry_nodes_;
+  std::vector<double> min_edge_;     ///< per zone, smallest slave edge (m)
+  std::vector<double> rho_;          ///< per zone, the law's coefficient
+  LinearRelations relations_;
+  std::set<std::pair<int, int>> imposed_;  ///< (node, component) under Dirichlet conditions
+  DofMap dofs_;
+
+  // Condensed multipliers: (sum kappa phi phi^T) LAGS_C = sum sigma g phi, factorised once per pairing.
+  struct Recovery;
+  std::shared_ptr<Recovery> recovery_;
+
+  Vector u_at_pairing_;
+  bool first_step_ = true;
+  bool allow_condensation_ = true;
+  int n_status_iter_ = 0, n_geom_iter_ = 0, n_pairings_ = 0;
+};
+
+/// "M12" or "#11" when the mesh has no names.
+std::string cell_label(const Mesh& mesh, int cell);
+/// "N5" or "#4".
+std::string node_label(const Mesh& mesh, int node);
+/// Smallest vertex-to-vertex edge length of surface cells (m).
+double smallest_edge(const Mesh& mesh, const std::vector<int>& cells);
+
+}  // namespace lunaster::engine::contact

@@ -1,0 +1,42 @@
+/// Integration-point discretisation of the continuous formulation: the points of an
+/// integration rule on each slave cell (discretisation.hpp).
+#include <algorithm>
+
+#include "engine/contact/discretisation.hpp"
+#include "engine/contact/integration_rules.hpp"
+#include "engine/contact/surface_element.hpp"
+
+namespace lunaster::engine::contact {
+
+namespace {
+
+class IntegrationPoints final : public Discretisation {
+ public:
+  bool linear_master() const override { return false; }
+  bool nodal() const override { return false; }
+  bool weight_follows_geometry() const override { return true; }
+
+  void build_points(const Mesh& mesh, int /*dim*/, int z, const ContactZone& zone,
+                    std::vector<ContactPoint>& points) override {
+    for (int c : zone.slave_cells) {
+      const CellType t = mesh.cell_types[c];
+      for (const auto& q : contact_integration_rule(t, zone.integration, zone.integration_order, zone.sub_elements)) {
+        ContactPoint p;
+        p.zone = z;
+        p.slave_cell = c;
+        p.xi[0] = q.xi[0], p.xi[1] = q.xi[1];
+        p.weight = q.weight;
+        p.n_slave = surface_n_nodes(t);
+        std::copy(mesh.cell(c), mesh.cell(c) + p.n_slave, p.slave_nodes);
+        surface_shape(t, p.xi, p.phi, nullptr, nullptr);
+        points.push_back(p);
+      }
+    }
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Discretisation> make_integration_points() { return std::make_unique<IntegrationPoints>(); }
+
+}  // namespace lunaster::engine::contact

@@ -1,0 +1,61 @@
+#pragma once
+/// The contact algorithm as the Newton driver (static_solver.hpp) sees it.
+/// Implemented in engine/contact (contact_problem.hpp); the driver knows no
+/// contact method, only this interface.
+#include <vector>
+
+#include "engine/assembly/dof_map.hpp"
+#include "engine/core/log.hpp"
+#include "engine/fields/fields.hpp"
+#include "engine/nonlinear/loads.hpp"
+#include "engine/solver/linear_solver.hpp"
+
+namespace lunaster::engine {
+
+/// Contact state at the start of a step: the statuses, and whether the first
+/// pairing of the run is still to come. Restored when a failed step is split,
+/// so that the sub-steps start from the state of the step, not from the
+/// diverged attempt.
+struct ContactSnapshot {
+  std::vector<char> active;
+  bool first_step = true;
+};
+
+class ContactHook {
+ public:
+  virtual ~ContactHook() = default;
+  /// The Dirichlet conditions of the run, once, before add_dofs (a hook that ties
+  /// unknowns together skips the relations these already impose).
+  virtual void set_dirichlet(const std::vector<DirichletValue>& /*dirichlet*/) {}
+  /// Adds contact unknowns (LAGS_C ...) to the numbering, once, before any step.
+  virtual void add_dofs(DofMap& dofs) = 0;
+  /// Start of an instant, with the converged displacement of the previous one.
+  virtual void begin_step(const Vector& u, const Log& log) = 0;
+  /// Adds the contact tangent and residual at iterate u (residual = internal - external).
+  /// Rows and columns of `condensed_equations()` in the tangent are ignored by the driver.
+  virtual void add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) = 0;
+  /// Unknowns the hook eliminates from the next linear solve (valid after add_to_system):
+  /// the driver solves for the others and then calls `recover`. Empty: none.
+  virtual const std::vector<int>& condensed_equations() const { return no_equations_; }
+  /// After a linear solve that left out `condensed_equations()`, sets those unknowns in u
+  /// from the other (updated) ones.
+  virtual void recover(Vector& /*u*/) {}
+  /// Called when Newton converged with the current statuses/geometry frozen.
+  /// Updates statuses and pairing; returns true when nothing changed (settled).
+  virtual bool settle(const Vector& u, const Log& log) = 0;
+  /// Kind of the system solved with the current statuses (after condensation).
+  virtual MatrixKind matrix_kind() const = 0;
+  /// Number of contact points (or slave nodes) currently active. With none, the
+  /// bodies must be held by Dirichlet conditions alone: the driver checks it.
+  virtual int n_active() const = 0;
+  /// Stores contact results (LAGS_C in DEPL is already in u; CONT_NOEU ...).
+  virtual void write_fields(const Vector& u, ResultStep& step) const = 0;
+  /// State at the start of a step, and its restoration (step subdivision).
+  virtual ContactSnapshot snapshot() const { return {}; }
+  virtual void restore(const ContactSnapshot& /*state*/) {}
+
+ private:
+  const std::vector<int> no_equations_;
+};
+
+}  // namespace lunaster::engine

@@ -1,0 +1,23 @@
+#pragma once
+/// What is imposed on a mechanical model, in engine terms (filled by commands/).
+#include <functional>
+#include <vector>
+
+namespace lunaster::engine {
+
+/// Imposed value of one displacement component; `load` indexes the multiplier.
+struct DirichletValue { int node; int component; double value; int load; };
+/// Pressure on boundary cells (PRES_REP), Pa.
+struct PressureLoad { std::vector<int> cells; double pressure; int load; };
+/// Nodal force (FORCE_NODALE), N.
+struct NodalForce { int node; int component; double value; int load; };
+
+/// Everything imposed on the model; value(t) = value * multipliers[load](t).
+struct MechanicalLoads {
+  std::vector<DirichletValue> dirichlet;
+  std::vector<PressureLoad> pressures;
+  std::vector<NodalForce> forces;
+  std::vector<std::function<double(double)>> multipliers;  ///< one per load index
+};
+
+}  // namespace lunaster::engine

@@ -1,0 +1,119 @@
+// The shared contact part (ContactProblem): condensation of multipliers that no active
+// point couples to the displacements, their recovery after the solve, and the snapshot
+// of statuses that a split step starts from. Solves go through the production driver.
+#include <cmath>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "engine/contact/contact_problem.hpp"
+#include "two_blocks.hpp"
+
+using namespace contact_test;
+using lunaster::engine::contact::ContactProblem;
+
+namespace {
+
+lunaster::Log quiet_log() {
+  static std::ostringstream sink;
+  return lunaster::Log(sink, 0);
+}
+
+std::vector<Imposed> squeeze(const TwoBlocks& tb) {
+  std::vector<Imposed> bcs;
+  for (int n : tb.cd_nodes) bcs.push_back({n, DX, 0.0}), bcs.push_back({n, DY, -0.1});
+  for (int n : tb.gh_nodes) bcs.push_back({n, DX, 0.0}), bcs.push_back({n, DY, 0.0});
+  return bcs;
+}
+
+ContactDefinition definition(const TwoBlocks& tb, ContactMethod method, ContactInit init) {
+  ContactDefinition def;
+  def.method = method;
+  def.reac_geom = GeometryUpdate::Controlled;
+  def.nb_iter_geom = 2;
+  ContactZone z;
+  z.slave_cells = tb.ab;
+  z.master_cells = tb.ef;
+  z.integration = IntegrationScheme::Simpson;
+  z.integration_order = 4;
+  z.coef_cont = 1000.0;
+  z.coef_pena = 1e9;
+  z.init = init;
+  def.zones.push_back(z);
+  return def;
+}
+
+std::unique_ptr<ContactProblem> problem(const ContactDefinition& def, const Mesh& mesh, bool condense) {
+  std::unique_ptr<ContactProblem> p(dynamic_cast<ContactProblem*>(make_contact_hook(def, mesh, 2).release()));
+  p->allow_condensation(condense);
+  return p;
+}
+
+}  // namespace
+
+TEST(ContactCondensation, PenaltySolvesAnSpdSystemAndRecoversTheSameLagsC) {
+  const TwoBlocks tb = make_two_blocks(12, 11, false);
+  const FeModel model = make_model(tb.mesh, 2e6, 0.0);
+  const ContactDefinition def = definition(tb, ContactMethod::ContinuousPenalty, ContactInit::No);
+  auto condensed = problem(def, tb.mesh, true);
+  auto full = problem(def, tb.mesh, false);
+  const SolveResult a = solve(model, squeeze(tb), {}, *condensed, quiet_log());
+  const SolveResult b = solve(model, squeeze(tb), {}, *full, quiet_log());
+  // Penalty never couples LAGS_C into the displacement equations: always condensed, SPD.
+  EXPECT_EQ(condensed->matrix_kind(), MatrixKind::SymmetricPositiveDefinite);
+  EXPECT_EQ(condensed->condensed_equations().size(), condensed->multiplier_nodes().size());
+  EXPECT_EQ(full->matrix_kind(), MatrixKind::SymmetricIndefinite);
+  EXPECT_TRUE(full->condensed_equations().empty());
+  // The same answer either way, to round-off, on every unknown (LAGS_C included).
+  ASSERT_EQ(a.u.size(), b.u.size());
+  double lags_max = 0.0;
+  for (int node : condensed->multiplier_nodes()) lags_max = std::max(lags_max, std::abs(lags_c(a, node)));
+  EXPECT_GT(lags_max, 5e4);  // the blocks are pressed together
+  for (int eq = 0; eq < a.u.size(); ++eq) {
+    const double scale = a.dofs.component_of(eq) == LAGS_C ? lags_max : 0.1;
+    EXPECT_NEAR(a.u[eq], b.u[eq], 1e-9 * scale) << "equation " << eq;
+  }
+  // The recovered multipliers satisfy their own rows.
+  Vector r = Vector::Zero(a.u.size());
+  std::vector<Triplet> unused;
+  condensed->add_to_system(a.u, unused, r);
+  for (int node : condensed->multiplier_nodes())
+    EXPECT_NEAR(r[a.dofs.dof(node, LAGS_C)], 0.0, 1e-10 * lags_max) << "LAGS_C row of node " << node;
+}
+
+TEST(ContactCondensation, AugmentedLagrangianIsCondensedOnlyWhileNoPointIsActive) {
+  const TwoBlocks tb = make_two_blocks(4, 3, false);
+  auto p = problem(definition(tb, ContactMethod::Continuous, ContactInit::No), tb.mesh, true);
+  DofMap dofs(tb.mesh, make_model(tb.mesh, 2e6, 0.0).volume_cells(), 2);
+  p->add_dofs(dofs);
+  p->begin_step(Vector::Zero(dofs.n_dofs()), quiet_log());
+  EXPECT_EQ(p->n_active(), 0);
+  EXPECT_EQ(p->matrix_kind(), MatrixKind::SymmetricPositiveDefinite);
+  EXPECT_EQ(p->condensed_equations().size(), p->multiplier_nodes().size());
+  p->set_all_active(true);
+  EXPECT_GT(p->n_active(), 0);
+  EXPECT_EQ(p->matrix_kind(), MatrixKind::SymmetricIndefinite);
+  EXPECT_TRUE(p->condensed_equations().empty());
+}
+
+TEST(ContactSnapshot, RestoresTheStatusesOfTheStepStart) {
+  const TwoBlocks tb = make_two_blocks(4, 3, false);
+  auto p = problem(definition(tb, ContactMethod::Continuous, ContactInit::Yes), tb.mesh, true);
+  DofMap dofs(tb.mesh, make_model(tb.mesh, 2e6, 0.0).volume_cells(), 2);
+  p->add_dofs(dofs);
+  const ContactSnapshot before_first = p->snapshot();  // nothing paired yet
+  p->begin_step(Vector::Zero(dofs.n_dofs()), quiet_log());
+  const int active = p->n_active();
+  ASSERT_GT(active, 0);
+  const ContactSnapshot start = p->snapshot();
+  p->set_all_active(false);
+  EXPECT_EQ(p->n_active(), 0);
+  p->restore(start);
+  EXPECT_EQ(p->n_active(), active);
+  // Restoring the state from before the first pairing makes the next step apply
+  // CONTACT_INIT again (here 'OUI': every paired point active).
+  p->set_all_active(false);
+  p->restore(before_first);
+  p->begin_step(Vector::Zero(dofs.n_dofs()), quiet_log());
+  EXPECT_EQ(p->n_active(), active);
+}
