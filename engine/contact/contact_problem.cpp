@@ -107,6 +107,12 @@ void ContactProblem::set_all_active(bool active) {
   for (auto& p : points_) p.active = active && p.paired;
 }
 
+unsigned long long ContactProblem::status_key() const {
+  unsigned long long h = 1469598103934665603ULL;  // FNV-1a over the statuses
+  for (const auto& p : points_) h = (h ^ static_cast<unsigned long long>(p.active)) * 1099511628211ULL;
+  return h;
+}
+
 int ContactProblem::n_active() const {
   return static_cast<int>(std::count_if(points_.begin(), points_.end(), [](const auto& p) { return p.active; }));
 }
@@ -149,6 +155,7 @@ void ContactProblem::pair(const Vector& u) {
   const std::vector<double> xyz = current_coordinates(u);
   for (auto& m : masters_) m->update(xyz);
   recovery_->ready = false;
+  ++pattern_version_;
   double slave_xyz[3 * kMaxSurfaceNodes];
   for (auto& p : points_) {
     double x[3];
@@ -335,17 +342,19 @@ void ContactProblem::add_to_system(const Vector& u, std::vector<Triplet>& tangen
     const double lambda = multiplier(u, p);
     const double g = p.gap.value(u);
     if (c.alpha != 0.0 || c.beta != 0.0) add_gradient(p.gap, c.alpha * lambda + c.beta * g, residual);
-    if (c.beta != 0.0) local.add_outer(p.gap, p.gap, c.beta);
+    // Every entry the pairing allows is emitted, zeros included (flush emits the whole block):
+    // the pattern then depends on the pairing only, not on the statuses.
+    local.add_outer(p.gap, p.gap, c.beta);
     if (multiplier_nodes_.empty()) continue;
     for (int a = 0; a < p.n_slave; ++a) leq[a] = dofs_.dof(p.slave_nodes[a], LAGS_C);
     for (int a = 0; a < p.n_slave; ++a) residual[leq[a]] += p.phi[a] * (c.sigma * g - c.kappa * lambda);
-    if (condensed) continue;  // the multiplier rows are solved in recover()
+    // Condensed: the multiplier rows are solved in recover(); their entries stay zero here.
+    const double on = condensed ? 0.0 : 1.0;
     for (int a = 0; a < p.n_slave; ++a) {
-      if (c.kappa != 0.0)
-        for (int b = 0; b < p.n_slave; ++b) local.add(leq[a], leq[b], -c.kappa * p.phi[a] * p.phi[b]);
+      for (int b = 0; b < p.n_slave; ++b) local.add(leq[a], leq[b], -on * c.kappa * p.phi[a] * p.phi[b]);
       for (int k = 0; k < p.gap.n; ++k) {
-        if (c.sigma != 0.0) local.add(leq[a], p.gap.eq[k], c.sigma * p.phi[a] * p.gap.coef[k]);
-        if (c.alpha != 0.0) local.add(p.gap.eq[k], leq[a], c.alpha * p.phi[a] * p.gap.coef[k]);
+        local.add(leq[a], p.gap.eq[k], on * c.sigma * p.phi[a] * p.gap.coef[k]);
+        local.add(p.gap.eq[k], leq[a], on * c.alpha * p.phi[a] * p.gap.coef[k]);
       }
     }
   }

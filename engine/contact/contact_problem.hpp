@@ -36,6 +36,8 @@ class ContactProblem final : public ContactHook {
   void recover(Vector& u) override;
   bool settle(const Vector& u, const Log& log) override;
   MatrixKind matrix_kind() const override;
+  long pattern_version() const override { return pattern_version_; }
+  unsigned long long status_key() const override;
   int n_active() const override;
   void write_fields(const Vector& u, ResultStep& step) const override;
   ContactSnapshot snapshot() const override;
@@ -91,6 +93,7 @@ class ContactProblem final : public ContactHook {
   Vector u_at_pairing_;
   bool first_step_ = true;
   bool allow_condensation_ = true;
+  long pattern_version_ = 0;
   int n_status_iter_ = 0, n_geom_iter_ = 0, n_pairings_ = 0;
 };
 

@@ -49,10 +49,14 @@ int LocalTangent::index(int eq) {
   if (n == stride_) {  // grow, keeping the entries already summed
     const int stride = std::max(64, 2 * stride_);
     std::vector<double> dense(static_cast<size_t>(stride) * stride, 0.0);
-    for (int i = 0; i < n; ++i)
-      std::copy(dense_.begin() + static_cast<size_t>(i) * stride_, dense_.begin() + static_cast<size_t>(i) * stride_ + n,
-                dense.begin() + static_cast<size_t>(i) * stride);
+    std::vector<char> touched(static_cast<size_t>(stride) * stride, 0);
+    for (int i = 0; i < n; ++i) {
+      const size_t from = static_cast<size_t>(i) * stride_, to = static_cast<size_t>(i) * stride;
+      std::copy(dense_.begin() + from, dense_.begin() + from + n, dense.begin() + to);
+      std::copy(touched_.begin() + from, touched_.begin() + from + n, touched.begin() + to);
+    }
     dense_.swap(dense);
+    touched_.swap(touched);
     stride_ = stride;
   }
   eqs_.push_back(eq);
@@ -66,8 +70,9 @@ void LocalTangent::add_outer(const LinearGap& a, const LinearGap& b, double fact
   for (int j = 0; j < b.n; ++j) ib[j] = index(b.eq[j]);
   for (int i = 0; i < a.n; ++i) {
     double* row = dense_.data() + static_cast<size_t>(ia[i]) * stride_;
+    char* mark = touched_.data() + static_cast<size_t>(ia[i]) * stride_;
     const double fa = factor * a.coef[i];
-    for (int j = 0; j < b.n; ++j) row[ib[j]] += fa * b.coef[j];
+    for (int j = 0; j < b.n; ++j) row[ib[j]] += fa * b.coef[j], mark[ib[j]] = 1;
   }
 }
 
@@ -75,8 +80,9 @@ void LocalTangent::flush(std::vector<Triplet>& tangent) {
   const int n = static_cast<int>(eqs_.size());
   for (int i = 0; i < n; ++i) {
     double* row = dense_.data() + static_cast<size_t>(i) * stride_;
+    char* mark = touched_.data() + static_cast<size_t>(i) * stride_;
     for (int j = 0; j < n; ++j)
-      if (row[j] != 0.0) tangent.emplace_back(eqs_[i], eqs_[j], row[j]), row[j] = 0.0;
+      if (mark[j]) tangent.emplace_back(eqs_[i], eqs_[j], row[j]), row[j] = 0.0, mark[j] = 0;
   }
   for (int eq : eqs_) pos_[eq] = -1;
   eqs_.clear();

@@ -52,10 +52,15 @@ void add_gradient(const LinearGap& g, double factor, Vector& residual);
 class LocalTangent {
  public:
   /// tangent(row, col) += v, equations numbered as in the assembled system.
-  void add(int row, int col, double v) { dense_[index(row) * stride_ + index(col)] += v; }
+  void add(int row, int col, double v) {
+    const size_t k = static_cast<size_t>(index(row)) * stride_ + index(col);
+    dense_[k] += v;
+    touched_[k] = 1;
+  }
   /// tangent += factor * a b^T.
   void add_outer(const LinearGap& a, const LinearGap& b, double factor);
-  /// Appends the nonzero entries to `tangent` and empties the accumulator.
+  /// Appends every entry that add/add_outer touched, zeros included (the pattern then
+  /// depends on which terms were added, not on their values), and empties the accumulator.
   void flush(std::vector<Triplet>& tangent);
 
  private:
@@ -63,6 +68,7 @@ class LocalTangent {
   std::vector<int> eqs_;            ///< equations of the local rows/columns, in order of arrival
   std::vector<int> pos_;            ///< equation -> local index, -1 when absent (sized on demand)
   std::vector<double> dense_;  ///< stride_ x stride_, row-major
+  std::vector<char> touched_;  ///< same layout: entry added to since the last flush
   int stride_ = 0;
 };
 

@@ -67,6 +67,28 @@ double distance_at(CellType type, const double* xyz, const double* point, const 
   return std::sqrt(dot3(d, d));
 }
 
+/// True when x(xi) is affine on the cell: straight-sided triangles and segments,
+/// parallelograms, with every mid-side node at the middle of its edge. The distance to a
+/// point then has one stationary point in the whole reference plane, so the Newton
+/// iteration from the centre needs no other start.
+bool affine_geometry(CellType type, const double* xyz) {
+  const int nv = surface_n_vertices(type), nn = surface_n_nodes(type);
+  double scale = 0.0;
+  for (int a = 1; a < nv; ++a)
+    for (int i = 0; i < 3; ++i) scale = std::max(scale, std::abs(xyz[3 * a + i] - xyz[i]));
+  const double tol = 1e-12 * scale;
+  if (nv == 4)  // parallelogram: x1 + x3 = x2 + x4
+    for (int i = 0; i < 3; ++i)
+      if (std::abs(xyz[i] + xyz[6 + i] - xyz[3 + i] - xyz[9 + i]) > tol) return false;
+  const int n_edges = nv == 2 ? 1 : nv;
+  for (int e = 0; e < n_edges && nv + e < nn; ++e) {
+    const int a = e, b = (e + 1) % nv, m = nv + e;
+    for (int i = 0; i < 3; ++i)
+      if (std::abs(xyz[3 * m + i] - 0.5 * (xyz[3 * a + i] + xyz[3 * b + i])) > tol) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 CellProjection project_on_cell(CellType type, const double* xyz, const double* point) {
@@ -90,8 +112,9 @@ CellProjection project_on_cell(CellType type, const double* xyz, const double* p
       best.xi[0] = xi[0], best.xi[1] = xi[1], best.outside = out, best.converged = true;
     }
     // From the centre: inside is unique for the cell types used; more than one reference
-    // units outside, a start at a node cannot bring the foot back into the cell.
-    if (start < 0 && (out == 0.0 || out > 2.0)) break;
+    // units outside, a start at a node cannot bring the foot back into the cell; on an
+    // affine cell the stationary point is unique wherever it lies.
+    if (start < 0 && (out == 0.0 || out > 2.0 || affine_geometry(type, xyz))) break;
   }
   return best;
 }

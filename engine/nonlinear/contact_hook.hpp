@@ -32,7 +32,10 @@ class ContactHook {
   /// Start of an instant, with the converged displacement of the previous one.
   virtual void begin_step(const Vector& u, const Log& log) = 0;
   /// Adds the contact tangent and residual at iterate u (residual = internal - external).
-  /// Rows and columns of `condensed_equations()` in the tangent are ignored by the driver.
+  /// The triplets (their number, order and positions; not their values) depend only on
+  /// `pattern_version()`: status changes leave zeros in place, so the driver keeps its
+  /// system pattern and the solvers their analysis. Rows and columns of
+  /// `condensed_equations()` hold zeros; the driver puts a unit diagonal there.
   virtual void add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) = 0;
   /// Unknowns the hook eliminates from the next linear solve (valid after add_to_system):
   /// the driver solves for the others and then calls `recover`. Empty: none.
@@ -43,6 +46,10 @@ class ContactHook {
   /// Called when Newton converged with the current statuses/geometry frozen.
   /// Updates statuses and pairing; returns true when nothing changed (settled).
   virtual bool settle(const Vector& u, const Log& log) = 0;
+  /// Changes whenever the triplets of add_to_system change their positions (a new pairing).
+  virtual long pattern_version() const { return 0; }
+  /// Changes whenever the statuses change (a key, not a count).
+  virtual unsigned long long status_key() const { return 0; }
   /// Kind of the system solved with the current statuses (after condensation).
   virtual MatrixKind matrix_kind() const = 0;
   /// Number of contact points (or slave nodes) currently active. With none, the

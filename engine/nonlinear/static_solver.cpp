@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <limits>
 #include <map>
@@ -11,8 +12,17 @@
 #include "engine/core/error.hpp"
 #include "engine/nonlinear/reduction.hpp"
 #include "engine/nonlinear/rigid_body.hpp"
+#include "engine/solver/krylov.hpp"
 
 namespace lunaster::engine {
+
+/// Dirichlet conditions at one instant, applied by elimination.
+struct Constraints {
+  std::vector<int> free_index;   ///< per equation: index in the reduced system, -1 if constrained
+  std::vector<int> constrained;  ///< constrained equations
+  std::vector<double> values;    ///< imposed value per constrained equation
+  int n_free = 0;
+};
 
 namespace {
 
@@ -43,13 +53,11 @@ std::string sci(double v) {
 /// remaining inaccuracy at its next iteration.
 constexpr double kSolveTolerance = 1e-6;
 
-/// Dirichlet conditions at one instant, applied by elimination.
-struct Constraints {
-  std::vector<int> free_index;   ///< per equation: index in the reduced system, -1 if constrained
-  std::vector<int> constrained;  ///< constrained equations
-  std::vector<double> values;    ///< imposed value per constrained equation
-  int n_free = 0;
-};
+/// GMRES with the previous factorisation as preconditioner (a new pairing, same statuses):
+/// at most this many iterations, to this relative residual, before refactorising.
+constexpr int kKrylovIterations = 30;
+constexpr double kKrylovTolerance = 1e-12;
+
 
 Constraints build_constraints(const DofMap& dofs, const MechanicalLoads& loads, double t, const Mesh& mesh) {
   Constraints c;
@@ -186,6 +194,95 @@ void StaticSolver::advance(double t0, double t1, int level, Vector& u) {
   steps_.push_back(std::move(result));
 }
 
+/// The system of one Newton iteration, K_ff + contact terms restricted to the free
+/// equations, built without a full-size matrix: the elastic part is restricted once per
+/// set of Dirichlet conditions; the pattern (elastic, contact, a diagonal on every free
+/// equation) is built once per contact pattern version, with the position of every
+/// elastic value and contact triplet in it; each iteration then copies the elastic values
+/// and adds the contact ones in place.
+void StaticSolver::update_system(const Constraints& cons, const std::vector<Triplet>& contact,
+                                 const std::vector<int>& condensed) {
+  if (!system_) system_ = std::make_unique<SystemCache>();
+  SystemCache& sys = *system_;
+  const long version = contact_ ? contact_->pattern_version() : 0;
+  const bool new_constraints = !sys.valid || sys.constrained != cons.constrained;
+  if (new_constraints) {
+    sys.k_el = restrict_matrix(k_full_, cons.free_index, cons.n_free);
+    sys.constrained = cons.constrained;
+  }
+  if (new_constraints || version != sys.contact_version || contact.size() != sys.contact_pos.size()) {
+    // Pattern column by column: the elastic rows (sorted) merged with the contact rows of
+    // the column (bucketed, sorted, unique) and the diagonal; no global sort.
+    const int nf = cons.n_free;
+    std::vector<int> start(static_cast<size_t>(nf) + 2, 0), extra;
+    for (const auto& tr : contact) {
+      const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
+      if (i >= 0 && j >= 0) ++start[j + 2];
+    }
+    for (int j = 0; j < nf; ++j) ++start[j + 2];  // the diagonal
+    for (int j = 0; j <= nf; ++j) start[j + 1] += start[j];
+    extra.resize(start[nf + 1]);
+    for (const auto& tr : contact) {
+      const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
+      if (i >= 0 && j >= 0) extra[start[j + 1]++] = i;
+    }
+    for (int j = 0; j < nf; ++j) extra[start[j + 1]++] = j;
+    std::vector<int> outer_new(static_cast<size_t>(nf) + 1, 0), inner_new;
+    inner_new.reserve(static_cast<size_t>(sys.k_el.nonZeros()) + extra.size());
+    const int* el_outer = sys.k_el.outerIndexPtr();
+    const int* el_inner = sys.k_el.innerIndexPtr();
+    for (int j = 0; j < nf; ++j) {
+      int* e0 = extra.data() + start[j];
+      int* e1 = extra.data() + start[j + 1];
+      std::sort(e0, e1);
+      e1 = std::unique(e0, e1);
+      const int* k0 = el_inner + el_outer[j];
+      const int* k1 = el_inner + el_outer[j + 1];
+      while (k0 != k1 || e0 != e1) {
+        int row;
+        if (e0 == e1 || (k0 != k1 && *k0 < *e0)) row = *k0++;
+        else if (k0 == k1 || *e0 < *k0) row = *e0++;
+        else row = *k0++, ++e0;  // in both
+        inner_new.push_back(row);
+      }
+      outer_new[j + 1] = static_cast<int>(inner_new.size());
+    }
+    sys.a = SparseMatrix(nf, nf);
+    sys.a.resizeNonZeros(static_cast<Eigen::Index>(inner_new.size()));
+    std::copy(outer_new.begin(), outer_new.end(), sys.a.outerIndexPtr());
+    std::copy(inner_new.begin(), inner_new.end(), sys.a.innerIndexPtr());
+    const int* outer = sys.a.outerIndexPtr();
+    const int* inner = sys.a.innerIndexPtr();
+    auto position = [&](int i, int j) {
+      return static_cast<int>(std::lower_bound(inner + outer[j], inner + outer[j + 1], i) - inner);
+    };
+    sys.elastic_values.assign(sys.a.nonZeros(), 0.0);
+    for (int j = 0; j < nf; ++j) {  // both columns sorted: one merge per column
+      int k = outer[j];
+      for (int p = el_outer[j]; p < el_outer[j + 1]; ++p) {
+        while (inner[k] < el_inner[p]) ++k;
+        sys.elastic_values[k] = sys.k_el.valuePtr()[p];
+      }
+    }
+    sys.contact_pos.resize(contact.size());
+    for (size_t k = 0; k < contact.size(); ++k) {
+      const int i = cons.free_index[contact[k].row()], j = cons.free_index[contact[k].col()];
+      sys.contact_pos[k] = i >= 0 && j >= 0 ? position(i, j) : -1;
+    }
+    sys.diagonal.resize(cons.n_free);
+    for (int k = 0; k < cons.n_free; ++k) sys.diagonal[k] = position(k, k);
+    sys.contact_version = version;
+    ++sys.pattern;
+    sys.valid = true;
+  }
+  double* values = sys.a.valuePtr();
+  std::copy(sys.elastic_values.begin(), sys.elastic_values.end(), values);
+  for (size_t k = 0; k < contact.size(); ++k)
+    if (sys.contact_pos[k] >= 0) values[sys.contact_pos[k]] += contact[k].value();
+  for (int eq : condensed)
+    if (cons.free_index[eq] >= 0) values[sys.diagonal[cons.free_index[eq]]] = 1.0;
+}
+
 void StaticSolver::solve_instant(double t, Vector& u) {
   const int n = dofs_.n_dofs();
   log_.info("Instant de calcul: " + sci(t));
@@ -243,12 +340,6 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       }
       if (iter == options_.iter_glob_maxi) break;
 
-      auto assemble_watch = std::make_unique<Stopwatch>(stats_.assemble_seconds);
-      // With no contact point active, the bodies must be held by Dirichlet
-      // conditions alone; the indefinite backends would not say when they are
-      // not (round-off hides the zero pivot), so check the elastic part once.
-      // Without contact the same holds for UMFPACK and MUMPS, which return some
-      // solution of a singular but consistent system (a free rigid translation).
       // The system of this iteration: the contact law may condense its multipliers out
       // (then it is SPD), and says which kind of matrix is left.
       const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
@@ -257,52 +348,76 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       // pivoting) beat UMFPACK (LU) on it: SSNP121 A refined 16 times, 3.2 s vs 3.6 s and
       // 376 MB vs 608 MB.
       if (backend == SolverKind::Cholmod && kind != MatrixKind::SymmetricPositiveDefinite) backend = SolverKind::Mumps;
-      auto& solver = solvers_[static_cast<int>(backend)];
-      if (!solver) solver = make_linear_solver(backend);
-      const std::vector<int>& condensed = contact_ ? contact_->condensed_equations() : std::vector<int>{};
-      // Equations of this solve: the free ones less those the contact law condenses.
-      std::vector<int> solve_index;
-      int n_solve = cons.n_free;
-      Vector r_solve;
-      if (condensed.empty()) {
-        r_solve = r_free;
-      } else {
-        solve_index = cons.free_index;
-        for (int eq : condensed) solve_index[eq] = -1;
-        n_solve = 0;
-        for (int eq = 0; eq < n; ++eq)
-          if (solve_index[eq] >= 0) solve_index[eq] = n_solve++;
-        r_solve.resize(n_solve);
-        for (int eq = 0; eq < n; ++eq)
-          if (solve_index[eq] >= 0) r_solve[solve_index[eq]] = residual[eq];
-      }
-      const std::vector<int>& index = condensed.empty() ? cons.free_index : solve_index;
-      if (!rigid_checked_ && (contact_ ? contact_->n_active() == 0 : backend != SolverKind::Cholmod)) {
+      // With no contact point active, the bodies must be held by Dirichlet
+      // conditions alone; the indefinite backends would not say when they are
+      // not (round-off hides the zero pivot), so check the elastic part once.
+      // Without contact the same holds for UMFPACK and MUMPS, which return some
+      // solution of a singular but consistent system (a free rigid translation).
+      // CHOLMOD's own factorisation stops on such a system (then diagnosed below):
+      // no second factorisation is spent on the check.
+      if (!rigid_checked_ && backend != SolverKind::Cholmod && (!contact_ || contact_->n_active() == 0)) {
+        Stopwatch watch(stats_.assemble_seconds);
         if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, k_full_, t)) throw *rigid;
         rigid_checked_ = true;
       }
-      // Dirichlet by elimination: restrict to the free equations in one pass.
-      SparseMatrix k_ff;
-      if (k_contact.empty()) {
-        k_ff = restrict_matrix(k_full_, index, n_solve);
-      } else {
-        SparseMatrix k_c(n, n);
-        k_c.setFromTriplets(k_contact.begin(), k_contact.end());
-        k_ff = restrict_matrix(k_full_ + k_c, index, n_solve);
+      static const std::vector<int> no_equations;
+      const std::vector<int>& condensed = contact_ ? contact_->condensed_equations() : no_equations;
+      {
+        Stopwatch watch(stats_.assemble_seconds);
+        update_system(cons, k_contact, condensed);
       }
-      assemble_watch.reset();
-      try {
-        Stopwatch watch(stats_.factorize_seconds);
-        solver->factorize(k_ff, kind);
-      } catch (const SolveError& err) {
-        if (err.out_of_memory()) throw;
-        throw diagnose_singular_system(model_, dofs_, cons.free_index, k_full_, err, t);
-      }
+      const SparseMatrix& a = system_->a;
+      // Condensed unknowns: decoupled rows (unit diagonal, zero right-hand side), set by recover().
+      for (int eq : condensed)
+        if (cons.free_index[eq] >= 0) r_free[cons.free_index[eq]] = 0.0;
       Vector du;
       RefinedSolve accuracy;
-      {
+      SystemState& state = system_->state[static_cast<int>(backend)];
+      auto& solver = solvers_[static_cast<int>(backend)];
+      if (!solver) solver = make_linear_solver(backend);
+      const unsigned long long statuses = contact_ ? contact_->status_key() : 0ULL;
+      const bool same_matrix = state.factorised && state.pattern == system_->pattern &&
+                               state.values.size() == static_cast<size_t>(a.nonZeros()) &&
+                               std::equal(state.values.begin(), state.values.end(), a.valuePtr());
+      bool solved = false;
+      if (!same_matrix && state.factorised && state.n == a.rows() && state.statuses == statuses &&
+          state.pattern != system_->pattern) {
+        // A new pairing with the same statuses: the previous factorisation is a close
+        // preconditioner; a few Krylov iterations replace a factorisation when they converge.
         Stopwatch watch(stats_.solve_seconds);
-        accuracy = solve_with_refinement(*solver, k_ff, -r_solve, du);
+        const KrylovResult k = preconditioned_gmres(a, *solver, -r_free, du, kKrylovIterations, kKrylovTolerance);
+        if (k.converged) {
+          solved = true;
+          accuracy.raw_residual = accuracy.residual = k.residual;
+          stats_.krylov_iterations += k.iterations;
+          log_.info("  linear solve: previous factorisation as preconditioner, " + std::to_string(k.iterations) +
+                    " GMRES iteration(s), relative residual " + sci(k.residual));
+        } else {
+          log_.info("  linear solve: " + std::to_string(k.iterations) + " GMRES iteration(s) with the previous "
+                    "factorisation did not converge (relative residual " + sci(k.residual) + "); refactorising");
+        }
+      }
+      if (!solved && !same_matrix) {
+        try {
+          Stopwatch watch(stats_.factorize_seconds);
+          state.factorised = false;
+          solver->factorize(a, kind);
+        } catch (const SolveError& err) {
+          if (err.out_of_memory()) throw;
+          throw diagnose_singular_system(model_, dofs_, cons.free_index, k_full_, err, t);
+        }
+        ++stats_.factorizations;
+        state.factorised = true;
+        state.n = a.rows();
+        state.pattern = system_->pattern;
+        state.statuses = statuses;
+        state.values.assign(a.valuePtr(), a.valuePtr() + a.nonZeros());
+      } else if (same_matrix) {
+        log_.debug("  linear solve: same matrix as the last factorisation, reused");
+      }
+      if (!solved) {
+        Stopwatch watch(stats_.solve_seconds);
+        accuracy = solve_with_refinement(*solver, a, -r_free, du);
       }
       ++stats_.newton_iterations;
       stats_.refinement_steps += accuracy.steps;
@@ -320,7 +435,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
                        sci(kSolveTolerance) + ")"),
             t);
       for (int eq = 0; eq < n; ++eq)
-        if (index[eq] >= 0) u[eq] += du[index[eq]];
+        if (cons.free_index[eq] >= 0) u[eq] += du[cons.free_index[eq]];
       if (!condensed.empty()) {
         Stopwatch watch(stats_.contact_seconds);
         contact_->recover(u);

@@ -51,6 +51,8 @@ struct SolverStats {
   double solve_residual_raw = 0.0;
   double solve_residual = 0.0;
   int refinement_steps = 0;        ///< extra solves spent on iterative refinement
+  int factorizations = 0;          ///< numeric factorisations (a solve may reuse the last one)
+  int krylov_iterations = 0;       ///< GMRES iterations preconditioned by a previous factorisation
   double resi_glob_rela = 0.0;     ///< RESI_GLOB_RELA reached at the last converged Newton iteration
 };
 
@@ -58,6 +60,8 @@ struct SolverStats {
 /// (nume_ordre 0 = initial state) with DEPL. Throws SolveError on divergence,
 /// naming the instant, the loop and the last residuals; steps converged before
 /// the failure are available through `converged_steps()`.
+struct Constraints;
+
 class StaticSolver {
  public:
   StaticSolver(const FeModel& model, const MechanicalLoads& loads, NewtonOptions options, ContactHook* contact,
@@ -74,9 +78,33 @@ class StaticSolver {
   /// Newton (+ contact loops) at instant t starting from u; throws on failure.
   void solve_instant(double t, Vector& u);
   NodalField make_depl(const Vector& u) const;
+  /// What a backend last factorised: the system pattern it was for, the statuses, the values.
+  struct SystemState {
+    bool factorised = false;
+    long pattern = -1;
+    int n = -1;
+    unsigned long long statuses = 0;
+    std::vector<double> values;
+  };
+  /// The restricted system, kept between iterations and instants (update_system).
+  struct SystemCache {
+    bool valid = false;
+    std::vector<int> constrained;      ///< Dirichlet equations k_el was restricted for
+    SparseMatrix k_el;                 ///< elastic stiffness on the free equations
+    long contact_version = -1;         ///< contact pattern version the pattern was built for
+    long pattern = 0;                  ///< incremented at each new pattern
+    SparseMatrix a;                    ///< the system (pattern and current values)
+    std::vector<double> elastic_values;  ///< k_el's values in a's pattern
+    std::vector<int> contact_pos;      ///< position in a of each contact triplet, -1 if constrained
+    std::vector<int> diagonal;         ///< position of each diagonal entry in a
+    SystemState state[3];              ///< per backend (SolverKind)
+  };
+  void update_system(const Constraints& cons, const std::vector<Triplet>& contact, const std::vector<int>& condensed);
+
   SparseMatrix k_full_;
   /// One solver per backend for the whole run (each keeps its analysis while the pattern holds).
   std::unique_ptr<LinearSolver> solvers_[3];
+  std::unique_ptr<SystemCache> system_;
   double k_scale_ = 0.0;
   bool rigid_checked_ = false;  ///< elastic part proven free of rigid-body modes  ///< largest stiffness coefficient, for the residual reference
 

@@ -1,8 +1,10 @@
 /// UMFPACK multifrontal LU. Keeps a copy of the matrix (umfpack_di_solve needs
-/// it for iterative refinement). On a singular matrix the failed column is
+/// it for iterative refinement), and its symbolic analysis while the pattern and
+/// the strategy stay the same (the Newton and contact loops refactorise one pattern). On a singular matrix the failed column is
 /// read cheaply from the diagonal of U and the column permutation Q.
 #include <umfpack.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -29,6 +31,11 @@ class UmfpackSolver final : public LinearSolver {
   void release() {
     if (numeric_) umfpack_di_free_numeric(&numeric_);
     if (symbolic_) umfpack_di_free_symbolic(&symbolic_);
+  }
+  bool same_pattern(const SparseMatrix& a) const {
+    return symbolic_ && a.rows() == a_.rows() && a.nonZeros() == a_.nonZeros() &&
+           std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.cols() + 1, a_.outerIndexPtr()) &&
+           std::equal(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros(), a_.innerIndexPtr());
   }
   int zero_pivot_column() const;
 
@@ -59,16 +66,24 @@ int UmfpackSolver::zero_pivot_column() const {
 
 void UmfpackSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   failed_ = -1;
-  release();
   LUNASTER_ASSERT(a.rows() == a.cols(), "UMFPACK: matrix is not square");
-  a_ = a;
-  a_.makeCompressed();
-  control_[UMFPACK_STRATEGY] = kind == MatrixKind::General ? UMFPACK_STRATEGY_AUTO : UMFPACK_STRATEGY_SYMMETRIC;
+  const double strategy = kind == MatrixKind::General ? UMFPACK_STRATEGY_AUTO : UMFPACK_STRATEGY_SYMMETRIC;
+  SparseMatrix compressed = a;
+  compressed.makeCompressed();
+  const bool keep_symbolic = same_pattern(compressed) && control_[UMFPACK_STRATEGY] == strategy;
+  if (numeric_) umfpack_di_free_numeric(&numeric_);
+  if (!keep_symbolic) release();
+  a_ = std::move(compressed);
+  control_[UMFPACK_STRATEGY] = strategy;
   const int n = static_cast<int>(a_.rows());
-  int status = umfpack_di_symbolic(n, n, a_.outerIndexPtr(), a_.innerIndexPtr(), a_.valuePtr(), &symbolic_,
-                                   control_, info_);
-  if (status == UMFPACK_ERROR_out_of_memory) throw SolveError::out_of_memory("UMFPACK", n, "symbolic analysis, status -1");
-  if (status != UMFPACK_OK) throw SolveError("UMFPACK: symbolic analysis failed (status " + std::to_string(status) + ")");
+  int status = UMFPACK_OK;
+  if (!keep_symbolic) {
+    status = umfpack_di_symbolic(n, n, a_.outerIndexPtr(), a_.innerIndexPtr(), a_.valuePtr(), &symbolic_, control_,
+                                 info_);
+    if (status == UMFPACK_ERROR_out_of_memory)
+      throw SolveError::out_of_memory("UMFPACK", n, "symbolic analysis, status -1");
+    if (status != UMFPACK_OK) throw SolveError("UMFPACK: symbolic analysis failed (status " + std::to_string(status) + ")");
+  }
   status = umfpack_di_numeric(a_.outerIndexPtr(), a_.innerIndexPtr(), a_.valuePtr(), symbolic_, &numeric_, control_,
                               info_);
   if (status == UMFPACK_WARNING_singular_matrix) {
