@@ -3,7 +3,9 @@
 #include <chrono>
 #include <cmath>
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <memory>
@@ -207,10 +209,13 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
   const long version = contact_ ? contact_->pattern_version() : 0;
   const bool new_constraints = !sys.valid || sys.constrained != cons.constrained;
   if (new_constraints) {
-    sys.k_el = restrict_matrix(k_full_, cons.free_index, cons.n_free);
     sys.constrained = cons.constrained;
+    ++sys.elastic_generation;
   }
   if (new_constraints || version != sys.contact_version || contact.size() != sys.contact_pos.size()) {
+    // The elastic stiffness on the free equations, only while the pattern is built: its
+    // values are kept in the system's pattern (elastic_values), not as a second matrix.
+    const SparseMatrix k_el = restrict_matrix(k_full_, cons.free_index, cons.n_free);
     // Pattern column by column: the elastic rows (sorted) merged with the contact rows of
     // the column (bucketed, sorted, unique) and the diagonal; no global sort.
     const int nf = cons.n_free;
@@ -228,9 +233,9 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     }
     for (int j = 0; j < nf; ++j) extra[start[j + 1]++] = j;
     std::vector<int> outer_new(static_cast<size_t>(nf) + 1, 0), inner_new;
-    inner_new.reserve(static_cast<size_t>(sys.k_el.nonZeros()) + extra.size());
-    const int* el_outer = sys.k_el.outerIndexPtr();
-    const int* el_inner = sys.k_el.innerIndexPtr();
+    inner_new.reserve(static_cast<size_t>(k_el.nonZeros()) + extra.size());
+    const int* el_outer = k_el.outerIndexPtr();
+    const int* el_inner = k_el.innerIndexPtr();
     for (int j = 0; j < nf; ++j) {
       int* e0 = extra.data() + start[j];
       int* e1 = extra.data() + start[j + 1];
@@ -261,7 +266,7 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
       int k = outer[j];
       for (int p = el_outer[j]; p < el_outer[j + 1]; ++p) {
         while (inner[k] < el_inner[p]) ++k;
-        sys.elastic_values[k] = sys.k_el.valuePtr()[p];
+        sys.elastic_values[k] = k_el.valuePtr()[p];
       }
     }
     sys.contact_pos.resize(contact.size());
@@ -277,10 +282,22 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
   }
   double* values = sys.a.valuePtr();
   std::copy(sys.elastic_values.begin(), sys.elastic_values.end(), values);
-  for (size_t k = 0; k < contact.size(); ++k)
-    if (sys.contact_pos[k] >= 0) values[sys.contact_pos[k]] += contact[k].value();
+  // The key of these values: the elastic part's generation, the contact values and the
+  // condensed equations (FNV-1a over their bits). Equal keys, equal matrices.
+  std::uint64_t key = 1469598103934665603ULL;
+  auto mix = [&key](std::uint64_t v) { key = (key ^ v) * 1099511628211ULL; };
+  mix(static_cast<std::uint64_t>(sys.elastic_generation));
+  for (size_t k = 0; k < contact.size(); ++k) {
+    if (sys.contact_pos[k] < 0) continue;
+    const double v = contact[k].value();
+    values[sys.contact_pos[k]] += v;
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    mix(bits);
+  }
   for (int eq : condensed)
-    if (cons.free_index[eq] >= 0) values[sys.diagonal[cons.free_index[eq]]] = 1.0;
+    if (cons.free_index[eq] >= 0) values[sys.diagonal[cons.free_index[eq]]] = 1.0, mix(static_cast<std::uint64_t>(eq));
+  sys.values_key = key;
 }
 
 void StaticSolver::solve_instant(double t, Vector& u) {
@@ -376,9 +393,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       auto& solver = solvers_[static_cast<int>(backend)];
       if (!solver) solver = make_linear_solver(backend);
       const unsigned long long statuses = contact_ ? contact_->status_key() : 0ULL;
-      const bool same_matrix = state.factorised && state.pattern == system_->pattern &&
-                               state.values.size() == static_cast<size_t>(a.nonZeros()) &&
-                               std::equal(state.values.begin(), state.values.end(), a.valuePtr());
+      const bool same_matrix =
+          state.factorised && state.pattern == system_->pattern && state.values_key == system_->values_key;
       bool solved = false;
       if (!same_matrix && state.factorised && state.n == a.rows() && state.statuses == statuses &&
           state.pattern != system_->pattern) {
@@ -411,7 +427,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         state.n = a.rows();
         state.pattern = system_->pattern;
         state.statuses = statuses;
-        state.values.assign(a.valuePtr(), a.valuePtr() + a.nonZeros());
+        state.values_key = system_->values_key;
       } else if (same_matrix) {
         log_.debug("  linear solve: same matrix as the last factorisation, reused");
       }

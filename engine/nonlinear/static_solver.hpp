@@ -1,6 +1,7 @@
 #pragma once
 /// Quasi-static incremental solver: Newton iterations per instant, with an
 /// optional contact algorithm plugged in through `ContactHook`.
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -84,19 +85,20 @@ class StaticSolver {
     long pattern = -1;
     int n = -1;
     unsigned long long statuses = 0;
-    std::vector<double> values;
+    std::uint64_t values_key = 0;
   };
   /// The restricted system, kept between iterations and instants (update_system).
   struct SystemCache {
     bool valid = false;
-    std::vector<int> constrained;      ///< Dirichlet equations k_el was restricted for
-    SparseMatrix k_el;                 ///< elastic stiffness on the free equations
+    std::vector<int> constrained;      ///< Dirichlet equations of elastic_values
+    long elastic_generation = 0;       ///< incremented when the Dirichlet set changes
     long contact_version = -1;         ///< contact pattern version the pattern was built for
     long pattern = 0;                  ///< incremented at each new pattern
     SparseMatrix a;                    ///< the system (pattern and current values)
     std::vector<double> elastic_values;  ///< k_el's values in a's pattern
     std::vector<int> contact_pos;      ///< position in a of each contact triplet, -1 if constrained
     std::vector<int> diagonal;         ///< position of each diagonal entry in a
+    std::uint64_t values_key = 0;      ///< key of a's current values (update_system)
     SystemState state[3];              ///< per backend (SolverKind)
   };
   void update_system(const Constraints& cons, const std::vector<Triplet>& contact, const std::vector<int>& condensed);
