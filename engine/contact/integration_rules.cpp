@@ -99,11 +99,16 @@ Rule newton_cotes_segment(int degree) {
 
 Rule simpson_segment() { return {qp(-1, 0, 1.0 / 3), qp(0, 0, 4.0 / 3), qp(1, 0, 1.0 / 3)}; }
 
-// Base triangle rule of code_aster's composite Simpson (mmgaus): vertices 1/30,
-// mid-edges 4/30 on the reference triangle.
+// Base triangle rule of the composite Simpson scheme: vertices 1/40, mid-edges
+// 1/15, centroid 9/40 (reference area 1/2). Like Simpson on a segment it samples
+// the corners and mid-sides and integrates every cubic exactly (degree 3, not 4).
+// code_aster's mmgaus weights the same lattice without a centroid (vertices 1/30,
+// mid-edges 4/30): exact for linear functions only, which leaves LAGS_C on a
+// TRIA6 slave 16 % (ORDRE_INT=4) to 49 % (ORDRE_INT=2) off in SSNP121 E.
 Rule simpson_triangle() {
-  Rule r = {qp(0, 0, 1.0 / 30), qp(1, 0, 1.0 / 30), qp(0, 1, 1.0 / 30)};
-  r.push_back(qp(0.5, 0, 4.0 / 30)), r.push_back(qp(0.5, 0.5, 4.0 / 30)), r.push_back(qp(0, 0.5, 4.0 / 30));
+  Rule r = {qp(0, 0, 1.0 / 40), qp(1, 0, 1.0 / 40), qp(0, 1, 1.0 / 40)};
+  r.push_back(qp(0.5, 0, 1.0 / 15)), r.push_back(qp(0.5, 0.5, 1.0 / 15)), r.push_back(qp(0, 0.5, 1.0 / 15));
+  r.push_back(qp(1.0 / 3, 1.0 / 3, 9.0 / 40));
   return r;
 }
 

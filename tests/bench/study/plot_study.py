@@ -286,7 +286,7 @@ def summary(work, docs, c2, c3):
         lines += ["", "Runs that failed (kept out of the charts):", ""]
         lines += [f"- {r['family']} {r['method']} k={r['k']}: {r['status'][:140]}" for r in failed]
     lines.append("")
-    lines += atlas_text(os.path.join(work, "out"))
+    lines += atlas_text(os.path.join(work, "out"), docs)
     with open(os.path.join(docs, "summary.md"), "w") as f:
         f.write("\n".join(lines))
 
@@ -324,7 +324,49 @@ def loss_of_accuracy(rows, xkey, resi_bar=1e-6):
     return L
 
 
-def atlas_text(out):
+def schemes_table(out, docs):
+    """Integration scheme x geometry: the LAGS_C error of each run of atlas_schemes.csv, as a
+    Markdown table (returned) and as a scheme x geometry CSV (DOCS/atlas_schemes_table.csv)."""
+    rows = read(os.path.join(out, "atlas_schemes.csv"))
+    if not rows:
+        return []
+    geos = list(dict.fromkeys((r["geometry"], r["faces"]) for r in rows))
+    schemes = list(dict.fromkeys(r["scheme"] for r in rows))
+    failures = []
+
+    def cell(r, markdown):
+        if r is None:
+            return "-"
+        if r["status"] == "ok":
+            return f"{num(r, 'err_p'):.2g}"
+        if not markdown:
+            return r["status"]
+        if r["status"] not in failures:
+            failures.append(r["status"])
+        return f"failed ({failures.index(r['status']) + 1})"
+
+    find = lambda s, g: next((r for r in rows if r["scheme"] == s and r["geometry"] == g[0]), None)
+    with open(os.path.join(docs, "atlas_schemes_table.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["scheme"] + [f"{g} ({faces})" for g, faces in geos])
+        for s in schemes:
+            w.writerow([s] + [cell(find(s, g), False) for g in geos])
+    L = ["", "### Integration schemes x face types (SSNP121 E, F, J, K, matching interfaces)", "",
+         "Max relative error of LAGS_C over the slave SURESC (exact: -1e5 Pa), CONTINUE, slave face on master face, "
+         "scheme-ORDRE_INT (atlas_schemes.csv, atlas_schemes_table.csv). The exact degree of each rule per face type "
+         "is tabulated in engine/contact/integration_rules.hpp. A TRIA6 slave needs a rule exact for its shape "
+         "functions (degree 2) and at least 6 points (its LAGS_C unknowns); a TRIA3 slave on a quadratic master needs "
+         "points off its vertices, or the master mid-side nodes carry no force.", "",
+         "| scheme | " + " | ".join(f"{g}: {faces}" for g, faces in geos) + " |",
+         "|---|" + "---|" * len(geos)]
+    for s in schemes:
+        L.append(f"| {s} | " + " | ".join(cell(find(s, g), True) for g in geos) + " |")
+    if failures:
+        L += [""] + [f"- ({i + 1}) {msg.removeprefix('failed: ')[:200]}" for i, msg in enumerate(failures)]
+    return L
+
+
+def atlas_text(out, docs):
     """The stability atlas in words, from its CSV files."""
     L = ["## Stability atlas", ""]
     pen = read(os.path.join(out, "atlas_penalty.csv"))
@@ -369,6 +411,7 @@ def atlas_text(out):
     L += ["", "### Modelisation G (pressure-loaded block) and CONTACT_INIT", "", "| CONTACT_INIT | what the user gets | pressure error |",
           "|---|---|---|"]
     L += [f"| {r['CONTACT_INIT']} | {r['status']} | {r['err_p']} |" for r in read(os.path.join(out, "atlas_init.csv"))]
+    L += schemes_table(out, docs)
     d23 = read(os.path.join(out, "atlas_2d3d.csv"))
     L += ["", "### 2D plane strain against the same scene in 3D (one-cell slab): ![](atlas_2d3d.png)", "",
           "| method | k | error 2D | error 3D | time 2D (s) | time 3D (s) | 3D / 2D |", "|---|---|---|---|---|---|---|"]

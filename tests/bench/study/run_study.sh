@@ -36,13 +36,18 @@ for k in 1 2 4; do
 done
 "$gen" --v1 penta15:4x4x4 --v2 hexa20:4x4x4 -o "$work/meshes/incompat_q8_t6.med" >/dev/null
 "$gen" --v1 penta15:4x4x4 --v2 hexa8:4x4x4 -o "$work/meshes/incompat_q4_t6.med" >/dev/null
+# SSNP121 E, F, J, K (testcases/ and tools/make_meshes.sh): the integration-scheme atlas
+for g in "e penta15 penta15" "f penta15 hexa20" "j penta6 penta15" "k penta6 hexa20"; do
+  read -r id v1 v2 <<< "$g"
+  "$gen" --v1 "$v1:4x4x4" --v2 "$v2:4x4x4" -o "$work/meshes/ssnp121$id.med" >/dev/null
+done
 
 run_deck() {  # deck name; a deck that stops is reported, the study goes on
   local t0=$SECONDS
   if (cd "$work" && "$lun" run "$1.lua" --out out -q > "logs/$1.log" 2>&1); then status=ok; else status="exit $?"; fi
   echo "study: $1 ($status, $((SECONDS - t0)) s)"
 }
-for deck in chart_2d atlas_penalty atlas_coef atlas_ratio atlas_init chart_3d atlas_incompat atlas_2d3d; do run_deck "$deck"; done
+for deck in chart_2d atlas_penalty atlas_coef atlas_ratio atlas_init chart_3d atlas_incompat atlas_2d3d atlas_schemes; do run_deck "$deck"; done
 # Warnings and errors the user sees, for the atlas text.
 (cd "$work" && "$lun" run atlas_incompat.lua --out out_v > logs/atlas_incompat_full.log 2>&1 || true)
 

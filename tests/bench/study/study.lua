@@ -49,6 +49,14 @@ end
 local function contact_of(mo, m, sc)
   -- CONTINUE takes the seed's model A roles (slave AB, or SURESC in 3D); discrete
   -- methods take models B/C roles (slave EF, or SURMAI in 3D).
+  if m.kind == 'CONTINUE' and m.integration == 'NOEUD' then
+    -- NOEUD exists only in the seed's syntax: the same zone as a contact load.
+    local slave, master = m.slave or sc.upper_face, m.master or sc.lower_face
+    return nil, AFFE_CHAR_MECA{ MODELE = mo, CONTACT = _F{ METHODE = 'CONTINUE', GROUP_MA_ESCL = slave, GROUP_MA_MAIT = master,
+                                INTEGRATION = 'NOEUD', COEF_CONT = m.coef, CONTACT_INIT = m.init or 'NON',
+                                ALGO_RESO_CONT = 'POINT_FIXE', ALGO_RESO_GEOM = 'POINT_FIXE', REAC_GEOM = 'CONTROLE',
+                                NB_ITER_GEOM = 2 } }, slave
+  end
   if m.kind == 'CONTINUE' then
     local slave, master = m.slave or sc.upper_face, m.master or sc.lower_face
     local zone = { GROUP_MA_ESCL = slave, GROUP_MA_MAIT = master, INTEGRATION = m.integration,
