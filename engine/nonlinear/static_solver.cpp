@@ -414,6 +414,13 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         }
       }
       if (!solved && !same_matrix) {
+        // One set of factors alive at a time: the other backends' (e.g. CHOLMOD's of a pass
+        // without active contact) are released before this one is built.
+        for (int other = 0; other < 3; ++other)
+          if (other != static_cast<int>(backend) && solvers_[other]) {
+            solvers_[other].reset();
+            system_->state[other] = SystemState{};
+          }
         try {
           Stopwatch watch(stats_.factorize_seconds);
           state.factorised = false;
