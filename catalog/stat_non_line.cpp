@@ -39,8 +39,8 @@ std::vector<Keyword> keywords() {
              "Newton's method")
           .by_default(),
       factor("CONVERGENCE",
-             {real("RESI_GLOB_RELA", "Largest free residual over the largest load or reaction; 1e-6 unless only RESI_GLOB_MAXI is given").range(0.0, std::nullopt),
-              real("RESI_GLOB_MAXI", "Largest residual component (N)").range(0.0, std::nullopt),
+             {real("RESI_GLOB_RELA", "Largest free residual over the largest load or reaction; 1e-6 unless only RESI_GLOB_MAXI is given").above(0.0),
+              real("RESI_GLOB_MAXI", "Largest residual component (N)").above(0.0),
               integer("ITER_GLOB_MAXI", "Maximum Newton iterations per step").def(10LL).range(1, std::nullopt)},
              "Convergence criteria (both residual criteria must hold when both are given)")
           .by_default(),

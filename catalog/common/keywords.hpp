@@ -26,6 +26,9 @@ Keyword contact_integration(std::vector<Scalar> schemes);
 std::vector<Block> ordre_int_blocks();
 /// Shared seed/current contact algorithm keywords (REAC_GEOM, ITER_GEOM_MAXI, ...).
 std::vector<Keyword> contact_loop_keywords();
+/// ALGO_RESO_CONT: 'POINT_FIXE' or 'NEWTON' for the continuous formulation; the discrete
+/// one has no status update inside Newton, so it refuses 'NEWTON'.
+Keyword algo_reso_cont(bool discrete);
 
 /// The two-tier check keywords of TEST_RESU (VALE_CALC, REFERENCE, VALE_REFE, ...).
 std::vector<Keyword> test_reference_keywords();
