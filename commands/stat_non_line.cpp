@@ -13,7 +13,7 @@ namespace {
 engine::SolverKind solver_kind(const std::string& methode) {
   if (methode == "MUMPS") return engine::SolverKind::Mumps;
   if (methode == "UMFPACK") return engine::SolverKind::Umfpack;
-  return engine::SolverKind::Cholmod;  // AUTO, CHOLMOD, LDLT, MULT_FRONT: Cholmod, Umfpack if indefinite
+  return engine::SolverKind::Cholmod;  // AUTO, CHOLMOD, LDLT, MULT_FRONT: Cholmod, Mumps if not SPD (engine)
 }
 
 /// Instants to compute: LIST_INST restricted to [INST_INIT, INST_FIN].
@@ -64,6 +64,19 @@ void check_relation(const Args& args) {
         throw occ.error("RELATION", "'ELAS' (the only behaviour lunaster implements)", "'" + occ.text("RELATION") + "'");
 }
 
+/// NEWTON: which matrix Newton factorises, and how often (engine's matrix policy).
+void read_newton(const Args& newton, bool has_contact, engine::NewtonOptions& options) {
+  options.reac_iter = static_cast<int>(newton.integer("REAC_ITER"));
+  options.elastic_matrix = newton.text("MATRICE") == "ELASTIQUE";
+  // code_aster keeps the contact terms in the matrix whatever MATRICE says, and with an elastic
+  // material that matrix is the tangent: 'ELASTIQUE' would change nothing. Without the contact
+  // terms the multiplier equations are empty (Lagrange) or the penalty stiffness is missing.
+  if (options.elastic_matrix && has_contact)
+    throw newton.error("MATRICE", "'TANGENTE' with contact (the contact terms belong in the matrix; without contact "
+                                  "'ELASTIQUE' factorises the elastic matrix once for the whole run)",
+                       "'ELASTIQUE'");
+}
+
 }  // namespace
 
 ConceptPtr stat_non_line(const Args& args, Session& session) {
@@ -112,6 +125,7 @@ ConceptPtr stat_non_line(const Args& args, Session& session) {
                                                         : 1e-6;
   options.iter_glob_maxi = static_cast<int>(conv.integer("ITER_GLOB_MAXI"));
   options.solver = solver_kind(args.factor("SOLVEUR").text("METHODE"));
+  read_newton(args.factor("NEWTON"), contact != nullptr, options);
   const std::vector<double> times = instants(args.factor("INCREMENT"), options);
 
   std::unique_ptr<engine::ContactHook> hook;
@@ -122,6 +136,10 @@ ConceptPtr stat_non_line(const Args& args, Session& session) {
     try {
       result->steps = solver.run(times);
     } catch (SolveError& err) {
+      if (dynamic_cast<engine::ConvergenceError*>(&err) && options.reac_iter != 1)
+        err.add_hint("NEWTON: REAC_ITER = " + std::to_string(options.reac_iter) +
+                     " reuses the factorisation between iterations (a modified Newton, slower to converge); "
+                     "REAC_ITER = 1 refactorises at every iteration");
       save_converged_steps(solver.converged_steps(), *model.mesh, session, err);
       throw;
     }

@@ -43,6 +43,8 @@ std::string sci(double v) {
 /// remaining inaccuracy at its next iteration.
 constexpr double kSolveTolerance = 1e-6;
 
+}  // namespace
+
 /// Dirichlet conditions at one instant, applied by elimination.
 struct Constraints {
   std::vector<int> free_index;   ///< per equation: index in the reduced system, -1 if constrained
@@ -50,6 +52,8 @@ struct Constraints {
   std::vector<double> values;    ///< imposed value per constrained equation
   int n_free = 0;
 };
+
+namespace {
 
 Constraints build_constraints(const DofMap& dofs, const MechanicalLoads& loads, double t, const Mesh& mesh) {
   Constraints c;
@@ -90,7 +94,11 @@ Vector external_forces(const FeModel& model, const DofMap& dofs, const Mechanica
 
 StaticSolver::StaticSolver(const FeModel& model, const MechanicalLoads& loads, NewtonOptions options,
                            ContactHook* contact, const Log& log)
-    : model_(model), loads_(loads), options_(options), contact_(contact), log_(log) {}
+    : model_(model), loads_(loads), options_(options), contact_(contact), log_(log) {
+  LUNASTER_ASSERT(options_.reac_iter >= 0, "reac_iter must be >= 0");
+  // The elastic matrix has no contact terms: the multiplier equations would be empty.
+  LUNASTER_ASSERT(!(options_.elastic_matrix && contact_), "the elastic matrix is not for runs with contact");
+}
 
 NodalField StaticSolver::make_depl(const Vector& u) const {
   std::vector<std::string> cmps = {"DX", "DY"};
@@ -119,6 +127,8 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   const int n = dofs_.n_dofs();
   stats_ = SolverStats{};
   stats_.n_dofs = n;
+  factors_ = Factorisation{};
+  backend_note_logged_ = false;
   {
     Stopwatch watch(stats_.assemble_seconds);
     std::vector<Triplet> triplets;
@@ -195,13 +205,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
     contact_->begin_step(u, log_);
   }
 
-  const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
-  SolverKind backend = options_.solver;
-  // Contact with multipliers gives a symmetric indefinite system: MUMPS (LDLT with
-  // pivoting) beat UMFPACK (LU) on it: SSNP121 A refined 16 times, 3.2 s vs 3.6 s and
-  // 376 MB vs 608 MB.
-  if (backend == SolverKind::Cholmod && kind != MatrixKind::SymmetricPositiveDefinite) backend = SolverKind::Mumps;
-  auto solver = make_linear_solver(backend);
+  if (!options_.elastic_matrix) factors_ = Factorisation{};  // the tangent is rebuilt at each instant
+  const int factorisations_before = stats_.factorisations;
 
   int total_newton = 0;
   for (int fixed_point = 0;; ++fixed_point) {
@@ -247,54 +252,17 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       }
       if (iter == options_.iter_glob_maxi) break;
 
-      auto assemble_watch = std::make_unique<Stopwatch>(stats_.assemble_seconds);
       // With no contact point active, the bodies must be held by Dirichlet
       // conditions alone; the indefinite backends would not say when they are
       // not (round-off hides the zero pivot), so check the elastic part once.
       // Without contact the same holds for UMFPACK and MUMPS, which return some
       // solution of a singular but consistent system (a free rigid translation).
-      if (!rigid_checked_ && (contact_ ? contact_->n_active() == 0 : backend != SolverKind::Cholmod)) {
+      if (!rigid_checked_ && (contact_ ? contact_->n_active() == 0 : options_.solver != SolverKind::Cholmod)) {
+        Stopwatch watch(stats_.assemble_seconds);
         if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, k_full_, t)) throw *rigid;
         rigid_checked_ = true;
       }
-      // Dirichlet by elimination: restrict to the free equations in one pass.
-      SparseMatrix k_ff;
-      if (k_contact.empty()) {
-        k_ff = restrict_matrix(k_full_, cons.free_index, cons.n_free);
-      } else {
-        SparseMatrix k_c(n, n);
-        k_c.setFromTriplets(k_contact.begin(), k_contact.end());
-        k_ff = restrict_matrix(k_full_ + k_c, cons.free_index, cons.n_free);
-      }
-      assemble_watch.reset();
-      try {
-        Stopwatch watch(stats_.factorize_seconds);
-        solver->factorize(k_ff, kind);
-      } catch (const SolveError& err) {
-        if (err.out_of_memory()) throw;
-        throw diagnose_singular_system(model_, dofs_, cons.free_index, k_full_, err, t);
-      }
-      Vector du;
-      RefinedSolve accuracy;
-      {
-        Stopwatch watch(stats_.solve_seconds);
-        accuracy = solve_with_refinement(*solver, k_ff, -r_free, du);
-      }
-      ++stats_.newton_iterations;
-      stats_.refinement_steps += accuracy.steps;
-      // A direct solver may return a "solution" of a singular system without flagging it
-      // (MUMPS misses null pivots that are round-off rather than exact zeros): check the
-      // solve itself, and locate the rigid-body mode when it did not solve the system.
-      const double raw_error = accuracy.raw_residual, solve_error = accuracy.residual;
-      stats_.solve_residual_raw = std::max(stats_.solve_residual_raw, raw_error);
-      stats_.solve_residual = std::max(stats_.solve_residual, solve_error);
-      if (!(solve_error <= kSolveTolerance))
-        throw diagnose_singular_system(
-            model_, dofs_, cons.free_index, k_full_,
-            SolveError("the linear solver returned no accurate solution (relative residual of the solve " +
-                       sci(raw_error) + ", " + sci(solve_error) + " after iterative refinement; accepted below " +
-                       sci(kSolveTolerance) + ")"),
-            t);
+      const Vector du = newton_correction(t, iter, cons, k_contact, r_free);
       for (int eq = 0; eq < n; ++eq)
         if (cons.free_index[eq] >= 0) u[eq] += du[cons.free_index[eq]];
       ++total_newton;
@@ -321,7 +289,94 @@ void StaticSolver::solve_instant(double t, Vector& u) {
     }
     if (settled) break;
   }
-  log_.info("  converged in " + std::to_string(total_newton) + " Newton iteration(s)");
+  log_.info("  converged in " + std::to_string(total_newton) + " Newton iteration(s), " +
+            std::to_string(stats_.factorisations - factorisations_before) + " factorisation(s)");
+}
+
+bool StaticSolver::needs_factorisation(int k, const std::vector<int>& free_index) const {
+  if (!factors_.solver || factors_.free_index != free_index) return true;  // none valid for this system
+  if (options_.elastic_matrix) return false;  // the elastic matrix never changes: factorised once per run
+  // Each Newton loop starts with a new tangent: a new instant (code_aster's REAC_INCR = 1), or a
+  // new contact pass, whose statuses or pairing changed the contact terms of the matrix (old
+  // factors do not survive an active-set change: SSNP121 A, C and the discrete deck then fail to
+  // converge). code_aster goes further and rebuilds at every iteration when contact terms are
+  // in the global matrix; here REAC_ITER applies within a loop.
+  if (k == 0) return true;
+  return options_.reac_iter > 0 && k % options_.reac_iter == 0;
+}
+
+SolverKind StaticSolver::backend_for(MatrixKind kind) {
+  if (options_.solver != SolverKind::Cholmod || kind == MatrixKind::SymmetricPositiveDefinite) return options_.solver;
+  // Contact with multipliers gives a symmetric indefinite system: MUMPS (LDLT with
+  // pivoting) beat UMFPACK (LU) on it: SSNP121 A refined 16 times, 3.2 s vs 3.6 s and
+  // 376 MB vs 608 MB. The penalised continuous method is not symmetric: MUMPS too.
+  if (!backend_note_logged_)
+    log_.info(std::string("CHOLMOD cannot factorise ") +
+              (kind == MatrixKind::SymmetricIndefinite ? "an indefinite" : "a non-symmetric") +
+              " system; using MUMPS");
+  backend_note_logged_ = true;
+  return SolverKind::Mumps;
+}
+
+Vector StaticSolver::newton_correction(double t, int k, const Constraints& cons, const std::vector<Triplet>& k_contact,
+                                       const Vector& r_free) {
+  const int n = dofs_.n_dofs();
+  if (needs_factorisation(k, cons.free_index)) {
+    const MatrixKind kind = contact_ && !options_.elastic_matrix ? contact_->matrix_kind()
+                                                                  : MatrixKind::SymmetricPositiveDefinite;
+    {
+      Stopwatch watch(stats_.assemble_seconds);
+      // Dirichlet by elimination: restrict to the free equations in one pass.
+      if (k_contact.empty() || options_.elastic_matrix) {
+        factors_.matrix = restrict_matrix(k_full_, cons.free_index, cons.n_free);
+      } else {
+        SparseMatrix k_c(n, n);
+        k_c.setFromTriplets(k_contact.begin(), k_contact.end());
+        factors_.matrix = restrict_matrix(k_full_ + k_c, cons.free_index, cons.n_free);
+      }
+    }
+    // One solver object per instant, as before: MUMPS keeps its analysis while the pattern holds.
+    if (!factors_.solver) factors_.solver = make_linear_solver(backend_for(kind));
+    factors_.free_index = cons.free_index;
+    factors_.iteration = k;
+    try {
+      Stopwatch watch(stats_.factorize_seconds);
+      factors_.solver->factorize(factors_.matrix, kind);
+    } catch (const SolveError& err) {
+      factors_ = Factorisation{};
+      if (err.out_of_memory()) throw;
+      throw diagnose_singular_system(model_, dofs_, cons.free_index, k_full_, err, t);
+    }
+    ++stats_.factorisations;
+  } else {
+    log_.info(options_.elastic_matrix
+                  ? std::string("         (factorisation of the elastic matrix reused)")
+                  : "         (factorisation of iteration " + std::to_string(factors_.iteration) + " reused)");
+  }
+  // Refinement against the factorised matrix: with reused factors this is a modified
+  // Newton step K_old du = -r, not a solve of the current tangent.
+  Vector du;
+  RefinedSolve accuracy;
+  {
+    Stopwatch watch(stats_.solve_seconds);
+    accuracy = solve_with_refinement(*factors_.solver, factors_.matrix, -r_free, du);
+  }
+  ++stats_.newton_iterations;
+  stats_.refinement_steps += accuracy.steps;
+  // A direct solver may return a "solution" of a singular system without flagging it
+  // (MUMPS misses null pivots that are round-off rather than exact zeros): check the
+  // solve itself, and locate the rigid-body mode when it did not solve the system.
+  const double raw_error = accuracy.raw_residual, solve_error = accuracy.residual;
+  stats_.solve_residual_raw = std::max(stats_.solve_residual_raw, raw_error);
+  stats_.solve_residual = std::max(stats_.solve_residual, solve_error);
+  if (!(solve_error <= kSolveTolerance))
+    throw diagnose_singular_system(
+        model_, dofs_, cons.free_index, k_full_,
+        SolveError("the linear solver returned no accurate solution (relative residual of the solve " +
+                   sci(raw_error) + ", " + sci(solve_error) + " after iterative refinement; accepted below " +
+                   sci(kSolveTolerance) + ")"),
+        t);
+  return du;
 }
 
 }  // namespace lunaster::engine

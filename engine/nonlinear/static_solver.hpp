@@ -34,10 +34,22 @@ struct NewtonOptions {
   double resi_glob_rela = 1e-6;  ///< relative residual |r| / |f_ext + reactions|; <= 0: unused
   double resi_glob_maxi = -1.0;  ///< absolute residual (N); <= 0: unused
   int iter_glob_maxi = 10;
-  SolverKind solver = SolverKind::Cholmod;  ///< Cholmod falls back to Umfpack for indefinite systems
+  SolverKind solver = SolverKind::Cholmod;  ///< Cholmod gives way to Mumps for systems that are not SPD (logged once)
+  /// Matrix policy (code_aster's NEWTON keywords). reac_iter: a new factorisation at Newton
+  /// iteration k of a Newton loop (one per instant and per contact pass) when k == 0 or
+  /// k % reac_iter == 0; 0 = at k == 0 only. Between two, the last factors solve with the
+  /// current residual (a modified Newton). Convergence is always judged on the true residual.
+  int reac_iter = 1;
+  /// The elastic stiffness alone (no contact terms) instead of the tangent, factorised once
+  /// per run: with linear elasticity and a fixed set of Dirichlet equations it never changes.
+  /// Not for runs with contact (the multiplier equations would be empty).
+  bool elastic_matrix = false;
   int subdivide_levels = 0;  ///< on a Newton failure, split the step this many times at most (SUBD_NIVEAU)
   int subdivide_parts = 4;   ///< sub-steps per split (SUBD_PAS)
 };
+
+/// Dirichlet conditions of one instant, eliminated from the system (static_solver.cpp).
+struct Constraints;
 
 /// Newton (or a contact loop) did not converge: a smaller step may help.
 class ConvergenceError : public SolveError {
@@ -77,6 +89,7 @@ struct SolverStats {
   int n_free = 0;             ///< unknowns left after eliminating Dirichlet conditions (largest over instants)
   int instants = 0;           ///< converged instants (sub-steps included)
   int newton_iterations = 0;  ///< linear solves, over all instants and contact passes
+  int factorisations = 0;     ///< numeric factorisations; fewer than the solves when factors are reused
   int contact_passes = 0;     ///< contact status/geometry fixed-point passes (calls to settle)
   double assemble_seconds = 0.0;   ///< elastic stiffness, residuals, reduced matrices
   double contact_seconds = 0.0;    ///< contact hook: pairing, statuses, contact terms
@@ -111,10 +124,30 @@ class StaticSolver {
   void advance(double t0, double t1, int level, Vector& u);
   /// Newton (+ contact loops) at instant t starting from u; throws on failure.
   void solve_instant(double t, Vector& u);
+  /// One Newton correction du = -K^-1 r_free on the free equations, K factorised anew or
+  /// reused as the matrix policy says; `k` = solves already done in this instant.
+  Vector newton_correction(double t, int k, const Constraints& cons, const std::vector<Triplet>& k_contact,
+                           const Vector& r_free);
+  /// The matrix policy's one decision: factorise at Newton iteration k of an instant?
+  bool needs_factorisation(int k, const std::vector<int>& free_index) const;
+  /// Backend for a system of this kind: Cholmod gives way to Mumps (said once per run).
+  SolverKind backend_for(MatrixKind kind);
   NodalField make_depl(const Vector& u) const;
   SparseMatrix k_full_;
-  double k_scale_ = 0.0;
-  bool rigid_checked_ = false;  ///< elastic part proven free of rigid-body modes  ///< largest stiffness coefficient, for the residual reference
+  double k_scale_ = 0.0;  ///< largest stiffness coefficient, for the residual reference
+  bool rigid_checked_ = false;  ///< elastic part proven free of rigid-body modes
+  bool backend_note_logged_ = false;  ///< the Cholmod -> Mumps substitution was logged in this run
+
+  /// The factors Newton solves with and the reduced matrix they belong to (iterative
+  /// refinement needs it). Lives until the matrix policy asks for new ones: within one
+  /// Newton loop for the tangent (REAC_ITER), for the whole run for the elastic matrix.
+  struct Factorisation {
+    std::unique_ptr<LinearSolver> solver;
+    SparseMatrix matrix;
+    std::vector<int> free_index;  ///< the Dirichlet elimination it was built with
+    int iteration = -1;           ///< Newton iteration of its loop where it was computed
+  };
+  Factorisation factors_;
 
   const FeModel& model_;
   const MechanicalLoads& loads_;
