@@ -3,6 +3,7 @@
 
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
+#include "commands/selection.hpp"
 #include "engine/contact/contact_factory.hpp"
 #include "engine/io/med_writer.hpp"
 
@@ -57,11 +58,15 @@ void save_converged_steps(const std::vector<engine::ResultStep>& steps, const en
   }
 }
 
-void check_relation(const Args& args) {
+/// COMPORTEMENT / COMP_ELAS: every cell is elastic (the only behaviour); the cells each
+/// occurrence names must exist in the model's mesh all the same.
+void check_behaviour(const Args& args, const engine::Mesh& mesh) {
   for (const char* kw : {"COMP_ELAS", "COMPORTEMENT"})
-    for (const auto& occ : args.factors(kw))
+    for (const auto& occ : args.factors(kw)) {
       if (occ.text("RELATION") != "ELAS")
         throw occ.error("RELATION", "'ELAS' (the only behaviour lunaster implements)", "'" + occ.text("RELATION") + "'");
+      select_cells(occ, mesh);  // TOUT / GROUP_MA: unknown or empty groups are errors
+    }
 }
 
 /// NEWTON: which matrix Newton factorises, and how often (engine's matrix policy).
@@ -83,7 +88,7 @@ ConceptPtr stat_non_line(const Args& args, Session& session) {
   auto result = std::make_shared<EvolNoli>();
   result->modele = args.concept_as<Modele>("MODELE");
   result->cham_mater = args.concept_as<ChamMater>("CHAM_MATER");
-  check_relation(args);
+  check_behaviour(args, *result->modele->maillage->mesh);
   const engine::FeModel model = build_fe_model(*result->modele, *result->cham_mater, args, "CHAM_MATER");
 
   engine::MechanicalLoads loads;
