@@ -8,7 +8,11 @@ Keyword group_no(std::string doc) { return text("GROUP_NO", std::move(doc)).many
 Keyword maille(std::string doc) { return text("MAILLE", std::move(doc)).many(); }
 Keyword noeud(std::string doc) { return text("NOEUD", std::move(doc)).many(); }
 Keyword info() {
-  return integer("INFO", "Amount of printed information: 1 normal, 2 detailed").into_values({1LL, 2LL}).def(1LL);
+  return integer("INFO",
+                 "code_aster's amount of printed information (1 normal, 2 detailed): accepted so that code_aster "
+                 "decks run, no effect (lunaster's log detail is set for the whole run: `lunaster run -v` or -q)")
+      .into_values({1LL, 2LL})
+      .def(1LL);
 }
 
 Keyword contact_integration(std::vector<Scalar> schemes) {

@@ -16,7 +16,7 @@ Keyword group_no(std::string doc = "Node groups of the mesh");
 Keyword maille(std::string doc = "Cell names of the mesh");
 /// NOEUD: one or several node names.
 Keyword noeud(std::string doc = "Node names of the mesh");
-/// INFO = 1|2: amount of printed information.
+/// INFO = 1|2: code_aster's amount of printed information, accepted without effect.
 Keyword info();
 
 /// INTEGRATION keyword of a contact zone with the given allowed schemes (default 'AUTO').
