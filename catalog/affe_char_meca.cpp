@@ -46,7 +46,10 @@ Keyword contact() {
       text("GROUP_MA_MAIT", "Master boundary cell group").required(),
       text("CONTACT_INIT", "Initial contact status: all active, none, or where already interpenetrating")
           .into_values({"OUI", "NON", "INTERPENETRE"}),
-      text("MODL_AXIS", "Axisymmetric model (only 'NON' supported)").into_values({"OUI", "NON"}).def("NON"),
+      text("MODL_AXIS", "Axisymmetric model: only 'NON' (plane or 3D models)")
+          .into_values({"NON"})
+          .refuse("OUI", "axisymmetric models are not supported yet")
+          .def("NON"),
   };
   for (auto& kw : common::contact_loop_keywords()) children.push_back(kw);
   std::vector<Block> blocks = {
@@ -55,10 +58,12 @@ Keyword contact() {
             {common::contact_integration(
                  {"AUTO", "GAUSS", "SIMPSON", "SIMPSON1", "SIMPSON2", "NCOTES", "NCOTES1", "NCOTES2", "NOEUD"}),
              real("COEF_REGU_CONT", "Augmentation coefficient of the contact Lagrangian (seed name of COEF_CONT)")
-                 .range(0.0, std::nullopt),
-             real("COEF_CONT", "Augmentation coefficient of the contact Lagrangian").range(0.0, std::nullopt)},
+                 .above(0.0),
+             real("COEF_CONT", "Augmentation coefficient of the contact Lagrangian").above(0.0),
+             common::algo_reso_cont(false)},
             {at_most_one({"COEF_REGU_CONT", "COEF_CONT"})}},
-      Block{"METHODE", {"PENALISATION"}, {real("E_N", "Normal penalty stiffness (Pa/m)").required().range(0.0, std::nullopt)}, {}},
+      Block{"METHODE", {"CONTRAINTE", "PENALISATION"}, {common::algo_reso_cont(true)}, {}},
+      Block{"METHODE", {"PENALISATION"}, {real("E_N", "Normal penalty stiffness (Pa/m)").required().above(0.0)}, {}},
   };
   for (auto& block : common::ordre_int_blocks()) blocks.push_back(block);
   return factor("CONTACT", children, "Frictionless contact zone (seed syntax; pass the load in STAT_NON_LINE EXCIT)")

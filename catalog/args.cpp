@@ -4,8 +4,11 @@
 
 namespace lunaster::catalog {
 
-Args::Args(const KwNode& node, const Keyword& spec, std::string path)
-    : node_(&node), spec_(&spec), path_(std::move(path)) {}
+Args::Args(const KwNode& node, const Keyword& spec, std::string path, KeywordReads* reads)
+    : Args(node, spec, std::move(path), spec.name, reads) {}
+
+Args::Args(const KwNode& node, const Keyword& spec, std::string path, std::string catalog_path, KeywordReads* reads)
+    : node_(&node), spec_(&spec), path_(std::move(path)), catalog_path_(std::move(catalog_path)), reads_(reads) {}
 
 const Keyword* Args::declared(const std::string& kw) const {
   const Keyword* found = find_active(*spec_, *node_, kw);
@@ -13,6 +16,7 @@ const Keyword* Args::declared(const std::string& kw) const {
   if (!found)
     throw InternalError("keyword " + path(kw) + " is not declared in the catalogue of '" +
                         (path_.empty() ? spec_->name : path_) + "'");
+  if (reads_) reads_->record(catalog_path_ + "/" + kw);
   return found;
 }
 
@@ -84,7 +88,8 @@ Args Args::factor(const std::string& factor_name, int occurrence) const {
     throw InternalError("factor keyword " + path(factor_name) + " has " + std::to_string(n) +
                         " occurrence(s), asked for number " + std::to_string(occurrence + 1));
   const Keyword* k = declared(factor_name);
-  return Args(node_->factors.at(factor_name)[occurrence], *k, occurrence_path(path_, *k, occurrence));
+  return Args(node_->factors.at(factor_name)[occurrence], *k, occurrence_path(path_, *k, occurrence),
+              catalog_path_ + "/" + factor_name, reads_);
 }
 
 std::vector<Args> Args::factors(const std::string& factor_name) const {

@@ -3,6 +3,7 @@
 /// after validation (defaults filled in) it is read through `Args`.
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <variant>
 #include <vector>
@@ -22,11 +23,27 @@ struct KwNode {
   std::map<std::string, std::vector<KwNode>> factors;
 };
 
+/// The declared keywords a command's handler asked for, as catalogue paths
+/// ("STAT_NON_LINE/NEWTON/REAC_ITER", no occurrence numbers). Filled by Args when one
+/// is given to the root Args (the runner does so on request): a test proves with it
+/// that every keyword the catalogue accepts is read by its handler.
+class KeywordReads {
+ public:
+  void record(const std::string& path) { paths_.insert(path); }
+  bool contains(const std::string& path) const { return paths_.count(path) > 0; }
+  const std::set<std::string>& paths() const { return paths_; }
+
+ private:
+  std::set<std::string> paths_;
+};
+
 /// Typed read access to a validated keyword node. Asking for a keyword the
-/// spec does not declare is an InternalError (a bug in the command).
+/// spec does not declare is an InternalError (a bug in the command). Every
+/// access to a keyword (has, values, count, factor) is a read for KeywordReads.
 class Args {
  public:
-  Args(const KwNode& node, const Keyword& spec, std::string path = {});
+  /// `reads` (may be null, not owned) records the keywords read through this Args and its factors.
+  Args(const KwNode& node, const Keyword& spec, std::string path = {}, KeywordReads* reads = nullptr);
 
   bool has(const std::string& kw) const;
   /// True if the spec (or an active block) declares `kw` here; never throws.
@@ -62,11 +79,15 @@ class Args {
 
  private:
   const std::vector<Value>& values(const std::string& kw) const;
+  Args(const KwNode& node, const Keyword& spec, std::string path, std::string catalog_path, KeywordReads* reads);
+  /// The declared keyword `kw` (recorded as read); InternalError if the spec has none.
   const Keyword* declared(const std::string& kw) const;
   [[noreturn]] void throw_wrong_concept(const std::string& kw, const ConceptPtr& c) const;
   const KwNode* node_;
   const Keyword* spec_;
   std::string path_;
+  std::string catalog_path_;  ///< "STAT_NON_LINE/NEWTON": where this node sits in the catalogue
+  KeywordReads* reads_ = nullptr;
 };
 
 /// Checks `node` against `spec` (unknown keywords, types, into, ranges, counts,

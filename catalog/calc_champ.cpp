@@ -1,3 +1,4 @@
+#include "catalog/common/keywords.hpp"
 #include "catalog/specs.hpp"
 
 namespace lunaster::catalog {
@@ -10,7 +11,7 @@ const CommandSpec& calc_champ_spec() {
        text("CRITERES", "Equivalent stress fields to compute").into_values({"SIEQ_ELNO", "SIEQ_NOEU"}).many(),
        integer("NUME_ORDRE", "Time step numbers to process").many(), real("INST", "Times to process").many(),
        text("TOUT_ORDRE", "Process every time step (default)").into_values({"OUI"}),
-       integer("INFO", "Printed information").into_values({1LL, 2LL}).def(1LL)},
+       common::info()},
       {at_most_one({"NUME_ORDRE", "INST", "TOUT_ORDRE"}), at_least_one({"CONTRAINTE", "CRITERES"})}, {}, true);
   return spec;
 }

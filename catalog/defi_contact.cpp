@@ -20,8 +20,8 @@ Keyword continuous_zone() {
                          .into_values({"OUI", "NON", "INTERPENETRE"})
                          .def("INTERPENETRE"));
   std::vector<Block> blocks = {
-      Block{"ALGO_CONT", {"STANDARD"}, {real("COEF_CONT", "Augmentation coefficient rho of the contact Lagrangian").def(100.0).range(0.0, std::nullopt)}, {}},
-      Block{"ALGO_CONT", {"PENALISATION"}, {real("COEF_PENA_CONT", "Normal penalty coefficient").required().range(0.0, std::nullopt)}, {}},
+      Block{"ALGO_CONT", {"STANDARD"}, {real("COEF_CONT", "Augmentation coefficient rho of the contact Lagrangian").def(100.0).above(0.0)}, {}},
+      Block{"ALGO_CONT", {"PENALISATION"}, {real("COEF_PENA_CONT", "Normal penalty coefficient").required().above(0.0)}, {}},
   };
   for (auto& block : common::ordre_int_blocks()) blocks.push_back(block);
   return factor("ZONE", children, "One contact zone (slave/master pair)").required().occurs(1, -1).with_blocks(blocks);
@@ -33,7 +33,7 @@ Keyword discrete_zone() {
                          .into_values({"CONTRAINTE", "PENALISATION"})
                          .def("CONTRAINTE"));
   std::vector<Block> blocks = {
-      Block{"ALGO_CONT", {"PENALISATION"}, {real("E_N", "Normal penalty stiffness (Pa/m)").required().range(0.0, std::nullopt)}, {}},
+      Block{"ALGO_CONT", {"PENALISATION"}, {real("E_N", "Normal penalty stiffness (Pa/m)").required().above(0.0)}, {}},
   };
   return factor("ZONE", children, "One contact zone (slave/master pair)").required().occurs(1, -1).with_blocks(blocks);
 }
@@ -52,8 +52,8 @@ const CommandSpec& defi_contact_spec() {
   keywords.push_back(common::info());
   static const CommandSpec spec = make_command(
       "DEFI_CONTACT", "char_contact", "Define frictionless contact zones (pass to STAT_NON_LINE CONTACT)", keywords, {},
-      {Block{"FORMULATION", {"CONTINUE"}, {continuous_zone()}, {}},
-       Block{"FORMULATION", {"DISCRETE"}, {discrete_zone()}, {}}});
+      {Block{"FORMULATION", {"CONTINUE"}, {common::algo_reso_cont(false), continuous_zone()}, {}},
+       Block{"FORMULATION", {"DISCRETE"}, {common::algo_reso_cont(true), discrete_zone()}, {}}});
   return spec;
 }
 

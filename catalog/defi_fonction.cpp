@@ -1,3 +1,4 @@
+#include "catalog/common/keywords.hpp"
 #include "catalog/specs.hpp"
 
 namespace lunaster::catalog {
@@ -14,7 +15,10 @@ const CommandSpec& defi_fonction_spec() {
        real("VALE", "Pairs x1, f(x1), x2, f(x2), ... with increasing x").count(2, -1).required(),
        prolongation("PROL_GAUCHE", "left"), prolongation("PROL_DROITE", "right"),
        text("INTERPOL", "Interpolation (only linear)").into_values({"LIN"}).count(1, 2).def("LIN"),
-       text("NOM_RESU", "Name of the function value").def("TOUTRESU"), integer("INFO", "Printed information").into_values({1LL, 2LL}).def(1LL)});
+       text("NOM_RESU", "Name of the function's values in code_aster's tables: accepted, no effect (lunaster prints no "
+                        "function tables)")
+           .def("TOUTRESU"),
+       common::info()});
   return spec;
 }
 

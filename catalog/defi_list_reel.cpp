@@ -9,7 +9,7 @@ const CommandSpec& defi_list_reel_spec() {
        factor("INTERVALLE",
               {real("JUSQU_A", "End of the interval").required(),
                integer("NOMBRE", "Number of equal steps in the interval").range(1, std::nullopt),
-               real("PAS", "Step length in the interval").range(0.0, std::nullopt)},
+               real("PAS", "Step length in the interval").above(0.0)},
               "One interval after the previous end, cut into equal steps")
            .occurs(0, -1)
            .with_rules({exactly_one({"NOMBRE", "PAS"})}),

@@ -6,8 +6,8 @@ const CommandSpec& defi_materiau_spec() {
   static const CommandSpec spec = make_command(
       "DEFI_MATERIAU", "mater", "Define a material",
       {factor("ELAS",
-              {real("E", "Young's modulus (Pa)").required().range(0.0, std::nullopt),
-               real("NU", "Poisson's ratio").required().range(-1.0, 0.5),
+              {real("E", "Young's modulus (Pa)").required().above(0.0),
+               real("NU", "Poisson's ratio").required().above(-1.0).below(0.5),
                real("RHO", "Density (kg/m3)").range(0.0, std::nullopt)},
               "Isotropic linear elasticity")
            .required()});

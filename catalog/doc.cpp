@@ -62,6 +62,7 @@ void text_keywords(std::ostringstream& out, const Keyword& spec, int depth) {
   auto one = [&](const Keyword& kw, const std::string& condition) {
     out << pad << kw.name << "  [" << (kw.is_factor ? "factor" : type_text(kw)) << "; " << status_text(kw);
     if (kw.default_value) out << "; default " << describe(*kw.default_value);
+    out << refused_text(kw);
     if (!condition.empty()) out << "; " << condition;
     out << "]\n" << pad << "    " << kw.doc << "\n";
     if (kw.is_factor) text_keywords(out, kw, depth + 1);
@@ -79,7 +80,7 @@ void markdown_rows(std::ostringstream& out, const Keyword& spec, const std::stri
     std::string path = prefix.empty() ? kw.name : prefix + "/" + kw.name;
     out << "| `" << path << "` | " << (kw.is_factor ? "factor" : type_text(kw)) << " | " << status_text(kw) << " | "
         << (kw.default_value ? "`" + describe(*kw.default_value) + "`" : "") << " | " << md_cell(kw.doc)
-        << (condition.empty() ? "" : " (" + condition + ")") << " |\n";
+        << (condition.empty() ? "" : " (" + condition + ")") << md_cell(refused_text(kw)) << " |\n";
     if (kw.is_factor) markdown_rows(out, kw, path);
   };
   for (const auto& kw : spec.children) row(kw, "");
@@ -118,14 +119,24 @@ std::string type_text(const Keyword& kw) {
     for (std::size_t i = 0; i < kw.into.size(); ++i) base += (i ? ", " : "") + describe(kw.into[i]);
     base += ")";
   }
-  if (kw.val_min && kw.val_max)
-    base += " in [" + number(*kw.val_min) + ", " + number(*kw.val_max) + "]";
-  else if (kw.val_min)
-    base += " >= " + number(*kw.val_min);
-  else if (kw.val_max)
-    base += " <= " + number(*kw.val_max);
+  base += bounds_text(kw);
   if (kw.max_values != 1) base = "list of " + base;
   return base;
+}
+
+std::string bounds_text(const Keyword& kw) {
+  if (kw.val_min && kw.val_max)
+    return std::string(" in ") + (kw.min_open ? "(" : "[") + number(*kw.val_min) + ", " + number(*kw.val_max) +
+           (kw.max_open ? ")" : "]");
+  if (kw.val_min) return (kw.min_open ? " > " : " >= ") + number(*kw.val_min);
+  if (kw.val_max) return (kw.max_open ? " < " : " <= ") + number(*kw.val_max);
+  return {};
+}
+
+std::string refused_text(const Keyword& kw) {
+  std::string out;
+  for (const auto& [value, reason] : kw.refused) out += "; " + describe(value) + " refused: " + reason;
+  return out;
 }
 
 std::string rule_text(const Rule& rule) {

@@ -10,11 +10,11 @@ const CommandSpec& impr_resu_spec() {
        text("FICHIER", "Output file name inside the output folder (overrides UNITE)"),
        factor("RESU",
               {concept_kw("RESULTAT", {"evol_noli"}, "Result to write"),
-               concept_kw("MAILLAGE", {"maillage"}, "Mesh to write"),
-               text("NOM_CHAM", "Fields to write (default: all)").many(),
-               integer("NUME_ORDRE", "Time steps to write (default: all)").many(),
-               text("GROUP_NO", "Restrict to these node groups").many(),
-               text("GROUP_MA", "Restrict to these cell groups").many()},
+               concept_kw("MAILLAGE", {"maillage"}, "Mesh to write (FORMAT='MED'; with RESULTAT, its mesh)"),
+               text("NOM_CHAM", "Fields of RESULTAT to write (default: all)").many(),
+               integer("NUME_ORDRE", "Time steps of RESULTAT to write (default: all)").many(),
+               text("GROUP_NO", "Restrict the table to these node groups (FORMAT='RESULTAT' only)").many(),
+               text("GROUP_MA", "Restrict the table to the nodes of these cell groups (FORMAT='RESULTAT' only)").many()},
               "What to write")
            .required()
            .occurs(1, -1)

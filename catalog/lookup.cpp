@@ -1,6 +1,7 @@
 #include "catalog/lookup.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace lunaster::catalog {
@@ -100,6 +101,7 @@ std::string occurrence_path(const std::string& prefix, const Keyword& kw, std::s
 
 std::string describe(const Value& v) {
   if (auto d = std::get_if<double>(&v)) {
+    if (std::isnan(*d)) return "nan";  // one spelling whatever the sign bit (0/0 gives -nan on x86)
     std::ostringstream out;
     out << *d;
     return out.str();

@@ -4,6 +4,7 @@
 /// docs/commands.md are all derived from it.
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -54,7 +55,11 @@ struct Keyword {
   std::vector<std::string> concept_types;  ///< for ValueType::Concept
   std::optional<Scalar> default_value;
   std::vector<Scalar> into;                ///< allowed values (empty: any)
-  std::optional<double> val_min, val_max;  ///< inclusive bounds for Real/Int
+  std::optional<double> val_min, val_max;  ///< bounds for Real/Int, inclusive unless marked open below
+  bool min_open = false, max_open = false; ///< open (exclusive) bounds: E > 0, -1 < NU < 0.5
+  /// Values of the type that are recognised but refused, each with the reason shown in the
+  /// error (e.g. MODL_AXIS = 'OUI': axisymmetric models are not supported yet).
+  std::vector<std::pair<Scalar, std::string>> refused;
   int min_values = 1, max_values = 1;      ///< number of values; max -1 = unbounded
   // ---- factor keywords ----
   int min_occurs = 0, max_occurs = 1;      ///< occurrences; max -1 = unbounded
@@ -68,7 +73,14 @@ struct Keyword {
   Keyword legacy() const { Keyword k = *this; k.status = Status::Legacy; return k; }
   Keyword def(Scalar v) const { Keyword k = *this; k.default_value = std::move(v); return k; }
   Keyword into_values(std::vector<Scalar> v) const { Keyword k = *this; k.into = std::move(v); return k; }
-  Keyword range(std::optional<double> lo, std::optional<double> hi) const { Keyword k = *this; k.val_min = lo; k.val_max = hi; return k; }
+  /// Inclusive bounds lo <= x <= hi (either may be absent).
+  Keyword range(std::optional<double> lo, std::optional<double> hi) const { Keyword k = *this; k.val_min = lo; k.val_max = hi; k.min_open = k.max_open = false; return k; }
+  /// Open lower bound x > lo (the upper bound is kept).
+  Keyword above(double lo) const { Keyword k = *this; k.val_min = lo; k.min_open = true; return k; }
+  /// Open upper bound x < hi (the lower bound is kept).
+  Keyword below(double hi) const { Keyword k = *this; k.val_max = hi; k.max_open = true; return k; }
+  /// A value refused with a reason (not in `into`; the error names the reason).
+  Keyword refuse(Scalar v, std::string reason) const { Keyword k = *this; k.refused.emplace_back(std::move(v), std::move(reason)); return k; }
   Keyword count(int lo, int hi) const { Keyword k = *this; k.min_values = lo; k.max_values = hi; return k; }
   Keyword many() const { return count(1, -1); }
   Keyword occurs(int lo, int hi) const { Keyword k = *this; k.min_occurs = lo; k.max_occurs = hi; return k; }

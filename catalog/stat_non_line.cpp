@@ -34,18 +34,33 @@ std::vector<Keyword> keywords() {
              "Time stepping")
           .required(),
       factor("NEWTON",
-             {text("MATRICE", "Matrix used by Newton; with RELATION='ELAS' (the only behaviour) the tangent is the elastic matrix, so both give the same iterations; contact terms are always included").into_values({"TANGENTE", "ELASTIQUE"}).def("TANGENTE"),
-              integer("REAC_ITER", "Rebuild the matrix every N iterations (0: never); with RELATION='ELAS' only the contact terms change between iterations and they are always rebuilt").def(1LL).range(0, std::nullopt)},
+             {text("MATRICE",
+                   "Matrix of Newton's corrections: the tangent, or the elastic matrix factorised once for the whole "
+                   "run (runs without contact only: code_aster keeps the contact terms in the matrix, so with "
+                   "contact it would be the tangent)")
+                  .into_values({"TANGENTE", "ELASTIQUE"})
+                  .def("TANGENTE"),
+              integer("REAC_ITER",
+                      "Refactorise the tangent every N Newton iterations; 0: only at the first iteration of each "
+                      "instant and of each contact pass (always refactorised: its statuses or pairing changed the "
+                      "matrix). In between the last factors are reused with the current residual (modified Newton: "
+                      "fewer factorisations, more iterations; convergence is judged on the true residual)")
+                  .def(1LL)
+                  .range(0, std::nullopt)},
              "Newton's method")
           .by_default(),
       factor("CONVERGENCE",
-             {real("RESI_GLOB_RELA", "Largest free residual over the largest load or reaction; 1e-6 unless only RESI_GLOB_MAXI is given").range(0.0, std::nullopt),
-              real("RESI_GLOB_MAXI", "Largest residual component (N)").range(0.0, std::nullopt),
+             {real("RESI_GLOB_RELA", "Largest free residual over the largest load or reaction; 1e-6 unless only RESI_GLOB_MAXI is given").above(0.0),
+              real("RESI_GLOB_MAXI", "Largest residual component (N)").above(0.0),
               integer("ITER_GLOB_MAXI", "Maximum Newton iterations per step").def(10LL).range(1, std::nullopt)},
              "Convergence criteria (both residual criteria must hold when both are given)")
           .by_default(),
       factor("SOLVEUR",
-             {text("METHODE", "Linear solver; AUTO = CHOLMOD for SPD matrices, else UMFPACK")
+             {text("METHODE",
+                   "Linear solver. AUTO, CHOLMOD, LDLT and MULT_FRONT factorise with CHOLMOD (sparse Cholesky) "
+                   "when the system is symmetric positive definite and with MUMPS otherwise (contact "
+                   "multipliers, mid-side ties, continuous penalty; the log says so once); MUMPS and UMFPACK are "
+                   "used as asked")
                   .into_values({"AUTO", "MUMPS", "LDLT", "MULT_FRONT", "CHOLMOD", "UMFPACK"})
                   .def("AUTO")},
              "Linear solver")

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "catalog/args.hpp"
+#include "catalog/doc.hpp"
 #include "catalog/lookup.hpp"
 
 namespace lunaster::catalog {
@@ -29,14 +30,9 @@ std::string join_names(const std::vector<std::string>& names, const std::string&
   return out;
 }
 
-std::string format_number(double x) {
-  std::ostringstream out;
-  out << x;
-  return out.str();
-}
-
 /// "real in [-1, 0.5]", "integer >= 1", "one of 'A', 'B'", "maillage".
 std::string expected_text(const Keyword& kw) {
+  if (kw.into.size() == 1) return describe(kw.into.front());
   if (!kw.into.empty()) {
     std::vector<std::string> items;
     for (const auto& s : kw.into) items.push_back(describe(s));
@@ -49,13 +45,14 @@ std::string expected_text(const Keyword& kw) {
     case ValueType::Text: base = "text"; break;
     case ValueType::Concept: base = join_names(kw.concept_types, " or ") + " concept"; break;
   }
-  if (kw.val_min && kw.val_max)
-    base += " in [" + format_number(*kw.val_min) + ", " + format_number(*kw.val_max) + "]";
-  else if (kw.val_min)
-    base += " >= " + format_number(*kw.val_min);
-  else if (kw.val_max)
-    base += " <= " + format_number(*kw.val_max);
-  return base;
+  return base + bounds_text(kw);
+}
+
+/// True if x lies outside the keyword's bounds (open bounds exclude their end).
+bool out_of_bounds(const Keyword& kw, double x) {
+  if (kw.val_min && (kw.min_open ? x <= *kw.val_min : x < *kw.val_min)) return true;
+  if (kw.val_max && (kw.max_open ? x >= *kw.val_max : x > *kw.val_max)) return true;
+  return false;
 }
 
 std::string plural(std::size_t n, const std::string& word) {
@@ -201,6 +198,18 @@ void Checker::check_value(const Keyword& kw, Value& value, const std::string& pa
     add(path, expected_text(kw), describe(value));
     return;
   }
+  // NaN and infinities (0/0, 1/0 in a deck) are no numbers for any keyword: NaN would also
+  // slip through every bound, since each comparison with it is false.
+  if (auto d = std::get_if<double>(&value); d && !std::isfinite(*d)) {
+    add(path, "a finite " + expected_text(kw), describe(value));
+    return;
+  }
+  for (const auto& [refused, reason] : kw.refused) {
+    if (equals(value, refused)) {
+      add(path, expected_text(kw) + " (" + reason + ")", describe(value));
+      return;
+    }
+  }
   if (!kw.into.empty()) {
     bool inside = std::any_of(kw.into.begin(), kw.into.end(), [&](const Scalar& s) { return equals(value, s); });
     if (!inside) {
@@ -218,7 +227,7 @@ void Checker::check_value(const Keyword& kw, Value& value, const std::string& pa
   }
   if (kw.type == ValueType::Real || kw.type == ValueType::Int) {
     double x = kw.type == ValueType::Real ? std::get<double>(value) : static_cast<double>(std::get<long long>(value));
-    if ((kw.val_min && x < *kw.val_min) || (kw.val_max && x > *kw.val_max)) add(path, expected_text(kw), describe(value));
+    if (out_of_bounds(kw, x)) add(path, expected_text(kw), describe(value));
   }
 }
 

@@ -7,6 +7,12 @@ namespace lunaster::cmd {
 
 ConceptPtr affe_materiau(const Args& args, Session&) {
   auto ma = args.concept_as<Maillage>("MAILLAGE");
+  if (args.has("MODELE")) {
+    auto mo = args.concept_as<Modele>("MODELE");
+    if (mo->maillage->mesh != ma->mesh)
+      throw args.error("MODELE", "a model of mesh '" + ma->user_name + "' (MAILLAGE)",
+                       "'" + mo->user_name + "', a model of mesh '" + mo->maillage->user_name + "'");
+  }
   auto cm = std::make_shared<ChamMater>();
   cm->maillage = ma;
   cm->material.assign(ma->mesh->n_cells(), -1);

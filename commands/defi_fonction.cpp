@@ -1,10 +1,17 @@
 // DEFI_FONCTION: piecewise linear function given as (x, y) pairs.
+#include <cstdio>
+
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
 
 namespace lunaster::cmd {
 
 namespace {
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
 char prolongation(const std::string& name) { return name == "CONSTANT" ? 'C' : name == "LINEAIRE" ? 'L' : 'E'; }
 }  // namespace
 
@@ -15,9 +22,11 @@ ConceptPtr defi_fonction(const Args& args, Session&) {
   if (vale.size() % 2 != 0 || vale.size() < 2)
     throw args.error("VALE", "an even number of values (x1, y1, x2, y2, ...)", std::to_string(vale.size()) + " values");
   for (size_t i = 0; i < vale.size(); i += 2) {
+    // Finite values are the catalogue's check; the order of the pairs is the command's.
     if (!f->abscissas.empty() && vale[i] <= f->abscissas.back())
-      throw args.error("VALE", "strictly increasing abscissas", "x = " + std::to_string(vale[i]) + " after " +
-                                                                    std::to_string(f->abscissas.back()));
+      throw args.error("VALE", "strictly increasing abscissas x1 < x2 < ...",
+                       "x" + std::to_string(i / 2 + 1) + " = " + number(vale[i]) + " after x" + std::to_string(i / 2) +
+                           " = " + number(f->abscissas.back()) + " (value " + std::to_string(i + 1) + " of VALE)");
     f->abscissas.push_back(vale[i]);
     f->ordinates.push_back(vale[i + 1]);
   }

@@ -11,8 +11,7 @@ ConceptPtr defi_materiau(const Args& args, Session&) {
     mat->has_elas = true;
     mat->elas.young = elas.real("E");
     mat->elas.poisson = elas.real("NU");
-    if (elas.has("RHO")) mat->elas.density = elas.real("RHO");
-    if (mat->elas.young <= 0.0) throw elas.error("E", "a positive Young's modulus", std::to_string(mat->elas.young));
+    if (elas.has("RHO")) mat->elas.density = elas.real("RHO");  // E > 0, -1 < NU < 0.5: catalogue bounds
   }
   return mat;
 }

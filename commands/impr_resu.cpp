@@ -1,6 +1,7 @@
 // IMPR_RESU: writes results as MED (ParaView/Salome) or as a text table.
 #include <algorithm>
 #include <cstdio>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 
@@ -23,20 +24,45 @@ std::filesystem::path output_path(const Args& args, const Session& session, cons
   return session.output_file(session.deck_path.stem().string() + "_" + unit + "." + ext);
 }
 
+/// The steps of RESULTAT chosen by NUME_ORDRE, with only the fields NOM_CHAM names (all by
+/// default); DeckError for an order or a field the result does not have.
+std::vector<engine::ResultStep> selected_steps(const Args& occ, const EvolNoli& resu) {
+  std::vector<engine::ResultStep> out;
+  std::vector<long long> orders;
+  if (occ.has("NUME_ORDRE")) orders = occ.integers("NUME_ORDRE");
+  for (long long order : orders)
+    if (std::none_of(resu.steps.begin(), resu.steps.end(), [&](const auto& s) { return s.nume_ordre == order; }))
+      throw occ.error("NUME_ORDRE", "a time step stored in '" + resu.user_name + "' (0 to " +
+                                        std::to_string(resu.steps.back().nume_ordre) + ")",
+                      std::to_string(order));
+  for (const auto& step : resu.steps)
+    if (orders.empty() || std::find(orders.begin(), orders.end(), step.nume_ordre) != orders.end()) out.push_back(step);
+  if (!occ.has("NOM_CHAM")) return out;
+  const auto fields = occ.texts("NOM_CHAM");
+  for (const auto& name : fields) {
+    const bool stored = std::any_of(out.begin(), out.end(), [&](const auto& s) {
+      return s.nodal.count(name) > 0 || s.elno.count(name) > 0;
+    });
+    if (!stored)
+      throw occ.error("NOM_CHAM", "a field stored in '" + resu.user_name + "' (compute it with CALC_CHAMP first)",
+                      "'" + name + "'");
+  }
+  auto unwanted = [&](const std::string& name) { return std::find(fields.begin(), fields.end(), name) == fields.end(); };
+  for (auto& step : out) {
+    for (auto it = step.nodal.begin(); it != step.nodal.end();) it = unwanted(it->first) ? step.nodal.erase(it) : std::next(it);
+    for (auto it = step.elno.begin(); it != step.elno.end();) it = unwanted(it->first) ? step.elno.erase(it) : std::next(it);
+  }
+  return out;
+}
+
+/// FORMAT='RESULTAT': nodal fields of the selected steps, at the selected nodes.
 void write_table(std::ostream& out, const Args& occ, const EvolNoli& resu) {
   const engine::Mesh& mesh = *resu.modele->maillage->mesh;
   std::vector<int> nodes;
   if (occ.has("GROUP_NO") || occ.has("GROUP_MA")) nodes = select_nodes(occ, mesh);
   else for (int n = 0; n < mesh.n_nodes(); ++n) nodes.push_back(n);
-  std::vector<std::string> fields;
-  if (occ.has("NOM_CHAM")) fields = occ.texts("NOM_CHAM");
-  for (const auto& step : resu.steps) {
-    if (occ.has("NUME_ORDRE")) {
-      const auto wanted = occ.integers("NUME_ORDRE");
-      if (std::find(wanted.begin(), wanted.end(), step.nume_ordre) == wanted.end()) continue;
-    }
+  for (const auto& step : selected_steps(occ, resu)) {
     for (const auto& [name, f] : step.nodal) {
-      if (!fields.empty() && std::find(fields.begin(), fields.end(), name) == fields.end()) continue;
       char head[128];
       std::snprintf(head, sizeof head, "CHAMP %s  NUME_ORDRE %d  INST %.6e\n", name.c_str(), step.nume_ordre, step.inst);
       out << head << "NOEUD   ";
@@ -64,11 +90,15 @@ ConceptPtr impr_resu(const Args& args, Session& session) {
   Session::Timer timer(session, "output");
   const std::string format = args.text("FORMAT");
   if (format == "RESULTAT") {
+    for (const auto& occ : args.factors("RESU"))
+      if (occ.has("MAILLAGE"))
+        throw occ.error("MAILLAGE", "RESULTAT only with FORMAT='RESULTAT' (it prints result tables; a mesh is "
+                                    "written with FORMAT='MED')",
+                        "MAILLAGE");
     const auto path = output_path(args, session, "resu");
     // Atomic: a good file is never replaced by a truncated one.
     engine::write_file_atomically(path, [&](std::ostream& out) {
-      for (const auto& occ : args.factors("RESU"))
-        if (occ.has("RESULTAT")) write_table(out, occ, *occ.concept_as<EvolNoli>("RESULTAT"));
+      for (const auto& occ : args.factors("RESU")) write_table(out, occ, *occ.concept_as<EvolNoli>("RESULTAT"));
     });
     session.log().info("  written " + path.string());
     return nullptr;
@@ -76,14 +106,26 @@ ConceptPtr impr_resu(const Args& args, Session& session) {
   const auto path = output_path(args, session, "rmed");
   std::shared_ptr<engine::Mesh> mesh;
   std::vector<engine::MedResult> results;
+  std::deque<std::vector<engine::ResultStep>> selections;  // steps chosen by NUME_ORDRE / NOM_CHAM (stable addresses)
   for (const auto& occ : args.factors("RESU")) {
+    for (const char* kw : {"GROUP_NO", "GROUP_MA"})
+      if (occ.has(kw))
+        throw occ.error(kw, std::string("no ") + kw + " with FORMAT='MED' (the MED file holds the whole mesh; "
+                                                      "FORMAT='RESULTAT' prints chosen nodes)",
+                        kw);
     std::shared_ptr<engine::Mesh> this_mesh;
+    if (occ.has("MAILLAGE")) this_mesh = occ.concept_as<Maillage>("MAILLAGE")->mesh;
     if (occ.has("RESULTAT")) {
       auto resu = occ.concept_as<EvolNoli>("RESULTAT");
+      if (this_mesh && this_mesh != resu->modele->maillage->mesh)
+        throw occ.error("MAILLAGE", "the mesh of RESULTAT '" + resu->user_name + "'", "another mesh");
       this_mesh = resu->modele->maillage->mesh;
-      results.push_back({resu->user_name.empty() ? "RESU" : resu->user_name, &resu->steps});
-    } else if (occ.has("MAILLAGE")) {
-      this_mesh = occ.concept_as<Maillage>("MAILLAGE")->mesh;
+      const std::vector<engine::ResultStep>* steps = &resu->steps;
+      if (occ.has("NUME_ORDRE") || occ.has("NOM_CHAM")) steps = &selections.emplace_back(selected_steps(occ, *resu));
+      results.push_back({resu->user_name.empty() ? "RESU" : resu->user_name, steps});
+    } else {
+      for (const char* kw : {"NOM_CHAM", "NUME_ORDRE"})
+        if (occ.has(kw)) throw occ.error(kw, std::string("no ") + kw + " without RESULTAT", kw);
     }
     if (mesh && this_mesh && this_mesh != mesh)
       throw occ.error("RESULTAT", "results on the same mesh in one MED file", "a result on another mesh");

@@ -3,6 +3,7 @@
 
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
+#include "commands/selection.hpp"
 #include "engine/contact/contact_factory.hpp"
 #include "engine/io/med_writer.hpp"
 
@@ -13,7 +14,7 @@ namespace {
 engine::SolverKind solver_kind(const std::string& methode) {
   if (methode == "MUMPS") return engine::SolverKind::Mumps;
   if (methode == "UMFPACK") return engine::SolverKind::Umfpack;
-  return engine::SolverKind::Cholmod;  // AUTO, CHOLMOD, LDLT, MULT_FRONT: Cholmod, Umfpack if indefinite
+  return engine::SolverKind::Cholmod;  // AUTO, CHOLMOD, LDLT, MULT_FRONT: Cholmod, Mumps if not SPD (engine)
 }
 
 /// Instants to compute: LIST_INST restricted to [INST_INIT, INST_FIN].
@@ -57,11 +58,28 @@ void save_converged_steps(const std::vector<engine::ResultStep>& steps, const en
   }
 }
 
-void check_relation(const Args& args) {
+/// COMPORTEMENT / COMP_ELAS: every cell is elastic (the only behaviour); the cells each
+/// occurrence names must exist in the model's mesh all the same.
+void check_behaviour(const Args& args, const engine::Mesh& mesh) {
   for (const char* kw : {"COMP_ELAS", "COMPORTEMENT"})
-    for (const auto& occ : args.factors(kw))
+    for (const auto& occ : args.factors(kw)) {
       if (occ.text("RELATION") != "ELAS")
         throw occ.error("RELATION", "'ELAS' (the only behaviour lunaster implements)", "'" + occ.text("RELATION") + "'");
+      select_cells(occ, mesh);  // TOUT / GROUP_MA: unknown or empty groups are errors
+    }
+}
+
+/// NEWTON: which matrix Newton factorises, and how often (engine's matrix policy).
+void read_newton(const Args& newton, bool has_contact, engine::NewtonOptions& options) {
+  options.reac_iter = static_cast<int>(newton.integer("REAC_ITER"));
+  options.elastic_matrix = newton.text("MATRICE") == "ELASTIQUE";
+  // code_aster keeps the contact terms in the matrix whatever MATRICE says, and with an elastic
+  // material that matrix is the tangent: 'ELASTIQUE' would change nothing. Without the contact
+  // terms the multiplier equations are empty (Lagrange) or the penalty stiffness is missing.
+  if (options.elastic_matrix && has_contact)
+    throw newton.error("MATRICE", "'TANGENTE' with contact (the contact terms belong in the matrix; without contact "
+                                  "'ELASTIQUE' factorises the elastic matrix once for the whole run)",
+                       "'ELASTIQUE'");
 }
 
 }  // namespace
@@ -70,7 +88,7 @@ ConceptPtr stat_non_line(const Args& args, Session& session) {
   auto result = std::make_shared<EvolNoli>();
   result->modele = args.concept_as<Modele>("MODELE");
   result->cham_mater = args.concept_as<ChamMater>("CHAM_MATER");
-  check_relation(args);
+  check_behaviour(args, *result->modele->maillage->mesh);
   const engine::FeModel model = build_fe_model(*result->modele, *result->cham_mater, args, "CHAM_MATER");
 
   engine::MechanicalLoads loads;
@@ -112,6 +130,7 @@ ConceptPtr stat_non_line(const Args& args, Session& session) {
                                                         : 1e-6;
   options.iter_glob_maxi = static_cast<int>(conv.integer("ITER_GLOB_MAXI"));
   options.solver = solver_kind(args.factor("SOLVEUR").text("METHODE"));
+  read_newton(args.factor("NEWTON"), contact != nullptr, options);
   const std::vector<double> times = instants(args.factor("INCREMENT"), options);
 
   std::unique_ptr<engine::ContactHook> hook;
@@ -122,6 +141,10 @@ ConceptPtr stat_non_line(const Args& args, Session& session) {
     try {
       result->steps = solver.run(times);
     } catch (SolveError& err) {
+      if (dynamic_cast<engine::ConvergenceError*>(&err) && options.reac_iter != 1)
+        err.add_hint("NEWTON: REAC_ITER = " + std::to_string(options.reac_iter) +
+                     " reuses the factorisation between iterations (a modified Newton, slower to converge); "
+                     "REAC_ITER = 1 refactorises at every iteration");
       save_converged_steps(solver.converged_steps(), *model.mesh, session, err);
       throw;
     }

@@ -90,7 +90,7 @@ catalog::ConceptPtr Runner::execute(lua_State* L, const catalog::CommandSpec& sp
   cmd::Handler handler = lookup_ ? lookup_(spec.name) : nullptr;
   if (!handler) throw InternalError("command " + spec.name + " has no handler");
   session_.current = where;
-  const catalog::Args args(node, spec.body);
+  const catalog::Args args(node, spec.body, {}, reads_);
   catalog::ConceptPtr result;
   try {
     result = handler(args, session_);

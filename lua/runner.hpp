@@ -8,6 +8,7 @@
 #include <iosfwd>
 #include <string>
 
+#include "catalog/args.hpp"
 #include "catalog/spec.hpp"
 #include "commands/registry.hpp"
 #include "commands/session.hpp"
@@ -39,6 +40,8 @@ class Runner {
   const std::string& last_traceback() const { return traceback_; }
 
   cmd::Session& session() { return session_; }
+  /// Records in `reads` (not owned; null to stop) every keyword the handlers read (tests).
+  void set_keyword_reads(catalog::KeywordReads* reads) { reads_ = reads; }
   /// The Lua state (for tests and the bridge code in lua/).
   lua_State* state() { return state_; }
 
@@ -61,6 +64,7 @@ class Runner {
   std::string pending_message_;   ///< its Lua error message, to recognise it at the top
   std::string traceback_;
   std::filesystem::path deck_dir_;
+  catalog::KeywordReads* reads_ = nullptr;
 };
 
 /// Runs one deck and maps the outcome to the exit code of STYLE.md §3

@@ -35,3 +35,7 @@ done
 for t in hexa8 hexa20 penta6 penta15 tetra4 tetra10; do
   "$gen" --block "$t:2" --distort 0.15 -o "$m/patch_$t.med"
 done
+
+# One-cell unit blocks (testcases/loads_and_groups.lua names their nodes N1..N4 / cell M5)
+"$gen" --block quad4:1 -o "$m/unit_quad4.med"
+"$gen" --block hexa8:1 -o "$m/unit_hexa8.med"

@@ -8,7 +8,11 @@ Keyword group_no(std::string doc) { return text("GROUP_NO", std::move(doc)).many
 Keyword maille(std::string doc) { return text("MAILLE", std::move(doc)).many(); }
 Keyword noeud(std::string doc) { return text("NOEUD", std::move(doc)).many(); }
 Keyword info() {
-  return integer("INFO", "Amount of printed information: 1 normal, 2 detailed").into_values({1LL, 2LL}).def(1LL);
+  return integer("INFO",
+                 "code_aster's amount of printed information (1 normal, 2 detailed): accepted so that code_aster "
+                 "decks run, no effect (lunaster's log detail is set for the whole run: `lunaster run -v` or -q)")
+      .into_values({1LL, 2LL})
+      .def(1LL);
 }
 
 Keyword contact_integration(std::vector<Scalar> schemes) {
@@ -30,7 +34,6 @@ std::vector<Block> ordre_int_blocks() {
 
 std::vector<Keyword> contact_loop_keywords() {
   return {
-      text("ALGO_RESO_CONT", "Contact status loop: fixed point or generalised Newton").into_values({"POINT_FIXE", "NEWTON"}),
       text("ALGO_RESO_GEOM", "Geometry (pairing) loop: fixed point or generalised Newton")
           .into_values({"POINT_FIXE", "NEWTON"})
           .def("POINT_FIXE"),
@@ -46,6 +49,17 @@ std::vector<Keyword> contact_loop_keywords() {
   };
 }
 
+Keyword algo_reso_cont(bool discrete) {
+  if (discrete)
+    return text("ALGO_RESO_CONT", "Contact status loop: fixed point (statuses updated between Newton solves)")
+        .into_values({"POINT_FIXE"})
+        .refuse("NEWTON", "the discrete formulation updates its contact statuses between Newton solves only");
+  return text("ALGO_RESO_CONT",
+              "Contact status loop: fixed point (statuses updated once Newton converged) or generalised Newton "
+              "(statuses updated at every Newton iteration)")
+      .into_values({"POINT_FIXE", "NEWTON"});
+}
+
 std::vector<Keyword> test_reference_keywords() {
   return {
       real("VALE_CALC", "Non-regression value computed by lunaster itself"),
@@ -55,7 +69,7 @@ std::vector<Keyword> test_reference_keywords() {
       real("VALE_REFE", "Reference value from an independent source"),
       text("CRITERE", "Relative or absolute comparison").into_values({"RELATIF", "ABSOLU"}).def("RELATIF"),
       real("PRECISION", "Tolerance of the VALE_REFE check").def(1e-3).range(0.0, std::nullopt),
-      real("ORDRE_GRANDEUR", "Magnitude used instead of the reference when it is near zero").range(0.0, std::nullopt),
+      real("ORDRE_GRANDEUR", "Magnitude used instead of the reference when it is near zero").above(0.0),
       text("LEGENDE", "Free label printed with the check"),
   };
 }

@@ -16,7 +16,7 @@ Keyword group_no(std::string doc = "Node groups of the mesh");
 Keyword maille(std::string doc = "Cell names of the mesh");
 /// NOEUD: one or several node names.
 Keyword noeud(std::string doc = "Node names of the mesh");
-/// INFO = 1|2: amount of printed information.
+/// INFO = 1|2: code_aster's amount of printed information, accepted without effect.
 Keyword info();
 
 /// INTEGRATION keyword of a contact zone with the given allowed schemes (default 'AUTO').
@@ -26,6 +26,9 @@ Keyword contact_integration(std::vector<Scalar> schemes);
 std::vector<Block> ordre_int_blocks();
 /// Shared seed/current contact algorithm keywords (REAC_GEOM, ITER_GEOM_MAXI, ...).
 std::vector<Keyword> contact_loop_keywords();
+/// ALGO_RESO_CONT: 'POINT_FIXE' or 'NEWTON' for the continuous formulation; the discrete
+/// one has no status update inside Newton, so it refuses 'NEWTON'.
+Keyword algo_reso_cont(bool discrete);
 
 /// The two-tier check keywords of TEST_RESU (VALE_CALC, REFERENCE, VALE_REFE, ...).
 std::vector<Keyword> test_reference_keywords();

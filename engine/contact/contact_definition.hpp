@@ -40,7 +40,6 @@ struct ContactDefinition {
   int iter_geom_maxi = 10;
   int nb_iter_geom = 2;      ///< with REAC_GEOM='CONTROLE'
   double resi_geom = 0.01;
-  bool tangent_matrix = true;  ///< MATRICE 'TANGENTE' vs 'ELASTIQUE'
 };
 
 }  // namespace lunaster::engine

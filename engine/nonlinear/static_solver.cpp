@@ -100,7 +100,11 @@ Vector external_forces(const FeModel& model, const DofMap& dofs, const Mechanica
 
 StaticSolver::StaticSolver(const FeModel& model, const MechanicalLoads& loads, NewtonOptions options,
                            ContactHook* contact, const Log& log)
-    : model_(model), loads_(loads), options_(options), contact_(contact), log_(log) {}
+    : model_(model), loads_(loads), options_(options), contact_(contact), log_(log) {
+  LUNASTER_ASSERT(options_.reac_iter >= 0, "reac_iter must be >= 0");
+  // The elastic matrix has no contact terms: the multiplier equations would be empty.
+  LUNASTER_ASSERT(!(options_.elastic_matrix && contact_), "the elastic matrix is not for runs with contact");
+}
 
 NodalField StaticSolver::make_depl(const Vector& u) const {
   std::vector<std::string> cmps = {"DX", "DY"};
@@ -128,6 +132,9 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   }
   const int n = dofs_.n_dofs();
   stats_ = SolverStats{};
+  backend_note_logged_ = false;
+  system_.reset();
+  for (auto& s : solvers_) s.reset();
   stats_.n_dofs = n;
   {
     Stopwatch watch(stats_.assemble_seconds);
@@ -194,6 +201,19 @@ void StaticSolver::advance(double t0, double t1, int level, Vector& u) {
   result.nodal["DEPL"] = make_depl(u);
   if (contact_) contact_->write_fields(u, result);
   steps_.push_back(std::move(result));
+}
+
+SolverKind StaticSolver::backend_for(MatrixKind kind) {
+  if (options_.solver != SolverKind::Cholmod || kind == MatrixKind::SymmetricPositiveDefinite) return options_.solver;
+  // Contact with multipliers gives a symmetric indefinite system: MUMPS (LDLT with
+  // pivoting) beat UMFPACK (LU) on it: SSNP121 A refined 16 times, 3.2 s vs 3.6 s and
+  // 376 MB vs 608 MB.
+  if (!backend_note_logged_)
+    log_.info(std::string("CHOLMOD cannot factorise ") +
+              (kind == MatrixKind::SymmetricIndefinite ? "an indefinite" : "a non-symmetric") +
+              " system; using MUMPS");
+  backend_note_logged_ = true;
+  return SolverKind::Mumps;
 }
 
 /// The system of one Newton iteration, K_ff + contact terms restricted to the free
@@ -313,6 +333,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
   }
 
 
+  const int factorisations_before = stats_.factorisations;
   int total_newton = 0;
   for (int fixed_point = 0;; ++fixed_point) {
     bool converged = false;
@@ -360,11 +381,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       // The system of this iteration: the contact law may condense its multipliers out
       // (then it is SPD), and says which kind of matrix is left.
       const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
-      SolverKind backend = options_.solver;
-      // Contact with multipliers gives a symmetric indefinite system: MUMPS (LDLT with
-      // pivoting) beat UMFPACK (LU) on it: SSNP121 A refined 16 times, 3.2 s vs 3.6 s and
-      // 376 MB vs 608 MB.
-      if (backend == SolverKind::Cholmod && kind != MatrixKind::SymmetricPositiveDefinite) backend = SolverKind::Mumps;
+      const SolverKind backend = backend_for(kind);
       // With no contact point active, the bodies must be held by Dirichlet
       // conditions alone; the indefinite backends would not say when they are
       // not (round-off hides the zero pivot), so check the elastic part once.
@@ -396,7 +413,16 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       const bool same_matrix =
           state.factorised && state.pattern == system_->pattern && state.values_key == system_->values_key;
       bool solved = false;
-      if (!same_matrix && state.factorised && state.n == a.rows() && state.statuses == statuses &&
+      // REAC_ITER: between two renewals the last factors of this loop solve with the current
+      // residual (a modified Newton step, no refinement against a matrix they do not factorise).
+      const bool renew = iter == 0 || (options_.reac_iter > 0 && iter % options_.reac_iter == 0);
+      if (!same_matrix && !renew && state.factorised && state.n == a.rows()) {
+        Stopwatch watch(stats_.solve_seconds);
+        du = solver->solve(-r_free);
+        solved = true;
+        log_.info("         (factorisation of iteration " + std::to_string(state.iteration) + " reused)");
+      }
+      if (!solved && !same_matrix && state.factorised && state.n == a.rows() && state.statuses == statuses &&
           state.pattern != system_->pattern) {
         // A new pairing with the same statuses: the previous factorisation is a close
         // preconditioner; a few Krylov iterations replace a factorisation when they converge.
@@ -429,14 +455,16 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           if (err.out_of_memory()) throw;
           throw diagnose_singular_system(model_, dofs_, cons.free_index, k_full_, err, t);
         }
-        ++stats_.factorizations;
+        ++stats_.factorisations;
         state.factorised = true;
         state.n = a.rows();
         state.pattern = system_->pattern;
         state.statuses = statuses;
         state.values_key = system_->values_key;
+        state.iteration = iter;
       } else if (same_matrix) {
-        log_.debug("  linear solve: same matrix as the last factorisation, reused");
+        log_.info(options_.elastic_matrix ? std::string("         (factorisation of the elastic matrix reused)")
+                                          : std::string("         (same matrix as the last factorisation: factors reused)"));
       }
       if (!solved) {
         Stopwatch watch(stats_.solve_seconds);
@@ -487,7 +515,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
     }
     if (settled) break;
   }
-  log_.info("  converged in " + std::to_string(total_newton) + " Newton iteration(s)");
+  log_.info("  converged in " + std::to_string(total_newton) + " Newton iteration(s), " +
+            std::to_string(stats_.factorisations - factorisations_before) + " factorisation(s)");
 }
 
 }  // namespace lunaster::engine

@@ -22,7 +22,17 @@ struct NewtonOptions {
   double resi_glob_rela = 1e-6;  ///< relative residual |r| / |f_ext + reactions|; <= 0: unused
   double resi_glob_maxi = -1.0;  ///< absolute residual (N); <= 0: unused
   int iter_glob_maxi = 10;
-  SolverKind solver = SolverKind::Cholmod;  ///< Cholmod falls back to Umfpack for indefinite systems
+  SolverKind solver = SolverKind::Cholmod;  ///< Cholmod gives way to Mumps for systems that are not SPD (logged once)
+  /// Matrix policy (code_aster's NEWTON keywords). reac_iter: the factors may be renewed at
+  /// Newton iteration k of a Newton loop (one per instant and per contact pass) when k == 0
+  /// or k % reac_iter == 0; 0 = at k == 0 only. Between two, the last factors solve with the
+  /// current residual (a modified Newton). Convergence is always judged on the true residual.
+  /// Whatever the policy, a matrix equal to the one last factorised is not factorised again.
+  int reac_iter = 1;
+  /// The elastic stiffness alone (no contact terms) instead of the tangent. With linear
+  /// elasticity, the only behaviour, it is the tangent: factorised once per run either way.
+  /// Not for runs with contact (the multiplier equations would be empty).
+  bool elastic_matrix = false;
   int subdivide_levels = 0;  ///< on a Newton failure, split the step this many times at most (SUBD_NIVEAU)
   int subdivide_parts = 4;   ///< sub-steps per split (SUBD_PAS)
 };
@@ -52,7 +62,7 @@ struct SolverStats {
   double solve_residual_raw = 0.0;
   double solve_residual = 0.0;
   int refinement_steps = 0;        ///< extra solves spent on iterative refinement
-  int factorizations = 0;          ///< numeric factorisations (a solve may reuse the last one)
+  int factorisations = 0;          ///< numeric factorisations (a solve may reuse the last one)
   int krylov_iterations = 0;       ///< GMRES iterations preconditioned by a previous factorisation
   double resi_glob_rela = 0.0;     ///< RESI_GLOB_RELA reached at the last converged Newton iteration
 };
@@ -86,6 +96,7 @@ class StaticSolver {
     int n = -1;
     unsigned long long statuses = 0;
     std::uint64_t values_key = 0;
+    int iteration = -1;  ///< Newton iteration of its loop where it was computed
   };
   /// The restricted system, kept between iterations and instants (update_system).
   struct SystemCache {
@@ -102,13 +113,16 @@ class StaticSolver {
     SystemState state[3];              ///< per backend (SolverKind)
   };
   void update_system(const Constraints& cons, const std::vector<Triplet>& contact, const std::vector<int>& condensed);
+  /// Backend for a system of this kind: Cholmod gives way to Mumps (said once per run).
+  SolverKind backend_for(MatrixKind kind);
 
   SparseMatrix k_full_;
   /// One solver per backend for the whole run (each keeps its analysis while the pattern holds).
   std::unique_ptr<LinearSolver> solvers_[3];
   std::unique_ptr<SystemCache> system_;
   double k_scale_ = 0.0;
-  bool rigid_checked_ = false;  ///< elastic part proven free of rigid-body modes  ///< largest stiffness coefficient, for the residual reference
+  bool rigid_checked_ = false;  ///< elastic part proven free of rigid-body modes
+  bool backend_note_logged_ = false;  ///< the Cholmod -> Mumps substitution was logged in this run
 
   const FeModel& model_;
   const MechanicalLoads& loads_;

@@ -108,10 +108,6 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     id_.icntl[2] = -1;
     id_.icntl[3] = 0;
     id_.icntl[23] = 1;  // ICNTL(24): null pivot detection
-    // ICNTL(7) = 4, PORD: on the SSNP121 contact systems (2D k = 16, 3D HEXA8/HEXA20) the
-    // analysis with the automatic choice (SCOTCH here) cost more than the factorisation it
-    // saved; PORD's factorisations were as fast (tests/bench/README.md).
-    id_.icntl[6] = 4;
     id_.n = static_cast<MUMPS_INT>(a.rows());
     id_.nnz = static_cast<MUMPS_INT8>(val_.size());
     id_.nz = static_cast<MUMPS_INT>(val_.size());

@@ -76,6 +76,13 @@ void check_keyword(const Keyword& kw, const std::string& where) {
   for (const auto& value : kw.into) {
     EXPECT_TRUE(scalar_matches(value, kw.type)) << path << ": into of the wrong type";
   }
+  for (const auto& [value, reason] : kw.refused) {
+    EXPECT_TRUE(scalar_matches(value, kw.type)) << path << ": refused value of the wrong type";
+    EXPECT_FALSE(reason.empty()) << path << ": a refused value without its reason";
+    for (const auto& allowed : kw.into) EXPECT_FALSE(allowed == value) << path << ": a value both allowed and refused";
+  }
+  EXPECT_FALSE(kw.min_open && !kw.val_min) << path;
+  EXPECT_FALSE(kw.max_open && !kw.val_max) << path;
   if (kw.val_min && kw.val_max) {
     EXPECT_LE(*kw.val_min, *kw.val_max) << path;
   }
@@ -91,9 +98,15 @@ void check_keyword(const Keyword& kw, const std::string& where) {
       double d = as_double(*kw.default_value);
       if (kw.val_min) {
         EXPECT_GE(d, *kw.val_min) << path << ": default below val_min";
+        if (kw.min_open) {
+          EXPECT_NE(d, *kw.val_min) << path << ": default on an open bound";
+        }
       }
       if (kw.val_max) {
         EXPECT_LE(d, *kw.val_max) << path << ": default above val_max";
+        if (kw.max_open) {
+          EXPECT_NE(d, *kw.val_max) << path << ": default on an open bound";
+        }
       }
     }
   }
@@ -182,7 +195,7 @@ TEST(Catalog, DefiContactBlocksFollowFormulation) {
     validate(spec, discrete);
     FAIL() << "expected a DeckError";
   } catch (const DeckError& e) {
-    EXPECT_STREQ(e.what(), "DEFI_CONTACT: ZONE[1].E_N: expected real >= 0 (mandatory keyword), got nothing");
+    EXPECT_STREQ(e.what(), "DEFI_CONTACT: ZONE[1].E_N: expected real > 0 (mandatory keyword), got nothing");
   }
 }
 
@@ -191,6 +204,11 @@ TEST(Catalog, HelpAndMarkdownComeFromTheSpecs) {
   EXPECT_NE(md.find("## STAT_NON_LINE"), std::string::npos);
   EXPECT_NE(md.find("| `CONVERGENCE/ITER_GLOB_MAXI` | integer >= 1 | optional | `10` |"), std::string::npos);
   EXPECT_NE(md.find("`ZONE/ORDRE_INT`"), std::string::npos);
+  // Open bounds and refused values are shown from the same data the validator uses.
+  EXPECT_NE(md.find("| `ELAS/NU` | real in (-1, 0.5) | required |"), std::string::npos);
+  EXPECT_NE(md.find("| `ELAS/E` | real > 0 | required |"), std::string::npos);
+  EXPECT_NE(md.find("'OUI' refused: axisymmetric models are not supported yet"), std::string::npos);
+  EXPECT_NE(command_help(*find_command("DEFI_MATERIAU")).find("E  [real > 0; required]"), std::string::npos);
   std::string help = command_help(*find_command("AFFE_MODELE"));
   EXPECT_NE(help.find("MODELISATION  [text in ('D_PLAN', 'C_PLAN', '3D'); required]"), std::string::npos);
   EXPECT_NE(command_list().find("STAT_NON_LINE"), std::string::npos);

@@ -1,6 +1,8 @@
 // One test per validator rule and message shape (STYLE.md §3).
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "catalog/args.hpp"
 #include "catalog/spec.hpp"
 
@@ -35,7 +37,12 @@ CommandSpec test_spec() {
                              "conv")
                           .by_default(),
                       text("INTEGRATION", "scheme").into_values({"AUTO", "GAUSS", "SIMPSON"}).def("AUTO"),
-                      real("A", "a"), real("B", "b"), real("C", "c")},
+                      real("A", "a"), real("B", "b"), real("C", "c"),
+                      real("STIFF", "open lower bound").above(0.0),
+                      real("RATIO", "open bounds").above(-1.0).below(0.5),
+                      real("MIXED", "closed lower, open upper").range(0.0, std::nullopt).below(1.0),
+                      real("VALUES", "any reals").many(),
+                      text("AXIS", "refused value").into_values({"NON"}).refuse("OUI", "not supported yet")},
                      "")
                   .with_rules({exactly_one({"TOUT", "GROUP_MA"}), at_most_one({"A", "B"})})
                   .with_blocks({Block{"INTEGRATION", {"GAUSS"}, {integer("ORDRE_INT", "n").def(3LL).range(1, 6)}, {}},
@@ -142,6 +149,51 @@ TEST(Validate, RangeMinAndMax) {
   EXPECT_EQ(message_of(node), "TEST_CMD: COEF: expected real in [0, 1], got -1e-06");
   node.simple["COEF"] = {2.0};
   EXPECT_EQ(message_of(node), "TEST_CMD: COEF: expected real in [0, 1], got 2");
+}
+
+TEST(Validate, OpenBoundsExcludeTheirEnds) {
+  KwNode node = valid_node();
+  node.simple["STIFF"] = {0.0};
+  EXPECT_EQ(message_of(node), "TEST_CMD: STIFF: expected real > 0, got 0");
+  node.simple["STIFF"] = {1e-300};
+  EXPECT_EQ(message_of(node), "");
+  node.simple["RATIO"] = {0.5};
+  EXPECT_EQ(message_of(node), "TEST_CMD: RATIO: expected real in (-1, 0.5), got 0.5");
+  node.simple["RATIO"] = {-1.0};
+  EXPECT_EQ(message_of(node), "TEST_CMD: RATIO: expected real in (-1, 0.5), got -1");
+  node.simple["RATIO"] = {0.4999};
+  EXPECT_EQ(message_of(node), "");
+  node.simple["MIXED"] = {1.0};
+  EXPECT_EQ(message_of(node), "TEST_CMD: MIXED: expected real in [0, 1), got 1");
+  node.simple["MIXED"] = {0.0};
+  EXPECT_EQ(message_of(node), "");
+}
+
+TEST(Validate, NonFiniteRealsAreRefusedEverywhere) {
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  KwNode node = valid_node();
+  // NaN compares false with every bound: without the finiteness check it would pass them all.
+  node.simple["STIFF"] = {-nan};
+  EXPECT_EQ(message_of(node), "TEST_CMD: STIFF: expected a finite real > 0, got nan");
+  node.simple["STIFF"] = {inf};
+  EXPECT_EQ(message_of(node), "TEST_CMD: STIFF: expected a finite real > 0, got inf");
+  node.simple.erase("STIFF");
+  node.simple["A"] = {-inf};  // a real without bounds
+  EXPECT_EQ(message_of(node), "TEST_CMD: A: expected a finite real, got -inf");
+  node.simple.erase("A");
+  node.simple["VALUES"] = {0.0, 1.0, nan};  // each value of a list
+  EXPECT_EQ(message_of(node), "TEST_CMD: VALUES: expected a finite real, got nan");
+  node.simple.erase("VALUES");
+  node.simple["NB"] = {inf};  // an integer keyword
+  EXPECT_EQ(message_of(node), "TEST_CMD: NB: expected integer in [1, 10], got inf");
+}
+
+TEST(Validate, RefusedValueNamesTheReason) {
+  KwNode node = valid_node();
+  node.simple["AXIS"] = {std::string("OUI")};
+  EXPECT_EQ(message_of(node), "TEST_CMD: AXIS: expected 'NON' (not supported yet), got 'OUI'");
+  node.simple["AXIS"] = {std::string("NON")};
+  EXPECT_EQ(message_of(node), "");
 }
 
 TEST(Validate, ValueCounts) {
