@@ -14,7 +14,8 @@ build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
 	cmake --build $(BUILD) -j $(JOBS)
 
-# Runs every deck of testcases/ and prints the TEST_RESU report.
+# Runs every deck of testcases/ and prints the TEST_RESU report; each deck gets 300 s and half of
+# the machine's memory unless its header (-- lunaster: time_limit=S memory_limit=MB) says otherwise.
 verify: build
 	$(BUILD)/lunaster verify testcases -j $(JOBS) --junit $(BUILD)/verify-junit.xml --json $(BUILD)/verify.json
 
