@@ -1,8 +1,11 @@
 #include "lua/budget.hpp"
 
 #include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -22,8 +25,11 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr double kMegabyte = 1024.0 * 1024.0;
-/// Lua instructions between two looks at the budget flags.
-constexpr int kHookCount = 10000;
+/// Sent by the watchdog to the deck's thread once the budget is spent. SIGURG is ignored by
+/// default, so a stray one can do no harm.
+constexpr int kBudgetSignal = SIGURG;
+/// The Lua state of the deck running under a budget (one at a time per process), for the handler.
+std::atomic<lua_State*> budget_state{nullptr};
 
 DeckError header_error(const fs::path& deck, int line, const std::string& key, std::string message,
                        std::vector<std::string> hints = {}) {
@@ -83,6 +89,26 @@ void budget_hook(lua_State* L, lua_Debug*) {
   }
   lua_concat(L, 2);
   lua_error(L);
+}
+
+/// On the deck's thread: from now on every Lua instruction calls budget_hook. Setting a hook
+/// from a signal handler is what lua.c does for Ctrl-C; no hook costs nothing before that
+/// (a count hook set from the start slows pure Lua code about four times).
+void on_budget_signal(int) {
+  const int saved = errno;
+  if (lua_State* L = budget_state.load()) lua_sethook(L, budget_hook, LUA_MASKCOUNT, 1);
+  errno = saved;
+}
+
+void install_signal_handler() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    struct sigaction action {};
+    action.sa_handler = on_budget_signal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESTART;
+    sigaction(kBudgetSignal, &action, nullptr);
+  });
 }
 
 }  // namespace
@@ -180,7 +206,8 @@ std::size_t resident_bytes() {
   return static_cast<std::size_t>(resident) * static_cast<std::size_t>(sysconf(_SC_PAGE_SIZE));
 }
 
-BudgetGuard::BudgetGuard(const Budget& budget, std::string deck) : budget_(budget), deck_(std::move(deck)) {
+BudgetGuard::BudgetGuard(const Budget& budget, std::string deck)
+    : budget_(budget), deck_(std::move(deck)), deck_thread_(pthread_self()) {
   using clock = std::chrono::steady_clock;
   if (budget_.seconds)
     deadline_ = clock::now() + std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(*budget_.seconds));
@@ -213,7 +240,14 @@ void BudgetGuard::install(lua_State* L) {
                static_cast<std::size_t>(lua_gc(L, LUA_GCCOUNTB, 0));
   // luaL_newstate's allocator is realloc/free as well: blocks already allocated stay valid.
   lua_setallocf(L, &BudgetGuard::allocate, this);
-  lua_sethook(L, budget_hook, LUA_MASKCOUNT, kHookCount);
+  install_signal_handler();
+  budget_state = L;
+  if (time_up() || memory_exceeded()) lua_sethook(L, budget_hook, LUA_MASKCOUNT, 1);  // spent already
+}
+
+void BudgetGuard::uninstall(lua_State* L) {
+  lua_State* expected = L;
+  budget_state.compare_exchange_strong(expected, nullptr);
 }
 
 void* BudgetGuard::allocate(void* ud, void* ptr, std::size_t osize, std::size_t nsize) {
@@ -249,6 +283,7 @@ void BudgetGuard::set_running(const std::string& where) {
 
 void BudgetGuard::watch() {
   const auto grace_end = deadline_ + kGrace;
+  bool signalled = false;
   std::unique_lock<std::mutex> lock(watch_mutex_);
   while (!stopping_) {
     wake_.wait_for(lock, kSample);
@@ -265,6 +300,10 @@ void BudgetGuard::watch() {
         hard_stop(static_cast<int>(ErrorKind::OutOfMemory),
                   memory_message() + " (resident memory " + budget_text(std::round(resident / kMegabyte)) + " MB)");
       }
+    }
+    if (!signalled && (time_up_ || memory_exceeded_)) {
+      pthread_kill(deck_thread_, kBudgetSignal);  // the deck's Lua code stops at its next instruction
+      signalled = true;
     }
   }
 }

@@ -13,6 +13,8 @@
 #include <string>
 #include <thread>
 
+#include <pthread.h>
+
 struct lua_State;
 
 namespace lunaster::lua {
@@ -44,15 +46,17 @@ std::size_t resident_bytes();
 
 /// Enforces a budget on this process while one deck runs.
 ///
-/// Time: a watchdog thread raises a flag at the deadline; a Lua count hook turns it into
-/// a Lua error at the deck line being run (so a `while true do end` stops, and pcall
-/// cannot keep the deck going: the hook raises again). If the process is still running
-/// kGrace later (a long C++ solve never returns to Lua), the watchdog prints which
-/// command was running and ends the process with exit status 5.
+/// Time: at the deadline a watchdog thread raises a flag and signals the deck's thread,
+/// whose handler sets a Lua hook (as lua.c does for Ctrl-C) that raises a Lua error at the
+/// deck line being run, at every instruction from then on (so a `while true do end` stops,
+/// and pcall cannot keep the deck going). If the process is still running kGrace later (a
+/// long C++ solve never returns to Lua), the watchdog prints which command was running and
+/// ends the process with exit status 5. Until the budget is spent, Lua runs without a hook.
 ///
 /// Memory: the Lua allocator refuses to let the Lua heap take the process beyond the
-/// budget (a clean "memory limit exceeded" error), and the watchdog samples the resident
-/// memory every kSample and ends the process with exit status 6 above the budget. No
+/// budget (a clean "memory limit exceeded" error, then the hook as for time), and the
+/// watchdog samples the resident memory every kSample and ends the process with exit
+/// status 6 above the budget. No
 /// rlimit is set: a limit on address space or data segment also counts thread stacks and
 /// reserved arenas (OpenMP, OpenBLAS, malloc) and turns them into failed allocations deep
 /// inside libraries; the resident memory is what the budget protects.
@@ -67,8 +71,10 @@ class BudgetGuard {
   BudgetGuard(const BudgetGuard&) = delete;
   BudgetGuard& operator=(const BudgetGuard&) = delete;
 
-  /// Uses the budget's allocator and count hook in `L` (created by luaL_newstate).
+  /// Uses the budget's allocator in `L` (created by luaL_newstate) and hooks it once the
+  /// budget is spent; uninstall before closing `L`.
   void install(lua_State* L);
+  void uninstall(lua_State* L);
   /// Stops the watchdog (the deck has finished; reporting must not be cut off).
   void stop();
 
@@ -88,6 +94,7 @@ class BudgetGuard {
 
   Budget budget_;
   std::string deck_;
+  pthread_t deck_thread_;  ///< the thread running the deck (the one that made the guard)
   std::chrono::steady_clock::time_point deadline_;
   std::size_t memory_bytes_ = 0;
   std::size_t lua_bytes_ = 0;  ///< Lua heap (main thread only)

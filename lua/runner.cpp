@@ -39,6 +39,7 @@ Runner::Runner(cmd::Session& session, HandlerLookup lookup, BudgetGuard* guard)
 }
 
 Runner::~Runner() {
+  if (guard_ && state_) guard_->uninstall(state_);
   if (state_) lua_close(state_);
 }
 
