@@ -14,7 +14,8 @@ build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
 	cmake --build $(BUILD) -j $(JOBS)
 
-# Runs every deck of testcases/ and prints the TEST_RESU report.
+# Runs every deck of testcases/ and prints the TEST_RESU report; each deck gets 300 s and half of
+# the machine's memory unless its header (-- lunaster: time_limit=S memory_limit=MB) says otherwise.
 verify: build
 	$(BUILD)/lunaster verify testcases -j $(JOBS) --junit $(BUILD)/verify-junit.xml --json $(BUILD)/verify.json
 
@@ -47,7 +48,8 @@ docs: build
 
 # The speed/accuracy study (tests/bench/study, under 15 min on 2 cores): charts, CSV and the
 # stability atlas under docs/study/. Needs matplotlib and CalculiX (install-deps.sh study).
-# Never a pass/fail test. STUDY_FLAGS=--quick for a 2-minute smoke run.
+# Never a pass/fail test. STUDY_FLAGS=--quick for a 2-minute smoke run, written to
+# $(BUILD)/study/quick-docs/ so that it leaves the published docs/study/ alone.
 study: build
 	bash scripts/install-deps.sh study
 	bash tests/bench/study/run_study.sh $(BUILD) $(STUDY_FLAGS)

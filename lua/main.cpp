@@ -18,13 +18,18 @@ using namespace lunaster;
 namespace {
 
 constexpr const char* kUsage = R"(usage:
-  lunaster run DECK.lua [--out DIR] [-v|-q]   run a deck (output folder default: ./out/<deck name>)
-  lunaster verify [PATHS...] [-j N] [--out DIR] [--junit FILE] [--json FILE]
+  lunaster run DECK.lua [--out DIR] [-v|-q] [--time-limit S] [--memory-limit MB]
+                                              run a deck (output folder default: ./out/<deck name>)
+  lunaster verify [PATHS...] [-j N] [--out DIR] [--junit FILE] [--json FILE] [--time-limit S] [--memory-limit MB]
                                               run decks (default: testcases/) and summarise TEST_RESU
   lunaster help [COMMAND]                     list commands, or the keywords of one command
   lunaster --dump-catalog md [FILE]           the catalogue as Markdown (docs/commands.md)
   lunaster --help                             this text
-exit status: 0 OK, 1 some TEST_RESU NOOK, 2 deck error, 3 solve error, 4 internal error
+budgets: --time-limit (wall-clock seconds) and --memory-limit (resident MB) override the deck
+  header "-- lunaster: time_limit=S memory_limit=MB"; run has no limit unless one is given,
+  verify defaults to 300 s and half of the machine's memory per deck
+exit status: 0 OK, 1 some TEST_RESU NOOK, 2 deck error, 3 solve error, 4 internal error,
+  5 time limit exceeded, 6 memory limit exceeded (or out of memory)
 )";
 
 int usage_error(const std::string& message) {
@@ -32,12 +37,32 @@ int usage_error(const std::string& message) {
   return static_cast<int>(ErrorKind::Deck);
 }
 
+/// Reads the value of --time-limit / --memory-limit into `budget`; false (after a usage
+/// message) if it is not a positive number.
+bool budget_option(const std::string& verb, const std::string& option, const std::string& text, lua::Budget& budget) {
+  const auto value = lua::parse_budget_value(text);
+  const bool is_time = option == "--time-limit";
+  if (!value) {
+    usage_error(verb + ": " + option + " expects a positive number of " + (is_time ? "seconds" : "MB") + ", got '" +
+                text + "'");
+    return false;
+  }
+  (is_time ? budget.seconds : budget.megabytes) = *value;
+  return true;
+}
+
+bool is_budget_option(const std::string& word) { return word == "--time-limit" || word == "--memory-limit"; }
+
 int run_command(const std::vector<std::string>& args) {
   std::string deck;
   fs::path out;
   int verbosity = 1;
+  lua::Budget budget;
   for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--out" && i + 1 < args.size()) out = args[++i];
+    if (is_budget_option(args[i]) && i + 1 < args.size()) {
+      if (!budget_option("run", args[i], args[i + 1], budget)) return static_cast<int>(ErrorKind::Deck);
+      ++i;
+    } else if (args[i] == "--out" && i + 1 < args.size()) out = args[++i];
     else if (args[i] == "-v") verbosity = 2;
     else if (args[i] == "-q") verbosity = 0;
     else if (deck.empty() && args[i][0] != '-') deck = args[i];
@@ -49,7 +74,7 @@ int run_command(const std::vector<std::string>& args) {
   cmd::Session session(log);
   session.deck_path = deck;
   session.output_dir = out;
-  int code = lua::run_deck(deck, session, cmd::find_handler, std::cerr);
+  int code = lua::run_deck(deck, session, cmd::find_handler, std::cerr, budget);
   if (code <= 1) {
     int n_ok = 0;
     for (const auto& t : session.tests) n_ok += t.ok;
@@ -69,6 +94,9 @@ int verify_command(const std::vector<std::string>& args) {
       } catch (const std::exception&) {
         return usage_error("verify: -j expects a number, got '" + args[i] + "'");
       }
+    } else if (is_budget_option(args[i]) && has_value) {
+      if (!budget_option("verify", args[i], args[i + 1], options.budget)) return static_cast<int>(ErrorKind::Deck);
+      ++i;
     } else if (args[i] == "--junit" && has_value) options.junit_file = args[++i];
     else if (args[i] == "--json" && has_value) options.json_file = args[++i];
     else if (args[i] == "--out" && has_value) options.out_dir = args[++i];

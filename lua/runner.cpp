@@ -1,5 +1,6 @@
 #include "lua/runner.hpp"
 
+#include <new>
 #include <ostream>
 
 #include "catalog/args.hpp"
@@ -29,13 +30,16 @@ ErrorContext call_site(lua_State* L, const std::string& command) {
 
 }  // namespace
 
-Runner::Runner(cmd::Session& session, HandlerLookup lookup) : session_(session), lookup_(std::move(lookup)) {
+Runner::Runner(cmd::Session& session, HandlerLookup lookup, BudgetGuard* guard)
+    : session_(session), lookup_(std::move(lookup)), guard_(guard) {
   state_ = luaL_newstate();
   if (!state_) throw InternalError("cannot create a Lua state");
   setup_state(state_, *this);
+  if (guard_) guard_->install(state_);
 }
 
 Runner::~Runner() {
+  if (guard_ && state_) guard_->uninstall(state_);
   if (state_) lua_close(state_);
 }
 
@@ -92,10 +96,22 @@ catalog::ConceptPtr Runner::execute(lua_State* L, const catalog::CommandSpec& sp
   session_.current = where;
   const catalog::Args args(node, spec.body, {}, reads_);
   catalog::ConceptPtr result;
+  // A hard stop of the budget names the command that was running.
+  struct Running {
+    BudgetGuard* guard;
+    ~Running() {
+      if (guard) guard->set_running("");
+    }
+  } running{guard_};
+  if (guard_) guard_->set_running(where.file + ":" + std::to_string(where.line) + ": " + spec.name);
   try {
     result = handler(args, session_);
   } catch (const Error&) {
     throw;
+  } catch (const std::bad_alloc&) {
+    if (guard_ && guard_->budget().megabytes)
+      throw Error(ErrorKind::OutOfMemory, "out of memory (" + guard_->memory_message() + ")");
+    throw Error(ErrorKind::OutOfMemory, "out of memory: the machine refused an allocation");
   } catch (const std::exception& e) {
     throw InternalError(std::string("unexpected exception: ") + e.what());
   } catch (...) {  // the handler never calls Lua, so this cannot swallow a Lua error
@@ -132,6 +148,15 @@ void Runner::run_loaded(int load_status) {
     std::rethrow_exception(typed);
   }
   pending_ = nullptr;
+  // Over budget, whatever error the deck's code ended with: the budget is why it stopped.
+  const std::string deck = session_.deck_path.string();
+  if (guard_ && guard_->memory_exceeded()) {
+    if (status == LUA_ERRMEM)
+      throw Error(ErrorKind::OutOfMemory, deck + ": " + guard_->memory_message() + " by the deck's Lua data");
+    throw Error(ErrorKind::OutOfMemory, message);
+  }
+  if (status == LUA_ERRMEM) throw Error(ErrorKind::OutOfMemory, deck + ": out of memory in the deck's Lua code");
+  if (guard_ && guard_->time_up()) throw Error(ErrorKind::TimeLimit, message);
   throw DeckError(message);
 }
 
@@ -148,9 +173,12 @@ void Runner::run_string(const std::string& code, const std::string& chunk_name) 
   run_loaded(luaL_loadbufferx(state_, code.data(), code.size(), name.c_str(), "t"));
 }
 
-int run_deck(const std::filesystem::path& deck, cmd::Session& session, HandlerLookup lookup, std::ostream& err) {
+namespace {
+
+int run_in(const std::filesystem::path& deck, cmd::Session& session, HandlerLookup lookup, std::ostream& err,
+           BudgetGuard* guard) {
   try {
-    Runner runner(session, std::move(lookup));
+    Runner runner(session, std::move(lookup), guard);
     try {
       runner.run_file(deck);
     } catch (const InternalError& e) {
@@ -159,7 +187,12 @@ int run_deck(const std::filesystem::path& deck, cmd::Session& session, HandlerLo
     }
   } catch (const Error& e) {
     err << e.what() << "\n";
+    const auto* solve = dynamic_cast<const SolveError*>(&e);
+    if (solve && solve->out_of_memory()) return static_cast<int>(ErrorKind::OutOfMemory);
     return static_cast<int>(e.kind());
+  } catch (const std::bad_alloc&) {
+    err << deck.string() << ": out of memory: the machine refused an allocation\n";
+    return static_cast<int>(ErrorKind::OutOfMemory);
   } catch (const std::exception& e) {
     err << "internal error: " << e.what() << "\n";
     return static_cast<int>(ErrorKind::Internal);
@@ -167,6 +200,37 @@ int run_deck(const std::filesystem::path& deck, cmd::Session& session, HandlerLo
   for (const auto& test : session.tests)
     if (!test.ok) return 1;
   return 0;
+}
+
+}  // namespace
+
+int run_deck(const std::filesystem::path& deck, cmd::Session& session, HandlerLookup lookup, std::ostream& err,
+             const Budget& overrides) {
+  Budget budget;
+  try {
+    budget = override_budget(read_budget_header(deck), overrides);
+  } catch (const Error& e) {
+    err << e.what() << "\n";
+    return static_cast<int>(e.kind());
+  }
+  if (!budget.seconds && !budget.megabytes) return run_in(deck, session, std::move(lookup), err, nullptr);
+  BudgetGuard guard(budget, deck.string());
+  int code = run_in(deck, session, std::move(lookup), err, &guard);
+  guard.stop();
+  const int time_limit = static_cast<int>(ErrorKind::TimeLimit);
+  const int out_of_memory = static_cast<int>(ErrorKind::OutOfMemory);
+  if (code == time_limit || code == out_of_memory) return code;
+  // The deck got past its budget and still ended (it caught the error, or its last command
+  // finished within the grace): it is over budget all the same.
+  if (guard.memory_exceeded()) {
+    err << deck.string() << ": " << guard.memory_message() << "\n";
+    return out_of_memory;
+  }
+  if (guard.time_up()) {
+    err << deck.string() << ": " << guard.time_message() << "\n";
+    return time_limit;
+  }
+  return code;
 }
 
 }  // namespace lunaster::lua

@@ -12,6 +12,7 @@
 #include "catalog/spec.hpp"
 #include "commands/registry.hpp"
 #include "commands/session.hpp"
+#include "lua/budget.hpp"
 
 struct lua_State;
 
@@ -24,15 +25,17 @@ using HandlerLookup = std::function<cmd::Handler(const std::string&)>;
 /// Owns one lua_State for one run. Not copyable.
 class Runner {
  public:
-  /// `session` must outlive the runner; `lookup` resolves command handlers.
-  Runner(cmd::Session& session, HandlerLookup lookup);
+  /// `session` must outlive the runner; `lookup` resolves command handlers. A `guard`
+  /// (which must outlive the runner) enforces its budget on the deck's Lua code.
+  Runner(cmd::Session& session, HandlerLookup lookup, BudgetGuard* guard = nullptr);
   ~Runner();
   Runner(const Runner&) = delete;
   Runner& operator=(const Runner&) = delete;
 
   /// Runs a deck file (text only). Rethrows the typed lunaster::Error a command
   /// raised (with deck file:line and command filled in); Lua syntax and runtime
-  /// errors become DeckError with the location Lua reports.
+  /// errors become DeckError with the location Lua reports; a deck over its budget
+  /// (or out of memory) raises an Error of kind TimeLimit (OutOfMemory).
   void run_file(const std::filesystem::path& deck);
   /// Runs deck text; `chunk_name` is the file name used in messages.
   void run_string(const std::string& code, const std::string& chunk_name);
@@ -59,6 +62,7 @@ class Runner {
 
   cmd::Session& session_;
   HandlerLookup lookup_;
+  BudgetGuard* guard_ = nullptr;
   lua_State* state_ = nullptr;
   std::exception_ptr pending_;    ///< typed error raised by the last failing command
   std::string pending_message_;   ///< its Lua error message, to recognise it at the top
@@ -68,8 +72,12 @@ class Runner {
 };
 
 /// Runs one deck and maps the outcome to the exit code of STYLE.md §3
-/// (0 OK, 1 some TEST_RESU NOOK, 2 DeckError, 3 SolveError, 4 InternalError),
+/// (0 OK, 1 some TEST_RESU NOOK, 2 DeckError, 3 SolveError, 4 InternalError,
+/// 5 over the time budget, 6 over the memory budget or out of memory),
 /// printing any error to `err` (with a traceback for InternalError only).
-int run_deck(const std::filesystem::path& deck, cmd::Session& session, HandlerLookup lookup, std::ostream& err);
+/// The budget is the deck header's (read_budget_header) with the fields of
+/// `overrides` (the command line) replacing it; a hard stop ends the process.
+int run_deck(const std::filesystem::path& deck, cmd::Session& session, HandlerLookup lookup, std::ostream& err,
+             const Budget& overrides = {});
 
 }  // namespace lunaster::lua

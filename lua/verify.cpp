@@ -1,12 +1,15 @@
 #include "lua/verify.hpp"
 
 #include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -56,12 +59,29 @@ void count_checks(const std::string& output, int& n_ok, int& n_nook) {
 std::string deck_status(int exit_code, int n_nook) {
   if (exit_code == 0) return n_nook ? "NOOK" : "OK";
   if (exit_code == 1) return "NOOK";
+  if (exit_code == 5) return "TIMEOUT";
+  if (exit_code == 6) return "OUT_OF_MEMORY";
   return "ERROR";
 }
 
-DeckOutcome run_child(const fs::path& executable, const fs::path& deck, const fs::path& out_dir) {
+Budget verify_budget(const fs::path& deck, const Budget& overrides) {
+  Budget header;
+  try {
+    header = read_budget_header(deck);
+  } catch (const std::exception&) {
+    // The child reports the malformed header as a deck error; the defaults guard it meanwhile.
+  }
+  Budget budget = override_budget(header, overrides);
+  if (!budget.seconds) budget.seconds = kVerifyDefaultSeconds;
+  if (!budget.megabytes) budget.megabytes = default_memory_budget_mb();
+  return budget;
+}
+
+DeckOutcome run_child(const fs::path& executable, const fs::path& deck, const fs::path& out_dir, const Budget& budget) {
   DeckOutcome outcome;
   outcome.deck = deck;
+  outcome.time_limit = budget.seconds.value_or(0.0);
+  outcome.memory_limit_mb = budget.megabytes.value_or(0.0);
   const auto start = std::chrono::steady_clock::now();
   int fds[2];
   if (pipe2(fds, O_CLOEXEC) != 0) {
@@ -74,6 +94,8 @@ DeckOutcome run_child(const fs::path& executable, const fs::path& deck, const fs
   posix_spawn_file_actions_adddup2(&actions, fds[1], 1);
   posix_spawn_file_actions_adddup2(&actions, fds[1], 2);
   std::vector<std::string> words = {executable.string(), "run", deck.string(), "--out", out_dir.string()};
+  if (budget.seconds) words.insert(words.end(), {"--time-limit", budget_text(*budget.seconds)});
+  if (budget.megabytes) words.insert(words.end(), {"--memory-limit", budget_text(*budget.megabytes)});
   std::vector<char*> argv;
   for (auto& word : words) argv.push_back(word.data());
   argv.push_back(nullptr);
@@ -81,21 +103,49 @@ DeckOutcome run_child(const fs::path& executable, const fs::path& deck, const fs
   int rc = posix_spawn(&pid, executable.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   close(fds[1]);
+  bool killed = false;
   if (rc == 0) {
+    // Wall-clock watchdog: the child stops itself at its limit; past the grace it is killed.
+    using clock = std::chrono::steady_clock;
+    std::optional<clock::time_point> kill_at;
+    if (budget.seconds)
+      kill_at = start + std::chrono::duration_cast<clock::duration>(
+                            std::chrono::duration<double>(*budget.seconds + kVerifyKillGraceSeconds));
     char buffer[4096];
-    ssize_t n;
-    while ((n = read(fds[0], buffer, sizeof buffer)) > 0) outcome.output.append(buffer, static_cast<std::size_t>(n));
+    pollfd reader{fds[0], POLLIN, 0};
+    for (;;) {
+      int timeout_ms = -1;
+      if (kill_at && !killed)
+        timeout_ms = static_cast<int>(std::max<long long>(
+            0, std::chrono::duration_cast<std::chrono::milliseconds>(*kill_at - clock::now()).count() + 1));
+      const int ready = poll(&reader, 1, timeout_ms);
+      if (ready < 0 && errno == EINTR) continue;
+      if (ready == 0) {
+        kill(pid, SIGKILL);  // the child only: it starts no processes of its own
+        killed = true;
+        continue;
+      }
+      const ssize_t n = read(fds[0], buffer, sizeof buffer);
+      if (n > 0) outcome.output.append(buffer, static_cast<std::size_t>(n));
+      else if (n < 0 && errno == EINTR) continue;
+      else break;
+    }
     int wstatus = 0;
-    waitpid(pid, &wstatus, 0);
+    while (waitpid(pid, &wstatus, 0) < 0 && errno == EINTR) {
+    }
     outcome.exit_code = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : -1;
-    if (WIFSIGNALED(wstatus)) outcome.output += "\nkilled by signal " + std::to_string(WTERMSIG(wstatus)) + "\n";
+    if (killed)
+      outcome.output += "\nlunaster verify: " + deck.string() + ": time limit of " + budget_text(*budget.seconds) +
+                        " s exceeded; killed after " + budget_text(*budget.seconds + kVerifyKillGraceSeconds) + " s\n";
+    else if (WIFSIGNALED(wstatus))
+      outcome.output += "\nkilled by signal " + std::to_string(WTERMSIG(wstatus)) + "\n";
   } else {
     outcome.output = "cannot start " + executable.string();
   }
   close(fds[0]);
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   count_checks(outcome.output, outcome.n_ok, outcome.n_nook);
-  outcome.status = deck_status(outcome.exit_code, outcome.n_nook);
+  outcome.status = killed ? "TIMEOUT" : deck_status(outcome.exit_code, outcome.n_nook);
   return outcome;
 }
 
@@ -161,7 +211,7 @@ std::string junit_xml(const std::vector<DeckOutcome>& outcomes) {
   double total = 0.0;
   for (const auto& o : outcomes) {
     failures += o.status == "NOOK";
-    errors += o.status == "ERROR";
+    errors += o.status == "ERROR" || o.status == "TIMEOUT" || o.status == "OUT_OF_MEMORY";
     total += o.seconds;
   }
   std::ostringstream out;
@@ -174,7 +224,14 @@ std::string junit_xml(const std::vector<DeckOutcome>& outcomes) {
     if (o.status == "NOOK")
       out << "\n      <failure message=\"" << o.n_nook << " NOOK check(s)\">" << xml_escape(o.output) << "</failure>\n    ";
     else if (o.status == "ERROR")
-      out << "\n      <error message=\"exit status " << o.exit_code << "\">" << xml_escape(o.output) << "</error>\n    ";
+      out << "\n      <error type=\"ERROR\" message=\"exit status " << o.exit_code << "\">" << xml_escape(o.output)
+          << "</error>\n    ";
+    else if (o.status == "TIMEOUT")
+      out << "\n      <error type=\"TIMEOUT\" message=\"time limit of " << budget_text(o.time_limit) << " s exceeded\">"
+          << xml_escape(o.output) << "</error>\n    ";
+    else if (o.status == "OUT_OF_MEMORY")
+      out << "\n      <error type=\"OUT_OF_MEMORY\" message=\"memory limit of " << budget_text(o.memory_limit_mb)
+          << " MB exceeded\">" << xml_escape(o.output) << "</error>\n    ";
     out << "</testcase>\n";
   }
   out << "  </testsuite>\n</testsuites>\n";
@@ -190,7 +247,9 @@ std::string json_report(const std::vector<DeckOutcome>& outcomes) {
     passed += o.status == "OK";
     out << (i ? "," : "") << "\n    {\"deck\": " << json_escape(o.deck.string()) << ", \"status\": \"" << o.status
         << "\", \"exit_code\": " << o.exit_code << ", \"checks_ok\": " << o.n_ok << ", \"checks_nook\": " << o.n_nook
-        << ", \"seconds\": " << seconds_text(o.seconds) << ", \"output\": " << json_escape(o.output) << "}";
+        << ", \"seconds\": " << seconds_text(o.seconds) << ", \"time_limit\": " << budget_text(o.time_limit)
+        << ", \"memory_limit_mb\": " << budget_text(o.memory_limit_mb) << ", \"output\": " << json_escape(o.output)
+        << "}";
   }
   out << "\n  ],\n  \"passed\": " << passed << ",\n  \"failed\": " << outcomes.size() - passed << "\n}\n";
   return out.str();
@@ -211,7 +270,8 @@ int verify(const VerifyOptions& options, std::ostream& out) {
   std::atomic<std::size_t> next{0};
   auto worker = [&] {
     for (std::size_t i = next++; i < decks.size(); i = next++)
-      outcomes[i] = run_child(options.executable, decks[i], options.out_dir / decks[i].stem());
+      outcomes[i] = run_child(options.executable, decks[i], options.out_dir / decks[i].stem(),
+                              verify_budget(decks[i], options.budget));
   };
   std::vector<std::thread> threads;
   for (int j = 0; j < jobs; ++j) threads.emplace_back(worker);
@@ -220,16 +280,20 @@ int verify(const VerifyOptions& options, std::ostream& out) {
   std::size_t width = 4;
   for (const auto& d : decks) width = std::max(width, d.string().size());
   int passed = 0;
-  out << std::left << std::setw(static_cast<int>(width)) << "deck" << "  status  checks OK/NOOK   time (s)\n";
+  out << std::left << std::setw(static_cast<int>(width)) << "deck" << "  status         checks OK/NOOK   time (s)\n";
   for (const auto& o : outcomes) {
     passed += o.status == "OK";
     std::string checks = std::to_string(o.n_ok) + "/" + std::to_string(o.n_nook);
-    out << std::left << std::setw(static_cast<int>(width)) << o.deck.string() << "  " << std::setw(6) << o.status << "  "
+    out << std::left << std::setw(static_cast<int>(width)) << o.deck.string() << "  " << std::setw(13) << o.status << "  "
         << std::setw(15) << checks << "  " << std::right << std::setw(8) << seconds_text(o.seconds) << "\n";
   }
-  for (const auto& o : outcomes)
-    if (o.status != "OK")
-      out << "\n---- " << o.deck.string() << " (" << o.status << ", exit " << o.exit_code << ")\n" << tail(o.output, 40);
+  for (const auto& o : outcomes) {
+    if (o.status == "OK") continue;
+    out << "\n---- " << o.deck.string() << " (" << o.status << ", exit " << o.exit_code;
+    if (o.status == "TIMEOUT") out << ", time limit " << budget_text(o.time_limit) << " s";
+    if (o.status == "OUT_OF_MEMORY") out << ", memory limit " << budget_text(o.memory_limit_mb) << " MB";
+    out << ")\n" << tail(o.output, 40);
+  }
   // Reports are replaced atomically: an interrupted run leaves the previous report whole.
   if (!options.junit_file.empty())
     engine::write_file_atomically(options.junit_file, [&](std::ostream& f) { f << junit_xml(outcomes); });

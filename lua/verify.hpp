@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "lua/budget.hpp"
+
 namespace lunaster::lua {
 
 /// What `lunaster verify` was asked to do.
@@ -16,13 +18,21 @@ struct VerifyOptions {
   std::string json_file;                     ///< JSON report, if not empty
   std::filesystem::path out_dir = "out/verify";  ///< each deck writes to out_dir/<deck name>
   std::filesystem::path executable;          ///< the lunaster binary run as `exe run DECK --out DIR`
+  Budget budget;                             ///< --time-limit / --memory-limit: override every deck header
 };
+
+/// Default budget of a deck under `lunaster verify` (when neither the command line nor the deck header sets one).
+constexpr double kVerifyDefaultSeconds = 300.0;
+/// The parent stops a child this long after its time limit if it has not stopped itself.
+constexpr double kVerifyKillGraceSeconds = 1.0;
 
 /// Result of one deck.
 struct DeckOutcome {
   std::filesystem::path deck;
   int exit_code = -1;    ///< child's exit status (-1 if killed by a signal or not started)
-  std::string status;    ///< "OK", "NOOK" or "ERROR"
+  std::string status;    ///< "OK", "NOOK", "ERROR", "TIMEOUT" or "OUT_OF_MEMORY"
+  double time_limit = 0.0;       ///< the deck's budget: seconds (0 = none)
+  double memory_limit_mb = 0.0;  ///< and MB (0 = none)
   int n_ok = 0, n_nook = 0;
   double seconds = 0.0;  ///< wall time
   std::string output;    ///< captured stdout + stderr
@@ -33,11 +43,19 @@ struct DeckOutcome {
 std::vector<std::filesystem::path> collect_decks(const std::vector<std::filesystem::path>& paths);
 /// Counts TEST_RESU lines (" OK ..." and "NOOK ...") in a deck's output.
 void count_checks(const std::string& output, int& n_ok, int& n_nook);
-/// "OK" (exit 0, no NOOK), "NOOK" (exit 1, or NOOK lines) or "ERROR".
+/// "OK" (exit 0, no NOOK), "NOOK" (exit 1, or NOOK lines), "TIMEOUT" (exit 5),
+/// "OUT_OF_MEMORY" (exit 6) or "ERROR".
 std::string deck_status(int exit_code, int n_nook);
-/// Runs one deck as a child process and captures its output.
+/// The budget a deck runs with under verify: `overrides` (command line), else its header,
+/// else 300 s and half of the machine's memory. A malformed header is left to the child
+/// to report as a deck error.
+Budget verify_budget(const std::filesystem::path& deck, const Budget& overrides);
+/// Runs one deck as a child process (`exe run DECK --out DIR` plus the budget's
+/// --time-limit/--memory-limit) and captures its output. The child enforces its budget
+/// itself; if it is still running kVerifyKillGraceSeconds after its time limit, it is
+/// killed (SIGKILL, that child only) and reported as TIMEOUT.
 DeckOutcome run_child(const std::filesystem::path& executable, const std::filesystem::path& deck,
-                      const std::filesystem::path& out_dir);
+                      const std::filesystem::path& out_dir, const Budget& budget = {});
 /// JUnit XML for the outcomes (one testcase per deck).
 std::string junit_xml(const std::vector<DeckOutcome>& outcomes);
 /// JSON report for the outcomes.

@@ -8,8 +8,9 @@
 
 namespace lunaster {
 
-/// The class of an error; the value is the process exit code.
-enum class ErrorKind { Deck = 2, Solve = 3, Internal = 4 };
+/// The class of an error; the value is the process exit code. TimeLimit and OutOfMemory
+/// are a deck over its budget (`lunaster run --time-limit/--memory-limit`, deck header).
+enum class ErrorKind { Deck = 2, Solve = 3, Internal = 4, TimeLimit = 5, OutOfMemory = 6 };
 
 /// Where in a deck an error arose. Empty fields are omitted when formatting.
 struct ErrorContext {

@@ -3,12 +3,18 @@
 # method on each (Lua decks looping inside one lunaster run per family), CalculiX on the
 # same meshes, the stability atlas, then the charts and the summary under docs/study/.
 # Usage: tests/bench/study/run_study.sh [BUILD_DIR] [--quick]
+# --quick is a smoke run: its charts and summary go to BUILD_DIR/study/quick-docs/, never over
+# the published docs/study/ (only the full study writes there).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../../.." && pwd)
 build=${1:-build}; quick=${2:-}
+if [ -n "$quick" ] && [ "$quick" != "--quick" ]; then
+  echo "run_study.sh: unknown option '$quick' (expected --quick or nothing)" >&2; exit 2
+fi
 [[ "$build" = /* ]] || build="$root/$build"
 here="$root/tests/bench/study"
 work="$build/study"
+if [ "$quick" = "--quick" ]; then docs="$work/quick-docs"; else docs="$root/docs/study"; fi
 gen="$build/lunaster-meshgen"
 lun="$build/lunaster"
 py=/usr/bin/python3
@@ -81,4 +87,8 @@ for fam in i d; do
 done
 
 echo "study: charts"
-$py "$here/plot_study.py" "$work" "$root/docs/study"
+$py "$here/plot_study.py" "$work" "$docs"
+if [ "$quick" = "--quick" ]; then
+  sed -i '1a\\n> Smoke run (`make study STUDY_FLAGS=--quick`, coarse meshes only): not the published study, which is docs/study/.' "$docs/summary.md"
+fi
+echo "study: charts, CSV and summary written to $docs"

@@ -1,6 +1,7 @@
 // `lunaster verify`: deck collection, TEST_RESU line parsing, child processes and reports.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -83,4 +84,80 @@ TEST(Verify, RunsDecksInParallelAndWritesReports) {
   std::ostringstream single;
   EXPECT_EQ(verify(options, single), 0);
   EXPECT_NE(single.str().find("1 passed, 0 failed"), std::string::npos);
+}
+
+TEST(Verify, BudgetStatusesAndDefaults) {
+  EXPECT_EQ(deck_status(5, 0), "TIMEOUT");
+  EXPECT_EQ(deck_status(6, 0), "OUT_OF_MEMORY");
+  fs::path dir = fs::path(LUNASTER_BINARY_DIR) / "unit-verify-budget";
+  fs::create_directories(dir);
+  std::ofstream(dir / "plain.lua") << "DEBUT()\n";
+  std::ofstream(dir / "header.lua") << "-- lunaster: time_limit=60 memory_limit=512\nDEBUT()\n";
+  std::ofstream(dir / "broken.lua") << "-- lunaster: time_limit=soon\nDEBUT()\n";
+  Budget none;
+  Budget plain = verify_budget(dir / "plain.lua", none);
+  EXPECT_EQ(plain.seconds.value_or(0), 300.0);
+  EXPECT_EQ(plain.megabytes.value_or(0), default_memory_budget_mb());
+  Budget header = verify_budget(dir / "header.lua", none);
+  EXPECT_EQ(header.seconds.value_or(0), 60.0);
+  EXPECT_EQ(header.megabytes.value_or(0), 512.0);
+  Budget cli;
+  cli.seconds = 2;
+  Budget overridden = verify_budget(dir / "header.lua", cli);
+  EXPECT_EQ(overridden.seconds.value_or(0), 2.0);
+  EXPECT_EQ(overridden.megabytes.value_or(0), 512.0);
+  // The child reports the malformed header; the parent still guards it with the defaults.
+  EXPECT_EQ(verify_budget(dir / "broken.lua", none).seconds.value_or(0), 300.0);
+}
+
+TEST(Verify, ChildrenOverBudgetAreReportedAndAHungChildIsKilled) {
+  fs::path dir = fs::path(LUNASTER_BINARY_DIR) / "unit-verify-kill";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "suite");
+  // The fake prints its arguments; a deck saying "hang" ignores its budget (exec: the pid stays the child's).
+  fs::path exe = dir / "fake_lunaster.sh";
+  std::ofstream(exe) << "#!/bin/sh\necho \"args: $*\"\ngrep -q hang \"$2\" && exec sleep 30\n"
+                        "grep -v '^exit' \"$2\"\nexit $(sed -n 's/^exit //p' \"$2\")\n";
+  fs::permissions(exe, fs::perms::owner_all);
+  std::ofstream(dir / "suite" / "a_hang.lua") << "-- lunaster: time_limit=0.5\nhang\n";
+  std::ofstream(dir / "suite" / "b_slow.lua") << "-- lunaster: time_limit=1\nb_slow.lua:3: time limit of 1 s exceeded\nexit 5\n";
+  std::ofstream(dir / "suite" / "c_big.lua") << "-- lunaster: memory_limit=64\nc_big.lua: memory limit of 64 MB exceeded\nexit 6\n";
+  std::ofstream(dir / "suite" / "d_ok.lua") << " OK  x\nexit 0\n";
+  VerifyOptions options;
+  options.paths = {dir / "suite"};
+  options.jobs = 2;
+  options.executable = exe;
+  options.out_dir = dir / "out";
+  options.junit_file = (dir / "junit.xml").string();
+  options.json_file = (dir / "report.json").string();
+  std::ostringstream out;
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(verify(options, out), 1);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 0.5 + kVerifyKillGraceSeconds + 1.0);  // not the 30 s of the hung child
+  const std::string text = out.str();
+  EXPECT_TRUE(std::regex_search(text, std::regex("a_hang\\.lua +TIMEOUT +0/0 +1\\.[0-9]+\n"))) << text;
+  EXPECT_TRUE(std::regex_search(text, std::regex("b_slow\\.lua +TIMEOUT +0/0"))) << text;
+  EXPECT_TRUE(std::regex_search(text, std::regex("c_big\\.lua +OUT_OF_MEMORY +0/0"))) << text;
+  EXPECT_TRUE(std::regex_search(text, std::regex("d_ok\\.lua +OK +1/0"))) << text;
+  EXPECT_NE(text.find("a_hang.lua: time limit of 0.5 s exceeded; killed after 1.5 s"), std::string::npos) << text;
+  EXPECT_NE(text.find("---- " + (dir / "suite" / "c_big.lua").string() + " (OUT_OF_MEMORY, exit 6, memory limit 64 MB)\n"),
+            std::string::npos)
+      << text;
+  // The budget reaches the child: the header's, else the defaults.
+  EXPECT_NE(text.find("--time-limit 1 --memory-limit"), std::string::npos) << text;
+  EXPECT_NE(text.find("--time-limit 300 --memory-limit 64"), std::string::npos) << text;
+  EXPECT_NE(text.find("1 passed, 3 failed\n"), std::string::npos) << text;
+
+  std::stringstream junit;
+  junit << std::ifstream(dir / "junit.xml").rdbuf();
+  EXPECT_NE(junit.str().find("tests=\"4\" failures=\"0\" errors=\"3\""), std::string::npos) << junit.str();
+  EXPECT_NE(junit.str().find("<error type=\"TIMEOUT\" message=\"time limit of 0.5 s exceeded\">"), std::string::npos);
+  EXPECT_NE(junit.str().find("<error type=\"OUT_OF_MEMORY\" message=\"memory limit of 64 MB exceeded\">"),
+            std::string::npos);
+  std::stringstream json;
+  json << std::ifstream(dir / "report.json").rdbuf();
+  EXPECT_NE(json.str().find("\"status\": \"TIMEOUT\", \"exit_code\": -1"), std::string::npos) << json.str();
+  EXPECT_NE(json.str().find("\"status\": \"OUT_OF_MEMORY\", \"exit_code\": 6"), std::string::npos) << json.str();
+  EXPECT_NE(json.str().find("\"time_limit\": 0.5, \"memory_limit_mb\": "), std::string::npos) << json.str();
 }

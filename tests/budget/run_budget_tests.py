@@ -1,0 +1,136 @@
+#!/usr/bin/env python3
+"""Deck budgets through the real CLI (CTest: budget.*).
+
+usage: run_budget_tests.py CASE LUNASTER MESHGEN SOURCE_DIR SCRATCH_DIR
+  verify_suite  `lunaster verify` over one good deck and the two budget decks of this folder:
+                OK, TIMEOUT, OUT_OF_MEMORY in the table, the JUnit XML and the JSON; exit 1
+  run_budgets   `lunaster run`: the header budget, the command-line override (run and verify),
+                a bad command-line value
+  long_solve    a refined SSNP121 I deck (about 5 s, 400 MB) stopped inside STAT_NON_LINE's
+                C++ solve by --time-limit 1 and by --memory-limit 150
+Every stop must come within its time budget plus one second.
+"""
+import json
+import re
+import shutil
+import subprocess
+import sys
+import time
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+failures = []
+
+
+def check(condition, what):
+    print(("ok    " if condition else "FAIL  ") + what)
+    if not condition:
+        failures.append(what)
+
+
+def run(args, cwd):
+    start = time.monotonic()
+    proc = subprocess.run(args, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=120)
+    seconds = time.monotonic() - start
+    print(f"$ {' '.join(str(a) for a in args)}  -> exit {proc.returncode} in {seconds:.2f} s")
+    print("  " + "\n  ".join(proc.stdout.strip().splitlines()[-6:]))
+    return proc.returncode, proc.stdout, seconds
+
+
+def verify_suite(exe, source, scratch):
+    suite = scratch / "suite"
+    suite.mkdir(parents=True)
+    shutil.copy(source / "testcases" / "patch_2d.lua", suite)
+    shutil.copytree(source / "testcases" / "meshes", suite / "meshes")
+    for deck in ("loop_forever.lua", "grow_forever.lua"):
+        shutil.copy(HERE / deck, suite)
+    junit, report = scratch / "junit.xml", scratch / "report.json"
+    code, out, _ = run([exe, "verify", "suite", "-j", "2", "--out", "out", "--junit", junit, "--json", report], scratch)
+    check(code == 1, "verify exits 1 when decks are over budget")
+    check(re.search(r"suite/patch_2d\.lua +OK +96/0", out) is not None, "table: the good deck is OK, 96 checks")
+    check(re.search(r"suite/loop_forever\.lua +TIMEOUT ", out) is not None, "table: the loop is TIMEOUT")
+    check(re.search(r"suite/grow_forever\.lua +OUT_OF_MEMORY ", out) is not None, "table: the growth is OUT_OF_MEMORY")
+    check("suite/loop_forever.lua:7: time limit of 1 s exceeded" in out, "the log tail names the deck line of the loop")
+    check("suite/grow_forever.lua: memory limit of 64 MB exceeded" in out, "the log tail names the memory budget")
+    check("1 passed, 2 failed" in out, "summary line")
+    decks = {Path(d["deck"]).name: d for d in json.loads(report.read_text())["decks"]}
+    check(decks["patch_2d.lua"]["status"] == "OK", "JSON: patch_2d OK")
+    check(decks["patch_2d.lua"]["time_limit"] == 300, "JSON: the good deck ran under the default 300 s")
+    loop, grow = decks["loop_forever.lua"], decks["grow_forever.lua"]
+    check(loop["status"] == "TIMEOUT" and loop["exit_code"] == 5 and loop["time_limit"] == 1, "JSON: loop TIMEOUT, exit 5")
+    check(1.0 <= loop["seconds"] < 2.0, f"the loop stopped within 1 s + 1 s ({loop['seconds']} s)")
+    check(grow["status"] == "OUT_OF_MEMORY" and grow["exit_code"] == 6 and grow["memory_limit_mb"] == 64,
+          "JSON: growth OUT_OF_MEMORY, exit 6")
+    check(grow["seconds"] < 1.0, f"the growth stopped within a second ({grow['seconds']} s)")
+    cases = {c.get("name"): c for c in ET.parse(junit).getroot().iter("testcase")}
+    check(len(cases["patch_2d"]) == 0, "JUnit: patch_2d passes")
+    loop_error, grow_error = cases["loop_forever"].find("error"), cases["grow_forever"].find("error")
+    check(loop_error is not None and loop_error.get("type") == "TIMEOUT", "JUnit: loop is an error of type TIMEOUT")
+    check(grow_error is not None and grow_error.get("type") == "OUT_OF_MEMORY",
+          "JUnit: growth is an error of type OUT_OF_MEMORY")
+    suite_node = ET.parse(junit).getroot().find("testsuite")
+    check(suite_node.get("errors") == "2" and suite_node.get("failures") == "0", "JUnit: 2 errors, 0 failures")
+
+
+def run_budgets(exe, source, scratch):
+    scratch.mkdir(parents=True)
+    loop, grow, concat = HERE / "loop_forever.lua", HERE / "grow_forever.lua", HERE / "concat_forever.lua"
+    code, out, seconds = run([exe, "run", loop, "--out", "o"], scratch)
+    check(code == 5 and 1.0 <= seconds < 2.0, f"header time_limit=1: exit 5 after 1-2 s ({seconds:.2f} s)")
+    check(f"{loop}:7: time limit of 1 s exceeded" in out, "the message names the deck line and the limit")
+    code, out, seconds = run([exe, "run", loop, "--out", "o", "--time-limit", "2"], scratch)
+    check(code == 5 and 2.0 <= seconds < 3.0, f"--time-limit 2 overrides the header: exit 5 after 2-3 s ({seconds:.2f} s)")
+    check("time limit of 2 s exceeded" in out, "the message gives the command-line limit")
+    code, out, seconds = run([exe, "run", grow, "--out", "o"], scratch)
+    check(code == 6 and seconds < 1.0, f"header memory_limit=64: exit 6 ({seconds:.2f} s)")
+    check("memory limit of 64 MB exceeded" in out, "the message gives the header's memory limit")
+    code, out, seconds = run([exe, "run", grow, "--out", "o", "--memory-limit", "128"], scratch)
+    check(code == 6 and "memory limit of 128 MB exceeded" in out, "--memory-limit 128 overrides the header")
+    code, out, seconds = run([exe, "run", concat, "--out", "o", "--memory-limit", "96"], scratch)
+    check(code == 6 and "memory limit of 96 MB exceeded" in out and seconds < 1.0,
+          f"a deck without header gets its memory budget from the command line ({seconds:.2f} s)")
+    code, out, _ = run([exe, "run", loop, "--time-limit", "soon"], scratch)
+    check(code == 2 and "run: --time-limit expects a positive number of seconds, got 'soon'" in out,
+          "a bad command-line value is a usage error")
+    report = scratch / "report.json"
+    code, out, _ = run([exe, "verify", loop, "--out", "vo", "--time-limit", "2", "--json", report], scratch)
+    deck = json.loads(report.read_text())["decks"][0]
+    check(code == 1 and deck["status"] == "TIMEOUT" and deck["time_limit"] == 2 and 2.0 <= deck["seconds"] < 3.0,
+          f"verify --time-limit 2 overrides the header ({deck['seconds']} s)")
+
+
+def long_solve(exe, meshgen, source, scratch):
+    scratch.mkdir(parents=True)
+    deck = scratch / "refined.lua"
+    shutil.copy(source / "tests" / "bench" / "ssnp121i_refined.lua", deck)
+    subprocess.run([meshgen, "--v1", "hexa8:5x5x1", "--v2", "hexa20:4x4x1", "--refine", "4", "-o", scratch / "refined.med"],
+                   check=True, stdout=subprocess.DEVNULL)
+    code, out, seconds = run([exe, "run", deck, "--out", "o", "-q", "--time-limit", "1"], scratch)
+    check(code == 5 and seconds < 2.0, f"--time-limit 1 stops the C++ solve: exit 5 ({seconds:.2f} s)")
+    check(re.search(r"refined\.lua: time limit of 1 s exceeded while running \S*refined\.lua:\d+: [A-Z_]+; "
+                    r"the run is stopped", out) is not None, "the message names the command that was running")
+    code, out, seconds = run([exe, "run", deck, "--out", "o", "-q", "--memory-limit", "150"], scratch)
+    check(code == 6 and seconds < 2.0, f"--memory-limit 150 stops the solve: exit 6 ({seconds:.2f} s)")
+    check(re.search(r"memory limit of 150 MB exceeded \(resident memory \d+ MB\) while running", out) is not None,
+          "the message gives the limit and the resident memory")
+
+
+def main():
+    case = sys.argv[1]
+    exe, meshgen, source, scratch = (Path(a).resolve() for a in sys.argv[2:6])
+    shutil.rmtree(scratch, ignore_errors=True)
+    if case == "verify_suite":
+        verify_suite(exe, source, scratch)
+    elif case == "run_budgets":
+        run_budgets(exe, source, scratch)
+    elif case == "long_solve":
+        long_solve(exe, meshgen, source, scratch)
+    else:
+        sys.exit(f"unknown case {case}")
+    print(f"{len(failures)} failure(s)")
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,225 @@
+// Deck budgets: the header comment, the command-line override, and their enforcement inside
+// the process (Lua hook and allocator, watchdog hard stop for C++ code that never returns).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <filesystem>
+#include <fstream>
+#include <new>
+#include <sstream>
+#include <vector>
+
+#include "lua/budget.hpp"
+#include "lua/runner.hpp"
+
+using namespace lunaster;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch() {
+  fs::path dir = fs::path(LUNASTER_BINARY_DIR) / "unit-lua-budget";
+  fs::create_directories(dir);
+  return dir;
+}
+
+fs::path write_deck(const std::string& name, const std::string& text) {
+  const fs::path path = scratch() / name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+/// The DeckError text of read_budget_header on `text`, "" if it is accepted.
+std::string header_error(const std::string& text) {
+  try {
+    lua::read_budget_header(write_deck("h.lua", text));
+  } catch (const DeckError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+catalog::ConceptPtr no_op(const catalog::Args&, cmd::Session&) { return nullptr; }
+catalog::ConceptPtr spin_forever(const catalog::Args&, cmd::Session&) {
+  volatile unsigned long long n = 0;
+  for (;;) n = n + 1;  // a C++ solve that never returns to Lua
+}
+catalog::ConceptPtr eat_memory(const catalog::Args&, cmd::Session&) {
+  std::vector<char*> blocks;
+  for (;;) {
+    blocks.push_back(new char[16 << 20]);
+    std::memset(blocks.back(), 1, 16 << 20);  // resident, not only reserved
+  }
+}
+catalog::ConceptPtr throw_bad_alloc(const catalog::Args&, cmd::Session&) { throw std::bad_alloc(); }
+catalog::ConceptPtr factors_do_not_fit(const catalog::Args&, cmd::Session&) {
+  throw SolveError::out_of_memory("MUMPS", 1000, "during factorisation, INFOG(1) = -9");
+}
+
+/// run_deck on `deck` with handler `debut` for DEBUT and no-ops elsewhere.
+struct Outcome {
+  int code = -1;
+  double seconds = 0.0;
+  std::string err;
+};
+Outcome run(const fs::path& deck, const lua::Budget& overrides = {}, cmd::Handler debut = no_op) {
+  std::ostringstream out, err;
+  Log log(out, 0);
+  cmd::Session session(log);
+  const auto start = std::chrono::steady_clock::now();
+  Outcome result;
+  result.code = lua::run_deck(
+      deck, session, [debut](const std::string& name) -> cmd::Handler { return name == "DEBUT" ? debut : no_op; }, err,
+      overrides);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.err = err.str();
+  return result;
+}
+
+}  // namespace
+
+TEST(BudgetHeader, ReadsTimeAndMemoryFromTheLeadingComments) {
+  auto budget = lua::read_budget_header(
+      write_deck("a.lua", "#!/usr/bin/env lunaster\n-- A deck.\n\n-- lunaster: time_limit=60 memory_limit=512\nDEBUT()\n"));
+  ASSERT_TRUE(budget.seconds && budget.megabytes);
+  EXPECT_EQ(*budget.seconds, 60.0);
+  EXPECT_EQ(*budget.megabytes, 512.0);
+  budget = lua::read_budget_header(write_deck("b.lua", "--lunaster: time_limit = 1.5\n-- lunaster: memory_limit= 64\n"));
+  EXPECT_EQ(budget.seconds.value_or(0), 1.5);
+  EXPECT_EQ(budget.megabytes.value_or(0), 64.0);
+  // Remarks in the "-- lunaster:" style of the decks are not budgets, at the top or below the code.
+  budget = lua::read_budget_header(write_deck(
+      "c.lua", "-- lunaster: largest relative error 2.7e-14 on LAGS_C\nDEBUT()\n-- lunaster: timing 3 s on 2 cores\n"));
+  EXPECT_FALSE(budget.seconds || budget.megabytes);
+  EXPECT_FALSE(lua::read_budget_header(scratch() / "missing.lua").seconds);
+}
+
+TEST(BudgetHeader, MalformedBudgetsNameFileLineAndKey) {
+  const std::string file = (scratch() / "h.lua").string();
+  EXPECT_EQ(header_error("-- lunaster: time_limit=abc\n"),
+            file + ":1: budget header: time_limit: expected a positive number of seconds, got 'abc'");
+  EXPECT_EQ(header_error("-- title\n-- lunaster: memory_limit=-5\n"),
+            file + ":2: budget header: memory_limit: expected a positive number of MB, got '-5'");
+  EXPECT_EQ(header_error("-- lunaster: time_limt=60\n"),
+            file + ":1: budget header: expected time_limit=SECONDS or memory_limit=MB, got 'time_limt=60'\n"
+                   "    did you mean 'time_limit'?");
+  EXPECT_EQ(header_error("-- lunaster: time_limit=1\n-- lunaster: time_limit=2\n"),
+            file + ":2: budget header: time_limit: expected one value, got a second one (the first is on line 1)");
+  EXPECT_EQ(header_error("DEBUT()\n-- lunaster: time_limit=5\n"),
+            file + ":2: budget header: expected the '-- lunaster:' budget line in the comment block at the top of "
+                   "the deck, got it below the first line of code");
+  EXPECT_EQ(header_error("-- lunaster: time_limit=0\n"),
+            file + ":1: budget header: time_limit: expected a positive number of seconds, got '0'");
+}
+
+TEST(BudgetHeader, CommandLineValuesOverrideTheHeader) {
+  lua::Budget header, cli;
+  header.seconds = 60;
+  header.megabytes = 512;
+  cli.seconds = 2;
+  const auto budget = lua::override_budget(header, cli);
+  EXPECT_EQ(budget.seconds.value_or(0), 2.0);
+  EXPECT_EQ(budget.megabytes.value_or(0), 512.0);
+  EXPECT_EQ(lua::parse_budget_value("0.5").value_or(0), 0.5);
+  for (const char* bad : {"", "0", "-1", "abc", "2s", "inf", "nan", "1e400"})
+    EXPECT_FALSE(lua::parse_budget_value(bad)) << bad;
+  EXPECT_EQ(lua::budget_text(300), "300");
+  EXPECT_EQ(lua::budget_text(0.25), "0.25");
+  EXPECT_GT(lua::default_memory_budget_mb(), 0.0);
+  EXPECT_GT(lua::resident_bytes(), 0u);
+}
+
+TEST(BudgetRun, LuaLoopIsStoppedAtTheDeckLineAndPcallCannotCatchIt) {
+  // Header budget 0.5 s; the deck catches the first error and tries to go on.
+  const auto deck = write_deck("loop.lua",
+                               "-- lunaster: time_limit=0.5\nDEBUT()\nlocal ok = pcall(function()\n"
+                               "  while true do end\nend)\nlocal i = 0\nwhile true do i = i + 1 end\n");
+  const Outcome r = run(deck);
+  EXPECT_EQ(r.code, 5) << r.err;
+  // The first instruction after pcall raises again: line 6.
+  EXPECT_NE(r.err.find("loop.lua:6: time limit of 0.5 s exceeded"), std::string::npos) << r.err;
+  EXPECT_GE(r.seconds, 0.5);
+  EXPECT_LT(r.seconds, 1.5);
+  // The command line wins over the header.
+  lua::Budget cli;
+  cli.seconds = 0.2;
+  const Outcome shorter = run(deck, cli);
+  EXPECT_EQ(shorter.code, 5);
+  EXPECT_NE(shorter.err.find("time limit of 0.2 s exceeded"), std::string::npos) << shorter.err;
+  EXPECT_LT(shorter.seconds, 0.5);
+}
+
+TEST(BudgetRunDeathTest, LuaDataBeyondTheMemoryBudgetIsOutOfMemory) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const auto deck = write_deck("grow.lua", "local t, i = {}, 0\nwhile true do i = i + 1; t[i] = i end\n");
+  lua::Budget cli;
+  cli.megabytes = 64;
+  // Either the Lua allocator refuses (a clean error, in a Release build) or the resident memory
+  // sampler stops the process first (a sanitizer's quarantine keeps freed blocks resident).
+  EXPECT_EXIT(
+      {
+        const Outcome r = run(deck, cli);
+        std::cerr << r.err;
+        std::_Exit(r.seconds < 2.0 ? r.code : 100);  // no atexit handlers (a leak checker) in the child
+      },
+      ::testing::ExitedWithCode(6), "grow\\.lua: memory limit of 64 MB exceeded");
+}
+
+TEST(BudgetRun, DeckWithinItsBudgetIsUntouched) {
+  lua::Budget cli;
+  cli.seconds = 5;
+  const Outcome ok = run(write_deck("small.lua", "-- lunaster: memory_limit=512\nlocal t = {}\nfor i = 1, 1e5 do t[i] = i end\n"),
+                     cli);
+  EXPECT_EQ(ok.code, 0) << ok.err;
+}
+
+TEST(BudgetRun, AllocationFailuresInCommandsAreOutOfMemory) {
+  const auto deck = write_deck("debut.lua", "DEBUT()\n");
+  Outcome r = run(deck, {}, throw_bad_alloc);
+  EXPECT_EQ(r.code, 6) << r.err;
+  EXPECT_NE(r.err.find("debut.lua:1: DEBUT: out of memory"), std::string::npos) << r.err;
+  r = run(deck, {}, factors_do_not_fit);
+  EXPECT_EQ(r.code, 6) << r.err;
+  EXPECT_NE(r.err.find("MUMPS: out of memory factorising 1000 equations"), std::string::npos) << r.err;
+}
+
+TEST(BudgetRunDeathTest, LongCppCommandIsStoppedAfterTheGrace) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const auto deck = write_deck("spin.lua", "-- lunaster: time_limit=1\nDEBUT()\n");
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EXIT(run(deck, {}, spin_forever), ::testing::ExitedWithCode(5),
+              "spin\\.lua: time limit of 1 s exceeded while running .*spin\\.lua:2: DEBUT; the run is stopped");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 2.0);
+}
+
+TEST(BudgetRun, PcallInALoopCannotKeepTheDeckGoing) {
+  const auto deck =
+      write_deck("pcall_loop.lua", "-- lunaster: time_limit=0.5\nwhile true do pcall(function() while true do end end) end\n");
+  const Outcome r = run(deck);
+  EXPECT_EQ(r.code, 5) << r.err;
+  EXPECT_NE(r.err.find("pcall_loop.lua:2: time limit of 0.5 s exceeded"), std::string::npos) << r.err;
+  EXPECT_LT(r.seconds, 1.0);
+}
+
+TEST(BudgetRunDeathTest, LongLuaLibraryCallIsStoppedAfterTheGrace) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  // Backtracking inside string.find (C code of the Lua library, no instruction to hook).
+  const auto deck = write_deck("backtrack.lua", "-- lunaster: time_limit=0.5\nlocal s = ('a'):rep(10000)\n"
+                                                "local found = s:find('.-.-.-.-b')\n");
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EXIT(run(deck), ::testing::ExitedWithCode(5),
+              "backtrack\\.lua: time limit of 0\\.5 s exceeded in the deck's Lua code; the run is stopped");
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.5);
+}
+
+TEST(BudgetRunDeathTest, CppMemoryBeyondTheBudgetIsStopped) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const auto deck = write_deck("eat.lua", "-- lunaster: memory_limit=256\nDEBUT()\n");
+  EXPECT_EXIT(run(deck, {}, eat_memory), ::testing::ExitedWithCode(6),
+              "eat\\.lua: memory limit of 256 MB exceeded \\(resident memory [0-9]+ MB\\) while running .*eat\\.lua:2: "
+              "DEBUT");
+}
