@@ -152,13 +152,37 @@ TEST(Gmsh, ErrorsAreDeckErrors) {
   std::string quad9 = good;
   quad9.replace(quad9.find("9 17 2"), 6, "9 10 2");
   EXPECT_NE(error_of(quad9).find("unsupported element type 10"), std::string::npos);
-  // Gmsh order read as if it were MED (no conversion) would be inverted: a VTK-ordered
-  // tetra written as a Gmsh tetra with swapped nodes is reported by name
-  const std::string inverted =
+  EXPECT_THROW(read_gmsh("/nonexistent/file.msh"), DeckError);
+}
+
+TEST(Gmsh, MirroredTetraIsReorientedAndATangledQuadIsNamed) {
+  // A VTK-ordered tetra written as a Gmsh tetra (nodes 2 and 3 swapped) is the
+  // mirror image of a valid one: read as such, then reoriented by orient_cells.
+  const std::string mirrored =
       "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 0 1 0\n3 1 0 0\n4 0 0 1\n$EndNodes\n"
       "$Elements\n1\n77 4 0 1 2 3 4\n$EndElements\n";
-  EXPECT_NE(error_of(inverted).find("M77"), std::string::npos);
-  EXPECT_THROW(read_gmsh("/nonexistent/file.msh"), DeckError);
+  Mesh mesh = read_gmsh_text(mirrored, "tet.msh");
+  EXPECT_NEAR(cell_measure(mesh, 0), -1.0 / 6.0, 1e-14);
+  EXPECT_EQ(inverted_cell_names(mesh), std::vector<std::string>{"M77"});
+  EXPECT_EQ(orient_cells(mesh, "tet.msh"), std::vector<int>{0});
+  EXPECT_NEAR(cell_measure(mesh, 0), 1.0 / 6.0, 1e-14);
+  EXPECT_TRUE(find_inverted_cells(mesh).empty());
+  // A 4.1 file with a bow-tie QUAD4 (nodes 1 2 4 3 of a unit square): no node
+  // order makes it valid, so orient_cells names the file and the cell.
+  const std::string tangled =
+      "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 4 1 4\n2 1 0 4\n1\n2\n3\n4\n"
+      "0 0 0\n1 0 0\n1 1 0\n0 1 0\n$EndNodes\n$Elements\n1 1 8 8\n2 1 3 1\n8 1 2 4 3\n$EndElements\n";
+  Mesh bow_tie = read_gmsh_text(tangled, "bow_tie.msh");
+  const Mesh before = bow_tie;
+  try {
+    orient_cells(bow_tie, "bow_tie.msh");
+    ADD_FAILURE() << "no error for a bow-tie QUAD4";
+  } catch (const DeckError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("mesh file 'bow_tie.msh': 1 tangled or degenerate cell(s)"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("M8 (QUAD4)"), std::string::npos) << msg;
+  }
+  EXPECT_EQ(bow_tie.cell_nodes, before.cell_nodes);
 }
 
 }  // namespace
