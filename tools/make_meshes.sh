@@ -52,8 +52,8 @@ for variant in ccw cw_master cw_slave; do
   mirror=()
   [ "$variant" = cw_master ] && mirror=(--mirror PLAQUE2)
   [ "$variant" = cw_slave ] && mirror=(--mirror PLAQUE1)
-  "$gen" --upper quad4:5 --lower tria3:4 "${mirror[@]}" -o "$m/contact2d_$variant.med"
+  "$gen" --upper quad4:6 --lower tria3:4 "${mirror[@]}" -o "$m/contact2d_$variant.med"
   for v in 2.2 4.1; do
-    "$gen" --upper quad4:5 --lower tria3:4 "${mirror[@]}" --msh-version "$v" -o "$m/contact2d_${variant}_v${v/./}.msh"
+    "$gen" --upper quad4:6 --lower tria3:4 "${mirror[@]}" --msh-version "$v" -o "$m/contact2d_${variant}_v${v/./}.msh"
   done
 done
