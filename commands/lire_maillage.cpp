@@ -6,6 +6,7 @@
 #include "engine/io/gmsh_reader.hpp"
 #include "engine/io/med_reader.hpp"
 #include "engine/mesh/mesh_checks.hpp"
+#include "engine/mesh/orientation.hpp"
 
 namespace lunaster::cmd {
 
@@ -37,6 +38,9 @@ ConceptPtr lire_maillage(const Args& args, Session& session) {
   } else {
     *result->mesh = engine::read_med(path.string(), args.has("NOM_MED") ? args.text("NOM_MED") : std::string());
   }
+  // Clockwise 2D cells and mirrored 3D cells are valid cells listed in the other
+  // orientation: reorient them once here (tangled or collapsed cells stop the run).
+  const std::vector<int> reoriented = engine::orient_cells(*result->mesh, path.string());
   const auto& mesh = *result->mesh;
   if (const auto orphans = engine::unreferenced_nodes(mesh); !orphans.empty()) {
     std::string names;
@@ -47,6 +51,15 @@ ConceptPtr lire_maillage(const Args& args, Session& session) {
   }
   session.log().info("  mesh " + path.filename().string() + ": " + std::to_string(mesh.n_nodes()) + " nodes, " +
                      std::to_string(mesh.n_cells()) + " cells, dimension " + std::to_string(mesh.dim));
+  if (!reoriented.empty()) {
+    std::string names;
+    for (size_t i = 0; i < reoriented.size() && i < 5; ++i) names += (i ? ", " : "") + mesh.cell_names[reoriented[i]];
+    if (reoriented.size() > 5) names += ", ...";
+    session.log().info("  mesh " + path.filename().string() + ": " + std::to_string(reoriented.size()) +
+                       (mesh.dim == 2 ? " clockwise cell(s) reoriented counter-clockwise (node order reversed): "
+                                      : " mirrored cell(s) reoriented (node order mirrored to MED's): ") +
+                       names);
+  }
   return result;
 }
 

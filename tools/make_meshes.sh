@@ -39,3 +39,24 @@ done
 # One-cell unit blocks (testcases/loads_and_groups.lua names their nodes N1..N4 / cell M5)
 "$gen" --block quad4:1 -o "$m/unit_quad4.med"
 "$gen" --block hexa8:1 -o "$m/unit_hexa8.med"
+# Orientation: the same scenes meshed clockwise (--mirror: cells and boundary edges of a block
+# listed as Gmsh writes a surface meshed from a clockwise curve loop), in MED and Gmsh 2.2 / 4.1.
+# The counter-clockwise MED blocks are patch_quad8.med and patch_tria6.med above.
+for t in quad8 tria6; do
+  "$gen" --block "$t:3" --distort 0.2 --mirror BLOCK -o "$m/patch_${t}_cw.med"
+  for v in 2.2 4.1; do
+    "$gen" --block "$t:3" --distort 0.2 --msh-version "$v" -o "$m/patch_${t}_v${v/./}.msh"
+    "$gen" --block "$t:3" --distort 0.2 --mirror BLOCK --msh-version "$v" -o "$m/patch_${t}_cw_v${v/./}.msh"
+  done
+done
+# Two-block contact scene (SSNP121 geometry, non-matching QUAD4 / TRIA3): counter-clockwise, the
+# lower (master) block clockwise, the upper (slave) block clockwise.
+for variant in ccw cw_master cw_slave; do
+  mirror=()
+  [ "$variant" = cw_master ] && mirror=(--mirror PLAQUE2)
+  [ "$variant" = cw_slave ] && mirror=(--mirror PLAQUE1)
+  "$gen" --upper quad4:6 --lower tria3:4 "${mirror[@]}" -o "$m/contact2d_$variant.med"
+  for v in 2.2 4.1; do
+    "$gen" --upper quad4:6 --lower tria3:4 "${mirror[@]}" --msh-version "$v" -o "$m/contact2d_${variant}_v${v/./}.msh"
+  done
+done

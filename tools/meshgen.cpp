@@ -1,8 +1,9 @@
-// lunaster-meshgen: generates the SSNP121 meshes and unit blocks as MED files,
-// and prints a summary of a mesh file (--info). Usage: lunaster-meshgen --help.
+// lunaster-meshgen: generates the SSNP121 meshes and unit blocks as MED or Gmsh
+// files, and prints a summary of a mesh file (--info). Usage: lunaster-meshgen --help.
 #include <algorithm>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "engine/io/gmsh_reader.hpp"
 #include "engine/io/med_reader.hpp"
 #include "engine/io/med_writer.hpp"
+#include "tools/gmsh_writer.hpp"
 #include "tools/ssnp121_mesh.hpp"
 
 namespace {
@@ -25,7 +27,11 @@ const char* kUsage =
     "  lunaster-meshgen --block TYPE:N [--distort A] [--name MESH] -o FILE.med\n"
     "      unit square/cube; --distort moves interior vertices by up to A cell sizes (default 0.2 if given without A)\n"
     "  lunaster-meshgen --info FILE    (.med, or .msh for Gmsh)\n"
-    "  --test-result adds an analytic result RESU (2 steps, DEPL and SIGM_ELNO) for interop tests\n";
+    "  --test-result adds an analytic result RESU (2 steps, DEPL and SIGM_ELNO) for interop tests\n"
+    "  --mirror GROUP[,GROUP] lists the volume cells of these groups in mirror order (clockwise in 2D) and\n"
+    "      reverses the boundary cells on them, as Gmsh does for a clockwise curve loop\n"
+    "  -o FILE.msh writes Gmsh ASCII instead of MED (--msh-version 2.2 or 4.1, default 4.1; node groups\n"
+    "      become physical point groups)\n";
 
 struct Options {
   std::map<std::string, std::string> values;
@@ -44,7 +50,8 @@ Options parse(int argc, char** argv) {
     } else if (a == "--distort" && (i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0)) {
       o.values["--distort"] = "0.2";
     } else if (a == "-o" || a == "--upper" || a == "--lower" || a == "--v1" || a == "--v2" || a == "--block" ||
-               a == "--refine" || a == "--distort" || a == "--name" || a == "--info") {
+               a == "--refine" || a == "--distort" || a == "--name" || a == "--info" || a == "--mirror" ||
+               a == "--msh-version") {
       if (i + 1 >= argc) throw DeckError("meshgen: option " + a + " needs a value");
       o.values[a] = argv[++i];
     } else {
@@ -156,8 +163,21 @@ int run(int argc, char** argv) {
     throw DeckError("meshgen: nothing to generate", {kUsage});
   }
   if (!get("--name").empty()) mesh.name = get("--name");
-  const std::vector<engine::ResultStep> steps = o.test_result ? test_result(mesh) : std::vector<engine::ResultStep>{};
-  engine::write_med(out, mesh, {{"RESU", &steps}});
+  if (!get("--mirror").empty()) {
+    std::vector<std::string> groups;
+    std::stringstream list(get("--mirror"));
+    for (std::string g; std::getline(list, g, ',');) groups.push_back(g);
+    tools::mirror_cell_groups(mesh, groups);
+  }
+  const bool gmsh = out.size() > 4 && out.substr(out.size() - 4) == ".msh";
+  if (gmsh) {
+    if (o.test_result) throw DeckError("meshgen: --test-result needs a .med output");
+    tools::write_gmsh(out, mesh, get("--msh-version").empty() ? "4.1" : get("--msh-version"));
+  } else {
+    if (!get("--msh-version").empty()) throw DeckError("meshgen: --msh-version needs a .msh output");
+    const std::vector<engine::ResultStep> steps = o.test_result ? test_result(mesh) : std::vector<engine::ResultStep>{};
+    engine::write_med(out, mesh, {{"RESU", &steps}});
+  }
   std::cout << out << ": " << mesh.n_nodes() << " nodes, " << mesh.n_cells() << " cells\n";
   return 0;
 }

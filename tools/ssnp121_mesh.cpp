@@ -313,4 +313,37 @@ Mesh make_block(const BlockOptions& o) {
   return b.finish();
 }
 
+void mirror_cell_groups(Mesh& mesh, const std::vector<std::string>& groups) {
+  const auto reorder = [&](int c, const std::vector<int>& perm) {
+    int* target = &mesh.cell_nodes[mesh.cell_offsets[c]];
+    const std::vector<int> old(target, target + mesh.cell_n_nodes(c));
+    for (size_t k = 0; k < perm.size(); ++k) target[k] = old[perm[k]];
+  };
+  std::vector<char> mirrored(mesh.n_cells(), 0);
+  for (const std::string& g : groups) {
+    const auto it = mesh.cell_groups.find(g);
+    if (it == mesh.cell_groups.end()) throw DeckError("meshgen: no cell group '" + g + "' to mirror");
+    int n = 0;
+    for (int c : it->second)
+      if (engine::cell_info(mesh.cell_types[c]).dim == mesh.dim && !mirrored[c]) mirrored[c] = 1, ++n;
+    if (n == 0) throw DeckError("meshgen: group '" + g + "' holds no " + std::to_string(mesh.dim) + "D cell");
+  }
+  std::vector<std::vector<int>> volumes_of_node(mesh.n_nodes());
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    if (mirrored[c]) {
+      for (int k = 0; k < mesh.cell_n_nodes(c); ++k) volumes_of_node[mesh.cell(c)[k]].push_back(c);
+      reorder(c, engine::cell_mirror_permutation(mesh.cell_types[c]));
+    }
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    if (engine::cell_info(mesh.cell_types[c]).dim != mesh.dim - 1) continue;
+    const int* nodes = mesh.cell(c);
+    const int nn = mesh.cell_n_nodes(c);
+    const bool on_mirrored = std::any_of(volumes_of_node[nodes[0]].begin(), volumes_of_node[nodes[0]].end(), [&](int v) {
+      const int* vn = mesh.cell(v);
+      return std::all_of(nodes, nodes + nn, [&](int n) { return std::find(vn, vn + mesh.cell_n_nodes(v), n) != vn + mesh.cell_n_nodes(v); });
+    });
+    if (on_mirrored) reorder(c, engine::cell_reverse_permutation(mesh.cell_types[c]));
+  }
+}
+
 }  // namespace lunaster::tools

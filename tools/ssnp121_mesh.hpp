@@ -53,4 +53,12 @@ engine::Mesh make_ssnp121_3d(const Ssnp121Options3d& options);
 /// (3D: y=1); corner node groups C00.. (2D) / C000.. (3D), digits = coordinates.
 engine::Mesh make_block(const BlockOptions& options);
 
+/// Rewrites the volume cells of `groups` (PLAQUE2, BLOCK ...) in mirror order
+/// (clockwise in 2D) and reverses every boundary cell lying on one of them, as
+/// Gmsh writes a surface meshed from a clockwise curve loop: meshes of the
+/// same scene in the other orientation, for the tests of LIRE_MAILLAGE's
+/// reorientation. Node numbering, cell numbering and groups are unchanged.
+/// Throws DeckError for an unknown group or one holding no volume cell.
+void mirror_cell_groups(engine::Mesh& mesh, const std::vector<std::string>& groups);
+
 }  // namespace lunaster::tools

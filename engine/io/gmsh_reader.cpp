@@ -6,7 +6,6 @@
 #include <unordered_map>
 
 #include "engine/core/error.hpp"
-#include "engine/mesh/orientation.hpp"
 
 namespace lunaster::engine {
 
@@ -298,11 +297,20 @@ Mesh GmshParser::parse() {
     if (!mesh_.cell_groups.count(name) && !mesh_.node_groups.count(name)) mesh_.cell_groups[name];
   for (auto& [name, nodes] : node_groups_) mesh_.add_to_node_group(name, nodes);
   mesh_.detect_dimension();
-  check_cell_orientation(mesh_, source_);
   return std::move(mesh_);
 }
 
+const GmshType& gmsh_type_of(CellType type) {
+  for (const auto& t : gmsh_types())
+    if (t.type == type) return t;
+  throw InternalError("no Gmsh element type for " + std::string(cell_info(type).name));
+}
+
 }  // namespace
+
+int gmsh_element_type(CellType type) { return gmsh_type_of(type).gmsh; }
+
+const std::vector<int>& gmsh_to_med_order(CellType type) { return gmsh_type_of(type).to_med; }
 
 Mesh read_gmsh_text(const std::string& text, const std::string& source) {
   GmshParser parser(text, source);

@@ -10,17 +10,27 @@
 /// $PhysicalNames entry (GM<tag> when unnamed); a physical group of point
 /// elements also becomes a node group.
 #include <string>
+#include <vector>
 
 #include "engine/mesh/mesh.hpp"
 
 namespace lunaster::engine {
 
-/// Reads a Gmsh file; sets `Mesh::dim` and checks cell orientation. Throws
-/// DeckError for a missing file, a binary file, an unsupported version or
-/// element type, truncated or malformed input, unknown node tags, inverted cells.
+/// Reads a Gmsh file and sets `Mesh::dim`; cells keep the orientation of the
+/// file (LIRE_MAILLAGE then calls `orient_cells`). Throws DeckError for a
+/// missing file, a binary file, an unsupported version or element type,
+/// truncated or malformed input, unknown node tags.
 Mesh read_gmsh(const std::string& path);
 
 /// Same, from the text of a file; `source` names it in error messages.
 Mesh read_gmsh_text(const std::string& text, const std::string& source);
+
+/// Gmsh element type number of a cell type (5 for HEXA8 ...), for writers of
+/// Gmsh files; InternalError for a type Gmsh files cannot hold here.
+int gmsh_element_type(CellType type);
+
+/// Node order of a Gmsh element relative to MED: med[order[k]] = gmsh[k]
+/// (empty: the same order).
+const std::vector<int>& gmsh_to_med_order(CellType type);
 
 }  // namespace lunaster::engine

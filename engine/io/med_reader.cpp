@@ -6,7 +6,6 @@
 #include "engine/core/error.hpp"
 #include "engine/io/med_common.hpp"
 #include "engine/mesh/cell_topology.hpp"
-#include "engine/mesh/orientation.hpp"
 
 namespace lunaster::engine {
 
@@ -226,7 +225,6 @@ Mesh read_med(const std::string& path, const std::string& mesh_name) {
   if (mesh.n_cells() == 0) fail(path, "mesh '" + header.name + "' has no cells");
   assign_groups(read_family_groups(fid, header.name, path), node_families, cell_families, mesh);
   mesh.detect_dimension();
-  check_cell_orientation(mesh, path);
   return mesh;
 }
 

@@ -17,11 +17,11 @@
 
 namespace lunaster::engine {
 
-/// Reads mesh `mesh_name` (the first mesh of the file when empty), sets
-/// `Mesh::dim` by `detect_dimension` and checks that no cell is inverted.
-/// Throws DeckError for a missing file, a file that is not MED/HDF5, a truncated
-/// or corrupt file, an unknown mesh name (listing the names available), an
-/// unsupported cell type (named) or inverted cells (named).
+/// Reads mesh `mesh_name` (the first mesh of the file when empty) and sets
+/// `Mesh::dim` by `detect_dimension`; cells keep the orientation of the file
+/// (LIRE_MAILLAGE then calls `orient_cells`). Throws DeckError for a missing
+/// file, a file that is not MED/HDF5, a truncated or corrupt file, an unknown
+/// mesh name (listing the names available) or an unsupported cell type (named).
 Mesh read_med(const std::string& path, const std::string& mesh_name = "");
 
 /// Names of the meshes stored in a MED file (DeckError if it cannot be read).

@@ -28,6 +28,16 @@ const std::vector<std::pair<int, int>>& cell_mid_edges(CellType type);
 /// TRIA3/6, QUAD4/8): `reversed[i] = nodes[perm[i]]`. Keeps node 0 first.
 const std::vector<int>& cell_reverse_permutation(CellType type);
 
+/// Local permutation that turns a cell of dimension 2 or 3 into its mirror
+/// image: `mirrored[i] = nodes[perm[i]]`. A clockwise 2D cell becomes
+/// counter-clockwise (TRIA/QUAD: the same as `cell_reverse_permutation`), a 3D
+/// cell listed as the mirror of the MED reference cell (negative Jacobian
+/// everywhere) becomes valid. Vertices: TRIA 0 2 1, QUAD 0 3 2 1, TETRA 0 2 1 3,
+/// PYRAM 0 3 2 1 4, PENTA 0 2 1 3 5 4, HEXA 0 3 2 1 4 7 6 5 (a reflection of
+/// the reference cell); every mid-side node follows its edge. Keeps node 0
+/// first; applying it twice gives the original order back.
+const std::vector<int>& cell_mirror_permutation(CellType type);
+
 /// Linear type with the same vertices (QUAD8 -> QUAD4, HEXA20 -> HEXA8 ...).
 CellType linear_type(CellType type);
 

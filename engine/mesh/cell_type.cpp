@@ -1,6 +1,9 @@
 #include "engine/mesh/cell_type.hpp"
 
+#include <array>
 #include <initializer_list>
+#include <utility>
+#include <vector>
 
 #include "engine/core/error.hpp"
 #include "engine/mesh/cell_topology.hpp"
@@ -147,6 +150,45 @@ const std::vector<int>& cell_reverse_permutation(CellType type) {
     default: break;
   }
   throw InternalError("cell_reverse_permutation: not a 0D/1D/2D cell: " + std::string(cell_info(type).name));
+}
+
+namespace {
+
+/// Vertex permutation + the mid-side nodes of the permuted edges (looked up in
+/// `cell_mid_edges`, so that each mid-side node stays on its edge).
+std::vector<int> with_mid_edges(CellType type, std::vector<int> perm) {
+  const auto& edges = cell_mid_edges(type);
+  const int nv = static_cast<int>(perm.size());
+  for (const auto& [a, b] : edges) {
+    const int pa = perm[a], pb = perm[b];
+    int found = -1;
+    for (size_t k = 0; k < edges.size(); ++k)
+      if ((edges[k].first == pa && edges[k].second == pb) || (edges[k].first == pb && edges[k].second == pa))
+        found = nv + static_cast<int>(k);
+    LUNASTER_ASSERT(found >= 0, "mirror permutation does not map edges to edges");
+    perm.push_back(found);
+  }
+  return perm;
+}
+
+}  // namespace
+
+const std::vector<int>& cell_mirror_permutation(CellType type) {
+  using T = CellType;
+  static const auto table = [] {
+    std::array<std::vector<int>, kNumTypes> t{};
+    const std::pair<CellType, std::vector<int>> vertices[] = {
+        {T::Tria3, {0, 2, 1}},          {T::Tria6, {0, 2, 1}},          {T::Quad4, {0, 3, 2, 1}},
+        {T::Quad8, {0, 3, 2, 1}},       {T::Tetra4, {0, 2, 1, 3}},      {T::Tetra10, {0, 2, 1, 3}},
+        {T::Pyram5, {0, 3, 2, 1, 4}},   {T::Penta6, {0, 2, 1, 3, 5, 4}}, {T::Penta15, {0, 2, 1, 3, 5, 4}},
+        {T::Hexa8, {0, 3, 2, 1, 4, 7, 6, 5}}, {T::Hexa20, {0, 3, 2, 1, 4, 7, 6, 5}}};
+    for (const auto& [type, perm] : vertices) t[index_of(type)] = with_mid_edges(type, perm);
+    return t;
+  }();
+  const std::vector<int>& perm = table[index_of(type)];
+  if (perm.empty())
+    throw InternalError("cell_mirror_permutation: not a 2D/3D cell: " + std::string(cell_info(type).name));
+  return perm;
 }
 
 CellType linear_type(CellType type) {

@@ -35,24 +35,30 @@ double max_edge_length(const Mesh& mesh, int c) {
   return h;
 }
 
-/// Smallest corner Jacobian of a 2D cell (z-component of (n-v) x (p-v)).
-double min_corner_jacobian_2d(const Mesh& mesh, int c) {
+/// Smallest and largest corner Jacobians of a cell.
+struct JacobianRange {
+  double min = 1e300, max = -1e300;
+  void add(double j) { min = std::min(min, j), max = std::max(max, j); }
+};
+
+/// Corner Jacobians of a 2D cell (z-component of (n-v) x (p-v)).
+JacobianRange corner_jacobians_2d(const Mesh& mesh, int c) {
   const int* nodes = mesh.cell(c);
   const int nv = cell_info(mesh.cell_types[c]).n_vertices;
-  double jmin = 1e300;
+  JacobianRange range;
   for (int i = 0; i < nv; ++i) {
     const Vec3 v = point(mesh, nodes[i]);
     const Vec3 e1 = sub(point(mesh, nodes[(i + 1) % nv]), v);
     const Vec3 e2 = sub(point(mesh, nodes[(i + nv - 1) % nv]), v);
-    jmin = std::min(jmin, cross(e1, e2)[2]);
+    range.add(cross(e1, e2)[2]);
   }
-  return jmin;
+  return range;
 }
 
-/// Smallest corner Jacobian of a 3D cell: at vertex v of an outward face with
+/// Corner Jacobians of a 3D cell: at vertex v of an outward face with
 /// neighbours n (next) and p (previous), every other edge neighbour c of v must
 /// lie inside: det = ((n-v) x (p-v)) . (v-c) > 0.
-double min_corner_jacobian_3d(const Mesh& mesh, int c) {
+JacobianRange corner_jacobians_3d(const Mesh& mesh, int c) {
   const CellType type = mesh.cell_types[c];
   const CellFaces& faces = cell_faces(type);
   const int nv = cell_info(type).n_vertices;
@@ -66,7 +72,7 @@ double min_corner_jacobian_3d(const Mesh& mesh, int c) {
       neighbours[n].push_back(v);
     }
   }
-  double jmin = 1e300;
+  JacobianRange range;
   for (int f = 0; f < faces.n_faces; ++f) {
     const int m = face_n_vertices(faces.face_type[f]);
     for (int k = 0; k < m; ++k) {
@@ -76,11 +82,42 @@ double min_corner_jacobian_3d(const Mesh& mesh, int c) {
       for (int other : neighbours[v]) {
         const auto* begin = faces.nodes[f].data();
         if (std::find(begin, begin + m, other) != begin + m) continue;
-        jmin = std::min(jmin, dot(normal, sub(x, point(mesh, nodes[other]))));
+        range.add(dot(normal, sub(x, point(mesh, nodes[other]))));
       }
     }
   }
-  return jmin;
+  return range;
+}
+
+/// Orientation of a volume cell (dimension mesh.dim >= 2) from its corner
+/// Jacobians, with the degeneracy threshold 1e-10 h^d.
+enum class CellState { NotChecked, Valid, Mirrored, Tangled };
+
+CellState cell_state(const Mesh& mesh, int c) {
+  const int cdim = cell_info(mesh.cell_types[c]).dim;
+  if (cdim != mesh.dim || cdim < 2) return CellState::NotChecked;
+  const double tol = 1e-10 * std::pow(max_edge_length(mesh, c), cdim);
+  const JacobianRange j = cdim == 2 ? corner_jacobians_2d(mesh, c) : corner_jacobians_3d(mesh, c);
+  if (j.min > tol) return CellState::Valid;
+  if (j.max < -tol) return CellState::Mirrored;
+  return CellState::Tangled;  // also a NaN coordinate: no comparison above holds
+}
+
+void reorder_nodes(Mesh& mesh, int c, const std::vector<int>& perm) {
+  int* target = &mesh.cell_nodes[mesh.cell_offsets[c]];
+  const std::vector<int> old(target, target + mesh.cell_n_nodes(c));
+  for (size_t k = 0; k < perm.size(); ++k) target[k] = old[perm[k]];
+}
+
+/// "M6 (QUAD4), M7 (QUAD4), ..." for the first five cells.
+std::string cell_list(const Mesh& mesh, const std::vector<int>& cells) {
+  std::string list;
+  for (size_t i = 0; i < cells.size() && i < 5; ++i) {
+    if (i) list += ", ";
+    list += mesh.cell_names[cells[i]] + " (" + std::string(cell_info(mesh.cell_types[cells[i]]).name) + ")";
+  }
+  if (cells.size() > 5) list += ", ...";
+  return list;
 }
 
 bool same_cyclic_orientation(const std::vector<int>& a, const std::vector<int>& b) {
@@ -133,11 +170,8 @@ bool is_boundary_type(CellType type, int mesh_dim) {
 std::vector<int> find_inverted_cells(const Mesh& mesh) {
   std::vector<int> bad;
   for (int c = 0; c < mesh.n_cells(); ++c) {
-    const int cdim = cell_info(mesh.cell_types[c]).dim;
-    if (cdim != mesh.dim || cdim < 2) continue;
-    const double h = max_edge_length(mesh, c);
-    const double jmin = cdim == 2 ? min_corner_jacobian_2d(mesh, c) : min_corner_jacobian_3d(mesh, c);
-    if (!(jmin > 1e-10 * std::pow(h, cdim))) bad.push_back(c);
+    const CellState state = cell_state(mesh, c);
+    if (state == CellState::Mirrored || state == CellState::Tangled) bad.push_back(c);
   }
   return bad;
 }
@@ -151,16 +185,39 @@ std::vector<std::string> inverted_cell_names(const Mesh& mesh) {
 void check_cell_orientation(const Mesh& mesh, const std::string& source) {
   const std::vector<int> bad = find_inverted_cells(mesh);
   if (bad.empty()) return;
-  std::string list;
-  for (size_t i = 0; i < bad.size() && i < 5; ++i) {
-    if (i) list += ", ";
-    list += mesh.cell_names[bad[i]] + " (" + std::string(cell_info(mesh.cell_types[bad[i]]).name) + ")";
-  }
-  if (bad.size() > 5) list += ", ...";
   throw DeckError("mesh file '" + source + "': " + std::to_string(bad.size()) +
-                      " inverted or degenerate cell(s) (non-positive Jacobian): " + list,
+                      " inverted or degenerate cell(s) (non-positive Jacobian): " + cell_list(mesh, bad),
                   {"check the node order of these cells (MED order is expected), and that no two of their "
                    "corners are the same node or at the same point"});
+}
+
+std::vector<int> find_tangled_cells(const Mesh& mesh) {
+  std::vector<int> bad;
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    if (cell_state(mesh, c) == CellState::Tangled) bad.push_back(c);
+  return bad;
+}
+
+std::vector<int> orient_cells(Mesh& mesh, const std::string& source) {
+  std::vector<int> tangled, mirrored;
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    const CellState state = cell_state(mesh, c);
+    if (state == CellState::Tangled) tangled.push_back(c);
+    if (state == CellState::Mirrored) mirrored.push_back(c);
+  }
+  if (!tangled.empty())
+    throw DeckError("mesh file '" + source + "': " + std::to_string(tangled.size()) +
+                        " tangled or degenerate cell(s) (Jacobian zero or of both signs): " +
+                        cell_list(mesh, tangled),
+                    {"check the node order of these cells (a cell must not cross itself; clockwise or mirrored "
+                     "cells are accepted and reoriented), and that no two of their corners are the same node or "
+                     "at the same point"});
+  for (int c : mirrored) {
+    reorder_nodes(mesh, c, cell_mirror_permutation(mesh.cell_types[c]));
+    LUNASTER_ASSERT(cell_state(mesh, c) == CellState::Valid,
+                    "cell " + mesh.cell_names[c] + " is still inverted after its reorientation");
+  }
+  return mirrored;
 }
 
 double cell_measure(const Mesh& mesh, int c) {
@@ -234,10 +291,7 @@ int orient_boundary_outward(Mesh& mesh, const std::vector<int>& boundary_cells) 
     if (face.empty())
       throw DeckError("cell " + mesh.cell_names[b] + " is not a face of cell " + mesh.cell_names[owners[0]]);
     if (same_cyclic_orientation(vertices, face)) continue;
-    const std::vector<int>& perm = cell_reverse_permutation(type);
-    std::vector<int> old(mesh.cell(b), mesh.cell(b) + info.n_nodes);
-    int* target = &mesh.cell_nodes[mesh.cell_offsets[b]];
-    for (int k = 0; k < info.n_nodes; ++k) target[k] = old[perm[k]];
+    reorder_nodes(mesh, b, cell_reverse_permutation(type));
     ++flipped;
   }
   return flipped;

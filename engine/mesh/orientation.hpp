@@ -1,6 +1,6 @@
 #pragma once
-/// Cell orientation: detection of inverted cells and outward orientation of
-/// boundary (skin) cells.
+/// Cell orientation: detection of inverted cells, reorientation of clockwise
+/// (2D) and mirrored (3D) cells, and outward orientation of boundary (skin) cells.
 ///
 /// Conventions (the FE pressure code relies on them):
 /// - A SEG2/SEG3 (n1, n2, ...) in the xy-plane has the normal (t_y, -t_x, 0)
@@ -10,7 +10,9 @@
 ///   first three nodes (right-hand rule on the node order).
 /// - A valid 2D cell lists its vertices counter-clockwise in the xy-plane; a
 ///   valid 3D cell follows the MED reference cells (cell_topology.hpp), so that
-///   every face listed by `cell_faces` has an outward normal.
+///   every face listed by `cell_faces` has an outward normal. LIRE_MAILLAGE
+///   brings every cell to this orientation (`orient_cells`), so that the rest of
+///   the code (ORIE_PEAU, ...) may rely on it.
 #include <array>
 #include <string>
 #include <vector>
@@ -24,12 +26,28 @@ namespace lunaster::engine {
 /// (degenerate, |J| < 1e-10 h^d) at any vertex. Lower-dimensional cells are not checked.
 std::vector<int> find_inverted_cells(const Mesh& mesh);
 
+/// The cells of `find_inverted_cells` that no reordering of their nodes can
+/// make valid: a corner Jacobian near zero (collapsed cell) or corner Jacobians
+/// of both signs (tangled, self-intersecting cell).
+std::vector<int> find_tangled_cells(const Mesh& mesh);
+
 /// Names of the cells returned by `find_inverted_cells`.
 std::vector<std::string> inverted_cell_names(const Mesh& mesh);
 
 /// Throws a DeckError naming `source` (the file read) and the first inverted
-/// cells if `find_inverted_cells` finds any.
+/// cells if `find_inverted_cells` finds any (for meshes that must already be
+/// oriented, e.g. generated ones).
 void check_cell_orientation(const Mesh& mesh, const std::string& source);
+
+/// Reorients, once after reading, every volume cell whose corner Jacobian is
+/// negative at every vertex: a 2D cell listed clockwise, or a 3D cell listed as
+/// the mirror image of the MED reference cell. Its nodes are reordered by
+/// `cell_mirror_permutation` (mid-side nodes follow their edges); cell indices,
+/// names and groups are unchanged, and boundary cells keep their own node
+/// order. Returns the reoriented cells. Throws a DeckError naming `source` and
+/// the first cells if any is tangled or degenerate (`find_tangled_cells`);
+/// then the mesh is left unchanged.
+std::vector<int> orient_cells(Mesh& mesh, const std::string& source);
 
 /// Signed measure of a cell, exact for straight-sided cells: length (1D),
 /// area in the xy-plane (2D, positive when counter-clockwise; for faces in 3D

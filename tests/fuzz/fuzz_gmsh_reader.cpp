@@ -7,11 +7,13 @@
 
 #include "engine/core/error.hpp"
 #include "engine/io/gmsh_reader.hpp"
+#include "engine/mesh/orientation.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    const lunaster::engine::Mesh mesh = lunaster::engine::read_gmsh_text(text, "fuzz.msh");
+    lunaster::engine::Mesh mesh = lunaster::engine::read_gmsh_text(text, "fuzz.msh");
+    lunaster::engine::orient_cells(mesh, "fuzz.msh");  // as LIRE_MAILLAGE does after reading
     (void)mesh.n_cells();
   } catch (const lunaster::Error&) {
     // expected for malformed input

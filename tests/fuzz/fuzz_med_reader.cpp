@@ -10,6 +10,7 @@
 
 #include "engine/core/error.hpp"
 #include "engine/io/med_reader.hpp"
+#include "engine/mesh/orientation.hpp"
 
 namespace {
 
@@ -28,7 +29,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::fclose(file);
   if (written) {
     try {
-      const lunaster::engine::Mesh mesh = lunaster::engine::read_med(path);
+      lunaster::engine::Mesh mesh = lunaster::engine::read_med(path);
+      lunaster::engine::orient_cells(mesh, path);  // as LIRE_MAILLAGE does after reading
       (void)mesh.n_cells();
     } catch (const lunaster::Error&) {
       // expected for malformed input

@@ -16,6 +16,7 @@
 #include "commands/concepts.hpp"
 #include "commands/registry.hpp"
 #include "engine/io/med_reader.hpp"
+#include "engine/mesh/orientation.hpp"
 
 namespace lunaster::cmd {
 namespace {
@@ -81,6 +82,47 @@ TEST(MeshWarnings, CleanMeshHasNoWarning) {
   Harness h("clean");
   read_gmsh(h, "block.msh");
   EXPECT_EQ(h.log.n_warnings(), 0) << h.out.str();
+}
+
+TEST(MeshOrientation, ClockwiseCellIsReorientedAndReportedOnce) {
+  Harness h("clockwise");
+  auto ma = std::dynamic_pointer_cast<Maillage>(read_gmsh(h, "clockwise_cell.msh"));
+  const std::string out = h.out.str();
+  EXPECT_EQ(h.log.n_warnings(), 0) << out;
+  EXPECT_NE(out.find("  mesh clockwise_cell.msh: 1 clockwise cell(s) reoriented counter-clockwise (node order "
+                     "reversed): M6\n"),
+            std::string::npos)
+      << out;
+  const engine::Mesh& mesh = *ma->mesh;
+  const int m6 = mesh.find_cell("M6");
+  ASSERT_GE(m6, 0);
+  EXPECT_NEAR(engine::cell_measure(mesh, m6), 1.0, 1e-15);
+  EXPECT_NEAR(engine::cell_measure(mesh, mesh.find_cell("M5")), 1.0, 1e-15);
+  // the file lists M6 as N2 N5 N6 N3 (clockwise): reversed, N2 stays first
+  std::vector<std::string> names;
+  for (int k = 0; k < 4; ++k) names.push_back(mesh.node_names[mesh.cell(m6)[k]]);
+  EXPECT_EQ(names, (std::vector<std::string>{"N2", "N3", "N6", "N5"}));
+  // a counter-clockwise mesh gets no such line
+  Harness clean("clockwise_clean");
+  read_gmsh(clean, "block.msh");
+  EXPECT_EQ(clean.out.str().find("reoriented"), std::string::npos) << clean.out.str();
+}
+
+TEST(MeshOrientation, MirroredHexaIsReorientedAndReported) {
+  // A unit HEXA8 in Gmsh order with bottom and top swapped: the mirror image of a valid cell.
+  Harness h("mirrored");
+  const fs::path file = h.session.output_dir / "mirrored.msh";
+  std::ofstream(file) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n8\n1 0 0 0\n2 1 0 0\n3 1 1 0\n"
+                         "4 0 1 0\n5 0 0 1\n6 1 0 1\n7 1 1 1\n8 0 1 1\n$EndNodes\n$Elements\n1\n"
+                         "3 5 0 5 6 7 8 1 2 3 4\n$EndElements\n";
+  auto ma = std::dynamic_pointer_cast<Maillage>(h.run(
+      "LIRE_MAILLAGE", simple({{"FORMAT", std::string("GMSH")}, {"FICHIER", file.string()}})));
+  const std::string out = h.out.str();
+  EXPECT_EQ(h.log.n_warnings(), 0) << out;
+  EXPECT_NE(out.find("  mesh mirrored.msh: 1 mirrored cell(s) reoriented (node order mirrored to MED's): M3\n"),
+            std::string::npos)
+      << out;
+  EXPECT_NEAR(engine::cell_measure(*ma->mesh, 0), 1.0, 1e-15);
 }
 
 ConceptPtr contact_on(Harness& h, const ConceptPtr& model, const std::string& slave, const std::string& master) {

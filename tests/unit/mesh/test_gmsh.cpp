@@ -7,6 +7,8 @@
 #include "engine/io/gmsh_reader.hpp"
 #include "engine/mesh/orientation.hpp"
 #include "test_helpers.hpp"
+#include "tools/gmsh_writer.hpp"
+#include "tools/ssnp121_mesh.hpp"
 
 namespace lunaster::engine {
 namespace {
@@ -152,13 +154,101 @@ TEST(Gmsh, ErrorsAreDeckErrors) {
   std::string quad9 = good;
   quad9.replace(quad9.find("9 17 2"), 6, "9 10 2");
   EXPECT_NE(error_of(quad9).find("unsupported element type 10"), std::string::npos);
-  // Gmsh order read as if it were MED (no conversion) would be inverted: a VTK-ordered
-  // tetra written as a Gmsh tetra with swapped nodes is reported by name
-  const std::string inverted =
+  EXPECT_THROW(read_gmsh("/nonexistent/file.msh"), DeckError);
+}
+
+TEST(Gmsh, MirroredTetraIsReorientedAndATangledQuadIsNamed) {
+  // A VTK-ordered tetra written as a Gmsh tetra (nodes 2 and 3 swapped) is the
+  // mirror image of a valid one: read as such, then reoriented by orient_cells.
+  const std::string mirrored =
       "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 0 1 0\n3 1 0 0\n4 0 0 1\n$EndNodes\n"
       "$Elements\n1\n77 4 0 1 2 3 4\n$EndElements\n";
-  EXPECT_NE(error_of(inverted).find("M77"), std::string::npos);
-  EXPECT_THROW(read_gmsh("/nonexistent/file.msh"), DeckError);
+  Mesh mesh = read_gmsh_text(mirrored, "tet.msh");
+  EXPECT_NEAR(cell_measure(mesh, 0), -1.0 / 6.0, 1e-14);
+  EXPECT_EQ(inverted_cell_names(mesh), std::vector<std::string>{"M77"});
+  EXPECT_EQ(orient_cells(mesh, "tet.msh"), std::vector<int>{0});
+  EXPECT_NEAR(cell_measure(mesh, 0), 1.0 / 6.0, 1e-14);
+  EXPECT_TRUE(find_inverted_cells(mesh).empty());
+  // A 4.1 file with a bow-tie QUAD4 (nodes 1 2 4 3 of a unit square): no node
+  // order makes it valid, so orient_cells names the file and the cell.
+  const std::string tangled =
+      "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 4 1 4\n2 1 0 4\n1\n2\n3\n4\n"
+      "0 0 0\n1 0 0\n1 1 0\n0 1 0\n$EndNodes\n$Elements\n1 1 8 8\n2 1 3 1\n8 1 2 4 3\n$EndElements\n";
+  Mesh bow_tie = read_gmsh_text(tangled, "bow_tie.msh");
+  const Mesh before = bow_tie;
+  try {
+    orient_cells(bow_tie, "bow_tie.msh");
+    ADD_FAILURE() << "no error for a bow-tie QUAD4";
+  } catch (const DeckError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("mesh file 'bow_tie.msh': 1 tangled or degenerate cell(s)"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("M8 (QUAD4)"), std::string::npos) << msg;
+  }
+  EXPECT_EQ(bow_tie.cell_nodes, before.cell_nodes);
+}
+
+TEST(Gmsh, WriterRoundTripsEveryCellTypeInBothVersions) {
+  Mesh mesh;
+  double shift = 0.0;
+  for (CellType t : testing::all_cell_types()) {
+    const int c = testing::add_reference_cell(mesh, t, {shift, 0.0, 0.5});
+    shift += 2.0;
+    mesh.add_to_cell_group(std::string(cell_info(t).name) + "_CELLS", {c});
+  }
+  mesh.add_to_node_group("FIRST", {0, 1, 2});
+  mesh.detect_dimension();
+  const std::string dir = testing::scratch_dir("gmsh_writer");
+  for (const std::string version : {"2.2", "4.1"}) {
+    Mesh copy = mesh;
+    if (version == "4.1") copy.add_to_cell_group("ALSO_HEXA", {copy.cell_groups.at("HEXA20_CELLS")});
+    const std::string path = dir + "/all" + version + ".msh";
+    tools::write_gmsh(path, copy, version);
+    const Mesh back = read_gmsh(path);
+    EXPECT_EQ(back.dim, 3);
+    ASSERT_EQ(back.n_nodes(), copy.n_nodes()) << version;
+    for (size_t k = 0; k < copy.coords.size(); ++k) EXPECT_EQ(back.coords[k], copy.coords[k]) << version;
+    // the node group comes back as point elements after the cells
+    ASSERT_EQ(back.n_cells(), copy.n_cells() + 3) << version;
+    for (int c = 0; c < copy.n_cells(); ++c) {
+      EXPECT_EQ(back.cell_names[c], "M" + std::to_string(c + 1));
+      ASSERT_EQ(back.cell_types[c], copy.cell_types[c]) << version;
+      for (int k = 0; k < copy.cell_n_nodes(c); ++k) EXPECT_EQ(back.cell(c)[k], copy.cell(c)[k]) << version;
+    }
+    for (const auto& [name, cells] : copy.cell_groups) EXPECT_EQ(back.cell_groups.at(name), cells) << name;
+    EXPECT_EQ(back.node_groups.at("FIRST"), (std::vector<int>{0, 1, 2})) << version;
+    EXPECT_EQ(back.node_names[4], "N5");
+  }
+  // a cell in two groups cannot be written in 2.2
+  Mesh twice = mesh;
+  twice.add_to_cell_group("ALSO_HEXA", {twice.cell_groups.at("HEXA20_CELLS")});
+  EXPECT_THROW(tools::write_gmsh(dir + "/twice.msh", twice, "2.2"), DeckError);
+  EXPECT_THROW(tools::write_gmsh(dir + "/v3.msh", mesh, "3.0"), DeckError);
+}
+
+TEST(Gmsh, MirroredSceneIsTheSameSceneInTheOtherOrientation) {
+  // tools::mirror_cell_groups, used to write the clockwise test meshes: the
+  // lower block clockwise with its boundary edges along the clockwise loop.
+  tools::Ssnp121Options2d opt;
+  opt.upper = tools::parse_block_cells("quad4:2", 2);
+  opt.lower = tools::parse_block_cells("tria6:2", 2);
+  const Mesh ccw = tools::make_ssnp121_2d(opt);
+  Mesh cw = ccw;
+  tools::mirror_cell_groups(cw, {"PLAQUE2"});
+  EXPECT_EQ(cw.coords, ccw.coords);
+  EXPECT_EQ(cw.cell_groups, ccw.cell_groups);
+  EXPECT_EQ(find_inverted_cells(cw), ccw.cell_groups.at("PLAQUE2"));
+  for (int c : ccw.cell_groups.at("PLAQUE2")) EXPECT_NEAR(cell_measure(cw, c), -cell_measure(ccw, c), 1e-15);
+  for (int c : ccw.cell_groups.at("EF")) EXPECT_LT(boundary_normal(cw, c)[1], 0.0) << "EF runs along the loop";
+  for (int c : ccw.cell_groups.at("AB")) EXPECT_EQ(boundary_normal(cw, c), boundary_normal(ccw, c));
+  EXPECT_THROW(tools::mirror_cell_groups(cw, {"EF"}), DeckError);
+  EXPECT_THROW(tools::mirror_cell_groups(cw, {"NOPE"}), DeckError);
+  // written and read back in Gmsh 2.2, then oriented: the counter-clockwise cells again
+  const std::string path = testing::scratch_dir("gmsh_mirror") + "/cw.msh";
+  tools::write_gmsh(path, cw, "2.2");
+  Mesh back = read_gmsh(path);
+  EXPECT_EQ(orient_cells(back, path), ccw.cell_groups.at("PLAQUE2"));
+  for (int c : ccw.cell_groups.at("PLAQUE2"))
+    for (int k = 0; k < ccw.cell_n_nodes(c); ++k) EXPECT_EQ(back.cell(c)[k], ccw.cell(c)[k]);
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #pragma once
 // Shared helpers for the mesh unit tests: reference cells in MED order.
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -53,5 +55,55 @@ inline std::string scratch_dir(const std::string& name) {
 }
 
 inline const std::vector<CellType>& all_cell_types() { return cell_types_in_med_order(); }
+
+/// A reflection of each 2D/3D cell type written out by hand, independently of
+/// `cell_mirror_permutation` (which it must differ from): `nodes[perm[i]]`
+/// lists a valid cell as its mirror image, mid-side nodes on their edges.
+/// TRIA/QUAD/TETRA/PYRAM swap vertices 0 and 1 (and 2, 3 for QUAD/PYRAM);
+/// PENTA/HEXA swap their bottom and top faces.
+inline const std::vector<int>& hand_written_reflection(CellType type) {
+  static const std::vector<int> tria3{1, 0, 2}, tria6{1, 0, 2, 3, 5, 4}, quad4{1, 0, 3, 2},
+      quad8{1, 0, 3, 2, 4, 7, 6, 5}, tetra4{1, 0, 2, 3}, tetra10{1, 0, 2, 3, 4, 6, 5, 8, 7, 9},
+      pyram5{1, 0, 3, 2, 4}, penta6{3, 4, 5, 0, 1, 2}, penta15{3, 4, 5, 0, 1, 2, 9, 10, 11, 6, 7, 8, 12, 13, 14},
+      hexa8{4, 5, 6, 7, 0, 1, 2, 3}, hexa20{4, 5, 6, 7, 0, 1, 2, 3, 12, 13, 14, 15, 8, 9, 10, 11, 16, 17, 18, 19},
+      none;
+  switch (type) {
+    case CellType::Tria3: return tria3;
+    case CellType::Tria6: return tria6;
+    case CellType::Quad4: return quad4;
+    case CellType::Quad8: return quad8;
+    case CellType::Tetra4: return tetra4;
+    case CellType::Tetra10: return tetra10;
+    case CellType::Pyram5: return pyram5;
+    case CellType::Penta6: return penta6;
+    case CellType::Penta15: return penta15;
+    case CellType::Hexa8: return hexa8;
+    case CellType::Hexa20: return hexa20;
+    default: return none;
+  }
+}
+
+/// Reorders the nodes of `cell`: new[i] = old[perm[i]].
+inline void permute_cell(Mesh& mesh, int cell, const std::vector<int>& perm) {
+  int* target = &mesh.cell_nodes[mesh.cell_offsets[cell]];
+  const std::vector<int> old(target, target + mesh.cell_n_nodes(cell));
+  for (size_t k = 0; k < perm.size(); ++k) target[k] = old[perm[k]];
+}
+
+/// Largest distance between a mid-side node of `cell` and the midpoint of the
+/// edge it belongs to (0 for a cell whose mid-side nodes follow their edges).
+inline double mid_side_offset(const Mesh& mesh, int cell) {
+  const CellType type = mesh.cell_types[cell];
+  const int nv = cell_info(type).n_vertices;
+  double worst = 0.0;
+  for (size_t k = 0; k < cell_mid_edges(type).size(); ++k) {
+    const auto [a, b] = cell_mid_edges(type)[k];
+    const double* m = mesh.node(mesh.cell(cell)[nv + static_cast<int>(k)]);
+    const double* pa = mesh.node(mesh.cell(cell)[a]);
+    const double* pb = mesh.node(mesh.cell(cell)[b]);
+    for (int d = 0; d < 3; ++d) worst = std::max(worst, std::abs(m[d] - 0.5 * (pa[d] + pb[d])));
+  }
+  return worst;
+}
 
 }  // namespace lunaster::engine::testing

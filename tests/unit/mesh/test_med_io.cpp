@@ -186,18 +186,28 @@ TEST(MedIo, ReaderErrorsAreDeckErrorsNamingTheProblem) {
   }
 }
 
-TEST(MedIo, InvertedCellInFileIsReportedByName) {
+TEST(MedIo, MirroredCellInFileIsReorientedAndATangledOneIsReportedByName) {
   Mesh mesh;
   const auto x = testing::reference_nodes(CellType::Tetra4);
   std::vector<int> nodes;
   for (const auto& p : x) nodes.push_back(mesh.add_node(p[0], p[1], p[2]));
   mesh.add_cell(CellType::Tetra4, {nodes[0], nodes[2], nodes[1], nodes[3]}, "VTKTET");  // VTK order
   mesh.detect_dimension();
-  const std::string path = testing::scratch_dir("inverted") + "/inv.med";
-  write_med(path, mesh);
-  const std::string msg = error_of([&] { read_med(path); });
-  EXPECT_NE(msg.find("VTKTET"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("inv.med"), std::string::npos) << msg;
+  const std::string dir = testing::scratch_dir("inverted");
+  write_med(dir + "/inv.med", mesh);
+  Mesh back = read_med(dir + "/inv.med");  // the reader keeps the file's order
+  EXPECT_NEAR(cell_measure(back, 0), -1.0 / 6.0, 1e-14);
+  EXPECT_EQ(orient_cells(back, dir + "/inv.med"), std::vector<int>{0});
+  EXPECT_NEAR(cell_measure(back, 0), 1.0 / 6.0, 1e-14);
+  EXPECT_EQ(back.cell(0)[0], nodes[0]);
+  // a tetra with its apex in the plane of its base: collapsed, named with the file
+  mesh.coords[3 * nodes[3] + 2] = 0.0;
+  write_med(dir + "/flat.med", mesh);
+  Mesh flat = read_med(dir + "/flat.med");
+  const std::string msg = error_of([&] { orient_cells(flat, dir + "/flat.med"); });
+  EXPECT_NE(msg.find("VTKTET (TETRA4)"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("flat.med"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("tangled or degenerate"), std::string::npos) << msg;
 }
 
 TEST(MedIo, FailedWriteLeavesTheOldFileInPlace) {

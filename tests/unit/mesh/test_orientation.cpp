@@ -1,5 +1,9 @@
-// Inverted-cell detection and ORIE_PEAU outward orientation of boundary cells.
+// Inverted-cell detection, reorientation of clockwise / mirrored cells
+// (orient_cells) and ORIE_PEAU outward orientation of boundary cells.
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
 
 #include "engine/core/error.hpp"
 #include "engine/mesh/orientation.hpp"
@@ -143,6 +147,175 @@ TEST(Orientation, OrientBoundaryErrors) {
     ADD_FAILURE() << "no error";
   } catch (const DeckError& e) {
     EXPECT_NE(std::string(e.what()).find("LOST"), std::string::npos);
+  }
+}
+
+/// The reference cell of `type` under an affine map with no symmetry (so that
+/// a wrong permutation cannot hide behind one; faces stay plane, so that
+/// `cell_measure` is exact), shifted by `shift` along x.
+int add_distorted_cell(Mesh& mesh, CellType type, double shift) {
+  const double a[3][3] = {{1.1, 0.2, -0.1}, {0.15, 0.9, 0.25}, {-0.05, 0.1, 1.2}};
+  const bool plane = cell_info(type).dim == 2;
+  std::vector<int> nodes;
+  for (const auto& p : testing::reference_nodes(type)) {
+    double x[3] = {shift, 0.0, 0.0};
+    for (int i = 0; i < (plane ? 2 : 3); ++i)
+      for (int j = 0; j < (plane ? 2 : 3); ++j) x[i] += a[i][j] * p[j];
+    nodes.push_back(mesh.add_node(x[0], x[1], x[2]));
+  }
+  return mesh.add_cell(type, nodes);
+}
+
+TEST(Orientation, MirrorPermutationIsAnInvolutionKeepingMidSideNodesOnTheirEdges) {
+  for (CellType t : testing::all_cell_types()) {
+    const CellInfo& info = cell_info(t);
+    if (info.dim < 2) {
+      EXPECT_THROW(cell_mirror_permutation(t), InternalError) << info.name;
+      continue;
+    }
+    const auto& perm = cell_mirror_permutation(t);
+    ASSERT_EQ(static_cast<int>(perm.size()), info.n_nodes) << info.name;
+    EXPECT_EQ(perm[0], 0) << info.name;
+    for (int k = 0; k < info.n_nodes; ++k) EXPECT_EQ(perm[perm[k]], k) << info.name;
+    if (info.dim == 2) {
+      EXPECT_EQ(perm, cell_reverse_permutation(t)) << info.name;
+    }
+    Mesh mesh;
+    const int c = add_distorted_cell(mesh, t, 0.0);
+    mesh.detect_dimension();
+    const double measure = cell_measure(mesh, c);
+    ASSERT_GT(measure, 0.0) << info.name;
+    testing::permute_cell(mesh, c, perm);
+    EXPECT_NEAR(cell_measure(mesh, c), -measure, 1e-14) << info.name;
+    EXPECT_LT(testing::mid_side_offset(mesh, c), 1e-15) << info.name;
+    EXPECT_EQ(find_inverted_cells(mesh), std::vector<int>{c}) << info.name;
+    EXPECT_TRUE(find_tangled_cells(mesh).empty()) << info.name;
+  }
+}
+
+TEST(Orientation, MirroredCellsOfEveryTypeAreReorientedToPositiveMeasure) {
+  // Cells mirrored by a hand-written reflection (not the one orient_cells uses):
+  // orient_cells gives a valid cell with the same vertices, the same measure and
+  // its mid-side nodes on their edges, and leaves the valid cells alone.
+  for (CellType t : testing::all_cell_types()) {
+    const CellInfo& info = cell_info(t);
+    if (info.dim < 2) continue;
+    Mesh mesh;
+    const int good = add_distorted_cell(mesh, t, 0.0);
+    const int bad = add_distorted_cell(mesh, t, 3.0);
+    const int boundary = mesh.add_cell(info.dim == 2 ? CellType::Seg2 : CellType::Tria3,
+                                       info.dim == 2 ? std::vector<int>{mesh.cell(bad)[1], mesh.cell(bad)[0]}
+                                                     : std::vector<int>{mesh.cell(bad)[0], mesh.cell(bad)[1], mesh.cell(bad)[2]});
+    mesh.detect_dimension();
+    const double measure = cell_measure(mesh, bad);
+    const std::vector<int> good_nodes(mesh.cell(good), mesh.cell(good) + info.n_nodes);
+    const std::vector<int> boundary_nodes(mesh.cell(boundary), mesh.cell(boundary) + mesh.cell_n_nodes(boundary));
+    std::vector<int> vertices(mesh.cell(bad), mesh.cell(bad) + info.n_vertices);
+    testing::permute_cell(mesh, bad, testing::hand_written_reflection(t));
+    ASSERT_LT(testing::mid_side_offset(mesh, bad), 1e-15) << info.name << ": the test's reflection is wrong";
+    ASSERT_NEAR(cell_measure(mesh, bad), -measure, 1e-13) << info.name;
+    const std::vector<int> mirrored(mesh.cell(bad), mesh.cell(bad) + info.n_nodes);
+
+    EXPECT_EQ(orient_cells(mesh, "m.med"), std::vector<int>{bad}) << info.name;
+    EXPECT_NEAR(cell_measure(mesh, bad), measure, 1e-13) << info.name;
+    EXPECT_LT(testing::mid_side_offset(mesh, bad), 1e-15) << info.name;
+    EXPECT_TRUE(find_inverted_cells(mesh).empty()) << info.name;
+    std::vector<int> after(mesh.cell(bad), mesh.cell(bad) + info.n_vertices);
+    EXPECT_NE(std::vector<int>(mesh.cell(bad), mesh.cell(bad) + info.n_nodes), mirrored) << info.name;
+    std::sort(vertices.begin(), vertices.end());
+    std::sort(after.begin(), after.end());
+    EXPECT_EQ(after, vertices) << info.name;
+    EXPECT_EQ(std::vector<int>(mesh.cell(good), mesh.cell(good) + info.n_nodes), good_nodes) << info.name;
+    EXPECT_EQ(std::vector<int>(mesh.cell(boundary), mesh.cell(boundary) + mesh.cell_n_nodes(boundary)), boundary_nodes)
+        << info.name << ": boundary cells keep their own order";
+    EXPECT_TRUE(orient_cells(mesh, "m.med").empty()) << info.name << ": a second pass changes nothing";
+  }
+}
+
+std::string orient_error(Mesh& mesh) {
+  try {
+    orient_cells(mesh, "cells.msh");
+  } catch (const DeckError& e) {
+    return e.format();
+  }
+  return "(no DeckError)";
+}
+
+TEST(Orientation, TangledAndCollapsedCellsStillStopTheRun) {
+  // bow-tie QUAD4 (self-intersecting), QUAD4 with a repeated node, flat TRIA3,
+  // HEXA8 with a corner folded through a face, and their valid neighbours
+  Mesh mesh;
+  const int a = mesh.add_node(0, 0, 0), b = mesh.add_node(1, 0, 0), c = mesh.add_node(1, 1, 0), d = mesh.add_node(0, 1, 0);
+  const int e = mesh.add_node(2, 0, 0);
+  mesh.add_cell(CellType::Quad4, {a, b, c, d}, "GOOD");
+  mesh.add_cell(CellType::Quad4, {a, b, d, c}, "BOWTIE");
+  mesh.add_cell(CellType::Quad4, {a, b, c, c}, "REPEATED");
+  mesh.add_cell(CellType::Tria3, {a, b, e}, "FLAT");
+  mesh.add_cell(CellType::Quad4, {a, d, c, b}, "CLOCKWISE");
+  mesh.detect_dimension();
+  const Mesh before = mesh;
+  const std::string msg = orient_error(mesh);
+  EXPECT_NE(msg.find("mesh file 'cells.msh': 3 tangled or degenerate cell(s) (Jacobian zero or of both signs): "
+                     "BOWTIE (QUAD4), REPEATED (QUAD4), FLAT (TRIA3)"),
+            std::string::npos)
+      << msg;
+  EXPECT_NE(msg.find("no two of their corners are the same node or at the same point"), std::string::npos) << msg;
+  EXPECT_EQ(mesh.cell_nodes, before.cell_nodes) << "nothing is reoriented when the run stops";
+  EXPECT_EQ(find_tangled_cells(mesh), (std::vector<int>{1, 2, 3}));
+
+  Mesh hexa;
+  testing::add_reference_cell(hexa, CellType::Hexa8);
+  hexa.detect_dimension();
+  hexa.coords[3 * 6 + 0] = -0.5;  // node 6 (1,1,1) pulled through the x=0 face
+  hexa.coords[3 * 6 + 1] = -0.5;
+  EXPECT_NE(orient_error(hexa).find("1 tangled or degenerate cell(s)"), std::string::npos);
+  // the same fold on a mirrored hexa is still tangled
+  Mesh mirrored_fold = hexa;
+  testing::permute_cell(mirrored_fold, 0, cell_mirror_permutation(CellType::Hexa8));
+  EXPECT_NE(orient_error(mirrored_fold).find("1 tangled or degenerate cell(s)"), std::string::npos);
+}
+
+TEST(Orientation, OriePeauAfterReorientingAClockwiseBlockGivesOutwardNormals2d) {
+  // The lower block meshed clockwise, as Gmsh does for a curve loop
+  // (-1,0) -> (1,0) -> (1,-1) -> (-1,-1): every cell and every edge of the loop
+  // reversed. orient_cells fixes the cells only; ORIE_PEAU then orients the
+  // edges outward from the reoriented cells.
+  tools::Ssnp121Options2d opt;
+  opt.lower = tools::parse_block_cells("quad8:3", 2);
+  opt.upper = tools::parse_block_cells("tria6:2", 2);
+  Mesh mesh = tools::make_ssnp121_2d(opt);
+  const auto& lower = mesh.cell_groups.at("PLAQUE2");
+  for (int c : lower) testing::permute_cell(mesh, c, cell_reverse_permutation(mesh.cell_types[c]));
+  for (const char* g : {"EF", "FG", "GH", "HE"}) reverse_cells(mesh, mesh.cell_groups.at(g));
+  const auto ef = mesh.cell_groups.at("EF"), gh = mesh.cell_groups.at("GH");
+  for (int c : ef) ASSERT_LT(dot(boundary_normal(mesh, c), {0, 1, 0}), 0.0);
+  Mesh not_reoriented = mesh;  // what ORIE_PEAU would do on the clockwise cells
+  EXPECT_EQ(orient_boundary_outward(not_reoriented, ef), 0);
+
+  EXPECT_EQ(orient_cells(mesh, "lower_cw.msh"), lower);
+  for (int c : lower) EXPECT_GT(cell_measure(mesh, c), 0.0);
+  for (int c : ef) EXPECT_LT(dot(boundary_normal(mesh, c), {0, 1, 0}), 0.0) << "boundary cells keep their order";
+  EXPECT_EQ(orient_boundary_outward(mesh, ef), static_cast<int>(ef.size()));
+  EXPECT_EQ(orient_boundary_outward(mesh, gh), static_cast<int>(gh.size()));
+  for (int c : ef) EXPECT_GT(dot(boundary_normal(mesh, c), {0, 1, 0}), 0.0);
+  for (int c : gh) EXPECT_GT(dot(boundary_normal(mesh, c), {0, -1, 0}), 0.0);
+  for (int c : ef) EXPECT_EQ(testing::mid_side_offset(mesh, c), 0.0);
+}
+
+TEST(Orientation, OriePeauAfterReorientingMirroredVolumesGivesOutwardNormals3d) {
+  for (const char* v1 : {"hexa20:2x2x1", "penta15:2x2x1", "tetra10:1x1x1", "hexa8:2x2x1", "penta6:1x1x1", "tetra4:1x1x1"}) {
+    tools::Ssnp121Options3d opt;
+    opt.v1 = tools::parse_block_cells(v1, 3);
+    opt.v2 = tools::parse_block_cells("hexa8:1x1x1", 3);
+    Mesh mesh = tools::make_ssnp121_3d(opt);
+    const auto& volume = mesh.cell_groups.at("V1");
+    for (int c : volume) testing::permute_cell(mesh, c, testing::hand_written_reflection(mesh.cell_types[c]));
+    EXPECT_EQ(orient_cells(mesh, "v1.med"), volume) << v1;
+    const auto esc = mesh.cell_groups.at("SURESC");
+    reverse_cells(mesh, esc);
+    EXPECT_EQ(orient_boundary_outward(mesh, esc), static_cast<int>(esc.size())) << v1;
+    for (int c : esc) EXPECT_GT(dot(boundary_normal(mesh, c), {0, 0, 1}), 0.0) << v1;
+    for (int c : volume) EXPECT_EQ(testing::mid_side_offset(mesh, c), 0.0) << v1;
   }
 }
 
