@@ -99,8 +99,10 @@ void warn_incompatible_pairs(const engine::ContactDefinition& def, const engine:
     const bool continuous = def.method == engine::ContactMethod::Continuous ||
                             def.method == engine::ContactMethod::ContinuousPenalty;
     if (continuous)
-      for (const auto& message : engine::check_contact_zone_integration(mesh, def.zones[z], static_cast<int>(z)))
-        session.warn(message);
+      for (const auto& w : engine::check_contact_zone_integration(mesh, def.zones[z], static_cast<int>(z)))
+        session.warn(w.text + (w.kind == engine::IntegrationWarning::Kind::TooFewPoints
+                                   ? " (ORDRE_INT; INTEGRATION='AUTO', 'SIMPSON' or 'NCOTES')"
+                                   : " (INTEGRATION='GAUSS' or 'SIMPSON')"));
   }
 }
 

@@ -4,6 +4,7 @@
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
 #include "engine/io/gmsh_reader.hpp"
+#include "commands/failures.hpp"
 #include "engine/io/med_reader.hpp"
 #include "engine/mesh/mesh_checks.hpp"
 #include "engine/mesh/orientation.hpp"
@@ -36,7 +37,12 @@ ConceptPtr lire_maillage(const Args& args, Session& session) {
   if (format == "GMSH") {
     *result->mesh = engine::read_gmsh(path.string());
   } else {
-    *result->mesh = engine::read_med(path.string(), args.has("NOM_MED") ? args.text("NOM_MED") : std::string());
+    try {
+      *result->mesh = engine::read_med(path.string(), args.has("NOM_MED") ? args.text("NOM_MED") : std::string());
+    } catch (Error& err) {
+      say_in_keywords(err);
+      throw;
+    }
   }
   // Clockwise 2D cells and mirrored 3D cells are valid cells listed in the other
   // orientation: reorient them once here (tangled or collapsed cells stop the run).

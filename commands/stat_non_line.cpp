@@ -4,6 +4,7 @@
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
 #include "commands/selection.hpp"
+#include "commands/failures.hpp"
 #include "engine/contact/contact_factory.hpp"
 #include "engine/io/med_writer.hpp"
 
@@ -141,6 +142,7 @@ ConceptPtr stat_non_line(const Args& args, Session& session) {
     try {
       result->steps = solver.run(times);
     } catch (SolveError& err) {
+      say_in_keywords(err);
       if (dynamic_cast<engine::ConvergenceError*>(&err) && options.reac_iter != 1)
         err.add_hint("NEWTON: REAC_ITER = " + std::to_string(options.reac_iter) +
                      " reuses the factorisation between iterations (a modified Newton, slower to converge); "

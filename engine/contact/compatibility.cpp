@@ -54,10 +54,11 @@ bool at_vertices_only(CellType type, const std::vector<contact::ContactQuadPoint
 
 }  // namespace
 
-std::vector<std::string> check_contact_zone_integration(const Mesh& mesh, const ContactZone& zone, int zone_index) {
+std::vector<IntegrationWarning> check_contact_zone_integration(const Mesh& mesh, const ContactZone& zone,
+                                                               int zone_index) {
   std::map<CellType, int> slave_first;
   for (int c : zone.slave_cells) slave_first.emplace(mesh.cell_types[c], c);
-  std::vector<std::string> out;
+  std::vector<IntegrationWarning> out;
   std::map<CellType, int> quadratic_master;
   for (int c : zone.master_cells)
     if (cell_info(mesh.cell_types[c]).order == 2) quadratic_master.emplace(mesh.cell_types[c], c);
@@ -66,21 +67,23 @@ std::vector<std::string> check_contact_zone_integration(const Mesh& mesh, const 
     const size_t n_points = rule.size();
     if (cell_info(type).order == 1 && !quadratic_master.empty() && at_vertices_only(type, rule)) {
       const auto& [mtype, mcell] = *quadratic_master.begin();
-      out.push_back("contact zone " + std::to_string(zone_index + 1) + ": linear slave " +
+      out.push_back({IntegrationWarning::Kind::VerticesOnlyOnQuadraticMaster,
+                     "contact zone " + std::to_string(zone_index + 1) + ": linear slave " +
                     contact::surface_type_name(type) + " cell " + contact::cell_label(mesh, cell) +
                     " is integrated at its vertices only against quadratic master " +
                     contact::surface_type_name(mtype) + " cell " + contact::cell_label(mesh, mcell) +
                     ": where slave vertices fall on master vertices the master mid-side nodes receive no "
-                    "contact force and the pressure is wrong; use INTEGRATION='GAUSS' or 'SIMPSON', or a "
-                    "quadratic slave surface");
+                    "contact force and the pressure is wrong; use a rule with interior points, or a "
+                    "quadratic slave surface"});
     }
     const int n_multipliers = cell_info(type).n_nodes;
     if (n_points < static_cast<size_t>(n_multipliers))
-      out.push_back("contact zone " + std::to_string(zone_index + 1) + ": the integration rule has " +
+      out.push_back({IntegrationWarning::Kind::TooFewPoints,
+                     "contact zone " + std::to_string(zone_index + 1) + ": the integration rule has " +
                     std::to_string(n_points) + " point(s) on slave " + contact::surface_type_name(type) + " cell " +
                     contact::cell_label(mesh, cell) + ", which carries " + std::to_string(n_multipliers) +
                     " LAGS_C unknowns: the contact pressure is under-determined (singular system or wrong "
-                    "values); raise ORDRE_INT or use INTEGRATION='AUTO', 'SIMPSON' or 'NCOTES'");
+                    "values); raise the rule's order or use the automatic, Simpson or Newton-Cotes rule"});
   }
   return out;
 }

@@ -31,6 +31,15 @@ std::vector<std::string> check_contact_zone_compatibility(const Mesh& mesh, cons
 /// integration rule has fewer points than the cell carries LAGS_C unknowns
 /// (e.g. GAUSS ORDRE_INT=1 on SEG2, GAUSS 3 on TRIA6): the multipliers are then
 /// under-determined and the answer is either a singular system or garbage.
-std::vector<std::string> check_contact_zone_integration(const Mesh& mesh, const ContactZone& zone, int zone_index);
+struct IntegrationWarning {
+  enum class Kind {
+    VerticesOnlyOnQuadraticMaster,  ///< remedy: a rule with interior points, or a quadratic slave
+    TooFewPoints,                   ///< remedy: a higher order, or the automatic/Simpson/Newton-Cotes rule
+  };
+  Kind kind;
+  std::string text;  ///< names the cells; engine terms only
+};
+std::vector<IntegrationWarning> check_contact_zone_integration(const Mesh& mesh, const ContactZone& zone,
+                                                               int zone_index);
 
 }  // namespace lunaster::engine

@@ -8,7 +8,6 @@
 
 #include "engine/contact/surface_element.hpp"
 #include "engine/core/error.hpp"
-#include "engine/nonlinear/static_solver.hpp"
 
 namespace lunaster::engine::contact {
 
@@ -226,7 +225,7 @@ void ContactProblem::first_pairing_report(const Log& log) const {
     if (masters_[z]->n_flipped() > 0)
       log.warning("contact zone " + std::to_string(z + 1) + ": " + std::to_string(masters_[z]->n_flipped()) +
                   " master cell(s) oriented towards their own body; their normal was reversed "
-                  "(orient the master surface outwards, e.g. ORIE_PEAU)");
+                  "(orient the master surface outwards)");
   disc_->report(log);
 }
 
@@ -287,12 +286,16 @@ bool ContactProblem::settle(const Vector& u, const Log& log) {
     std::ostringstream msg;
     msg << "contact: " << changed << " status change(s), status iteration " << n_status_iter_;
     log.info(msg.str());
-    if (n_status_iter_ > def_.iter_cont_maxi)
-      throw ConvergenceError("contact status loop did not settle after " + std::to_string(def_.iter_cont_maxi) +
-                                 " iterations (ITER_CONT_MAXI): " + std::to_string(changed) +
-                                 " contact point(s) still change status",
-                             {"points cycling between contact and no contact: try ALGO_RESO_CONT='NEWTON', "
-                              "a different COEF_CONT, or a finer/compatible mesh"});
+    if (n_status_iter_ > def_.iter_cont_maxi) {
+      ConvergenceError err("contact status loop did not settle after " + std::to_string(def_.iter_cont_maxi) +
+                               " iterations: " + std::to_string(changed) + " contact point(s) still change status",
+                           {"points cycling between contact and no contact: statuses updated inside Newton, another "
+                            "coefficient, or a finer/compatible mesh may settle them"});
+      err.failure().what = Failure::What::StatusLoop;
+      err.failure().limit = def_.iter_cont_maxi;
+      err.failure().count = changed;
+      throw err;
+    }
     return false;
   }
   if (def_.geometry_loop == FixedPointOrNewton::Newton) return true;  // paired at every iteration
@@ -304,14 +307,20 @@ bool ContactProblem::settle(const Vector& u, const Log& log) {
     case GeometryUpdate::Automatic: {
       const double resi = geometric_residual(u);
       std::ostringstream msg;
-      msg << "contact: geometric residual " << resi << " (RESI_GEOM " << def_.resi_geom << ")";
+      msg << "contact: geometric residual " << resi << " (tolerance " << def_.resi_geom << ")";
       log.info(msg.str());
       if (resi <= def_.resi_geom) return true;
-      if (n_geom_iter_ >= def_.iter_geom_maxi)
-        throw ConvergenceError("contact geometry loop did not converge after " + std::to_string(def_.iter_geom_maxi) +
-                                   " iterations (ITER_GEOM_MAXI): geometric residual " + std::to_string(resi) +
-                                   " > RESI_GEOM " + std::to_string(def_.resi_geom),
-                               {"increase ITER_GEOM_MAXI, use smaller load increments or ALGO_RESO_GEOM='NEWTON'"});
+      if (n_geom_iter_ >= def_.iter_geom_maxi) {
+        ConvergenceError err("contact geometry loop did not converge after " + std::to_string(def_.iter_geom_maxi) +
+                                 " re-pairings: geometric residual " + std::to_string(resi) + " > tolerance " +
+                                 std::to_string(def_.resi_geom),
+                             {"more re-pairings, smaller load increments or pairing inside Newton may help"});
+        err.failure().what = Failure::What::GeometryLoop;
+        err.failure().limit = def_.iter_geom_maxi;
+        err.failure().value = resi;
+        err.failure().tolerance = def_.resi_geom;
+        throw err;
+      }
       break;
     }
   }

@@ -80,8 +80,8 @@ class NodeToSegment final : public Discretisation {
                "CONTACT_8); only vertex nodes are slave nodes");
     if (free_mid_side_)
       log.warning("discrete contact on quadratic SEG3/TRIA6 faces: only vertex nodes are slave nodes and master "
-                  "cells are linearised; their mid-side nodes are not constrained and may penetrate (use "
-                  "FORMULATION='CONTINUE' for quadratic faces)");
+                  "cells are linearised; their mid-side nodes are not constrained and may penetrate (the "
+                  "continuous formulation integrates quadratic faces)");
   }
 
  private:

@@ -50,9 +50,10 @@ SolveError SolveError::out_of_memory(const std::string& backend, long long n_equ
   std::string message = backend;
   message.append(": out of memory factorising ").append(std::to_string(n_equations)).append(" equations (");
   message.append(detail).append(")");
-  SolveError e(std::move(message), {"the factors do not fit in this machine's memory: use SOLVEUR=_F(METHODE='MUMPS') "
-                                    "(least fill-in on contact systems), a coarser mesh, or a larger machine"});
+  SolveError e(std::move(message), {"the factors do not fit in this machine's memory: the MUMPS backend (least "
+                                    "fill-in on contact systems), a coarser mesh, or a larger machine"});
   e.out_of_memory_ = true;
+  e.failure().what = Failure::What::OutOfMemory;
   return e;
 }
 

@@ -20,6 +20,29 @@ struct ErrorContext {
   std::string keyword_path;  ///< e.g. "EXCIT[2].CHARGE"
 };
 
+/// What failed, in engine terms, with its numbers. The engine's messages speak of
+/// iterations, residuals and tolerances; commands/ add the keywords the deck used
+/// (ITER_GLOB_MAXI, CONTACT_INIT ...) from these fields.
+struct Failure {
+  enum class What {
+    Unspecified,
+    NewtonIterations,     ///< Newton did not converge within `limit` iterations
+    StatusLoop,           ///< contact statuses still changing after `limit` iterations (`count` points)
+    GeometryLoop,         ///< geometric residual `value` above `tolerance` after `limit` re-pairings
+    RigidBodyMode,        ///< a body free to move: nothing holds it
+    ContactConditioning,  ///< regular elastic part, singular or ill-conditioned system with contact terms
+    OutOfMemory,          ///< a linear solver's factors do not fit
+    NotAMedFile,          ///< a mesh file that is not MED
+  };
+  What what = What::Unspecified;
+  int limit = 0;
+  int count = 0;
+  double value = 0.0, tolerance = 0.0;
+  bool residuals_known = false;           ///< relative/absolute below are the last Newton residuals
+  double relative = 0.0, absolute = 0.0;
+  int subdivision_levels = 0;             ///< step splits tried before giving up
+};
+
 /// Base of all lunaster errors. `what()` returns the fully formatted message.
 class Error : public std::runtime_error {
  public:
@@ -34,6 +57,12 @@ class Error : public std::runtime_error {
   void fill_context(const ErrorContext& outer);
   /// Adds a hint line printed indented below the first line.
   void add_hint(std::string hint) { hints_.push_back(std::move(hint)); refresh(); }
+  /// Replaces the message (commands/ rephrasing an engine failure in the deck's keywords).
+  void set_message(std::string message) { message_ = std::move(message); refresh(); }
+  void set_hints(std::vector<std::string> hints) { hints_ = std::move(hints); refresh(); }
+  const Failure& failure() const { return failure_; }
+  Failure& failure() { return failure_; }
+  void set_failure(const Failure& f) { failure_ = f; }
   /// "deck.lua:42: STAT_NON_LINE: EXCIT[2].CHARGE: message" plus hint lines.
   std::string format() const;
   const char* what() const noexcept override { return formatted_.c_str(); }
@@ -44,6 +73,7 @@ class Error : public std::runtime_error {
   std::string message_;
   std::vector<std::string> hints_;
   ErrorContext context_;
+  Failure failure_;
   std::string formatted_;
 };
 
@@ -71,6 +101,14 @@ class SolveError : public Error {
  private:
   bool out_of_memory_ = false;
 };
+
+namespace engine {
+/// Newton (or a contact loop) did not converge: a smaller step may help.
+class ConvergenceError : public SolveError {
+ public:
+  using SolveError::SolveError;
+};
+}  // namespace engine
 
 /// A bug in lunaster.
 class InternalError : public Error {

@@ -17,13 +17,19 @@ using namespace med_detail;
   throw DeckError("mesh file '" + path + "': " + what, std::move(hints));
 }
 
+[[noreturn]] void not_med(const std::string& path) {
+  DeckError err("mesh file '" + path + "': not a MED file (no HDF5 signature)", {"this reader reads MED files; .msh files are Gmsh meshes"});
+  err.failure().what = Failure::What::NotAMedFile;
+  throw err;
+}
+
 med_idt open_checked(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) fail(path, "no such file");
   if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not a MED file");
   med_bool hdf_ok = MED_FALSE, med_ok = MED_FALSE;
   if (MEDfileCompatibility(path.c_str(), &hdf_ok, &med_ok) < 0 || !hdf_ok)
-    fail(path, "not a MED file (no HDF5 signature)", {"LIRE_MAILLAGE reads MED files; use FORMAT='GMSH' for .msh"});
+    not_med(path);
   if (!med_ok) fail(path, "an HDF5 file but not a readable MED file (unsupported version, truncated or corrupt)");
   const med_idt fid = MEDfileOpen(path.c_str(), MED_ACC_RDONLY);
   if (fid < 0) fail(path, "cannot be opened as MED (truncated or corrupt file?)");

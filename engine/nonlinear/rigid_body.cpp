@@ -71,13 +71,15 @@ std::optional<SolveError> find_rigid_body_mode(const FeModel& model, const DofMa
   const int node = dofs.node_of(eq);
   const Mesh& mesh = *model.mesh;
   const std::string who = body_name(mesh, body_of_node(model, node));
-  return SolveError(
+  SolveError err(
       "the stiffness matrix is singular at instant " + std::string(inst) + ": " + who +
           " has a rigid-body mode (free to move along " + component_name(dofs.component_of(eq)) + ", detected at node " +
           mesh.node_names[node] + ")",
-      {"nothing holds this body in that direction: add DDL_IMPO on it (AFFE_CHAR_MECA),",
-       "or, if only contact holds it, activate contact from the start with CONTACT_INIT='OUI'",
-       "so that the contact pressure carries the load from the first iteration"});
+      {"nothing holds this body in that direction: impose a displacement on it,",
+       "or, if only contact holds it, make its contact active from the first iteration",
+       "so that the contact pressure carries the load from the start"});
+  err.failure().what = Failure::What::RigidBodyMode;
+  return err;
 }
 
 SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, const std::vector<int>& free_index,
@@ -85,12 +87,14 @@ SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, co
   if (auto rigid = find_rigid_body_mode(model, dofs, free_index, elastic, t)) return *rigid;
   char inst[32];
   std::snprintf(inst, sizeof inst, "%.6e", t);
-  return SolveError("the system at instant " + std::string(inst) + " is singular or too ill-conditioned for the linear solver: " +
-                        original.message(),
-                    {"the elastic stiffness alone is regular, so the trouble comes from the contact terms",
-                     "check that the contact surfaces face each other, and that E_N (PENALISATION) or COEF_CONT "
-                     "(CONTINUE) is not many orders of magnitude above the material stiffness E / h: the condition "
-                     "number grows with it until double precision cannot resolve the system"});
+  SolveError err("the system at instant " + std::string(inst) +
+                     " is singular or too ill-conditioned for the linear solver: " + original.message(),
+                 {"the elastic stiffness alone is regular, so the trouble comes from the contact terms",
+                  "check that the contact surfaces face each other, and that the penalty or augmentation "
+                  "coefficient is not many orders of magnitude above the material stiffness E / h: the condition "
+                  "number grows with it until double precision cannot resolve the system"});
+  err.failure().what = Failure::What::ContactConditioning;
+  return err;
 }
 
 }  // namespace lunaster::engine

@@ -179,8 +179,10 @@ void StaticSolver::advance(double t0, double t1, int level, Vector& u) {
     if (level >= options_.subdivide_levels) {
       if (options_.subdivide_levels == 0) throw;
       ConvergenceError final(err.message(), err.hints());
+      final.set_failure(err.failure());
+      final.failure().subdivision_levels = level;
       final.add_hint("step [" + sci(t0) + ", " + sci(t1) + "] still failed after " + std::to_string(level) +
-                     " subdivision level(s) (SUBD_NIVEAU)");
+                     " subdivision level(s)");
       throw final;
     }
     log_.warning("step to instant " + sci(t1) + " failed (" + err.message() + "); splitting it into " +
@@ -322,7 +324,7 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
 
 void StaticSolver::solve_instant(double t, Vector& u) {
   const int n = dofs_.n_dofs();
-  log_.info("Instant de calcul: " + sci(t));
+  log_.info("instant " + sci(t));
   const Constraints cons = build_constraints(dofs_, loads_, t, *model_.mesh);
   for (size_t i = 0; i < cons.constrained.size(); ++i) u[cons.constrained[i]] = cons.values[i];
   const Vector f_ext = external_forces(model_, dofs_, loads_, t);
@@ -338,7 +340,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
   for (int fixed_point = 0;; ++fixed_point) {
     bool converged = false;
     double resi_rela = 0.0, resi_maxi = 0.0;
-    log_.info("  | ITER |  RESI_GLOB_RELA |  RESI_GLOB_MAXI |");
+    log_.info("  | iter |  relative resid. |  absolute resid. |");
     for (int iter = 0; iter <= options_.iter_glob_maxi; ++iter) {
       std::vector<Triplet> k_contact;
       Vector residual;
@@ -350,7 +352,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         Stopwatch watch(stats_.contact_seconds);
         contact_->add_to_system(u, k_contact, residual);
       }
-      // RESI_GLOB_RELA as code_aster: free residual over the largest load or reaction.
+      // Relative residual as code_aster's RESI_GLOB_RELA: free residual over the largest load or reaction.
       double denom = inf_norm(f_ext);
       Vector r_free(cons.n_free);
       for (int eq = 0; eq < n; ++eq) {
@@ -365,7 +367,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       denom = std::max(denom, 1e-6 * k_scale_ * inf_norm(u));
       resi_rela = denom > 0.0 ? resi_maxi / denom : resi_maxi;
       char line[96];
-      std::snprintf(line, sizeof line, "  | %4d |  %14.6e |  %14.6e |", iter, resi_rela, resi_maxi);
+      std::snprintf(line, sizeof line, "  | %4d |   %14.6e |   %14.6e |", iter, resi_rela, resi_maxi);
       log_.info(line);
       if (!std::isfinite(resi_maxi))
         throw ConvergenceError("the residual became non-finite at instant " + sci(t));
@@ -493,11 +495,17 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       }
       ++total_newton;
     }
-    if (!converged)
-      throw ConvergenceError("Newton did not converge at instant " + sci(t) + " within ITER_GLOB_MAXI = " +
-                                 std::to_string(options_.iter_glob_maxi) + " iterations",
-                             {"last residuals: RESI_GLOB_RELA = " + sci(resi_rela) + ", RESI_GLOB_MAXI = " + sci(resi_maxi),
-                              "loop: Newton (contact/geometry fixed-point pass " + std::to_string(fixed_point) + ")"});
+    if (!converged) {
+      ConvergenceError err("Newton did not converge at instant " + sci(t) + " within " +
+                               std::to_string(options_.iter_glob_maxi) + " iterations",
+                           {"last residuals: relative " + sci(resi_rela) + ", absolute " + sci(resi_maxi) + " N",
+                            "loop: Newton (contact/geometry fixed-point pass " + std::to_string(fixed_point) + ")"});
+      Failure& f = err.failure();
+      f.what = Failure::What::NewtonIterations;
+      f.limit = options_.iter_glob_maxi;
+      f.residuals_known = true, f.relative = resi_rela, f.absolute = resi_maxi;
+      throw err;
+    }
     if (!contact_) break;
     log_.info("contact: " + std::to_string(contact_->n_active()) + " active point(s) in this pass");
     ++stats_.contact_passes;
@@ -508,8 +516,9 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         settled = contact_->settle(u, log_);
       } catch (ConvergenceError& err) {
         err.add_hint("at instant " + sci(t) + ", after " + std::to_string(total_newton) +
-                     " Newton iteration(s); last residuals: RESI_GLOB_RELA = " + sci(resi_rela) +
-                     ", RESI_GLOB_MAXI = " + sci(resi_maxi));
+                     " Newton iteration(s); last residuals: relative " + sci(resi_rela) + ", absolute " +
+                     sci(resi_maxi) + " N");
+        err.failure().residuals_known = true, err.failure().relative = resi_rela, err.failure().absolute = resi_maxi;
         throw;
       }
     }

@@ -33,14 +33,8 @@ struct NewtonOptions {
   /// elasticity, the only behaviour, it is the tangent: factorised once per run either way.
   /// Not for runs with contact (the multiplier equations would be empty).
   bool elastic_matrix = false;
-  int subdivide_levels = 0;  ///< on a Newton failure, split the step this many times at most (SUBD_NIVEAU)
-  int subdivide_parts = 4;   ///< sub-steps per split (SUBD_PAS)
-};
-
-/// Newton (or a contact loop) did not converge: a smaller step may help.
-class ConvergenceError : public SolveError {
- public:
-  using SolveError::SolveError;
+  int subdivide_levels = 0;  ///< on a Newton failure, split the step this many times at most
+  int subdivide_parts = 4;   ///< sub-steps per split
 };
 
 /// What one run cost, measured by the solver itself (wall seconds, counts).

@@ -1,0 +1,87 @@
+#include "commands/failures.hpp"
+
+#include <regex>
+#include <string>
+#include <vector>
+
+namespace lunaster::cmd {
+
+namespace {
+
+/// The engine's "last residuals: relative X, absolute Y N" in code_aster's names.
+std::string residual_keywords(const std::string& hint) {
+  static const std::regex engine_words("last residuals: relative ([^,]+), absolute ([^ ]+) N");
+  return std::regex_replace(hint, engine_words, "last residuals: RESI_GLOB_RELA = $1, RESI_GLOB_MAXI = $2");
+}
+
+}  // namespace
+
+void say_in_keywords(Error& err) {
+  const Failure& f = err.failure();
+  std::string message = err.message();
+  std::vector<std::string> hints = err.hints();
+  const std::string limit = std::to_string(f.limit);
+  auto replace = [&message](const std::string& from, const std::string& to) {
+    const auto at = message.find(from);
+    if (at != std::string::npos) message.replace(at, from.size(), to);
+  };
+  switch (f.what) {
+    case Failure::What::Unspecified: break;
+    case Failure::What::NewtonIterations:
+      replace(" within " + limit + " iterations", " within ITER_GLOB_MAXI = " + limit + " iterations");
+      break;
+    case Failure::What::StatusLoop:
+      replace("after " + limit + " iterations:", "after " + limit + " iterations (ITER_CONT_MAXI):");
+      for (auto& h : hints)
+        if (h.rfind("points cycling", 0) == 0)
+          h = "points cycling between contact and no contact: try ALGO_RESO_CONT='NEWTON', a different COEF_CONT, "
+              "or a finer/compatible mesh";
+      break;
+    case Failure::What::GeometryLoop:
+      replace("after " + limit + " re-pairings:", "after " + limit + " iterations (ITER_GEOM_MAXI):");
+      replace("> tolerance", "> RESI_GEOM");
+      for (auto& h : hints)
+        if (h.rfind("more re-pairings", 0) == 0)
+          h = "increase ITER_GEOM_MAXI, use smaller load increments or ALGO_RESO_GEOM='NEWTON'";
+      break;
+    case Failure::What::RigidBodyMode:
+      for (auto& h : hints) {
+        if (h.rfind("nothing holds this body", 0) == 0)
+          h = "nothing holds this body in that direction: add DDL_IMPO on it (AFFE_CHAR_MECA),";
+        else if (h.rfind("or, if only contact holds it", 0) == 0)
+          h = "or, if only contact holds it, activate contact from the start with CONTACT_INIT='OUI'";
+        else if (h.rfind("so that the contact pressure", 0) == 0)
+          h = "so that the contact pressure carries the load from the first iteration";
+      }
+      break;
+    case Failure::What::ContactConditioning:
+      for (auto& h : hints)
+        if (h.rfind("check that the contact surfaces", 0) == 0)
+          h = "check that the contact surfaces face each other, and that E_N (PENALISATION) or COEF_CONT "
+              "(CONTINUE) is not many orders of magnitude above the material stiffness E / h: the condition "
+              "number grows with it until double precision cannot resolve the system";
+      break;
+    case Failure::What::OutOfMemory:
+      for (auto& h : hints)
+        if (h.rfind("the factors do not fit", 0) == 0)
+          h = "the factors do not fit in this machine's memory: use SOLVEUR=_F(METHODE='MUMPS') (least fill-in on "
+              "contact systems), a coarser mesh, or a larger machine";
+      break;
+    case Failure::What::NotAMedFile:
+      for (auto& h : hints)
+        if (h.rfind("this reader reads MED files", 0) == 0) h = "LIRE_MAILLAGE reads MED files; use FORMAT='GMSH' for .msh";
+      break;
+  }
+  if (f.residuals_known)
+    for (auto& h : hints) h = residual_keywords(h);
+  if (f.subdivision_levels > 0)
+    for (auto& h : hints) {
+      const std::string levels = "subdivision level(s)";
+      const auto at = h.rfind(levels);
+      if (at != std::string::npos && at + levels.size() == h.size()) h += " (SUBD_NIVEAU)";
+    }
+  err.set_message(message);
+  err.set_hints(hints);
+}
+
+}  // namespace lunaster::cmd

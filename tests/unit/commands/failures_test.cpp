@@ -1,0 +1,60 @@
+// commands/failures.cpp: engine failures said again in the deck's keywords. The engine's
+// own phrasing (tests/unit/nonlinear) names no keyword; these tests pin the translation.
+#include <gtest/gtest.h>
+
+#include "commands/failures.hpp"
+#include "engine/core/error.hpp"
+
+namespace {
+
+using lunaster::Failure;
+using lunaster::SolveError;
+
+std::string text(const lunaster::Error& e) {
+  std::string t = e.message();
+  for (const auto& h : e.hints()) t += "\n" + h;
+  return t;
+}
+
+TEST(FailureKeywords, NewtonNamesIterGlobMaxiAndTheResiduals) {
+  SolveError e("Newton did not converge at instant 1.000000e+00 within 6 iterations",
+               {"last residuals: relative 1.2e-03, absolute 4.5e+01 N", "loop: Newton (contact/geometry fixed-point pass 0)",
+                "step [0, 1] still failed after 2 subdivision level(s)"});
+  e.failure().what = Failure::What::NewtonIterations;
+  e.failure().limit = 6;
+  e.failure().residuals_known = true;
+  e.failure().subdivision_levels = 2;
+  lunaster::cmd::say_in_keywords(e);
+  EXPECT_EQ(e.message(), "Newton did not converge at instant 1.000000e+00 within ITER_GLOB_MAXI = 6 iterations");
+  EXPECT_EQ(e.hints()[0], "last residuals: RESI_GLOB_RELA = 1.2e-03, RESI_GLOB_MAXI = 4.5e+01");
+  EXPECT_EQ(e.hints()[2], "step [0, 1] still failed after 2 subdivision level(s) (SUBD_NIVEAU)");
+}
+
+TEST(FailureKeywords, ContactLoopsNameTheirLimits) {
+  SolveError status("contact status loop did not settle after 30 iterations: 4 contact point(s) still change status",
+                    {"points cycling between contact and no contact: statuses updated inside Newton, another "
+                     "coefficient, or a finer/compatible mesh may settle them"});
+  status.failure().what = Failure::What::StatusLoop;
+  status.failure().limit = 30;
+  lunaster::cmd::say_in_keywords(status);
+  EXPECT_NE(text(status).find("after 30 iterations (ITER_CONT_MAXI): 4 contact point(s)"), std::string::npos) << text(status);
+  EXPECT_NE(text(status).find("ALGO_RESO_CONT='NEWTON'"), std::string::npos) << text(status);
+
+  SolveError geom("contact geometry loop did not converge after 10 re-pairings: geometric residual 0.5 > tolerance 0.01",
+                  {"more re-pairings, smaller load increments or pairing inside Newton may help"});
+  geom.failure().what = Failure::What::GeometryLoop;
+  geom.failure().limit = 10;
+  lunaster::cmd::say_in_keywords(geom);
+  EXPECT_EQ(geom.message(),
+            "contact geometry loop did not converge after 10 iterations (ITER_GEOM_MAXI): geometric residual 0.5 > "
+            "RESI_GEOM 0.01");
+  EXPECT_NE(text(geom).find("ALGO_RESO_GEOM='NEWTON'"), std::string::npos);
+}
+
+TEST(FailureKeywords, AnUntypedErrorIsLeftAlone) {
+  SolveError e("MUMPS: error during factorisation: INFOG(1) = -5", {"a hint"});
+  lunaster::cmd::say_in_keywords(e);
+  EXPECT_EQ(text(e), "MUMPS: error during factorisation: INFOG(1) = -5\na hint");
+}
+
+}  // namespace
