@@ -28,11 +28,6 @@ struct Case {
   double tolerance;  // on every slave node
 };
 
-lunaster::Log quiet_log() {
-  static std::ostringstream sink;
-  return lunaster::Log(sink, 0);
-}
-
 Mesh load(const std::string& name) {
   return read_med(std::string(LUNASTER_SOURCE_DIR) + "/testcases/" + name + ".med");
 }

@@ -16,18 +16,6 @@ namespace {
 
 constexpr double kYoung = 2.0e6;
 
-lunaster::Log quiet_log() {
-  static std::ostringstream sink;
-  return lunaster::Log(sink, 0);
-}
-
-std::vector<Imposed> displacement_bcs(const TwoBlocks& tb) {
-  std::vector<Imposed> bcs;
-  for (int n : tb.cd_nodes) bcs.push_back({n, DX, 0.0}), bcs.push_back({n, DY, -0.1});
-  for (int n : tb.gh_nodes) bcs.push_back({n, DX, 0.0}), bcs.push_back({n, DY, 0.0});
-  return bcs;
-}
-
 ContactDefinition continuous(const TwoBlocks& tb, IntegrationScheme scheme, int order, ContactInit init) {
   ContactDefinition def;
   def.method = ContactMethod::Continuous;

@@ -101,6 +101,20 @@ inline FeModel make_model(const Mesh& mesh, double young, double poisson) {
 
 struct Imposed { int node, component; double value; };
 
+/// SSNP121's loading: CD pushed down by 0.1 m, GH fixed, DX = 0 on both.
+inline std::vector<Imposed> displacement_bcs(const TwoBlocks& tb) {
+  std::vector<Imposed> bcs;
+  for (int n : tb.cd_nodes) bcs.push_back({n, DX, 0.0}), bcs.push_back({n, DY, -0.1});
+  for (int n : tb.gh_nodes) bcs.push_back({n, DX, 0.0}), bcs.push_back({n, DY, 0.0});
+  return bcs;
+}
+
+/// A log that prints nothing.
+inline lunaster::Log quiet_log() {
+  static std::ostringstream sink;
+  return lunaster::Log(sink, 0);
+}
+
 struct SolveResult {
   DofMap dofs;
   Vector u;
