@@ -39,7 +39,10 @@ class ContactHook {
   virtual void add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) = 0;
   /// Unknowns the hook eliminates from the next linear solve (valid after add_to_system):
   /// the driver solves for the others and then calls `recover`. Empty: none.
-  virtual const std::vector<int>& condensed_equations() const { return no_equations_; }
+  virtual const std::vector<int>& condensed_equations() const {
+    static const std::vector<int> none;
+    return none;
+  }
   /// After a linear solve that left out `condensed_equations()`, sets those unknowns in u
   /// from the other (updated) ones.
   virtual void recover(Vector& /*u*/) {}
@@ -60,9 +63,6 @@ class ContactHook {
   /// State at the start of a step, and its restoration (step subdivision).
   virtual ContactSnapshot snapshot() const { return {}; }
   virtual void restore(const ContactSnapshot& /*state*/) {}
-
- private:
-  const std::vector<int> no_equations_;
 };
 
 }  // namespace lunaster::engine
