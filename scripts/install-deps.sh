@@ -9,6 +9,7 @@ PACKAGES=(
   libeigen3-dev               # dense/sparse linear algebra containers
   libsuitesparse-dev          # CHOLMOD (SPD), UMFPACK (general)
   libmumps-seq-dev            # MUMPS sequential (MPI build later for large models)
+  libopenblas-pthread-dev     # OpenBLAS: the BLAS/LAPACK under CHOLMOD, UMFPACK and MUMPS
   libmedc-dev libhdf5-openmpi-dev libopenmpi-dev  # MED-file 4.1 (built on the OpenMPI HDF5): meshes, results
   libgtest-dev libgmock-dev   # unit tests
   libbenchmark-dev time       # tests/bench kernels and timings

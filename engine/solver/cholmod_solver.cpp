@@ -12,15 +12,12 @@
 #include "engine/core/error.hpp"
 #include "engine/solver/backends.hpp"
 
-extern "C" int lunaster_eigen_blas_anchor();  // eigen_blas.cpp: links the fast dense kernels in
-
 namespace lunaster::engine {
 namespace {
 
 class CholmodSolver final : public LinearSolver {
  public:
   CholmodSolver() {
-    (void)lunaster_eigen_blas_anchor();
     cholmod_start(&common_);
     common_.supernodal = CHOLMOD_SUPERNODAL;
     common_.print = 0;

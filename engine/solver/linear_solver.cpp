@@ -7,10 +7,12 @@
 
 #include "engine/core/error.hpp"
 #include "engine/solver/backends.hpp"
+#include "engine/solver/blas.hpp"
 
 namespace lunaster::engine {
 
 std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind) {
+  configure_blas();
   switch (kind) {
     case SolverKind::Cholmod: return make_cholmod_solver();
     case SolverKind::Umfpack: return make_umfpack_solver();

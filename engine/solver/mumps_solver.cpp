@@ -11,8 +11,6 @@
 #include "engine/core/error.hpp"
 #include "engine/solver/backends.hpp"
 
-extern "C" int lunaster_eigen_blas_anchor();  // eigen_blas.cpp: links the fast dense kernels in
-
 namespace lunaster::engine {
 namespace {
 
@@ -20,7 +18,7 @@ constexpr int kUseCommWorld = -987654;
 
 class MumpsSolver final : public LinearSolver {
  public:
-  MumpsSolver() { (void)lunaster_eigen_blas_anchor(); }
+  MumpsSolver() = default;
   ~MumpsSolver() override { release(); }
   MumpsSolver(const MumpsSolver&) = delete;
   MumpsSolver& operator=(const MumpsSolver&) = delete;

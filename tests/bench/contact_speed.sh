@@ -2,7 +2,8 @@
 # Contact against the glued elastic solve of the same mesh (the issue "contact costs one
 # elastic solve"): whole runs of `lunaster run`, start-up included, timed by /usr/bin/time.
 # Release build required. Each case is run R times per binary, binaries alternating
-# (A B A B ...), and the median wall time, user/sys CPU and peak RSS are printed.
+# (A B A B ...), and the median wall time, user/sys CPU, peak RSS, context switches (voluntary
+# plus involuntary) and page faults (minor plus major) are printed.
 #
 # Usage: tests/bench/contact_speed.sh [-r R] [-c CASE,...] BINARY [BINARY2]
 #   BINARY2 (e.g. a build of an older commit) is run side by side: ratios are only
@@ -96,20 +97,21 @@ for c in "${list[@]}"; do
 done
 
 median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
-printf "%-14s %-4s %8s %8s %8s %8s  %s\n" case bin wall_s user_s sys_s peak_MB status
+printf "%-14s %-4s %8s %8s %8s %8s %8s %8s  %s\n" case bin wall_s user_s sys_s peak_MB ctxsw faults status
 for c in "${list[@]}"; do
   for i in "${!bins[@]}"; do : > "$work/t.$i"; done
   for _ in $(seq "$runs"); do
     for i in "${!bins[@]}"; do
-      (cd "$work" && /usr/bin/time -f "%e %U %S %M" -o "$work/time" "${bins[$i]}" run "$c.lua" --out "$work/out_$i" -q \
+      (cd "$work" && /usr/bin/time -f "%e %U %S %M %w %c %R %F" -o "$work/time" "${bins[$i]}" run "$c.lua" --out "$work/out_$i" -q \
         > "$work/log.$c.$i" 2>&1; echo $? > "$work/rc.$i") || true
-      tail -n 1 "$work/time" >> "$work/t.$i"
+      tail -n 1 "$work/time" | awk '{print $1, $2, $3, $4, $5 + $6, $7 + $8}' >> "$work/t.$i"
     done
   done
   for i in "${!bins[@]}"; do
     rc=$(cat "$work/rc.$i"); status=OK; [ "$rc" = 0 ] || status="exit $rc"
-    printf "%-14s %-4s %8s %8s %8s %8d  %s\n" "$c" "$((i + 1))" \
+    printf "%-14s %-4s %8s %8s %8s %8d %8s %8s  %s\n" "$c" "$((i + 1))" \
       "$(awk '{print $1}' "$work/t.$i" | median)" "$(awk '{print $2}' "$work/t.$i" | median)" \
-      "$(awk '{print $3}' "$work/t.$i" | median)" "$(( $(awk '{print $4}' "$work/t.$i" | median) / 1024 ))" "$status"
+      "$(awk '{print $3}' "$work/t.$i" | median)" "$(( $(awk '{print $4}' "$work/t.$i" | median) / 1024 ))" \
+      "$(awk '{print $5}' "$work/t.$i" | median)" "$(awk '{print $6}' "$work/t.$i" | median)" "$status"
   done
 done

@@ -1,9 +1,15 @@
-// The Eigen-backed BLAS/LAPACK kernels interposed over the system BLAS
-// (engine/solver/eigen_blas.cpp) against plain dense Eigen expressions, for
-// every option combination, including sizes large enough for the two-thread path.
+// The BLAS/LAPACK the solver libraries bind to (OpenBLAS, engine/solver/blas.hpp):
+// which library it is, which kernels it runs, and the kernels CHOLMOD and MUMPS
+// call against plain dense Eigen expressions, for every option combination,
+// including sizes large enough for OpenBLAS's blocked paths.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cstdlib>
+#include <string>
+
+#include "engine/solver/blas.hpp"
+#include "engine/solver/linear_solver.hpp"
 
 extern "C" {
 void dgemm_(const char*, const char*, const int*, const int*, const int*, const double*, const double*, const int*,
@@ -22,6 +28,35 @@ namespace {
 
 using Eigen::MatrixXd;
 
+// Every test sets the kernels up as a run does, before its first BLAS call.
+class Blas : public ::testing::Test {
+ protected:
+  void SetUp() override { lunaster::engine::configure_blas(); }
+};
+
+TEST_F(Blas, SolverLibrariesBindToOpenBlas) {
+  // dgemm_ as the dynamic linker resolves it for every library of the process
+  // (libcholmod, libdmumps and libumfpack name libblas.so.3).
+  EXPECT_NE(lunaster::engine::blas_library().find("libopenblas"), std::string::npos)
+      << "dgemm_ comes from " << lunaster::engine::blas_library();
+}
+
+TEST_F(Blas, KernelsMatchTheCpu) {
+  // OpenBLAS's generic fallback is only right for a CPU without AVX2.
+  if (std::getenv("OPENBLAS_CORETYPE")) GTEST_SKIP() << "kernels named by the environment";
+  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) {
+    EXPECT_NE(lunaster::engine::blas_core(), "Prescott");
+  }
+}
+
+TEST_F(Blas, ThreadCountIsSetOnce) {
+  if (std::getenv("OPENBLAS_NUM_THREADS") || std::getenv("GOTO_NUM_THREADS") || std::getenv("OMP_NUM_THREADS"))
+    GTEST_SKIP() << "thread count given by the environment";
+  EXPECT_EQ(lunaster::engine::blas_threads(), lunaster::engine::kBlasThreads);
+  (void)lunaster::engine::make_linear_solver(lunaster::engine::SolverKind::Cholmod);  // configures again: no change
+  EXPECT_EQ(lunaster::engine::blas_threads(), lunaster::engine::kBlasThreads);
+}
+
 MatrixXd random(int r, int c, int seed) {
   MatrixXd m(r, c);
   for (int j = 0; j < c; ++j)
@@ -29,7 +64,7 @@ MatrixXd random(int r, int c, int seed) {
   return m;
 }
 
-TEST(EigenBlas, GemmAllTransposes) {
+TEST_F(Blas, GemmAllTransposes) {
   for (int size : {7, 180}) {
     const int m = size, n = size + 3, k = size / 2 + 5;
     for (const char* ta : {"N", "T"})
@@ -48,7 +83,7 @@ TEST(EigenBlas, GemmAllTransposes) {
   }
 }
 
-TEST(EigenBlas, SyrkLowerUpper) {
+TEST_F(Blas, SyrkLowerUpper) {
   const int n = 40, k = 17;
   for (const char* uplo : {"L", "U"})
     for (const char* tr : {"N", "T"}) {
@@ -69,7 +104,7 @@ TEST(EigenBlas, SyrkLowerUpper) {
     }
 }
 
-TEST(EigenBlas, TrsmEveryVariant) {
+TEST_F(Blas, TrsmEveryVariant) {
   for (int size : {9, 200}) {
     const int m = size, n = size / 3 + 4;
     for (const char* side : {"L", "R"})
@@ -92,7 +127,7 @@ TEST(EigenBlas, TrsmEveryVariant) {
   }
 }
 
-TEST(EigenBlas, PotrfFactorsAndReportsTheFailingMinor) {
+TEST_F(Blas, PotrfFactorsAndReportsTheFailingMinor) {
   const int n = 30;
   MatrixXd a = random(n, n, 8);
   MatrixXd spd = a * a.transpose() + n * MatrixXd::Identity(n, n);
@@ -113,7 +148,7 @@ TEST(EigenBlas, PotrfFactorsAndReportsTheFailingMinor) {
   EXPECT_EQ(info, 5);
 }
 
-TEST(EigenBlas, GemvAndTrsv) {
+TEST_F(Blas, GemvAndTrsv) {
   const int m = 25, n = 19;
   const MatrixXd a = random(m, n, 9);
   const Eigen::VectorXd x = random(m, 1, 10);  // long enough for both shapes

@@ -1,0 +1,77 @@
+/// OpenBLAS and OpenMP set-up (see blas.hpp).
+#include "engine/solver/blas.hpp"
+
+#include <cblas.h>
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+
+namespace lunaster::engine {
+namespace {
+
+bool has_env(const char* name) { return std::getenv(name) != nullptr; }
+
+/// Debian 12's OpenBLAS (0.3.21, built for every x86-64 core and choosing at
+/// load time) does not know CPUs released after it (Intel family 6 model 0xCF,
+/// the machine this project runs on, among them) and falls back to its generic
+/// SSE3 "Prescott" kernels: 1.3-1.5x slower than its AVX-512 ones here. When it
+/// did and the CPU has AVX-512 or AVX2, its own kernel selection is run again
+/// with OPENBLAS_CORETYPE naming that family, as OpenBLAS documents for this
+/// case. This must happen before the first BLAS call; the two entry points are
+/// looked up at run time, so a library without them is simply left as it chose.
+void select_openblas_kernels() {
+  if (has_env("OPENBLAS_CORETYPE") || std::strcmp(openblas_get_corename(), "Prescott") != 0) return;
+  const char* family = nullptr;
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+      __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq"))
+    family = "SkylakeX";
+  else if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
+    family = "Haswell";
+  if (!family) return;
+  using Hook = void (*)();
+  const auto quit = reinterpret_cast<Hook>(dlsym(RTLD_DEFAULT, "gotoblas_dynamic_quit"));
+  const auto init = reinterpret_cast<Hook>(dlsym(RTLD_DEFAULT, "gotoblas_dynamic_init"));
+  if (!quit || !init) return;
+  setenv("OPENBLAS_CORETYPE", family, 0);
+  quit();
+  init();
+  unsetenv("OPENBLAS_CORETYPE");  // read once by init: the environment stays as the user gave it
+}
+
+}  // namespace
+
+void configure_blas() {
+  static const bool done = [] {
+    select_openblas_kernels();
+    // OpenBLAS reads these itself when it is loaded; an explicit count would override them.
+    if (!has_env("OPENBLAS_NUM_THREADS") && !has_env("GOTO_NUM_THREADS") && !has_env("OMP_NUM_THREADS"))
+      openblas_set_num_threads(kBlasThreads);
+    // CHOLMOD's supernodal factorisation opens an OpenMP region of 4 threads
+    // (a constant of its build) around every large supernode's scatter loops:
+    // on 2 cores that is tens of thousands of futex waits and context switches
+    // per factorisation for memory-bound loops. Make every OpenMP region run on
+    // the calling thread unless the OpenMP environment says otherwise.
+    // libcholmod brings the OpenMP runtime (libgomp); looked up at run time, as
+    // lunaster itself has no OpenMP code.
+    using SetLevels = void (*)(int);
+    if (!has_env("OMP_MAX_ACTIVE_LEVELS") && !has_env("OMP_THREAD_LIMIT"))
+      if (const auto set = reinterpret_cast<SetLevels>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"))) set(0);
+    return true;
+  }();
+  (void)done;
+}
+
+int blas_threads() { return openblas_get_num_threads(); }
+
+std::string blas_core() { return openblas_get_corename(); }
+
+std::string blas_library() {
+  void* symbol = dlsym(RTLD_DEFAULT, "dgemm_");
+  Dl_info info{};
+  if (!symbol || !dladdr(symbol, &info) || !info.dli_fname) return "";
+  return info.dli_fname;
+}
+
+}  // namespace lunaster::engine
