@@ -258,7 +258,7 @@ void* BudgetGuard::allocate(void* ud, void* ptr, std::size_t osize, std::size_t 
     guard->lua_bytes_ -= old;
     return nullptr;
   }
-  if (nsize > old && guard->lua_bytes_ - old + nsize > guard->lua_cap_) {
+  if (guard->in_protected_call_ && nsize > old && guard->lua_bytes_ - old + nsize > guard->lua_cap_) {
     guard->memory_exceeded_ = true;
     return nullptr;  // Lua collects garbage, retries, then raises "not enough memory"
   }

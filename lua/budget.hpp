@@ -75,6 +75,10 @@ class BudgetGuard {
   /// budget is spent; uninstall before closing `L`.
   void install(lua_State* L);
   void uninstall(lua_State* L);
+  /// Around the protected call that runs the deck: only there may the allocator refuse a
+  /// block (an unprotected refusal is a Lua panic, which aborts the process). Outside it,
+  /// the watchdog's resident-memory check still stops a deck over its budget.
+  void set_protected(bool on) { in_protected_call_ = on; }
   /// Stops the watchdog (the deck has finished; reporting must not be cut off).
   void stop();
 
@@ -99,6 +103,7 @@ class BudgetGuard {
   std::size_t memory_bytes_ = 0;
   std::size_t lua_bytes_ = 0;  ///< Lua heap (main thread only)
   std::size_t lua_cap_ = 0;    ///< the Lua heap may not grow beyond this
+  bool in_protected_call_ = false;  ///< refusing a block is safe only under lua_pcall (else Lua panics)
   std::atomic<bool> time_up_{false};
   std::atomic<bool> memory_exceeded_{false};
   std::mutex running_mutex_;

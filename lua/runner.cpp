@@ -135,7 +135,9 @@ void Runner::run_loaded(int load_status) {
   lua_insert(L, -2);
   const int handler_index = lua_gettop(L) - 1;
   traceback_.clear();
+  if (guard_) guard_->set_protected(true);
   const int status = lua_pcall(L, 0, 0, handler_index);
+  if (guard_) guard_->set_protected(false);
   if (status == LUA_OK) {
     lua_pop(L, 1);
     return;
