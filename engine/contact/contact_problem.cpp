@@ -374,11 +374,9 @@ void ContactProblem::recover(Vector& u) {
   if (multiplier_nodes_.empty() || coupled()) return;
   Recovery& r = *recovery_;
   const int n_mult = static_cast<int>(multiplier_nodes_.size());
-  std::vector<int> index_of_eq;  // LAGS_C equation -> multiplier index
   auto mult_index = [&](int eq) {
     return static_cast<int>(std::lower_bound(multiplier_eqs_.begin(), multiplier_eqs_.end(), eq) - multiplier_eqs_.begin());
   };
-  std::vector<int> eqs(8);
   if (!r.ready) {
     // kappa depends on the weights only (not on the statuses): one factorisation per pairing.
     std::vector<Triplet> t;
