@@ -129,8 +129,7 @@ bool ContactProblem::coupled() const {
 }
 
 const std::vector<int>& ContactProblem::condensed_equations() const {
-  static const std::vector<int> none;
-  return coupled() ? none : multiplier_eqs_;
+  return coupled() ? ContactHook::condensed_equations() : multiplier_eqs_;
 }
 
 MatrixKind ContactProblem::matrix_kind() const {
