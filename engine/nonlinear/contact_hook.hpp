@@ -2,6 +2,7 @@
 /// The contact algorithm as the Newton driver (static_solver.hpp) sees it.
 /// Implemented in engine/contact (contact_problem.hpp); the driver knows no
 /// contact method, only this interface.
+#include <utility>
 #include <vector>
 
 #include "engine/assembly/dof_map.hpp"
@@ -19,6 +20,19 @@ namespace lunaster::engine {
 struct ContactSnapshot {
   std::vector<char> active;
   bool first_step = true;
+};
+
+/// One unknown a hook removes from the linear solve by a linear relation between Newton
+/// increments: du[eq] = sum_k coef_k du[term_k] + value. The terms never name an eliminated
+/// equation (the hook closes its relations) and may name Dirichlet-constrained ones (their
+/// increment is zero). The driver solves Q^T K Q v = -Q^T (r + K b) with u = Q v + b, an SPD
+/// system when K is SPD on the remaining unknowns, and then sets du[eq] from the relation.
+/// The relations' reactions are the hook's to add to the residual in add_to_system (Newton's
+/// convergence is judged on that residual).
+struct Elimination {
+  int eq = -1;
+  std::vector<std::pair<int, double>> terms;
+  double value = 0.0;
 };
 
 class ContactHook {
@@ -46,6 +60,16 @@ class ContactHook {
   /// After a linear solve that left out `condensed_equations()`, sets those unknowns in u
   /// from the other (updated) ones.
   virtual void recover(Vector& /*u*/) {}
+  /// Unknowns eliminated by linear relations in the next linear solve (valid after
+  /// add_to_system); their rows and columns of the contact triplets hold nothing. Empty: none.
+  virtual const std::vector<Elimination>& eliminations() const {
+    static const std::vector<Elimination> none;
+    return none;
+  }
+  /// False when the contact conditions are not yet met at the last add_to_system (statuses
+  /// changed there, or an active condition is violated): Newton goes on even if the residual
+  /// is small (semi-smooth Newton on the statuses).
+  virtual bool newton_converged() const { return true; }
   /// Called when Newton converged with the current statuses/geometry frozen.
   /// Updates statuses and pairing; returns true when nothing changed (settled).
   virtual bool settle(const Vector& u, const Log& log) = 0;

@@ -224,8 +224,66 @@ SolverKind StaticSolver::backend_for(MatrixKind kind) {
 /// equation) is built once per contact pattern version, with the position of every
 /// elastic value and contact triplet in it; each iteration then copies the elastic values
 /// and adds the contact ones in place.
+/// Elimination of unknowns by linear relations du_E = A du_R + b (contact_hook.hpp):
+/// K' = K_RR + K_RE A + A^T K_ER + A^T K_EE A and r' = (r + K b)_R + A^T (r + K b)_E. Only
+/// the columns of K at E are read (K is symmetric), so the cost follows the relations, not
+/// the model. The terms of K' beyond K_RR are appended to `triplets` (as contact terms);
+/// `r_free` becomes r'. Returns the eliminated equations, whose rows and columns
+/// update_system replaces by a unit diagonal.
+std::vector<int> StaticSolver::eliminate(const Constraints& cons, const std::vector<Elimination>& relations,
+                                         const Vector& residual, std::vector<Triplet>& triplets, Vector& r_free) {
+  const int n = dofs_.n_dofs();
+  std::vector<int> index_of(n, -1);
+  std::vector<int> eqs;
+  eqs.reserve(relations.size());
+  for (size_t i = 0; i < relations.size(); ++i) {
+    const int eq = relations[i].eq;
+    LUNASTER_ASSERT(eq >= 0 && eq < n && cons.free_index[eq] >= 0 && index_of[eq] < 0,
+                    "an eliminated unknown must be free and eliminated once");
+    index_of[eq] = static_cast<int>(i);
+    eqs.push_back(eq);
+  }
+  // Columns of K at the eliminated equations: elastic part and contact triplets.
+  std::vector<std::vector<std::pair<int, double>>> column(relations.size());
+  for (size_t i = 0; i < relations.size(); ++i) {
+    const int e = relations[i].eq;
+    for (SparseMatrix::InnerIterator it(k_full_, e); it; ++it) column[i].emplace_back(static_cast<int>(it.row()), it.value());
+  }
+  for (const auto& tr : triplets)
+    if (index_of[tr.col()] >= 0) column[index_of[tr.col()]].emplace_back(tr.row(), tr.value());
+  // r + K b over the whole numbering.
+  Vector rb = residual;
+  for (size_t i = 0; i < relations.size(); ++i)
+    if (relations[i].value != 0.0)
+      for (const auto& [row, v] : column[i]) rb[row] += v * relations[i].value;
+  for (int eq = 0; eq < n; ++eq) {
+    const int k = cons.free_index[eq];
+    if (k >= 0) r_free[k] = index_of[eq] >= 0 ? 0.0 : rb[eq];
+  }
+  for (size_t i = 0; i < relations.size(); ++i)
+    for (const auto& [k, a] : relations[i].terms)
+      if (cons.free_index[k] >= 0) r_free[cons.free_index[k]] += a * rb[relations[i].eq];
+  for (size_t i = 0; i < relations.size(); ++i) {
+    const auto& terms = relations[i].terms;
+    for (const auto& [row, v] : column[i]) {
+      if (cons.free_index[row] < 0) continue;
+      const int other = index_of[row];
+      if (other < 0) {
+        for (const auto& [k, a] : terms) {  // K_RE A and A^T K_ER
+          triplets.emplace_back(row, k, v * a);
+          triplets.emplace_back(k, row, a * v);
+        }
+      } else {
+        for (const auto& [l, b] : relations[other].terms)  // A^T K_EE A
+          for (const auto& [k, a] : terms) triplets.emplace_back(l, k, b * v * a);
+      }
+    }
+  }
+  return eqs;
+}
+
 void StaticSolver::update_system(const Constraints& cons, const std::vector<Triplet>& contact,
-                                 const std::vector<int>& condensed) {
+                                 const std::vector<int>& condensed, const std::vector<int>& eliminated) {
   if (!system_) system_ = std::make_unique<SystemCache>();
   SystemCache& sys = *system_;
   const long version = contact_ ? contact_->pattern_version() : 0;
@@ -319,6 +377,19 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
   }
   for (int eq : condensed)
     if (cons.free_index[eq] >= 0) values[sys.diagonal[cons.free_index[eq]]] = 1.0, mix(static_cast<std::uint64_t>(eq));
+  // Eliminated unknowns: their rows and columns (elastic values included) become a unit diagonal.
+  const int* outer = sys.a.outerIndexPtr();
+  const int* inner = sys.a.innerIndexPtr();
+  for (int eq : eliminated) {
+    const int j = cons.free_index[eq];
+    for (int p = outer[j]; p < outer[j + 1]; ++p) {
+      const int i = inner[p];
+      values[p] = 0.0;
+      values[std::lower_bound(inner + outer[i], inner + outer[i + 1], j) - inner] = 0.0;
+    }
+    values[sys.diagonal[j]] = 1.0;
+    mix(~static_cast<std::uint64_t>(eq));
+  }
   sys.values_key = key;
 }
 
@@ -373,7 +444,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         throw ConvergenceError("the residual became non-finite at instant " + sci(t));
       const bool rela_ok = options_.resi_glob_rela <= 0.0 || resi_rela <= options_.resi_glob_rela;
       const bool maxi_ok = options_.resi_glob_maxi <= 0.0 || resi_maxi <= options_.resi_glob_maxi;
-      if (iter > 0 && rela_ok && maxi_ok) {
+      const bool contact_ok = !contact_ || contact_->newton_converged();
+      if (iter > 0 && rela_ok && maxi_ok && contact_ok) {
         converged = true;
         stats_.resi_glob_rela = resi_rela;
         break;
@@ -397,10 +469,17 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         rigid_checked_ = true;
       }
       static const std::vector<int> no_equations;
+      static const std::vector<Elimination> no_eliminations;
       const std::vector<int>& condensed = contact_ ? contact_->condensed_equations() : no_equations;
+      const std::vector<Elimination>& eliminated = contact_ ? contact_->eliminations() : no_eliminations;
+      std::vector<int> eliminated_eqs;
+      if (!eliminated.empty()) {
+        Stopwatch watch(stats_.assemble_seconds);
+        eliminated_eqs = eliminate(cons, eliminated, residual, k_contact, r_free);
+      }
       {
         Stopwatch watch(stats_.assemble_seconds);
-        update_system(cons, k_contact, condensed);
+        update_system(cons, k_contact, condensed, eliminated_eqs);
       }
       const SparseMatrix& a = system_->a;
       // Condensed unknowns: decoupled rows (unit diagonal, zero right-hand side), set by recover().
@@ -489,6 +568,13 @@ void StaticSolver::solve_instant(double t, Vector& u) {
             t);
       for (int eq = 0; eq < n; ++eq)
         if (cons.free_index[eq] >= 0) u[eq] += du[cons.free_index[eq]];
+      for (const Elimination& e : eliminated) {
+        // du_e = b_e + sum a_k du_k (its own entry of du is the zero of its unit row).
+        double d = e.value;
+        for (const auto& [k, a] : e.terms)
+          if (cons.free_index[k] >= 0) d += a * du[cons.free_index[k]];
+        u[e.eq] += d;
+      }
       if (!condensed.empty()) {
         Stopwatch watch(stats_.contact_seconds);
         contact_->recover(u);

@@ -106,7 +106,10 @@ class StaticSolver {
     std::uint64_t values_key = 0;      ///< key of a's current values (update_system)
     SystemState state[3];              ///< per backend (SolverKind)
   };
-  void update_system(const Constraints& cons, const std::vector<Triplet>& contact, const std::vector<int>& condensed);
+  void update_system(const Constraints& cons, const std::vector<Triplet>& contact, const std::vector<int>& condensed,
+                     const std::vector<int>& eliminated);
+  std::vector<int> eliminate(const Constraints& cons, const std::vector<Elimination>& relations, const Vector& residual,
+                             std::vector<Triplet>& triplets, Vector& r_free);
   /// Backend for a system of this kind: Cholmod gives way to Mumps (said once per run).
   SolverKind backend_for(MatrixKind kind);
 
