@@ -15,7 +15,7 @@ Keyword behaviour(const std::string& name, const std::string& doc) {
       .with_rules({at_most_one({"TOUT", "GROUP_MA"})});
 }
 
-std::vector<Keyword> keywords() {
+std::vector<Keyword> keywords(bool meca_non_line) {
   return {
       concept_kw("MODELE", {"modele"}, "Model").required(),
       concept_kw("CHAM_MATER", {"cham_mater"}, "Material field").required(),
@@ -24,7 +24,9 @@ std::vector<Keyword> keywords() {
               concept_kw("FONC_MULT", {"fonction"}, "Time multiplier of the load (default: 1 at every time)")},
              "Loads applied")
           .occurs(0, -1),
-      concept_kw("CONTACT", {"char_contact"}, "Contact definition from DEFI_CONTACT"),
+      meca_non_line ? factor("CONTACT", {concept_kw("DEFINITION", {"char_contact"}, "Contact definition from DEFI_CONT or DEFI_CONTACT").required()},
+                             "Contact (code_aster 17 spelling)")
+                    : concept_kw("CONTACT", {"char_contact"}, "Contact definition from DEFI_CONTACT or DEFI_CONT"),
       behaviour("COMP_ELAS", "Behaviour (seed syntax; same as COMPORTEMENT)").legacy(),
       behaviour("COMPORTEMENT", "Behaviour (default: linear elasticity everywhere)"),
       factor("INCREMENT",
@@ -73,8 +75,17 @@ std::vector<Keyword> keywords() {
 
 const CommandSpec& stat_non_line_spec() {
   static const CommandSpec spec = make_command(
-      "STAT_NON_LINE", "evol_noli", "Quasi-static nonlinear analysis (Newton, contact)", keywords(),
+      "STAT_NON_LINE", "evol_noli", "Quasi-static nonlinear analysis (Newton, contact)", keywords(false),
       {at_most_one({"COMP_ELAS", "COMPORTEMENT"})});
+  return spec;
+}
+
+const CommandSpec& meca_non_line_spec() {
+  static const CommandSpec spec = make_command(
+      "MECA_NON_LINE", "evol_noli",
+      "Quasi-static nonlinear analysis, code_aster 17 spelling of STAT_NON_LINE (same engine, same results; "
+      "CONTACT=_F(DEFINITION=...))",
+      keywords(true), {at_most_one({"COMP_ELAS", "COMPORTEMENT"})});
   return spec;
 }
 
