@@ -3,6 +3,7 @@
 #include "commands/concepts.hpp"
 #include "commands/contact_keywords.hpp"
 #include "commands/selection.hpp"
+#include "engine/core/error.hpp"
 
 namespace lunaster::cmd {
 
@@ -15,6 +16,8 @@ ConceptPtr defi_cont(const Args& args, Session& session) {
   def.iter_geom_maxi = static_cast<int>(args.integer("ITER_GEOM_MAXI"));
   def.resi_geom = args.real("RESI_GEOM");
   for (const auto& zone : args.factors("ZONE")) {
+    // 'MORTAR' is the one pairing DEFI_CONT offers (the catalogue refuses any other).
+    LUNASTER_ASSERT(zone.text("APPARIEMENT") == "MORTAR", "DEFI_CONT: unexpected APPARIEMENT");
     const std::string algo = zone.text("ALGO_CONT");
     const engine::ContactMethod method =
         algo == "PENALISATION" ? engine::ContactMethod::MortarPenalty : engine::ContactMethod::MortarLagrange;
