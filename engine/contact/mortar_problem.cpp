@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "engine/contact/contact_problem.hpp"
+#include "engine/contact/integration_rules.hpp"
 #include "engine/contact/mortar_integration.hpp"
 #include "engine/contact/surface_element.hpp"
 #include "engine/core/error.hpp"
@@ -402,8 +403,21 @@ void MortarProblem::begin_step(const Vector& u, const Log& log) {
     r.active = zone.init == ContactInit::Yes || (zone.init == ContactInit::Interpenetrated && g < -1e-6 * h_[r.zone]);
     n_active += r.active;
   }
+  // The slave surface the master surface covers (sum of D_j), against the whole slave surface.
+  double covered = 0.0, total = 0.0;
+  for (const auto& r : rows_) covered += r.d;
+  for (const auto& cells : slave_cells_)
+    for (const auto& oc : cells) {
+      double x[3 * kMaxSurfaceNodes];
+      for (int a = 0; a < oc.n; ++a)
+        for (int k = 0; k < 3; ++k) x[3 * a + k] = mesh_.node(oc.nodes[a])[k];
+      for (const auto& q : contact_integration_rule(oc.type, IntegrationScheme::Gauss, 4))
+        total += q.weight * surface_point(oc.type, x, q.xi).jacobian;
+    }
   std::ostringstream msg;
-  msg << "mortar contact: " << rows_.size() << " slave nodes paired, " << n_active << " initially in contact";
+  msg << "mortar contact: " << rows_.size() << " slave nodes paired, " << n_active << " initially in contact; "
+      << "the master surface covers " << covered << " of the slave surface's " << total
+      << (dim_ == 2 ? " m" : " m^2");
   log.info(msg.str());
 }
 
