@@ -15,10 +15,11 @@
 ///   1e-12 of the slave cell size counts as on the line, so shared edges and vertices
 ///   (matching meshes, grid lines common to both meshes) produce no spurious intersection
 ///   points; near-duplicate output vertices are merged with the same tolerance.
-/// - Points are projected back along the auxiliary normal by a Newton iteration on
-///   ((x(xi) - q) . e_k = 0, k = 1, 2) for both cells; on affine cells (triangles and
-///   parallelograms with straight edges) it is exact after one step. If it fails on either
-///   cell (a cell folded with respect to the plane), the pair gives no points (0).
+/// - Points are projected back along the auxiliary normal: with the cell's nodes projected on
+///   the plane once per pair, this is the inverse of the cell's in-plane map, found by Newton
+///   from the inverse of its affine part (exact at once on triangles and parallelograms with
+///   straight edges: one shape-function evaluation per point). If it fails on either cell (a
+///   cell folded with respect to the plane), the pair gives no points (0).
 /// - Quadratic faces (TRIA6, QUAD8) are clipped on their vertex polygon. With straight edges
 ///   in the plane (mid-edge nodes at the middle of their edge, any offset along the normal) the
 ///   projected cell is that polygon and nothing is lost. With edges curved within the plane,
@@ -62,6 +63,9 @@ void cross3(const double* a, const double* b, double* c) {
 }
 
 double cross2(const double* a, const double* b) { return a[0] * b[1] - a[1] * b[0]; }
+
+/// Euclidean length of (x, y) (std::hypot guards against overflow at a cost not needed here).
+double norm2(double x, double y) { return std::sqrt(x * x + y * y); }
 
 /// Gauss-Legendre rule on [-1,1] exact to `degree`: ceil((degree+1)/2) points, at most 6.
 /// Rules are built once (thread-safe static initialisation) so calls do not allocate.
@@ -213,7 +217,7 @@ bool convex(const Polygon& g, double tol) {
     const double* b = g.p[(i + 1) % g.n];
     const double* c = g.p[(i + 2) % g.n];
     const double e[2] = {b[0] - a[0], b[1] - a[1]}, f[2] = {c[0] - b[0], c[1] - b[1]};
-    const double len = std::sqrt(e[0] * e[0] + e[1] * e[1]);
+    const double len = norm2(e[0], e[1]);
     if (len > 0.0 && cross2(e, f) / len < -tol) return false;
   }
   return true;
@@ -228,7 +232,7 @@ void clip(const Polygon& subject, const Polygon& clipper, double tol, Polygon& r
     const double* q0 = clipper.p[k];
     const double* q1 = clipper.p[(k + 1) % clipper.n];
     const double e[2] = {q1[0] - q0[0], q1[1] - q0[1]};
-    const double len = std::sqrt(e[0] * e[0] + e[1] * e[1]);
+    const double len = norm2(e[0], e[1]);
     if (!(len > tol)) continue;  // degenerate clip edge
     double d[kMaxPolygon];
     int side[kMaxPolygon];
@@ -258,42 +262,86 @@ void clip(const Polygon& subject, const Polygon& clipper, double tol, Polygon& r
   for (int i = 0; i < a.n; ++i) {
     if (result.n > 0) {
       const double* l = result.p[result.n - 1];
-      if (std::hypot(a.p[i][0] - l[0], a.p[i][1] - l[1]) <= tol) continue;
+      if (norm2(a.p[i][0] - l[0], a.p[i][1] - l[1]) <= tol) continue;
     }
     result.p[result.n][0] = a.p[i][0], result.p[result.n][1] = a.p[i][1];
     ++result.n;
   }
   while (result.n > 1 &&
-         std::hypot(result.p[0][0] - result.p[result.n - 1][0], result.p[0][1] - result.p[result.n - 1][1]) <= tol)
+         norm2(result.p[0][0] - result.p[result.n - 1][0], result.p[0][1] - result.p[result.n - 1][1]) <= tol)
     --result.n;
 }
 
-/// The reference point of a face cell whose point lies on the line through q along the
-/// auxiliary normal: (x(xi) - q) . e_k = 0 for the two in-plane axes e_k. Newton from `xi`
-/// (updated in place); steps are limited to one reference unit. False if the cell is edge-on
-/// to the plane there or the iteration does not converge.
-bool plane_hit(CellType type, const double* xyz, const double* q, const double (*e)[3], double* xi) {
-  const int nn = surface_n_nodes(type);
+/// A face cell seen in the auxiliary plane: the in-plane coordinates of its nodes, and the
+/// affine part of its map (uv = c + L xi: exact for triangles and parallelograms with
+/// straight edges) whose inverse starts the Newton iteration of `plane_hit`.
+struct PlaneCell {
+  CellType type;
+  int nn = 0;
+  double uv[kMaxSurfaceNodes][2];
+  double height = 0.0;  ///< largest distance of a node to the plane
+  double c[2] = {0.0, 0.0};
+  double inv[2][2] = {{0.0, 0.0}, {0.0, 0.0}};  ///< L^-1
+  bool valid = false;                           ///< L invertible
+};
+
+PlaneCell plane_cell(CellType type, const double* xyz, const double* x0, const double* n0, const double (*e)[3]) {
+  PlaneCell g;
+  g.type = type, g.nn = surface_n_nodes(type);
+  for (int a = 0; a < g.nn; ++a) {
+    const double r[3] = {xyz[3 * a] - x0[0], xyz[3 * a + 1] - x0[1], xyz[3 * a + 2] - x0[2]};
+    g.uv[a][0] = dot3(r, e[0]), g.uv[a][1] = dot3(r, e[1]);
+    g.height = std::max(g.height, std::abs(dot3(r, n0)));
+  }
+  double l0[2], l1[2];  // columns of L
+  if (is_triangle(type)) {
+    g.c[0] = g.uv[0][0], g.c[1] = g.uv[0][1];
+    for (int i = 0; i < 2; ++i) l0[i] = g.uv[1][i] - g.uv[0][i], l1[i] = g.uv[2][i] - g.uv[0][i];
+  } else {
+    for (int i = 0; i < 2; ++i) {
+      g.c[i] = 0.25 * (g.uv[0][i] + g.uv[1][i] + g.uv[2][i] + g.uv[3][i]);
+      l0[i] = 0.25 * (-g.uv[0][i] + g.uv[1][i] + g.uv[2][i] - g.uv[3][i]);
+      l1[i] = 0.25 * (-g.uv[0][i] - g.uv[1][i] + g.uv[2][i] + g.uv[3][i]);
+    }
+  }
+  const double det = l0[0] * l1[1] - l1[0] * l0[1];
+  g.valid = std::abs(det) > 1e-14 * norm2(l0[0], l0[1]) * norm2(l1[0], l1[1]);
+  if (g.valid) {
+    g.inv[0][0] = l1[1] / det, g.inv[0][1] = -l1[0] / det;
+    g.inv[1][0] = -l0[1] / det, g.inv[1][1] = l0[0] / det;
+  }
+  return g;
+}
+
+/// The reference point of the cell whose projection on the plane is q (in-plane
+/// coordinates), i.e. the cell's point on the line through q along the auxiliary normal.
+/// Newton on sum_a N_a(xi) uv_a = q from the affine inverse (one evaluation on affine
+/// cells: the first step is at rounding level); steps are limited to one reference unit.
+/// False if the cell is edge-on to the plane there or the iteration does not converge.
+bool plane_hit(const PlaneCell& g, const double* q, double* xi) {
+  if (!g.valid) return false;
+  const double d[2] = {q[0] - g.c[0], q[1] - g.c[1]};
+  xi[0] = g.inv[0][0] * d[0] + g.inv[0][1] * d[1];
+  xi[1] = g.inv[1][0] * d[0] + g.inv[1][1] * d[1];
   double n[kMaxSurfaceNodes], dn[2 * kMaxSurfaceNodes];
   for (int it = 0; it < 40; ++it) {
-    surface_shape(type, xi, n, dn, nullptr);
-    double x[3] = {0, 0, 0}, t0[3] = {0, 0, 0}, t1[3] = {0, 0, 0};
-    for (int a = 0; a < nn; ++a)
-      for (int i = 0; i < 3; ++i) {
-        const double c = xyz[3 * a + i];
-        x[i] += n[a] * c, t0[i] += dn[2 * a] * c, t1[i] += dn[2 * a + 1] * c;
+    surface_shape(g.type, xi, n, dn, nullptr);
+    double r[2] = {-q[0], -q[1]}, j[2][2] = {{0.0, 0.0}, {0.0, 0.0}};  // j[i][k] = du_i / dxi_k
+    for (int a = 0; a < g.nn; ++a)
+      for (int i = 0; i < 2; ++i) {
+        r[i] += n[a] * g.uv[a][i];
+        j[i][0] += dn[2 * a] * g.uv[a][i], j[i][1] += dn[2 * a + 1] * g.uv[a][i];
       }
-    const double r[3] = {x[0] - q[0], x[1] - q[1], x[2] - q[2]};
-    const double j00 = dot3(t0, e[0]), j01 = dot3(t1, e[0]), j10 = dot3(t0, e[1]), j11 = dot3(t1, e[1]);
-    const double det = j00 * j11 - j01 * j10;
-    if (!(std::abs(det) > 1e-14 * std::sqrt(dot3(t0, t0) * dot3(t1, t1)))) return false;
-    const double r0 = dot3(r, e[0]), r1 = dot3(r, e[1]);
-    double s0 = -(j11 * r0 - j01 * r1) / det, s1 = -(j00 * r1 - j10 * r0) / det;
-    const double len = std::sqrt(s0 * s0 + s1 * s1);
+    const double det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+    if (!(std::abs(det) > 1e-14 * norm2(j[0][0], j[1][0]) * norm2(j[0][1], j[1][1]))) return false;
+    double s0 = -(j[1][1] * r[0] - j[0][1] * r[1]) / det, s1 = -(j[0][0] * r[1] - j[1][0] * r[0]) / det;
+    const double len = norm2(s0, s1);
     if (len > 1.0) s0 /= len, s1 /= len;
     xi[0] += s0, xi[1] += s1;
     if (!std::isfinite(xi[0]) || !std::isfinite(xi[1])) return false;
-    if (len <= 1e-14) return true;
+    // Quadratic convergence: after a step below 1e-9 the error left is of order 1e-18 times
+    // the map's second derivatives over its first (rounding level on any sensible cell).
+    if (len <= 1e-9) return true;
   }
   return false;
 }
@@ -311,20 +359,16 @@ double overlap_3d(CellType st, const double* sx, CellType mt, const double* mx, 
   const double tl = std::sqrt(dot3(ps.t[0], ps.t[0]));
   for (int i = 0; i < 3; ++i) e[0][i] = ps.t[0][i] / tl;  // t0 is orthogonal to n0
   cross3(n0, e[0], e[1]);
-  auto project = [&](CellType type, const double* xyz, Polygon& g) {
-    g.n = surface_n_vertices(type);
-    for (int a = 0; a < g.n; ++a) {
-      const double r[3] = {xyz[3 * a] - x0[0], xyz[3 * a + 1] - x0[1], xyz[3 * a + 2] - x0[2]};
-      g.p[a][0] = dot3(r, e[0]), g.p[a][1] = dot3(r, e[1]);
-    }
-  };
+  const PlaneCell gs = plane_cell(st, sx, x0, n0, e), gm = plane_cell(mt, mx, x0, n0, e);
   Polygon slave, master;
-  project(st, sx, slave), project(mt, mx, master);
+  slave.n = surface_n_vertices(st), master.n = surface_n_vertices(mt);
+  std::copy(&gs.uv[0][0], &gs.uv[0][0] + 2 * slave.n, &slave.p[0][0]);
+  std::copy(&gm.uv[0][0], &gm.uv[0][0] + 2 * master.n, &master.p[0][0]);
   double area_s = signed_area(slave), area_m = signed_area(master);
   if (area_s < 0.0) reverse(slave), area_s = -area_s;
   if (area_m < 0.0) reverse(master), area_m = -area_m;  // the facing master is clockwise
   if (!(area_s > 0.0) || !(area_m > 1e-12 * area_s)) return 0.0;
-  const double tol = 1e-12 * std::sqrt(area_s);
+  const double size = std::sqrt(area_s), tol = 1e-12 * size;
   Polygon poly;
   if (convex(master, tol) || !convex(slave, tol))
     clip(slave, master, tol, poly);
@@ -336,9 +380,11 @@ double overlap_3d(CellType st, const double* sx, CellType mt, const double* mx, 
   double c[2] = {0.0, 0.0};
   for (int i = 0; i < poly.n; ++i) c[0] += poly.p[i][0] / poly.n, c[1] += poly.p[i][1] / poly.n;
   const std::vector<ContactQuadPoint>& rule = triangle_rule(degree);
+  // On a flat slave (nodes within 1e-12 of its size from the plane) n_s . n0 = 1 to
+  // rounding: no need to evaluate it per point.
+  const bool flat_slave = gs.height <= 1e-12 * size;
   const size_t first = out.size();
   double total = 0.0;
-  double xs[2] = {cs[0], cs[1]}, xm[2] = {cm[0], cm[1]};  // warm starts for the Newton
   for (int k = 0; k < poly.n; ++k) {
     const double* p1 = poly.p[k];
     const double* p2 = poly.p[(k + 1) % poly.n];
@@ -346,20 +392,15 @@ double overlap_3d(CellType st, const double* sx, CellType mt, const double* mx, 
     const double tri = 0.5 * cross2(a, b);
     if (!(tri > 1e-14 * area)) continue;  // collinear vertices: no area to integrate
     for (const ContactQuadPoint& r : rule) {
-      const double u = c[0] + r.xi[0] * a[0] + r.xi[1] * b[0], v = c[1] + r.xi[0] * a[1] + r.xi[1] * b[1];
-      const double q[3] = {x0[0] + u * e[0][0] + v * e[1][0], x0[1] + u * e[0][1] + v * e[1][1],
-                           x0[2] + u * e[0][2] + v * e[1][2]};
-      bool ok = plane_hit(st, sx, q, e, xs);
-      if (!ok) xs[0] = cs[0], xs[1] = cs[1], ok = plane_hit(st, sx, q, e, xs);
-      if (ok && !plane_hit(mt, mx, q, e, xm)) xm[0] = cm[0], xm[1] = cm[1], ok = plane_hit(mt, mx, q, e, xm);
-      double cosine = 0.0;
-      if (ok) cosine = std::abs(dot3(surface_point(st, sx, xs).n, n0));
+      const double q[2] = {c[0] + r.xi[0] * a[0] + r.xi[1] * b[0], c[1] + r.xi[0] * a[1] + r.xi[1] * b[1]};
+      OverlapPoint op;
+      bool ok = plane_hit(gs, q, op.xi_s) && plane_hit(gm, q, op.xi_m);
+      double cosine = 1.0;
+      if (ok && !flat_slave) cosine = std::abs(dot3(surface_point(st, sx, op.xi_s).n, n0));
       if (!ok || !(cosine > 1e-8)) {
         out.resize(first);
         return 0.0;
       }
-      OverlapPoint op;
-      op.xi_s[0] = xs[0], op.xi_s[1] = xs[1], op.xi_m[0] = xm[0], op.xi_m[1] = xm[1];
       op.w = r.weight * 2.0 * tri / cosine;
       total += op.w;
       out.push_back(op);
@@ -403,38 +444,50 @@ bool edge_vertices(CellType type, int local_node, int* v1, int* v2) {
 }
 
 bool dual_coefficients(CellType type, const std::vector<OverlapPoint>& points, double* a) {
-  // Extended precision (long double: a 64-bit mantissa on x86-64) for the assembly and the
-  // solve: on a partially covered cell Me is ill-conditioned (reciprocal condition 1e-4 and
-  // coefficients of several hundred for a TRIA6 covered on 16 %), and in double the sums of
-  // the coefficients over i (which must be 1: the dual functions sum to one) drift by 1e-11.
-  using Real = long double;
-  using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, kMaxSurfaceNodes,
+  // On a partially covered cell Me is ill-conditioned (reciprocal condition 3e-4 and
+  // coefficients of several hundred for a TRIA6 covered on 16 %): solved in double only, the
+  // sums of the coefficients over i (1: the dual functions sum to one) drift by 1e-11. So Me
+  // and De are accumulated in extended precision (long double: 64-bit mantissa on x86-64),
+  // factorised in double, and one refinement step uses the residual De - Me A^T computed in
+  // extended precision (mixed-precision refinement): the sums then hold to 1e-13.
+  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, kMaxSurfaceNodes,
                                kMaxSurfaceNodes>;
   const int nn = surface_n_nodes(type);
-  Matrix me = Matrix::Zero(nn, nn), de = Matrix::Zero(nn, nn);
+  long double me[kMaxSurfaceNodes][kMaxSurfaceNodes] = {}, de[kMaxSurfaceNodes] = {};
   double n[kMaxSurfaceNodes];
   for (const OverlapPoint& p : points) {
     slave_shape(type, p.xi_s, n);
     for (int i = 0; i < nn; ++i) {
-      de(i, i) += Real(p.w) * n[i];
-      for (int j = 0; j < nn; ++j) me(i, j) += Real(p.w) * n[i] * n[j];
+      const long double wi = static_cast<long double>(p.w) * n[i];
+      de[i] += wi;
+      for (int j = i; j < nn; ++j) me[i][j] += wi * n[j];
     }
   }
-  for (int i = 0; i < nn; ++i)
-    if (!(de(i, i) > 0)) return false;
-  const Eigen::FullPivLU<Matrix> lu(me);
+  Matrix m(nn, nn), d = Matrix::Zero(nn, nn);
+  for (int i = 0; i < nn; ++i) {
+    if (!(de[i] > 0)) return false;
+    d(i, i) = static_cast<double>(de[i]);
+    for (int j = 0; j < i; ++j) me[i][j] = me[j][i];
+    for (int j = 0; j < nn; ++j) m(i, j) = static_cast<double>(me[i][j]);
+  }
+  const Eigen::FullPivLU<Matrix> lu(m);
   // Rank (pivots against the largest one) and the reciprocal condition estimate in the
   // 1-norm: the estimate alone is not reliable on an exactly rank-deficient matrix.
-  if (!lu.isInvertible() || !(lu.rcond() >= Real(1e-12))) return false;
-  // Me is symmetric: A^T = Me^-1 De, refined once against the residual De - Me A^T.
-  Matrix at = lu.solve(de);
-  const Matrix residual = de - me * at;
+  if (!lu.isInvertible() || !(lu.rcond() >= 1e-12)) return false;
+  Matrix at = lu.solve(d);  // Me is symmetric: A^T = Me^-1 De
+  Matrix residual(nn, nn);
+  for (int i = 0; i < nn; ++i)
+    for (int k = 0; k < nn; ++k) {
+      long double r = i == k ? de[i] : 0.0L;
+      for (int j = 0; j < nn; ++j) r -= me[i][j] * at(j, k);
+      residual(i, k) = static_cast<double>(r);
+    }
   at += lu.solve(residual);
   for (int i = 0; i < nn; ++i)
     for (int j = 0; j < nn; ++j)
-      if (!std::isfinite(static_cast<double>(at(j, i)))) return false;
+      if (!std::isfinite(at(j, i))) return false;
   for (int i = 0; i < nn; ++i)
-    for (int j = 0; j < nn; ++j) a[i * nn + j] = static_cast<double>(at(j, i));
+    for (int j = 0; j < nn; ++j) a[i * nn + j] = at(j, i);
   return true;
 }
 

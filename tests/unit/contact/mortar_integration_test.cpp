@@ -374,6 +374,48 @@ void expect_tiling(const std::vector<Cell>& slaves, const std::vector<Cell>& mas
 
 }  // namespace
 
+TEST(MortarOverlap, RoundingLevelPerturbationsOfSharedEdgesChangeNothing) {
+  // Matching cells whose master nodes are moved by 1e-14 (any direction): the clip polygon
+  // keeps its vertices (no spurious intersection points near the shared edges), so the fan,
+  // the number of points and the points themselves stay put; the neighbour across an edge,
+  // now overlapping by a 1e-14 sliver, still gives nothing.
+  for (CellType t : {CellType::Tria3, CellType::Quad4, CellType::Tria6, CellType::Quad8}) {
+    const Cell s = stretched_cell(t);
+    auto perturb = [](Cell c) {
+      for (size_t k = 0; k < c.x.size(); ++k) c.x[k] += (k % 3 == 1 ? -1e-14 : 1e-14) * double(1 + k % 4);
+      return c;
+    };
+    std::vector<mortar::OverlapPoint> exact, moved, sliver;
+    overlap(s, reversed(s), 4, exact);
+    const double measure = overlap(s, perturb(reversed(s)), 4, moved);
+    EXPECT_NEAR(measure, local_measure(s), 1e-13 * local_measure(s)) << surface_type_name(t);
+    ASSERT_EQ(moved.size(), exact.size()) << surface_type_name(t);
+    for (size_t k = 0; k < exact.size(); ++k) {
+      EXPECT_NEAR(moved[k].w, exact[k].w, 1e-12 * local_measure(s));
+      for (int i = 0; i < 2; ++i) {
+        EXPECT_NEAR(moved[k].xi_s[i], exact[k].xi_s[i], 1e-12) << surface_type_name(t);
+        EXPECT_NEAR(moved[k].xi_m[i], exact[k].xi_m[i], 1e-12) << surface_type_name(t);
+      }
+    }
+    EXPECT_EQ(overlap(s, perturb(shifted_master(s, 0.5, 0.9 - 1e-14)), 4, sliver), 0.0) << surface_type_name(t);
+    EXPECT_TRUE(sliver.empty());
+  }
+}
+
+TEST(MortarOverlap, MillimetreCellsTileLikeMetreCells) {
+  // Every tolerance is relative to the cell size: the same meshes scaled by 1e-3.
+  Frame f = rotated_plane();
+  for (double& c : f.o) c *= 1e-3;
+  auto small = [](const std::function<P2(double, double)>& w) {
+    return [w](double X, double Y) {
+      const P2 p = w(X, Y);
+      return P2{1e-3 * p[0], 1e-3 * p[1]};
+    };
+  };
+  expect_tiling(grid(CellType::Quad4, 5, small(warp_a), f), reversed(grid(CellType::Tria6, 4, small(warp_b), f)), 2,
+                "mm QUAD4 5x5 / TRIA6 4x4");
+}
+
 TEST(MortarOverlap, NonMatchingFacesTileEverySlaveCell) {
   const Frame f = rotated_plane();
   expect_tiling(grid(CellType::Quad4, 5, warp_a, f), reversed(grid(CellType::Quad8, 4, warp_b, f)), 2,
