@@ -174,6 +174,7 @@ double overlap_2d(CellType st, const double* sx, CellType mt, const double* mx, 
   const SurfacePoint ps = surface_point(st, sx, centre), pm = surface_point(mt, mx, centre);
   if (!(ps.jacobian > 0.0) || !(pm.jacobian > 0.0) || dot3(ps.n, pm.n) >= 0.0) return 0.0;
   const double p0 = slave_foot(st, sx, mx), p1 = slave_foot(st, sx, mx + 3);
+  if (!std::isfinite(p0) || !std::isfinite(p1)) return 0.0;  // slave ends coincide
   const double a = std::max(-1.0, std::min(p0, p1)), b = std::min(1.0, std::max(p0, p1));
   if (!(b - a > 2e-12)) return 0.0;  // empty, or a sliver below 1e-12 of the slave length
   const size_t first = out.size();

@@ -497,6 +497,43 @@ TEST(MortarOverlap, CurvedMastersTileAFlatSlaveAlongItsNormal) {
     }
 }
 
+TEST(MortarOverlap, CurvedSlaveSegmentsAreSplitWhereTheMasterEndsProject) {
+  // Curved SEG3 slave cells (a parabola), straight masters beside them: every master point
+  // lies on the slave normal line of its slave point, and the pieces of each slave cell add
+  // up to its arc length (6-point Gauss per piece against 400 pieces of 6-point Gauss: the
+  // arc-length integrand is smooth, so both agree to rounding).
+  const Frame l = rotated_line();
+  auto arc = [](double X, double) { return 0.2 * X * X; };
+  const std::vector<Cell> slaves = segments(CellType::Seg3, uniform(4), l, arc);
+  Frame above = l;  // the same line moved by 0.3 along its normal, beyond the curve
+  for (int i = 0; i < 3; ++i) above.o[i] += 0.3 * l.e3[i];
+  const std::vector<Cell> masters = reversed(segments(CellType::Seg2, graded(7), above));
+  const auto gauss = contact_integration_rule(CellType::Seg2, IntegrationScheme::Gauss, 6);
+  for (const Cell& s : slaves) {
+    double reference = 0.0;
+    const int pieces = 400;
+    for (int k = 0; k < pieces; ++k)
+      for (const auto& g : gauss) {
+        const double xi[2] = {-1.0 + (2.0 * k + 1.0 + g.xi[0]) / pieces, 0.0};
+        reference += g.weight / pieces * surface_point(CellType::Seg3, s.x.data(), xi).jacobian;
+      }
+    double total = 0.0;
+    for (const Cell& m : masters) {
+      std::vector<mortar::OverlapPoint> pts;
+      total += overlap(s, m, 11, pts);
+      for (const auto& p : pts) {
+        const SurfacePoint sp = surface_point(CellType::Seg3, s.x.data(), p.xi_s);
+        double xm[3];
+        position(m, p.xi_m, xm);
+        const double d[3] = {xm[0] - sp.x[0], xm[1] - sp.x[1], xm[2] - sp.x[2]};
+        EXPECT_LE(std::abs(d[0] * sp.t[0][0] + d[1] * sp.t[0][1]), 1e-14);
+        EXPECT_GT(d[0] * sp.n[0] + d[1] * sp.n[1], 0.05);
+      }
+    }
+    EXPECT_NEAR(total, reference, 1e-13 * reference);
+  }
+}
+
 // ---------------------------------------------------------------------------------------
 // Exact integration of products of slave and master shape functions.
 
