@@ -1,6 +1,8 @@
 #include "catalog/common/keywords.hpp"
 #include "catalog/specs.hpp"
 
+#include <algorithm>
+
 namespace lunaster::catalog {
 
 namespace {
@@ -16,7 +18,7 @@ Keyword behaviour(const std::string& name, const std::string& doc) {
 }
 
 std::vector<Keyword> keywords(bool meca_non_line) {
-  return {
+  std::vector<Keyword> kws = {
       concept_kw("MODELE", {"modele"}, "Model").required(),
       concept_kw("CHAM_MATER", {"cham_mater"}, "Material field").required(),
       factor("EXCIT",
@@ -69,6 +71,10 @@ std::vector<Keyword> keywords(bool meca_non_line) {
           .by_default(),
       common::info(),
   };
+  // COMP_ELAS is the seed's STAT_NON_LINE spelling; code_aster 17's MECA_NON_LINE has none.
+  if (meca_non_line)
+    kws.erase(std::remove_if(kws.begin(), kws.end(), [](const Keyword& k) { return k.name == "COMP_ELAS"; }), kws.end());
+  return kws;
 }
 
 }  // namespace
@@ -85,7 +91,7 @@ const CommandSpec& meca_non_line_spec() {
       "MECA_NON_LINE", "evol_noli",
       "Quasi-static nonlinear analysis, code_aster 17 spelling of STAT_NON_LINE (same engine, same results; "
       "CONTACT=_F(DEFINITION=...))",
-      keywords(true), {at_most_one({"COMP_ELAS", "COMPORTEMENT"})});
+      keywords(true), {});
   return spec;
 }
 

@@ -63,7 +63,7 @@ void save_converged_steps(const std::vector<engine::ResultStep>& steps, const en
 /// occurrence names must exist in the model's mesh all the same.
 void check_behaviour(const Args& args, const engine::Mesh& mesh) {
   for (const char* kw : {"COMP_ELAS", "COMPORTEMENT"})
-    for (const auto& occ : args.factors(kw)) {
+    for (const auto& occ : args.declares(kw) ? args.factors(kw) : std::vector<Args>{}) {
       if (occ.text("RELATION") != "ELAS")
         throw occ.error("RELATION", "'ELAS' (the only behaviour lunaster implements)", "'" + occ.text("RELATION") + "'");
       select_cells(occ, mesh);  // TOUT / GROUP_MA: unknown or empty groups are errors

@@ -100,7 +100,7 @@ class MortarProblem final : public ContactHook {
   std::vector<double> current_coordinates(const Vector& u) const;
   /// Builds the rows from the configuration u (statuses kept for nodes still paired).
   std::vector<MortarRow> build_rows(const Vector& u, std::vector<std::vector<std::pair<int, double>>>& masters,
-                                    int& n_dropped) const;
+                                    int& n_whole_cell) const;
   void pair(const Vector& u, const Log* log);
   void update_pressures(const Vector& residual);
   int update_statuses(const Vector& u);
