@@ -6,7 +6,7 @@
 --            on the slave nodes: it is checked at E and F (the ends of EF; EF has no node at x = 0)
 --            and by MIN/MAX over EF; DY at A, O, B, E, F. Every check at 1e-8. Units SI.
 -- code_aster's discrete CONTRAINTE method on this scene is off by 6 % in SIYY at A, B.
--- What we get: every value within 2.0e-14 (relative) of the analytical one.
+-- What we get: every value within 1.5e-14 (relative) of the analytical one.
 -- Runtime label: fast, contact.
 DEBUT()
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'ssnp121a.med' }

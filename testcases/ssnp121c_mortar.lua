@@ -8,7 +8,7 @@
 --            LAGS_C = SIYY = -p, DY = -0.1 + p/E on AB and -p/E on EF (they overlap by p/COEF_CONT);
 --            all at 1e-8. LAGS_C is also checked against the unpenalised -1e5 with PRECISION =
 --            E/(2 COEF_CONT) + 1 % = 1.01e-6: the penalty floor, and no worse. Units SI.
--- What we get: every value within 4.4e-10 of the exact penalised one (COEF_CONT is 5e5 E per metre:
+-- What we get: every value within 2.5e-10 of the exact penalised one (COEF_CONT is 5e5 E per metre:
 -- the conditioning costs that much round-off), LAGS_C 1.000e-6 from -1e5.
 -- Runtime label: fast, contact.
 DEBUT()
