@@ -1,7 +1,7 @@
 -- Must-fail deck: a mortar slave node under an imposed displacement along the contact normal (here
 -- DY = 0 on every node of the slave edge AB, whose normal is -y): the weighted-gap condition and the
 -- imposed value cannot both hold. The error names the node and the component and says what to do.
--- EXPECT_ERROR: mortar_slave_normal_imposed\.lua:21: STAT_NON_LINE: slave node N1 of contact zone 1 has an imposed displacement DY along the normal to the contact surface
+-- EXPECT_ERROR: mortar_slave_normal_imposed\.lua:21: STAT_NON_LINE: slave node N1 of contact zone 1 \(slave 'AB', master 'EF'\) has an imposed displacement DY along the normal to the contact surface
 -- EXPECT_ERROR: remove the node from the slave group \(or from the imposed displacement\)
 -- EXPECT_STATUS: 2
 DEBUT()

@@ -1,7 +1,7 @@
 -- Must-fail deck: a mortar slave group that is not a boundary of the model. On the glued mesh
 -- (interface nodes shared by both blocks) the cells of AB lie between a cell of PLAQUE1 and a cell of
 -- PLAQUE2: an interior line, not a contact surface.
--- EXPECT_ERROR: mortar_slave_not_boundary\.lua:20: STAT_NON_LINE: contact zone 1: slave cell M1 lies between two cells of the model
+-- EXPECT_ERROR: mortar_slave_not_boundary\.lua:16: DEFI_CONT: contact zone 1 \(slave 'AB', master 'EF'\): slave cell M1 lies between two cells of the model
 -- EXPECT_ERROR: a slave surface must be a boundary of the model
 -- EXPECT_STATUS: 2
 DEBUT()

@@ -2,8 +2,8 @@
 -- upper block, normal -y) against GH (bottom of the lower block, normal -y, one metre below). No
 -- slave cell overlaps a master cell facing it: the run stops at the first pairing instead of
 -- computing without contact.
--- EXPECT_ERROR: mortar_surfaces_not_facing\.lua:21: STAT_NON_LINE: mortar contact: no slave cell of zone\(s\) 1 overlaps a master cell facing it
--- EXPECT_ERROR: the slave and master surfaces do not face each other
+-- EXPECT_ERROR: mortar_surfaces_not_facing\.lua:21: STAT_NON_LINE: contact zone 1 \(slave 'AB', master 'GH'\): no slave cell overlaps a master cell facing it
+-- EXPECT_ERROR: give the slave and master groups as the two sides of one interface
 -- EXPECT_STATUS: 2
 DEBUT()
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = '../ssnp121a.med' }
