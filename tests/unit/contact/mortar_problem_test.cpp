@@ -84,6 +84,23 @@ TEST(MortarProblem, NonMatchingPatchTestIsExactAndSolvedByCholesky) {
   EXPECT_LE(run.stats.factorisations, 2);
 }
 
+TEST(MortarProblem, ASlaveNodeOfTwoZonesIsRefused) {
+  // AB split into its left and right halves, each a zone against EF: the node at x = 0 ends a
+  // cell of each zone and would carry two conditions.
+  const TwoBlocks tb = make_two_blocks(12, 11, false);
+  ContactDefinition def = mortar_definition(tb, ContactMethod::MortarLagrange, ContactInit::Yes, 100.0);
+  ContactZone right = def.zones[0];
+  def.zones[0].slave_cells.assign(tb.ab.begin(), tb.ab.begin() + 6);
+  right.slave_cells.assign(tb.ab.begin() + 6, tb.ab.end());
+  def.zones.push_back(right);
+  try {
+    MortarProblem hook(def, tb.mesh, 2);
+    FAIL() << "a slave node in two zones was accepted";
+  } catch (const lunaster::DeckError& e) {
+    EXPECT_NE(std::string(e.what()).find("belongs to contact zones 1 and 2"), std::string::npos) << e.what();
+  }
+}
+
 TEST(MortarProblem, QuadraticMasterIsExact) {
   const TwoBlocks tb = make_two_blocks(12, 11, true);
   const FeModel model = make_model(tb.mesh, 2e6, 0.0);
