@@ -1,6 +1,8 @@
 #include "catalog/common/keywords.hpp"
 #include "catalog/specs.hpp"
 
+#include <algorithm>
+
 namespace lunaster::catalog {
 
 namespace {
@@ -15,8 +17,8 @@ Keyword behaviour(const std::string& name, const std::string& doc) {
       .with_rules({at_most_one({"TOUT", "GROUP_MA"})});
 }
 
-std::vector<Keyword> keywords() {
-  return {
+std::vector<Keyword> keywords(bool meca_non_line) {
+  std::vector<Keyword> kws = {
       concept_kw("MODELE", {"modele"}, "Model").required(),
       concept_kw("CHAM_MATER", {"cham_mater"}, "Material field").required(),
       factor("EXCIT",
@@ -24,7 +26,9 @@ std::vector<Keyword> keywords() {
               concept_kw("FONC_MULT", {"fonction"}, "Time multiplier of the load (default: 1 at every time)")},
              "Loads applied")
           .occurs(0, -1),
-      concept_kw("CONTACT", {"char_contact"}, "Contact definition from DEFI_CONTACT"),
+      meca_non_line ? factor("CONTACT", {concept_kw("DEFINITION", {"char_contact"}, "Contact definition from DEFI_CONT or DEFI_CONTACT").required()},
+                             "Contact (code_aster 17 spelling)")
+                    : concept_kw("CONTACT", {"char_contact"}, "Contact definition from DEFI_CONTACT or DEFI_CONT"),
       behaviour("COMP_ELAS", "Behaviour (seed syntax; same as COMPORTEMENT)").legacy(),
       behaviour("COMPORTEMENT", "Behaviour (default: linear elasticity everywhere)"),
       factor("INCREMENT",
@@ -67,14 +71,27 @@ std::vector<Keyword> keywords() {
           .by_default(),
       common::info(),
   };
+  // COMP_ELAS is the seed's STAT_NON_LINE spelling; code_aster 17's MECA_NON_LINE has none.
+  if (meca_non_line)
+    kws.erase(std::remove_if(kws.begin(), kws.end(), [](const Keyword& k) { return k.name == "COMP_ELAS"; }), kws.end());
+  return kws;
 }
 
 }  // namespace
 
 const CommandSpec& stat_non_line_spec() {
   static const CommandSpec spec = make_command(
-      "STAT_NON_LINE", "evol_noli", "Quasi-static nonlinear analysis (Newton, contact)", keywords(),
+      "STAT_NON_LINE", "evol_noli", "Quasi-static nonlinear analysis (Newton, contact)", keywords(false),
       {at_most_one({"COMP_ELAS", "COMPORTEMENT"})});
+  return spec;
+}
+
+const CommandSpec& meca_non_line_spec() {
+  static const CommandSpec spec = make_command(
+      "MECA_NON_LINE", "evol_noli",
+      "Quasi-static nonlinear analysis, code_aster 17 spelling of STAT_NON_LINE (same engine, same results; "
+      "CONTACT=_F(DEFINITION=...))",
+      keywords(true), {});
   return spec;
 }
 

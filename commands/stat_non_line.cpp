@@ -63,7 +63,7 @@ void save_converged_steps(const std::vector<engine::ResultStep>& steps, const en
 /// occurrence names must exist in the model's mesh all the same.
 void check_behaviour(const Args& args, const engine::Mesh& mesh) {
   for (const char* kw : {"COMP_ELAS", "COMPORTEMENT"})
-    for (const auto& occ : args.factors(kw)) {
+    for (const auto& occ : args.declares(kw) ? args.factors(kw) : std::vector<Args>{}) {
       if (occ.text("RELATION") != "ELAS")
         throw occ.error("RELATION", "'ELAS' (the only behaviour lunaster implements)", "'" + occ.text("RELATION") + "'");
       select_cells(occ, mesh);  // TOUT / GROUP_MA: unknown or empty groups are errors
@@ -85,7 +85,9 @@ void read_newton(const Args& newton, bool has_contact, engine::NewtonOptions& op
 
 }  // namespace
 
-ConceptPtr stat_non_line(const Args& args, Session& session) {
+namespace {
+
+ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_line) {
   auto result = std::make_shared<EvolNoli>();
   result->modele = args.concept_as<Modele>("MODELE");
   result->cham_mater = args.concept_as<ChamMater>("CHAM_MATER");
@@ -116,9 +118,12 @@ ConceptPtr stat_non_line(const Args& args, Session& session) {
     }
   }
   std::shared_ptr<CharContact> defi_contact;
-  if (args.has("CONTACT")) {
+  if (meca_non_line ? !args.factors("CONTACT").empty() : args.has("CONTACT")) {
     if (contact) throw args.error("CONTACT", "a single contact definition", "one here and one in " + contact_source);
-    defi_contact = args.concept_as<CharContact>("CONTACT");
+    defi_contact = meca_non_line ? args.factor("CONTACT").concept_as<CharContact>("DEFINITION")
+                                 : args.concept_as<CharContact>("CONTACT");
+    if (defi_contact->modele != result->modele)
+      throw args.error("CONTACT", "a contact definition on MODELE", "'" + defi_contact->user_name + "' defined on another model");
     contact = &defi_contact->contact;
   }
 
@@ -135,7 +140,11 @@ ConceptPtr stat_non_line(const Args& args, Session& session) {
   const std::vector<double> times = instants(args.factor("INCREMENT"), options);
 
   std::unique_ptr<engine::ContactHook> hook;
-  if (contact) hook = engine::make_contact_hook(*contact, *model.mesh, model.dim);
+  if (contact) {
+    engine::ContactDefinition definition = *contact;
+    for (const auto& m : model.materials) definition.modulus = std::max(definition.modulus, m.young);
+    hook = engine::make_contact_hook(definition, *model.mesh, model.dim);
+  }
   engine::StaticSolver solver(model, loads, options, hook.get(), session.log());
   {
     Session::Timer timer(session, "solve");
@@ -154,5 +163,10 @@ ConceptPtr stat_non_line(const Args& args, Session& session) {
   result->stats = solver.stats();
   return result;
 }
+
+}  // namespace
+
+ConceptPtr stat_non_line(const Args& args, Session& session) { return nonlinear_analysis(args, session, false); }
+ConceptPtr meca_non_line(const Args& args, Session& session) { return nonlinear_analysis(args, session, true); }
 
 }  // namespace lunaster::cmd

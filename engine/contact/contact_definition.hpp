@@ -10,6 +10,8 @@ enum class ContactMethod {
   ContinuousPenalty, ///< FORMULATION='CONTINUE', ALGO_CONT='PENALISATION'
   DiscreteLagrange,  ///< METHODE='CONTRAINTE' / FORMULATION='DISCRETE', ALGO_CONT='CONTRAINTE'
   DiscretePenalty,   ///< METHODE='PENALISATION' / ALGO_CONT='PENALISATION'
+  MortarLagrange,    ///< DEFI_CONT APPARIEMENT='MORTAR', ALGO_CONT='LAGRANGIEN' (mortar_problem.hpp)
+  MortarPenalty,     ///< DEFI_CONT APPARIEMENT='MORTAR', ALGO_CONT='PENALISATION'
 };
 
 enum class IntegrationScheme { Auto, Gauss, Simpson, NewtonCotes, Nodes };
@@ -28,6 +30,8 @@ struct ContactZone {
   double coef_pena = 0.0;        ///< E_N or COEF_PENA_CONT
   ContactInit init = ContactInit::Interpenetrated;
   double tole_proj_ext = 0.5;    ///< TOLE_PROJ_EXT: accepted projection distance outside a master cell (reference units)
+  double dist_mait = 0.0;        ///< DIST_MAIT: thickness added to the master surface (m, mortar)
+  double dist_escl = 0.0;        ///< DIST_ESCL: thickness added to the slave surface (m, mortar)
 };
 
 struct ContactDefinition {
@@ -40,6 +44,7 @@ struct ContactDefinition {
   int iter_geom_maxi = 10;
   int nb_iter_geom = 2;      ///< with REAC_GEOM='CONTROLE'
   double resi_geom = 0.01;
+  double modulus = 0.0;      ///< largest Young's modulus of the model (Pa; scales mortar's complementarity constant)
 };
 
 }  // namespace lunaster::engine

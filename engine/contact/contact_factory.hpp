@@ -10,6 +10,8 @@
 /// | ContinuousPenalty  | integration points                  | penalty (Pa/m)        |
 /// | DiscreteLagrange   | node to segment                     | active set            |
 /// | DiscretePenalty    | node to segment                     | penalty (N/m per node)|
+/// Mortar (MortarLagrange, MortarPenalty) is its own hook, mortar_problem.hpp: its conditions
+/// are weighted gaps per slave node, and its Lagrange law eliminates them from the solve.
 /// Unknowns: LAGS_C (Component::LAGS_C) on the slave nodes for every law but the nodal
 /// penalty (vertices only for node-to-segment). LAGS_C is in Pa, negative in compression.
 /// Fields: write_fields adds the nodal field "CONT_NOEU" on slave nodes with

@@ -263,22 +263,43 @@ std::vector<int> StaticSolver::eliminate(const Constraints& cons, const std::vec
   for (size_t i = 0; i < relations.size(); ++i)
     for (const auto& [k, a] : relations[i].terms)
       if (cons.free_index[k] >= 0) r_free[cons.free_index[k]] += a * rb[relations[i].eq];
-  for (size_t i = 0; i < relations.size(); ++i) {
-    const auto& terms = relations[i].terms;
-    for (const auto& [row, v] : column[i]) {
-      if (cons.free_index[row] < 0) continue;
-      const int other = index_of[row];
-      if (other < 0) {
-        for (const auto& [k, a] : terms) {  // K_RE A and A^T K_ER
-          triplets.emplace_back(row, k, v * a);
-          triplets.emplace_back(k, row, a * v);
-        }
+  // The fill as sparse products, which sum the contributions of neighbouring relations
+  // (one triplet per product term would be tens of millions in 3D): with KE the columns of K
+  // at E (rows over the whole numbering) and A the relations' coefficients,
+  // P = KE A holds K_RE A in its R rows and K_EE A in its E rows; then K' - K_RR =
+  // P_R + P_R^T + A^T P_E.
+  const int m = static_cast<int>(relations.size());
+  std::vector<Triplet> t;
+  for (int i = 0; i < m; ++i)
+    for (const auto& [row, v] : column[i])
+      if (cons.free_index[row] >= 0) t.emplace_back(row, i, v);
+  SparseMatrix ke(n, m);
+  ke.setFromTriplets(t.begin(), t.end());
+  t.clear();
+  for (int i = 0; i < m; ++i)
+    for (const auto& [k, a] : relations[i].terms)
+      if (cons.free_index[k] >= 0) t.emplace_back(i, k, a);
+  SparseMatrix a(m, n);
+  a.setFromTriplets(t.begin(), t.end());
+  std::vector<Triplet>().swap(t);
+  const SparseMatrix p = ke * a;  // n x n, column-major
+  // P_E as an m x n matrix (its rows at the eliminated equations), then A^T P_E.
+  std::vector<Triplet> pe;
+  for (int k = 0; k < p.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(p, k); it; ++it) {
+      const int row = static_cast<int>(it.row());
+      if (index_of[row] >= 0) {
+        pe.emplace_back(index_of[row], k, it.value());
       } else {
-        for (const auto& [l, b] : relations[other].terms)  // A^T K_EE A
-          for (const auto& [k, a] : terms) triplets.emplace_back(l, k, b * v * a);
+        triplets.emplace_back(row, k, it.value());
+        triplets.emplace_back(k, row, it.value());
       }
     }
-  }
+  SparseMatrix pe_m(m, n);
+  pe_m.setFromTriplets(pe.begin(), pe.end());
+  const SparseMatrix s = SparseMatrix(a.transpose()) * pe_m;
+  for (int k = 0; k < s.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(s, k); it; ++it) triplets.emplace_back(static_cast<int>(it.row()), k, it.value());
   return eqs;
 }
 

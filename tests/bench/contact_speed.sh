@@ -15,6 +15,9 @@
 #   elas3d        SSNP121 3D geometry, HEXA8 20x20x4 under HEXA20 16x16x4, interface displacement imposed
 #   cont3d        the same mesh in contact, CONTINUE, SIMPSON ORDRE_INT=4
 #   elas2d_1inst / elas2d_10inst   glued k=16, 1 instant against 10 instants of the same ramp
+#   mortar2d_k16 / mortar2d_k32    the cont2d meshes with mortar contact (DEFI_CONT, LAGRANGIEN, CONTACT_INIT='OUI')
+#   mortar2d_k16_init_non          the same with CONTACT_INIT='NON' (a first solve without contact)
+#   mortar3d      the cont3d mesh with mortar contact (CONTACT_INIT='OUI')
 set -euo pipefail
 runs=3; cases="glued2d_k16,cont2d_k16,elas3d,cont3d"
 while getopts "r:c:" opt; do case $opt in r) runs=$OPTARG ;; c) cases=$OPTARG ;; *) exit 2 ;; esac; done
@@ -27,8 +30,14 @@ gen="$(dirname "${bins[0]}")/lunaster-meshgen"
 work=$(mktemp -d); [ -n "${KEEP:-}" ] && echo "work: $work" >&2 || trap 'rm -rf "$work"' EXIT
 
 mesh2d() { [ -f "$work/$1.med" ] || "$gen" "${@:2}" -o "$work/$1.med" >/dev/null; }
-deck2d() {  # name mesh contact(0/1) n_instants
+deck2d() {  # name mesh contact(0/1/mortar/mortar_non) n_instants
   local contact="" excit="EXCIT = _F{ CHARGE = CH }"
+  if [ "$3" = mortar ] || [ "$3" = mortar_non ]; then
+    local init=OUI; [ "$3" = mortar_non ] && init=NON
+    contact="CONT = DEFI_CONT{ MODELE = MO, ZONE = _F{ APPARIEMENT = 'MORTAR', GROUP_MA_ESCL = 'AB', GROUP_MA_MAIT = 'EF',
+             ALGO_CONT = 'LAGRANGIEN', CONTACT_INIT = '$init' } }"
+    excit="CONTACT = CONT, EXCIT = _F{ CHARGE = CH }"
+  fi
   if [ "$3" = 1 ]; then
     contact="CONT = DEFI_CONTACT{ MODELE = MO, FORMULATION = 'CONTINUE', REAC_GEOM = 'CONTROLE', NB_ITER_GEOM = 2,
   ZONE = _F{ GROUP_MA_ESCL = 'AB', GROUP_MA_MAIT = 'EF', INTEGRATION = 'SIMPSON', ORDRE_INT = 4,
@@ -53,9 +62,13 @@ TEST_RESU{ RESU = _F{ RESULTAT = R, NUME_ORDRE = $4, NOM_CHAM = 'DEPL', GROUP_NO
 FIN()
 LUA
 }
-deck3d() {  # name contact(0/1)
+deck3d() {  # name contact(0/1/mortar)
   local bc="" contact="" excit="EXCIT = _F{ CHARGE = CH }"
-  if [ "$2" = 1 ]; then
+  if [ "$2" = mortar ]; then
+    contact="CONT = DEFI_CONT{ MODELE = MO, ZONE = _F{ APPARIEMENT = 'MORTAR', GROUP_MA_ESCL = 'SURESC',
+             GROUP_MA_MAIT = 'SURMAI', ALGO_CONT = 'LAGRANGIEN', CONTACT_INIT = 'OUI' } }"
+    excit="CONTACT = CONT, EXCIT = _F{ CHARGE = CH }"
+  elif [ "$2" = 1 ]; then
     contact="CONT = DEFI_CONTACT{ MODELE = MO, FORMULATION = 'CONTINUE',
   ZONE = _F{ GROUP_MA_ESCL = 'SURESC', GROUP_MA_MAIT = 'SURMAI', INTEGRATION = 'SIMPSON', ORDRE_INT = 4,
              CONTACT_INIT = 'INTERPENETRE', COEF_CONT = 1000.0 } }"
@@ -92,6 +105,10 @@ for c in "${list[@]}"; do
     elas2d_10inst) mesh2d g16 --upper quad4:184 --lower quad4:184 --glued; deck2d "$c" g16 0 10 ;;
     elas3d) mesh2d mesh3d --v1 hexa8:5x5x1 --v2 hexa20:4x4x1 --refine 4; deck3d "$c" 0 ;;
     cont3d) mesh2d mesh3d --v1 hexa8:5x5x1 --v2 hexa20:4x4x1 --refine 4; deck3d "$c" 1 ;;
+    mortar2d_k16) mesh2d c16 --upper quad4:12 --lower quad4:11 --refine 16; deck2d "$c" c16 mortar 1 ;;
+    mortar2d_k16_init_non) mesh2d c16 --upper quad4:12 --lower quad4:11 --refine 16; deck2d "$c" c16 mortar_non 1 ;;
+    mortar2d_k32) mesh2d c32 --upper quad4:12 --lower quad4:11 --refine 32; deck2d "$c" c32 mortar 1 ;;
+    mortar3d) mesh2d mesh3d --v1 hexa8:5x5x1 --v2 hexa20:4x4x1 --refine 4; deck3d "$c" mortar ;;
     *) echo "$0: unknown case $c" >&2; exit 2 ;;
   esac
 done

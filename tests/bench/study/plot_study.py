@@ -48,10 +48,12 @@ def save(fig, docs, name):
 def style(method):
     colors = {"CONTINUE-GAUSS": "#1f77b4", "CONTINUE-SIMPSON": "#2ca02c", "CONTINUE-NCOTES": "#17becf",
               "CONTRAINTE": "#d62728", "PENALISATION-1e7": "#ff7f0e", "PENALISATION-1e9": "#e377c2",
-              "PENALISATION-1e11": "#8c564b"}
+              "PENALISATION-1e11": "#8c564b", "MORTAR": "#bcbd22", "MORTAR-PEN-1e11": "#393b79"}
     if method.startswith("CalculiX"):
         c = {"NTS": "#7f7f7f", "STS": "#000000", "MORTAR": "#9467bd"}[method.split("-")[1]]
         return dict(color=c, ls="--", marker="s" if "1e11" in method else "D", mfc="white")
+    if method.startswith("MORTAR"):
+        return dict(color=colors.get(method, "#333333"), ls="-", marker="*", ms=9)
     return dict(color=colors.get(method, "#333333"), ls="-", marker="o")
 
 

@@ -6,7 +6,7 @@
 -- Exact solution (both dimensions): uniform strain -0.05, contact pressure -1e5 Pa,
 -- interface displacement -0.05 m. Error columns (relative, max over the nodes):
 --   err_p      the method's contact pressure over the slave surface
---              (CONTINUE: LAGS_C; discrete: CONT_NOEU PRES)
+--              (CONTINUE and MORTAR: LAGS_C; discrete: CONT_NOEU PRES)
 --   err_sig    the normal stress SIGM_NOEU (SIYY 2D, SIZZ 3D) over both interface sides
 --   err_A/O/B  contact pressure at the points A, O, B of AB (CONTINUE: LAGS_C,
 --              discrete: SIGM_NOEU SIYY as in code_aster's SSNP121 B/C); 3D: A21/A22/A23
@@ -25,6 +25,8 @@ function M.methods()
     { name = 'PENALISATION-1e7', kind = 'PENALISATION', e_n = 1.0e7 },
     { name = 'PENALISATION-1e9', kind = 'PENALISATION', e_n = 1.0e9 },
     { name = 'PENALISATION-1e11', kind = 'PENALISATION', e_n = 1.0e11 },
+    { name = 'MORTAR', kind = 'MORTAR', algo = 'LAGRANGIEN', init = 'INTERPENETRE' },
+    { name = 'MORTAR-PEN-1e11', kind = 'MORTAR', algo = 'PENALISATION', coef = 1.0e11, init = 'INTERPENETRE' },
   }
 end
 
@@ -56,6 +58,13 @@ local function contact_of(mo, m, sc)
                                 INTEGRATION = 'NOEUD', COEF_CONT = m.coef, CONTACT_INIT = m.init or 'NON',
                                 ALGO_RESO_CONT = 'POINT_FIXE', ALGO_RESO_GEOM = 'POINT_FIXE', REAC_GEOM = 'CONTROLE',
                                 NB_ITER_GEOM = 2 } }, slave
+  end
+  if m.kind == 'MORTAR' then
+    local slave, master = m.slave or sc.upper_face, m.master or sc.lower_face
+    local zone = { APPARIEMENT = 'MORTAR', GROUP_MA_ESCL = slave, GROUP_MA_MAIT = master, ALGO_CONT = m.algo,
+                   CONTACT_INIT = m.init or 'INTERPENETRE' }
+    if m.coef then zone.COEF_CONT = m.coef end
+    return DEFI_CONT{ MODELE = mo, ZONE = _F(zone) }, nil, slave
   end
   if m.kind == 'CONTINUE' then
     local slave, master = m.slave or sc.upper_face, m.master or sc.lower_face
@@ -110,14 +119,14 @@ end
 --- The error columns of a result.
 local function errors(sc, m, slave, with_points)
   local p_cham, p_cmp = 'CONT_NOEU', 'PRES'
-  if m.kind == 'CONTINUE' then p_cham, p_cmp = 'DEPL', 'LAGS_C' end
+  if m.kind == 'CONTINUE' or m.kind == 'MORTAR' then p_cham, p_cmp = 'DEPL', 'LAGS_C' end
   local faces = { sc.upper_face, sc.lower_face }
   local e = {
     _F{ NOM = 'err_p', NOM_CHAM = p_cham, NOM_CMP = p_cmp, GROUP_MA = slave, VALE_REFE = M.P },
     _F{ NOM = 'err_sig', NOM_CHAM = 'SIGM_NOEU', NOM_CMP = sc.sig, GROUP_MA = faces, VALE_REFE = M.P },
   }
   local point_cham, point_cmp = 'SIGM_NOEU', sc.sig
-  if m.kind == 'CONTINUE' and (m.slave == nil or m.slave == sc.upper_face) then
+  if (m.kind == 'CONTINUE' or m.kind == 'MORTAR') and (m.slave == nil or m.slave == sc.upper_face) then
     point_cham, point_cmp = 'DEPL', 'LAGS_C'
   end
   for i, name in ipairs(with_points and { 'err_A', 'err_O', 'err_B' } or {}) do

@@ -45,6 +45,7 @@ const std::map<std::string, std::string> kValidatorOnly = {
     {"DEFI_LIST_INST/ECHEC/SUBD_METHODE", "only 'MANUEL': a failed step is cut into SUBD_PAS equal steps"},
     {"STAT_NON_LINE/COMPORTEMENT/DEFORMATION", "only 'PETIT': small strains"},
     {"STAT_NON_LINE/COMP_ELAS/DEFORMATION", "only 'PETIT': small strains"},
+    {"MECA_NON_LINE/COMPORTEMENT/DEFORMATION", "only 'PETIT': small strains"},
 };
 
 /// Keywords accepted so that code_aster decks run, without effect in lunaster (their catalogue
@@ -57,6 +58,8 @@ const std::map<std::string, std::string> kCompatibilityOnly = {
     {"AFFE_MODELE/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
     {"CALC_CHAMP/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
     {"DEFI_CONTACT/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
+    {"DEFI_CONT/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
+    {"MECA_NON_LINE/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
     {"DEFI_FONCTION/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
     {"DEFI_GROUP/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
     {"LIRE_MAILLAGE/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},

@@ -1,0 +1,193 @@
+// Mortar contact through the production Newton driver: the SSNP121 2D scene on
+// non-matching meshes (exact to round-off), quadratic master, bimaterial, rotated scene,
+// penalty floor, the SPD system, and an active set that has to move.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "engine/contact/mortar_problem.hpp"
+#include "two_blocks.hpp"
+
+namespace {
+
+using namespace contact_test;
+using lunaster::engine::contact::MortarProblem;
+
+ContactDefinition mortar_definition(const TwoBlocks& tb, ContactMethod method, ContactInit init, double coef) {
+  ContactDefinition def;
+  def.method = method;
+  ContactZone zone;
+  zone.slave_cells = tb.ab;
+  zone.master_cells = tb.ef;
+  zone.init = init;
+  zone.coef_cont = coef;
+  def.zones.push_back(zone);
+  def.modulus = 2e6;
+  return def;
+}
+
+struct MortarRun {
+  SolveResult result;
+  NodalField depl;
+  SolverStats stats;
+  std::string log;
+};
+
+MortarRun run_mortar(const FeModel& model, const std::vector<Imposed>& imposed, MortarProblem& hook) {
+  std::ostringstream out;
+  lunaster::Log log(out, 1);
+  MechanicalLoads loads;
+  loads.multipliers.push_back([](double t) { return t; });
+  for (const auto& d : imposed) loads.dirichlet.push_back({d.node, d.component, d.value, 0});
+  NewtonOptions options;
+  options.resi_glob_rela = 1e-10;
+  options.iter_glob_maxi = 25;
+  options.solver = SolverKind::Cholmod;
+  StaticSolver solver(model, loads, options, &hook, log);
+  const std::vector<ResultStep> steps = solver.run({0.0, 1.0});
+  MortarRun run;
+  run.result.dofs = solver.dofs();
+  run.depl = steps.back().nodal.at("DEPL");
+  run.stats = solver.stats();
+  run.log = out.str();
+  return run;
+}
+
+double component(const MortarRun& r, int node, const char* cmp) {
+  return r.depl.value(node, r.depl.component_index(cmp));
+}
+
+/// Largest relative error of LAGS_C and DY over the slave nodes against the uniform solution.
+void expect_uniform(const MortarRun& run, const MortarProblem& hook, double pressure, double dy, double tol) {
+  ASSERT_FALSE(hook.rows().empty());
+  double worst_p = 0.0, worst_u = 0.0;
+  for (const auto& row : hook.rows()) {
+    worst_p = std::max(worst_p, std::abs(component(run, row.node, "LAGS_C") - pressure) / std::abs(pressure));
+    worst_u = std::max(worst_u, std::abs(component(run, row.node, "DY") - dy) / std::abs(dy));
+  }
+  EXPECT_LT(worst_p, tol);
+  EXPECT_LT(worst_u, tol);
+}
+
+TEST(MortarProblem, NonMatchingPatchTestIsExactAndSolvedByCholesky) {
+  const TwoBlocks tb = make_two_blocks(12, 11, false);
+  const FeModel model = make_model(tb.mesh, 2e6, 0.0);
+  MortarProblem hook(mortar_definition(tb, ContactMethod::MortarLagrange, ContactInit::No, 100.0), tb.mesh, 2);
+  const MortarRun run = run_mortar(model, displacement_bcs(tb), hook);
+  EXPECT_EQ(hook.rows().size(), 13u);  // every slave node of AB is covered
+  expect_uniform(run, hook, -1e5, -0.05, 1e-11);
+  // The eliminated system is SPD: CHOLMOD factorised it, MUMPS was never called in.
+  EXPECT_EQ(run.log.find("MUMPS"), std::string::npos) << run.log;
+  // CONTACT_INIT='NON': one solve without contact, one with the settled active set.
+  EXPECT_LE(run.stats.factorisations, 2);
+}
+
+TEST(MortarProblem, QuadraticMasterIsExact) {
+  const TwoBlocks tb = make_two_blocks(12, 11, true);
+  const FeModel model = make_model(tb.mesh, 2e6, 0.0);
+  MortarProblem hook(mortar_definition(tb, ContactMethod::MortarLagrange, ContactInit::Yes, 100.0), tb.mesh, 2);
+  const MortarRun run = run_mortar(model, displacement_bcs(tb), hook);
+  expect_uniform(run, hook, -1e5, -0.05, 1e-11);
+  EXPECT_EQ(run.stats.factorisations, 1);  // CONTACT_INIT='OUI': the active set is right from the start
+}
+
+TEST(MortarProblem, BimaterialPatchTestIsExact) {
+  const TwoBlocks tb = make_two_blocks(7, 12, false);
+  FeModel model = make_model(tb.mesh, 2e6, 0.0);
+  model.materials.push_back({6e6, 0.0, 0.0});
+  for (int c = 0; c < tb.mesh.n_cells(); ++c) {
+    if (model.material[c] < 0) continue;
+    const int* nodes = tb.mesh.cell(c);
+    double y = 0.0;
+    for (int a = 0; a < 4; ++a) y += tb.mesh.node(nodes[a])[1] / 4;
+    if (y < 0.0) model.material[c] = 1;  // lower block three times stiffer
+  }
+  ContactDefinition def = mortar_definition(tb, ContactMethod::MortarLagrange, ContactInit::Interpenetrated, 100.0);
+  def.modulus = 6e6;
+  MortarProblem hook(def, tb.mesh, 2);
+  const MortarRun run = run_mortar(model, displacement_bcs(tb), hook);
+  // Springs in series: p = 0.1 / (1/E1 + 1/E2); the interface moves by -p/E2.
+  const double p = 0.1 / (1.0 / 2e6 + 1.0 / 6e6);
+  expect_uniform(run, hook, -p, -p / 6e6, 1e-11);
+}
+
+TEST(MortarProblem, PenaltyGivesItsFloorAndNoWorse) {
+  const TwoBlocks tb = make_two_blocks(12, 11, false);
+  const FeModel model = make_model(tb.mesh, 2e6, 0.0);
+  const double kappa = 1e9;
+  MortarProblem hook(mortar_definition(tb, ContactMethod::MortarPenalty, ContactInit::No, kappa), tb.mesh, 2);
+  const MortarRun run = run_mortar(model, displacement_bcs(tb), hook);
+  // Two unit-height blocks and a penalty spring in series: p = 0.1 E / (2 + E / kappa),
+  // E / (2 kappa) = 1e-3 below the exact pressure.
+  const double p = 0.1 * 2e6 / (2.0 + 2e6 / kappa);
+  expect_uniform(run, hook, -p, -0.05 - 0.5 * p / kappa, 1e-10);
+  EXPECT_NEAR(p / 1e5 - 1.0, -1e-3, 1e-6);
+  EXPECT_EQ(run.log.find("MUMPS"), std::string::npos) << run.log;
+}
+
+TEST(MortarProblem, RotatedSceneIsExact) {
+  // The whole scene turned by 30 degrees: the interface normal is no coordinate axis.
+  TwoBlocks tb = make_two_blocks(12, 11, false);
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  for (int n = 0; n < tb.mesh.n_nodes(); ++n) {
+    double* x = &tb.mesh.coords[3 * static_cast<size_t>(n)];
+    const double x0 = x[0], y0 = x[1];
+    x[0] = c * x0 - s * y0, x[1] = s * x0 + c * y0;
+  }
+  const FeModel model = make_model(tb.mesh, 2e6, 0.0);
+  // CD pushed by 0.1 along the rotated vertical, both components imposed; GH fixed.
+  std::vector<Imposed> bcs;
+  for (int n : tb.cd_nodes) bcs.push_back({n, DX, 0.1 * s}), bcs.push_back({n, DY, -0.1 * c});
+  for (int n : tb.gh_nodes) bcs.push_back({n, DX, 0.0}), bcs.push_back({n, DY, 0.0});
+  MortarProblem hook(mortar_definition(tb, ContactMethod::MortarLagrange, ContactInit::Yes, 100.0), tb.mesh, 2);
+  const MortarRun run = run_mortar(model, bcs, hook);
+  double worst_p = 0.0, worst_u = 0.0;
+  for (const auto& row : hook.rows()) {
+    worst_p = std::max(worst_p, std::abs(component(run, row.node, "LAGS_C") + 1e5) / 1e5);
+    worst_u = std::max(worst_u, std::hypot(component(run, row.node, "DX") - 0.05 * s,
+                                           component(run, row.node, "DY") + 0.05 * c) / 0.05);
+  }
+  EXPECT_LT(worst_p, 1e-11);
+  EXPECT_LT(worst_u, 1e-11);
+}
+
+TEST(MortarProblem, ActiveSetMovesInsideNewtonAndSettles) {
+  // CD tilted: DY = -0.1 at x = +1, +0.05 at x = -1 (lifted): the left part of the
+  // interface opens. Starting from every node in contact, the semi-smooth Newton has to
+  // release the left nodes; it ends with pressures >= 0 where active and gaps >= 0 elsewhere.
+  const TwoBlocks tb = make_two_blocks(12, 11, false);
+  const FeModel model = make_model(tb.mesh, 2e6, 0.0);
+  std::vector<Imposed> bcs;
+  for (int n : tb.cd_nodes) {
+    const double x = tb.mesh.node(n)[0];
+    bcs.push_back({n, DX, 0.0}), bcs.push_back({n, DY, -0.1 * (x + 1) / 2 + 0.05 * (1 - x) / 2});
+  }
+  for (int n : tb.gh_nodes) bcs.push_back({n, DX, 0.0}), bcs.push_back({n, DY, 0.0});
+  ContactDefinition def = mortar_definition(tb, ContactMethod::MortarLagrange, ContactInit::Yes, 100.0);
+  def.reac_geom = GeometryUpdate::None;  // one pairing: the Newton iterations are the active set's
+  MortarProblem hook(def, tb.mesh, 2);
+  const MortarRun run = run_mortar(model, bcs, hook);
+  EXPECT_GT(hook.n_status_changes(), 0);
+  int n_active = 0, n_open = 0;
+  for (size_t i = 0; i < hook.rows().size(); ++i) {
+    const auto& row = hook.rows()[i];
+    const double lags = component(run, row.node, "LAGS_C");
+    if (row.active) {
+      ++n_active;
+      EXPECT_LE(lags, 1e-6) << "tension at an active node";
+    } else {
+      ++n_open;
+      EXPECT_DOUBLE_EQ(lags, 0.0);
+    }
+  }
+  EXPECT_GT(n_active, 0);
+  EXPECT_GT(n_open, 0);
+  // Finite termination of the semi-smooth Newton on a linear problem: the statuses settle
+  // in a few solves (3 here), all inside one Newton loop.
+  EXPECT_LE(run.stats.newton_iterations, 4) << run.log;
+  EXPECT_EQ(run.stats.contact_passes, 1) << run.log;
+}
+
+}  // namespace
