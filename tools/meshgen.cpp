@@ -32,7 +32,8 @@ const char* kUsage =
     "      nodes A_X A_Y P_X P_Y (ring, r = A, B) Q_X Q_Y C_X C_Y (sleeve, r = B, C)\n"
     "  lunaster-meshgen --block TYPE:N [--distort A] [--name MESH] -o FILE.med\n"
     "      unit square/cube; --distort moves interior vertices by up to A cell sizes (default 0.2 if given without A)\n"
-    "  lunaster-meshgen --info FILE    (.med, or .msh for Gmsh)\n"
+    "  lunaster-meshgen --info FILE [--nodes GROUP[,GROUP]]    (.med, or .msh for Gmsh)\n"
+    "      --nodes also lists the nodes of these groups (node or cell groups): 'node NAME X Y Z'\n"
     "  --test-result adds an analytic result RESU (2 steps, DEPL and SIGM_ELNO) for interop tests\n"
     "  --mirror GROUP[,GROUP] lists the volume cells of these groups in mirror order (clockwise in 2D) and\n"
     "      reverses the boundary cells on them, as Gmsh does for a clockwise curve loop\n"
@@ -56,7 +57,7 @@ Options parse(int argc, char** argv) {
     } else if (a == "--distort" && (i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0)) {
       o.values["--distort"] = "0.2";
     } else if (a == "-o" || a == "--upper" || a == "--lower" || a == "--v1" || a == "--v2" || a == "--block" ||
-               a == "--ring" || a == "--sleeve" || a == "--radii" ||
+               a == "--ring" || a == "--sleeve" || a == "--radii" || a == "--nodes" ||
                a == "--refine" || a == "--distort" || a == "--name" || a == "--info" || a == "--mirror" ||
                a == "--msh-version") {
       if (i + 1 >= argc) throw DeckError("meshgen: option " + a + " needs a value");
@@ -114,7 +115,7 @@ std::vector<engine::ResultStep> test_result(const engine::Mesh& mesh) {
   return steps;
 }
 
-int print_info(const std::string& path) {
+int print_info(const std::string& path, const std::string& node_groups) {
   const bool gmsh = path.size() > 4 && path.substr(path.size() - 4) == ".msh";
   const engine::Mesh mesh = gmsh ? engine::read_gmsh(path) : engine::read_med(path);
   std::cout << "mesh " << mesh.name << "\n";
@@ -125,6 +126,17 @@ int print_info(const std::string& path) {
   for (const auto& [name, n] : counts) std::cout << "cells " << name << " " << n << "\n";
   for (const auto& [name, list] : mesh.cell_groups) std::cout << "cell_group " << name << " " << list.size() << "\n";
   for (const auto& [name, list] : mesh.node_groups) std::cout << "node_group " << name << " " << list.size() << "\n";
+  std::stringstream groups(node_groups);
+  std::cout.precision(17);
+  for (std::string g; std::getline(groups, g, ',');) {
+    std::vector<int> nodes;
+    if (const auto it = mesh.node_groups.find(g); it != mesh.node_groups.end()) nodes = it->second;
+    else if (const auto ct = mesh.cell_groups.find(g); ct != mesh.cell_groups.end()) nodes = mesh.nodes_of_cells(ct->second);
+    else throw DeckError("meshgen: --nodes: no node or cell group '" + g + "' in " + path);
+    for (int n : nodes)
+      std::cout << "node " << mesh.node_names[n] << " " << mesh.node(n)[0] << " " << mesh.node(n)[1] << " "
+                << mesh.node(n)[2] << "\n";
+  }
   return 0;
 }
 
@@ -138,7 +150,8 @@ int run(int argc, char** argv) {
     const auto it = o.values.find(key);
     return it == o.values.end() ? std::string() : it->second;
   };
-  if (!get("--info").empty()) return print_info(get("--info"));
+  if (!get("--info").empty()) return print_info(get("--info"), get("--nodes"));
+  if (!get("--nodes").empty()) throw DeckError("meshgen: --nodes needs --info FILE", {kUsage});
   const std::string out = get("-o");
   if (out.empty()) throw DeckError("meshgen: missing -o FILE.med", {kUsage});
   const int refine = get("--refine").empty() ? 1 : std::stoi(get("--refine"));
