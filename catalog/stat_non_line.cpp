@@ -63,8 +63,9 @@ std::vector<Keyword> keywords(bool meca_non_line) {
              {text("METHODE",
                    "Linear solver. AUTO, CHOLMOD, LDLT and MULT_FRONT factorise with CHOLMOD (sparse Cholesky) "
                    "when the system is symmetric positive definite and with MUMPS otherwise (contact "
-                   "multipliers, mid-side ties, continuous penalty; the log says so once); MUMPS and UMFPACK are "
-                   "used as asked")
+                   "multipliers, mid-side ties, continuous penalty; the log says so once); AUTO also gives 3D "
+                   "systems of more than 100,000 unknowns to MUMPS, whose orderings fill less there; MUMPS and "
+                   "UMFPACK are used as asked")
                   .into_values({"AUTO", "MUMPS", "LDLT", "MULT_FRONT", "CHOLMOD", "UMFPACK"})
                   .def("AUTO")},
              "Linear solver")

@@ -56,6 +56,8 @@ engine::ContactZone read_contact_zone(const catalog::Args& zone, const engine::M
   engine::ContactZone z;
   z.slave_cells = contact_surface(zone, "GROUP_MA_ESCL", mesh, model_dim);
   z.master_cells = contact_surface(zone, "GROUP_MA_MAIT", mesh, model_dim);
+  z.slave_group = zone.text("GROUP_MA_ESCL");
+  z.master_group = zone.text("GROUP_MA_MAIT");
   read_integration(zone, z);
   if (opt(zone, "COEF_CONT")) z.coef_cont = zone.real("COEF_CONT");
   if (opt(zone, "COEF_REGU_CONT")) z.coef_cont = zone.real("COEF_REGU_CONT");

@@ -3,6 +3,7 @@
 #include "commands/concepts.hpp"
 #include "commands/contact_keywords.hpp"
 #include "commands/selection.hpp"
+#include "engine/contact/contact_factory.hpp"
 #include "engine/core/error.hpp"
 
 namespace lunaster::cmd {
@@ -31,6 +32,8 @@ ConceptPtr defi_cont(const Args& args, Session& session) {
     def.zones.push_back(std::move(z));
     warn_coincident_slave_nodes(zone, def.zones.back(), *mo.maillage, session);
   }
+  // The surfaces are checked here, where the deck names them (boundary of the model, cell types).
+  engine::make_contact_hook(def, *mo.maillage->mesh, mo.dim);
   return result;
 }
 

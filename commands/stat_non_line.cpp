@@ -136,6 +136,7 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
                                                         : 1e-6;
   options.iter_glob_maxi = static_cast<int>(conv.integer("ITER_GLOB_MAXI"));
   options.solver = solver_kind(args.factor("SOLVEUR").text("METHODE"));
+  options.auto_solver = args.factor("SOLVEUR").text("METHODE") == "AUTO";
   read_newton(args.factor("NEWTON"), contact != nullptr, options);
   const std::vector<double> times = instants(args.factor("INCREMENT"), options);
 

@@ -32,6 +32,9 @@ mkdir -p "$m"
 "$gen" --v1 hexa8:3x3x3 --v2 hexa8:3x3x3 --glued -o "$m/glued3d_hexa8.med"
 "$gen" --v1 hexa20:2x2x2 --v2 hexa20:2x2x2 --glued -o "$m/glued3d_hexa20.med"
 
+# Non-matching 3D interface of different cell types and sizes (mortar_bimaterial_3d.lua)
+"$gen" --v1 penta6:5x5x2 --v2 hexa20:3x3x2 -o "$m/nonmatching3d_penta6_hexa20.med"
+
 # Distorted unit blocks for patch tests
 for t in quad4 quad8 tria3 tria6; do
   "$gen" --block "$t:3" --distort 0.2 -o "$m/patch_$t.med"

@@ -1,6 +1,7 @@
 #pragma once
 /// What a deck asked for in contact (from AFFE_CHAR_MECA/CONTACT or
 /// DEFI_CONTACT), in engine terms. Filled by commands/, read by engine/contact.
+#include <string>
 #include <vector>
 
 namespace lunaster::engine {
@@ -32,6 +33,7 @@ struct ContactZone {
   double tole_proj_ext = 0.5;    ///< TOLE_PROJ_EXT: accepted projection distance outside a master cell (reference units)
   double dist_mait = 0.0;        ///< DIST_MAIT: thickness added to the master surface (m, mortar)
   double dist_escl = 0.0;        ///< DIST_ESCL: thickness added to the slave surface (m, mortar)
+  std::string slave_group, master_group;  ///< mesh group names, for messages (may be empty)
 };
 
 struct ContactDefinition {

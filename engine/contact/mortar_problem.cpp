@@ -47,10 +47,18 @@ void reversed_order(CellType t, int* perm) {
 
 namespace {
 
+/// "contact zone 2 (slave 'AB', master 'EF')".
+std::string zone_label(const ContactZone& zone, int z) {
+  std::string label = "contact zone " + std::to_string(z + 1);
+  if (!zone.slave_group.empty() || !zone.master_group.empty())
+    label += " (slave '" + zone.slave_group + "', master '" + zone.master_group + "')";
+  return label;
+}
+
 /// Orients the cells of a contact surface outwards, from the volume cell each one bounds.
 std::vector<OrientedCell> orient_surface(const Mesh& mesh, int dim, const std::vector<int>& cells,
-                                         const std::vector<std::vector<int>>& volumes_of_node, int zone,
-                                         const char* role) {
+                                         const std::vector<std::vector<int>>& volumes_of_node,
+                                         const std::string& zone, const char* role) {
   std::vector<OrientedCell> out;
   out.reserve(cells.size());
   for (int c : cells) {
@@ -58,8 +66,7 @@ std::vector<OrientedCell> orient_surface(const Mesh& mesh, int dim, const std::v
     oc.cell = c;
     oc.type = mesh.cell_types[c];
     if (!is_surface_type(oc.type) || topological_dim(oc.type) != dim - 1)
-      throw DeckError("contact zone " + std::to_string(zone + 1) + ": " + role + " cell " + cell_label(mesh, c) +
-                      " is a " + surface_type_name(oc.type) + ", expected a boundary cell of dimension " +
+      throw DeckError(zone + ": " + role + " cell " + cell_label(mesh, c) + " is a " + surface_type_name(oc.type) + ", expected a boundary cell of dimension " +
                       std::to_string(dim - 1));
     oc.n = surface_n_nodes(oc.type);
     const int* nodes = mesh.cell(c);
@@ -74,7 +81,7 @@ std::vector<OrientedCell> orient_surface(const Mesh& mesh, int dim, const std::v
       if (all) owner = v, ++n_owners;
     }
     if (n_owners != 1)
-      throw DeckError("contact zone " + std::to_string(zone + 1) + ": " + role + " cell " + cell_label(mesh, c) +
+      throw DeckError(zone + ": " + role + " cell " + cell_label(mesh, c) +
                       (n_owners == 0 ? " bounds no cell of the model" : " lies between two cells of the model") +
                       ": a " + role + " surface must be a boundary of the model (check the group and the model's "
                       "cells)");
@@ -117,9 +124,10 @@ MortarProblem::MortarProblem(const ContactDefinition& definition, const Mesh& me
   for (size_t z = 0; z < def_.zones.size(); ++z) {
     const ContactZone& zone = def_.zones[z];
     if (!(zone.coef_cont > 0.0) || !std::isfinite(zone.coef_cont))
-      throw DeckError("contact zone " + std::to_string(z + 1) + ": COEF_CONT must be a finite number > 0");
-    slave_cells_.push_back(orient_surface(mesh, dim, zone.slave_cells, volumes_of_node, static_cast<int>(z), "slave"));
-    master_cells_.push_back(orient_surface(mesh, dim, zone.master_cells, volumes_of_node, static_cast<int>(z), "master"));
+      throw DeckError(zone_label(zone, static_cast<int>(z)) + ": COEF_CONT must be a finite number > 0");
+    const std::string label = zone_label(zone, static_cast<int>(z));
+    slave_cells_.push_back(orient_surface(mesh, dim, zone.slave_cells, volumes_of_node, label, "slave"));
+    master_cells_.push_back(orient_surface(mesh, dim, zone.master_cells, volumes_of_node, label, "master"));
     for (const auto& oc : slave_cells_.back())
       for (int a = 0; a < oc.n; ++a) {
         int& owner = zone_of_slave[oc.nodes[a]];
@@ -385,7 +393,7 @@ void MortarProblem::pair(const Vector& u, const Log* log) {
     for (int k = 1; k < dim_; ++k)
       if (std::abs(r.normal[k]) > std::abs(r.normal[k_max])) k_max = k;
     if (imposed_.count({r.node, k_max}))
-      throw DeckError("slave node " + node_label(mesh_, r.node) + " of contact zone " + std::to_string(r.zone + 1) +
+      throw DeckError("slave node " + node_label(mesh_, r.node) + " of " + zone_label(def_.zones[r.zone], r.zone) +
                       " has an imposed displacement " + component_name(static_cast<Component>(k_max)) +
                       " along the normal to the contact surface: the contact condition and the imposed displacement "
                       "cannot both hold there; remove the node from the slave group (or from the imposed displacement)");
@@ -402,13 +410,13 @@ void MortarProblem::begin_step(const Vector& u, const Log& log) {
   if (!first_step_) return;  // the pairing of the last converged state stands
   pair(u, &log);
   first_step_ = false;
-  if (rows_.empty()) {
-    std::string zones;
-    for (size_t z = 0; z < def_.zones.size(); ++z) zones += (z ? ", " : "") + std::to_string(z + 1);
-    throw DeckError("mortar contact: no slave cell of zone(s) " + zones +
-                    " overlaps a master cell facing it: the slave and master surfaces do not face each other "
-                    "(check the groups, and that the surfaces touch or nearly touch in the initial configuration)");
-  }
+  std::vector<int> rows_of_zone(def_.zones.size(), 0);
+  for (const auto& r : rows_) ++rows_of_zone[r.zone];
+  for (size_t z = 0; z < def_.zones.size(); ++z)
+    if (rows_of_zone[z] == 0)
+      throw DeckError(zone_label(def_.zones[z], static_cast<int>(z)) +
+                      ": no slave cell overlaps a master cell facing it; give the slave and master groups as the two "
+                      "sides of one interface, touching or nearly touching in the initial configuration");
   int n_active = 0;
   for (auto& r : rows_) {
     const ContactZone& zone = def_.zones[r.zone];

@@ -23,6 +23,9 @@ struct NewtonOptions {
   double resi_glob_maxi = -1.0;  ///< absolute residual (N); <= 0: unused
   int iter_glob_maxi = 10;
   SolverKind solver = SolverKind::Cholmod;  ///< Cholmod gives way to Mumps for systems that are not SPD (logged once)
+  /// The deck left the choice to lunaster (METHODE='AUTO'): large 3D SPD systems also go to
+  /// Mumps, whose nested-dissection orderings fill less there (logged once).
+  bool auto_solver = false;
   /// Matrix policy (code_aster's NEWTON keywords). reac_iter: the factors may be renewed at
   /// Newton iteration k of a Newton loop (one per instant and per contact pass) when k == 0
   /// or k % reac_iter == 0; 0 = at k == 0 only. Between two, the last factors solve with the

@@ -74,7 +74,7 @@ cholmod_sparse view(const SparseMatrix& a) {
 /// the DOF graph is several times cheaper for the same fill; on the SSNP121 2D
 /// family AMD beat METIS (136k unknowns: 0.68 s vs 1.00 s user in total). Empty if the
 /// matrix has no such runs or AMD fails (CHOLMOD then chooses itself).
-std::vector<int> node_graph_ordering(const SparseMatrix& a, cholmod_common* common) {
+std::vector<int> node_graph_ordering(const SparseMatrix& a, cholmod_common* common, bool nested_dissection) {
   const int n = static_cast<int>(a.cols());
   const int* p = a.outerIndexPtr();
   const int* i = a.innerIndexPtr();
@@ -110,7 +110,15 @@ std::vector<int> node_graph_ordering(const SparseMatrix& a, cholmod_common* comm
   q.sorted = 1;
   q.packed = 1;
   std::vector<int> gperm(ng);
-  if (!cholmod_amd(&q, nullptr, 0, gperm.data(), common)) return {};
+  if (nested_dissection) {
+    // METIS needs both triangles of the graph.
+    cholmod_sparse* full = cholmod_copy(&q, 0, 0, common);
+    const bool ok = full && cholmod_metis(full, nullptr, 0, 0, gperm.data(), common);
+    if (full) cholmod_free_sparse(&full, common);
+    if (!ok) return {};
+  } else if (!cholmod_amd(&q, nullptr, 0, gperm.data(), common)) {
+    return {};
+  }
   std::vector<int> perm;
   perm.reserve(n);
   for (int g : gperm)
@@ -164,11 +172,24 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   cholmod_sparse s = view(*m);
   if (!same_pattern(*m)) {
     if (factor_) cholmod_free_factor(&factor_, &common_);
-    std::vector<int> perm = node_graph_ordering(*m, &common_);
+    std::vector<int> perm = node_graph_ordering(*m, &common_, false);
     if (!perm.empty()) {
       common_.nmethods = 1;
       common_.method[0].ordering = CHOLMOD_GIVEN;
       factor_ = cholmod_analyze_p(&s, perm.data(), nullptr, 0, &common_);
+      // Where AMD's factor is over 10 times A (large 3D meshes), nested dissection (METIS on the
+      // same node graph) is tried and the smaller factor kept: 20 % fewer entries on the
+      // 2.8e5-unknown HEXA20/HEXA8 benchmark (8.8e8 against 1.1e9). 2D meshes and small 3D ones
+      // stay below the threshold (AMD's factor is 3 to 6 times A there) and skip the second analysis.
+      const double lnz_amd = common_.lnz;
+      if (factor_ && lnz_amd > 10.0 * static_cast<double>(m->nonZeros())) {
+        std::vector<int> nd = node_graph_ordering(*m, &common_, true);
+        if (!nd.empty()) {
+          cholmod_factor* other = cholmod_analyze_p(&s, nd.data(), nullptr, 0, &common_);
+          if (other && common_.lnz < lnz_amd) std::swap(factor_, other);
+          if (other) cholmod_free_factor(&other, &common_);
+        }
+      }
     } else {
       common_.nmethods = 0;  // CHOLMOD's default strategy (AMD, then METIS if AMD fills badly)
       factor_ = cholmod_analyze(&s, &common_);

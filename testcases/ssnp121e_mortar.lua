@@ -1,0 +1,75 @@
+-- SSNP121 E with mortar contact: 3D contact patch test, two unit cubes stacked, each meshed with
+-- 4x4x4 PENTA15 (each square split into 2 triangles): TRIA6 slave (SURESC, z=1 face of V1) on TRIA6
+-- master (SURMAI, z=1 face of V2), nodes facing each other.
+-- Purpose: mortar contact (DEFI_CONT, APPARIEMENT='MORTAR', ALGO_CONT='LAGRANGIEN',
+--          CONTACT_INIT='INTERPENETRE') on a quadratic triangle slave: dual basis of the transformed
+--          TRIA6 shape functions (the plain TRIA6 functions integrate to zero at the vertices).
+--          code_aster's CONTINUE method gets < 0.02 %.
+-- Loading: ENCAST (z=0) clamped; SURCHA (z=2) DX=DY=0, DZ=-0.1. E=2e6 Pa, NU=0.
+-- Reference: analytical, uniform strain -0.05 in both blocks: LAGS_C = SIZZ = E*eps = -1e5 Pa on the
+--            whole interface (both sides), DZ = -0.05 m on it; every check at 1e-8. Units SI.
+-- What we get: every value within 6.4e-14 (relative) of the analytical one.
+-- Runtime label: fast, contact, 3D.
+DEBUT()
+MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'ssnp121e.med' }
+MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = '3D' } }
+MAT = DEFI_MATERIAU{ ELAS = _F{ E = 2.0e6, NU = 0.0 } }
+CHMAT = AFFE_MATERIAU{ MAILLAGE = MA, AFFE = _F{ GROUP_MA = { 'V1', 'V2' }, MATER = MAT } }
+CHA1 = AFFE_CHAR_MECA{ MODELE = MO,
+                       DDL_IMPO = { _F{ GROUP_NO = 'ENCAST', DX = 0.0, DY = 0.0, DZ = 0.0 },
+                                    _F{ GROUP_NO = 'SURCHA', DX = 0.0, DY = 0.0, DZ = -0.1 } } }
+CONT = DEFI_CONT{ MODELE = MO,
+                  ZONE = _F{ APPARIEMENT = 'MORTAR', GROUP_MA_ESCL = 'SURESC', GROUP_MA_MAIT = 'SURMAI',
+                             ALGO_CONT = 'LAGRANGIEN', CONTACT_INIT = 'INTERPENETRE' } }
+L_INST = DEFI_LIST_REEL{ DEBUT = 0.0, INTERVALLE = _F{ JUSQU_A = 1.0, NOMBRE = 1 } }
+RAMPE = DEFI_FONCTION{ NOM_PARA = 'INST', VALE = { 0.0, 0.0, 1.0, 1.0 } }
+RESU = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CHMAT, CONTACT = CONT,
+                      EXCIT = _F{ CHARGE = CHA1, FONC_MULT = RAMPE },
+                      COMPORTEMENT = _F{ RELATION = 'ELAS' },
+                      INCREMENT = _F{ LIST_INST = L_INST } }
+RESU = CALC_CHAMP{ reuse = RESU, RESULTAT = RESU, CONTRAINTE = { 'SIGM_ELNO', 'SIGM_NOEU' } }
+
+-- VALE_CALC: lunaster's own values from a real run (non-regression, relative 1e-6), keyed by
+-- 'field component point' or 'field component MIN(group)'.
+local calc = {
+  ['DEPL LAGS_C A21'] = -1.000000000000e+05,
+  ['DEPL DZ A21'] = -5.000000000000e-02,
+  ['DEPL LAGS_C A22'] = -1.000000000000e+05,
+  ['DEPL DZ A22'] = -5.000000000000e-02,
+  ['DEPL LAGS_C A23'] = -1.000000000000e+05,
+  ['DEPL DZ A23'] = -5.000000000000e-02,
+  ['DEPL LAGS_C A24'] = -1.000000000000e+05,
+  ['DEPL DZ A24'] = -5.000000000000e-02,
+  ['DEPL LAGS_C MIN(SURESC)'] = -1.000000000000e+05,
+  ['DEPL DZ MIN(SURESC)'] = -5.000000000000e-02,
+  ['SIGM_NOEU SIZZ MIN(SURESC)'] = -1.000000000000e+05,
+  ['DEPL DZ MIN(SURMAI)'] = -5.000000000000e-02,
+  ['SIGM_NOEU SIZZ MIN(SURMAI)'] = -1.000000000000e+05,
+  ['DEPL LAGS_C MAX(SURESC)'] = -9.999999999999e+04,
+  ['DEPL DZ MAX(SURESC)'] = -5.000000000000e-02,
+  ['SIGM_NOEU SIZZ MAX(SURESC)'] = -9.999999999999e+04,
+  ['DEPL DZ MAX(SURMAI)'] = -5.000000000000e-02,
+  ['SIGM_NOEU SIZZ MAX(SURMAI)'] = -1.000000000000e+05,
+}
+
+local checks = {}
+local function check(field, cmp, refe, where, kind)
+  local key = field .. ' ' .. cmp .. ' ' .. (kind and kind .. '(' .. where .. ')' or where)
+  local test = _F{ RESULTAT = RESU, NUME_ORDRE = 1, NOM_CHAM = field, NOM_CMP = cmp, VALE_CALC = assert(calc[key], key),
+                   REFERENCE = 'ANALYTIQUE', VALE_REFE = refe, PRECISION = 1.0e-8 }
+  if kind then test.GROUP_MA = where; test.TYPE_TEST = kind else test.GROUP_NO = where end
+  checks[#checks + 1] = test
+end
+for _, point in ipairs({ 'A21', 'A22', 'A23', 'A24' }) do
+  check('DEPL', 'LAGS_C', -1.0e5, point)
+  check('DEPL', 'DZ', -0.05, point)
+end
+for _, kind in ipairs({ 'MIN', 'MAX' }) do
+  check('DEPL', 'LAGS_C', -1.0e5, 'SURESC', kind)
+  for _, group in ipairs({ 'SURESC', 'SURMAI' }) do
+    check('DEPL', 'DZ', -0.05, group, kind)
+    check('SIGM_NOEU', 'SIZZ', -1.0e5, group, kind)
+  end
+end
+TEST_RESU{ RESU = checks }
+FIN()
