@@ -22,6 +22,10 @@ mkdir -p "$m"
 "$gen" --v1 hexa20:4x4x4 --v2 penta15:4x4x4 -o "$tc/ssnp121f_quad8_on_tria6.med"
 "$gen" --v1 hexa8:4x4x4 --v2 penta15:4x4x4 -o "$tc/ssnp121k_quad4_on_tria6.med"
 
+# Pressurised ring in a sleeve (mortar contact on a curved non-matching interface, Lame solution)
+"$gen" --ring quad4:96x16 --sleeve quad4:80x16 -o "$tc/ring_sleeve_mortar.med"
+"$gen" --ring quad8:48x8 --sleeve quad8:40x8 -o "$tc/ring_sleeve_mortar_quad8.med"
+
 # Glued (conforming) versions: both blocks share the interface nodes
 "$gen" --upper quad4:4 --lower quad4:4 --glued -o "$m/glued2d_quad4.med"
 "$gen" --upper quad8:4 --lower quad8:4 --glued -o "$m/glued2d_quad8.med"

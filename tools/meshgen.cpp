@@ -24,9 +24,16 @@ const char* kUsage =
     "      SSNP121 2D: PLAQUE1 = [-1,1]x[0,1] (upper), PLAQUE2 = [-1,1]x[-1,0]; TYPE quad4|quad8|tria3|tria6\n"
     "  lunaster-meshgen --v1 TYPE:NXxNYxNZ --v2 TYPE:NXxNYxNZ [--refine K] [--glued] [--name MESH] -o FILE.med\n"
     "      SSNP121 3D: V1 = [0,1]^3, V2 = [0,1]^2x[1,2]; TYPE hexa8|hexa20|penta6|penta15|tetra4|tetra10\n"
+    "  lunaster-meshgen --ring TYPE:NTxNR --sleeve TYPE:NTxNR [--radii A,B,C] [--refine K] [--name MESH] -o FILE.med\n"
+    "      quarter ring RING (A <= r <= B) fitted in a sleeve SLEEVE (B <= r <= C), meshed independently\n"
+    "      (non-matching on r = B when the NT differ); NT cells along the arc, NR through the thickness;\n"
+    "      TYPE quad4|quad8 (quad8 arc edges curved, mid-side nodes on the circle); default radii 0.5,0.75,1\n"
+    "      groups RING SLEEVE INNER RING_OUT SLEEVE_IN OUTER X0_RING Y0_RING X0_SLEEVE Y0_SLEEVE,\n"
+    "      nodes A_X A_Y P_X P_Y (ring, r = A, B) Q_X Q_Y C_X C_Y (sleeve, r = B, C)\n"
     "  lunaster-meshgen --block TYPE:N [--distort A] [--name MESH] -o FILE.med\n"
     "      unit square/cube; --distort moves interior vertices by up to A cell sizes (default 0.2 if given without A)\n"
-    "  lunaster-meshgen --info FILE    (.med, or .msh for Gmsh)\n"
+    "  lunaster-meshgen --info FILE [--nodes GROUP[,GROUP]]    (.med, or .msh for Gmsh)\n"
+    "      --nodes also lists the nodes of these groups (node or cell groups): 'node NAME X Y Z'\n"
     "  --test-result adds an analytic result RESU (2 steps, DEPL and SIGM_ELNO) for interop tests\n"
     "  --mirror GROUP[,GROUP] lists the volume cells of these groups in mirror order (clockwise in 2D) and\n"
     "      reverses the boundary cells on them, as Gmsh does for a clockwise curve loop\n"
@@ -50,6 +57,7 @@ Options parse(int argc, char** argv) {
     } else if (a == "--distort" && (i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0)) {
       o.values["--distort"] = "0.2";
     } else if (a == "-o" || a == "--upper" || a == "--lower" || a == "--v1" || a == "--v2" || a == "--block" ||
+               a == "--ring" || a == "--sleeve" || a == "--radii" || a == "--nodes" ||
                a == "--refine" || a == "--distort" || a == "--name" || a == "--info" || a == "--mirror" ||
                a == "--msh-version") {
       if (i + 1 >= argc) throw DeckError("meshgen: option " + a + " needs a value");
@@ -107,7 +115,7 @@ std::vector<engine::ResultStep> test_result(const engine::Mesh& mesh) {
   return steps;
 }
 
-int print_info(const std::string& path) {
+int print_info(const std::string& path, const std::string& node_groups) {
   const bool gmsh = path.size() > 4 && path.substr(path.size() - 4) == ".msh";
   const engine::Mesh mesh = gmsh ? engine::read_gmsh(path) : engine::read_med(path);
   std::cout << "mesh " << mesh.name << "\n";
@@ -118,6 +126,17 @@ int print_info(const std::string& path) {
   for (const auto& [name, n] : counts) std::cout << "cells " << name << " " << n << "\n";
   for (const auto& [name, list] : mesh.cell_groups) std::cout << "cell_group " << name << " " << list.size() << "\n";
   for (const auto& [name, list] : mesh.node_groups) std::cout << "node_group " << name << " " << list.size() << "\n";
+  std::stringstream groups(node_groups);
+  std::cout.precision(17);
+  for (std::string g; std::getline(groups, g, ',');) {
+    std::vector<int> nodes;
+    if (const auto it = mesh.node_groups.find(g); it != mesh.node_groups.end()) nodes = it->second;
+    else if (const auto ct = mesh.cell_groups.find(g); ct != mesh.cell_groups.end()) nodes = mesh.nodes_of_cells(ct->second);
+    else throw DeckError("meshgen: --nodes: no node or cell group '" + g + "' in " + path);
+    for (int n : nodes)
+      std::cout << "node " << mesh.node_names[n] << " " << mesh.node(n)[0] << " " << mesh.node(n)[1] << " "
+                << mesh.node(n)[2] << "\n";
+  }
   return 0;
 }
 
@@ -131,11 +150,14 @@ int run(int argc, char** argv) {
     const auto it = o.values.find(key);
     return it == o.values.end() ? std::string() : it->second;
   };
-  if (!get("--info").empty()) return print_info(get("--info"));
+  if (!get("--info").empty()) return print_info(get("--info"), get("--nodes"));
+  if (!get("--nodes").empty()) throw DeckError("meshgen: --nodes needs --info FILE", {kUsage});
   const std::string out = get("-o");
   if (out.empty()) throw DeckError("meshgen: missing -o FILE.med", {kUsage});
   const int refine = get("--refine").empty() ? 1 : std::stoi(get("--refine"));
   if (refine < 1) throw DeckError("meshgen: --refine must be >= 1");
+  const bool ring = !get("--ring").empty() || !get("--sleeve").empty();
+  if (!get("--radii").empty() && !ring) throw DeckError("meshgen: --radii needs --ring/--sleeve", {kUsage});
   engine::Mesh mesh;
   if (!get("--upper").empty() || !get("--lower").empty()) {
     tools::Ssnp121Options2d opt;
@@ -149,6 +171,28 @@ int run(int argc, char** argv) {
     opt.v2 = refined(get("--v2").empty() ? "hexa20:4" : get("--v2"), 3, refine);
     opt.glued = o.glued;
     mesh = tools::make_ssnp121_3d(opt);
+  } else if (ring) {
+    tools::RingOptions opt;
+    opt.ring = refined(get("--ring").empty() ? "quad4:12x4" : get("--ring"), 2, refine);
+    opt.sleeve = refined(get("--sleeve").empty() ? "quad4:9x4" : get("--sleeve"), 2, refine);
+    if (!get("--radii").empty()) {
+      std::vector<double> r;
+      std::stringstream list(get("--radii"));
+      for (std::string v; std::getline(list, v, ',');) {
+        size_t used = 0;
+        double x = 0.0;
+        try {
+          x = std::stod(v, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used == 0 || used != v.size()) throw DeckError("meshgen: --radii expects A,B,C (numbers), got '" + get("--radii") + "'");
+        r.push_back(x);
+      }
+      if (r.size() != 3) throw DeckError("meshgen: --radii expects three radii A,B,C, got '" + get("--radii") + "'");
+      opt.a = r[0], opt.b = r[1], opt.c = r[2];
+    }
+    mesh = tools::make_ring_sleeve(opt);
   } else if (!get("--block").empty()) {
     tools::BlockOptions opt;
     const std::string spec = get("--block");

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <sstream>
 #include <tuple>
 
 #include "engine/core/error.hpp"
@@ -214,6 +215,56 @@ void check_dim(const BlockCells& cells, int dim, const std::string& what) {
                     std::to_string(dim) + "D cell type");
 }
 
+/// One annular body r0 <= r <= r1, 0 <= theta <= pi/2, of a ring/sleeve mesh.
+struct AnnulusGeom {
+  double r0 = 0.0, r1 = 1.0;
+  std::string group;
+  std::string inner, outer, x0, y0;  ///< boundary groups on r = r0, r = r1, x = 0, y = 0
+  int pool = 0;
+};
+
+/// Meshes an annulus on the lattice of polar parameters: node (s, t) in half-cell units
+/// (s through the thickness, t along the arc) sits at r = r0 + (r1 - r0) s / (2 NR),
+/// theta = pi/2 t / (2 NT). The map (r, theta) -> (x, y) has Jacobian r > 0, so cells
+/// listed (s, t), (s+1, t), (s+1, t+1), (s, t+1) are counter-clockwise.
+void mesh_annulus(Builder& b, const BlockCells& cells, const AnnulusGeom& g) {
+  const int nt = cells.n[0], nr = cells.n[1];
+  const auto position = [&](int s, int t) -> Vec3 {
+    const double r = s == 2 * nr ? g.r1 : g.r0 + (g.r1 - g.r0) * s / (2.0 * nr);
+    if (t == 0) return {r, 0.0, 0.0};          // exactly on y = 0
+    if (t == 2 * nt) return {0.0, r, 0.0};     // exactly on x = 0
+    const double theta = 0.5 * M_PI * t / (2.0 * nt);
+    return {r * std::cos(theta), r * std::sin(theta), 0.0};
+  };
+  const engine::CellFaces& faces = engine::cell_faces(cells.type);
+  for (int j = 0; j < nt; ++j)
+    for (int i = 0; i < nr; ++i) {
+      std::vector<std::array<int, 2>> st{{2 * i, 2 * j}, {2 * i + 2, 2 * j}, {2 * i + 2, 2 * j + 2}, {2 * i, 2 * j + 2}};
+      for (const auto& [p, q] : engine::cell_mid_edges(cells.type))
+        st.push_back({(st[p][0] + st[q][0]) / 2, (st[p][1] + st[q][1]) / 2});
+      std::vector<int> nodes;
+      for (const auto& [s, t] : st) nodes.push_back(b.node(g.pool, position(s, t)));
+      b.add_cell(cells.type, nodes, g.group);
+      for (int f = 0; f < faces.n_faces; ++f) {
+        const int m = engine::cell_info(faces.face_type[f]).n_nodes;
+        const auto all = [&](int axis, int value) {
+          for (int k = 0; k < m; ++k)
+            if (st[faces.nodes[f][k]][axis] != value) return false;
+          return true;
+        };
+        std::string name;
+        if (all(0, 0)) name = g.inner;
+        else if (all(0, 2 * nr)) name = g.outer;
+        else if (all(1, 0)) name = g.y0;
+        else if (all(1, 2 * nt)) name = g.x0;
+        if (name.empty()) continue;
+        std::vector<int> face(m);
+        for (int k = 0; k < m; ++k) face[k] = nodes[faces.nodes[f][k]];
+        b.add_cell(faces.face_type[f], face, name);
+      }
+    }
+}
+
 }  // namespace
 
 BlockCells parse_block_cells(const std::string& spec, int dim) {
@@ -265,6 +316,32 @@ Mesh make_ssnp121_2d(const Ssnp121Options2d& o) {
   for (const auto& [name, x, y] : std::vector<std::tuple<std::string, double, double>>{
            {"E", -1, 0}, {"F", 1, 0}, {"G", 1, -1}, {"H", -1, -1}})
     b.add_node_group(name, low, {x, y, 0});
+  return b.finish();
+}
+
+Mesh make_ring_sleeve(const RingOptions& o) {
+  const auto check_quad = [](const BlockCells& cells, const std::string& what) {
+    if (cells.type != CellType::Quad4 && cells.type != CellType::Quad8)
+      throw DeckError("meshgen: " + what + ": expected quad4 or quad8, got " +
+                      std::string(engine::cell_info(cells.type).name));
+  };
+  check_quad(o.ring, "--ring");
+  check_quad(o.sleeve, "--sleeve");
+  if (!(0.0 < o.a && o.a < o.b && o.b < o.c))
+  {
+    std::ostringstream given;
+    given << o.a << ", " << o.b << ", " << o.c;
+    throw DeckError("meshgen: ring radii must satisfy 0 < a < b < c, got " + given.str());
+  }
+  Builder b;
+  const int ring = b.new_pool();
+  const int sleeve = b.new_pool();
+  mesh_annulus(b, o.ring, {o.a, o.b, "RING", "INNER", "RING_OUT", "X0_RING", "Y0_RING", ring});
+  mesh_annulus(b, o.sleeve, {o.b, o.c, "SLEEVE", "SLEEVE_IN", "OUTER", "X0_SLEEVE", "Y0_SLEEVE", sleeve});
+  for (const auto& [name, pool, x, y] : std::vector<std::tuple<std::string, int, double, double>>{
+           {"A_X", ring, o.a, 0}, {"A_Y", ring, 0, o.a}, {"P_X", ring, o.b, 0}, {"P_Y", ring, 0, o.b},
+           {"Q_X", sleeve, o.b, 0}, {"Q_Y", sleeve, 0, o.b}, {"C_X", sleeve, o.c, 0}, {"C_Y", sleeve, 0, o.c}})
+    b.add_node_group(name, pool, {x, y, 0});
   return b.finish();
 }
 
@@ -347,3 +424,4 @@ void mirror_cell_groups(Mesh& mesh, const std::vector<std::string>& groups) {
 }
 
 }  // namespace lunaster::tools
+

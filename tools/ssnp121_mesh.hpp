@@ -39,6 +39,26 @@ struct BlockOptions {
   double distort = 0.0;  ///< interior vertices moved by up to distort * cell size per direction
 };
 
+/// Quarter of a ring fitted in a sleeve (plane strain Lame verification): the ring
+/// a <= r <= b and the sleeve b <= r <= c, 0 <= theta <= pi/2, meshed independently
+/// (nodes duplicated on r = b, so different arc counts give a non-matching interface).
+/// n[0] = cells along the arc, n[1] = cells through the thickness. Vertices sit on
+/// circles r = const and rays theta = const; QUAD8 mid-side nodes are placed at the
+/// middle of the polar parameters, so arc edges are curved with all three nodes on
+/// their circle. Nodes on x = 0 have x exactly 0, on y = 0 y exactly 0.
+struct RingOptions {
+  BlockCells ring{engine::CellType::Quad4, {12, 4, 1}};
+  BlockCells sleeve{engine::CellType::Quad4, {9, 4, 1}};
+  double a = 0.5, b = 0.75, c = 1.0;  ///< inner radius, interface radius, outer radius (m)
+};
+
+/// Groups: cells RING, SLEEVE; outward boundary cells INNER (ring, r=a), RING_OUT
+/// (ring, r=b), X0_RING / Y0_RING (ring, x=0 / y=0), SLEEVE_IN (sleeve, r=b), OUTER
+/// (sleeve, r=c), X0_SLEEVE / Y0_SLEEVE; node groups of the ring A_X (a,0) A_Y (0,a)
+/// P_X (b,0) P_Y (0,b) and of the sleeve Q_X (b,0) Q_Y (0,b) C_X (c,0) C_Y (0,c).
+/// Throws DeckError for a cell type other than QUAD4/QUAD8 or radii not 0 < a < b < c.
+engine::Mesh make_ring_sleeve(const RingOptions& options);
+
 /// Groups: cells PLAQUE1, PLAQUE2; boundary cells AB BC CD DA (upper) and EF FG
 /// GH HE (lower), oriented outward (counter-clockwise traversal of each
 /// block); node groups A B C D O (upper block) and E F G H (lower block).

@@ -36,6 +36,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Dense>
 
@@ -115,6 +116,15 @@ void segment_geometry(CellType type, const double* xyz, double xi, double* x, do
     }
 }
 
+/// Round-off level of a Newton step -(x - p) . t / jac on a segment: the difference x - p of
+/// two positions carries eps (|x| + |p|), so the step cannot fall below about that times |t| /
+/// |jac|. On a short cell far from the origin this exceeds 1e-14 (|jac| ~ |t|^2 ~ h^2 / 4):
+/// a test against 1e-14 alone never passes, and Newton reports failure after converging.
+double step_noise(const double* x, const double* p, const double* t, double jac) {
+  const double scale = std::sqrt(dot3(x, x)) + std::sqrt(dot3(p, p));
+  return 16.0 * std::numeric_limits<double>::epsilon() * scale * std::sqrt(dot3(t, t)) / std::abs(jac);
+}
+
 /// Slave parameter xi of the point of the slave segment whose normal line passes through p:
 /// (x(xi) - p) . t(xi) = 0. Exact for SEG2 (and straight SEG3); Newton from the chord value
 /// on a curved SEG3, keeping the chord value if Newton does not converge (such a p lies far
@@ -137,7 +147,7 @@ double slave_foot(CellType type, const double* xyz, const double* p) {
     const double step = std::clamp(-dot3(e, t) / jac, -1.0, 1.0);
     xi += step;
     if (!std::isfinite(xi)) return chord;
-    if (std::abs(step) <= 1e-14 * std::max(1.0, std::abs(xi))) return xi;
+    if (std::abs(step) <= 1e-14 * std::max(1.0, std::abs(xi)) + step_noise(x, p, t, jac)) return xi;
   }
   return chord;
 }
@@ -163,7 +173,7 @@ bool master_hit_2d(CellType type, const double* xyz, const double* p, const doub
     const double step = std::clamp(-dot3(e, ts) / jac, -1.0, 1.0);
     xi += step;
     if (!std::isfinite(xi)) return false;
-    if (std::abs(step) <= 1e-14 * std::max(1.0, std::abs(xi))) return true;
+    if (std::abs(step) <= 1e-14 * std::max(1.0, std::abs(xi)) + step_noise(x, p, ts, jac)) return true;
   }
   return false;
 }

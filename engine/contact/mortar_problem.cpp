@@ -468,10 +468,18 @@ void MortarProblem::update_pressures(const Vector& residual) {
         for (int k = 0; k < 3; ++k) rt[3 * row + k] = (1.0 - 2.0 * kQuadraticAlpha) * rm[k];
     }
   }
+  // Along an imposed component of the slave node the residual is the support's reaction,
+  // not contact force (a node on a symmetry line whose normal is tilted from it): the
+  // pressure comes from the free components, where the eliminated system makes the
+  // residual parallel to the normal.
   for (size_t i = 0; i < rows_.size(); ++i) {
-    double nr = 0.0;
-    for (int k = 0; k < 3; ++k) nr += rows_[i].normal[k] * rt[3 * i + k];
-    lambda_[i] = -nr / rows_[i].d;
+    double nr = 0.0, nn = 0.0;
+    for (int k = 0; k < dim_; ++k) {
+      if (imposed_.count({rows_[i].node, k})) continue;
+      nr += rows_[i].normal[k] * rt[3 * i + k];
+      nn += rows_[i].normal[k] * rows_[i].normal[k];
+    }
+    lambda_[i] = nn > 0.0 ? -nr / (rows_[i].d * nn) : 0.0;
   }
 }
 
