@@ -53,7 +53,7 @@ def style(method):
         c = {"NTS": "#7f7f7f", "STS": "#000000", "MORTAR": "#9467bd"}[method.split("-")[1]]
         return dict(color=c, ls="--", marker="s" if "1e11" in method else "D", mfc="white")
     if method.startswith("MORTAR"):
-        return dict(color=colors.get(method, "#333333"), ls="-", marker="*", ms=9)
+        return dict(color=colors.get(method, "#333333"), ls="-", marker="*")
     return dict(color=colors.get(method, "#333333"), ls="-", marker="o")
 
 
