@@ -235,6 +235,15 @@ def summary(work, docs, c2, c3):
             errs = [num(r, "err_p") for r in rows if r["method"] == m and r["status"] == "ok" and num(r, "err_p") is not None]
             lines.append(f"| {m} | {cell(one)} | {cell(milli)} | {min(errs):.2g} |" if errs else f"| {m} | failed | failed | - |")
         lines.append("")
+        # The leftmost point of the chart at each level: the cheapest run of any method (CalculiX included).
+        for level in (1e-2, 1e-3, 1e-6, 1e-9):
+            best = cheapest(rows, level)
+            if best:
+                m = min(best, key=lambda k: num(best[k], "t_total"))
+                lines.append(f"- cheapest run reaching {level:g}: {m} ({fam(best[m])}, {num(best[m], 't_total'):.3g} s)")
+            else:
+                lines.append(f"- cheapest run reaching {level:g}: none")
+        lines.append("")
     lines += ["## Time ratio lunaster / CalculiX at equal accuracy (same run)", "",
               "Cheapest lunaster run over cheapest CalculiX run that both reach the error level, per "
               "mesh family (pairs where one of them never reaches it are left out).", "",
