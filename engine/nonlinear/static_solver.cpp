@@ -138,11 +138,9 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   stats_.n_dofs = n;
   {
     Stopwatch watch(stats_.assemble_seconds);
-    std::vector<Triplet> triplets;
-    assemble_stiffness(model_, dofs_, triplets);
-    k_full_ = SparseMatrix(n, n);
-    k_full_.setFromTriplets(triplets.begin(), triplets.end());
-  }  // the triplets are freed here: only the compressed matrix is kept
+    k_full_ = SparseMatrix();  // the previous run's matrix goes before this one is built
+    k_full_ = assemble_stiffness_matrix(model_, dofs_);
+  }
   k_scale_ = k_full_.nonZeros() ? k_full_.coeffs().cwiseAbs().maxCoeff() : 0.0;
 
   Vector u = Vector::Zero(n);
