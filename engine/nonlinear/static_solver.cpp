@@ -12,7 +12,6 @@
 
 #include "engine/assembly/assembly.hpp"
 #include "engine/core/error.hpp"
-#include "engine/nonlinear/reduction.hpp"
 #include "engine/nonlinear/rigid_body.hpp"
 #include "engine/solver/krylov.hpp"
 
@@ -217,11 +216,11 @@ SolverKind StaticSolver::backend_for(MatrixKind kind) {
 }
 
 /// The system of one Newton iteration, K_ff + contact terms restricted to the free
-/// equations, built without a full-size matrix: the elastic part is restricted once per
-/// set of Dirichlet conditions; the pattern (elastic, contact, a diagonal on every free
-/// equation) is built once per contact pattern version, with the position of every
-/// elastic value and contact triplet in it; each iteration then copies the elastic values
-/// and adds the contact ones in place.
+/// equations, built without a full-size matrix or a restricted copy: the pattern (elastic
+/// rows of the free equations, contact, a diagonal on every free equation) is built once
+/// per set of Dirichlet conditions and contact pattern version, with the position of every
+/// contact triplet in it; each iteration copies K_ff from k_full_ into it (not when it
+/// holds K_ff already) and adds the contact terms in place.
 /// Elimination of unknowns by linear relations du_E = A du_R + b (contact_hook.hpp):
 /// K' = K_RR + K_RE A + A^T K_ER + A^T K_EE A and r' = (r + K b)_R + A^T (r + K b)_E. Only
 /// the columns of K at E are read (K is symmetric), so the cost follows the relations, not
@@ -290,13 +289,18 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     sys.constrained = cons.constrained;
     ++sys.elastic_generation;
   }
+  const int nf = cons.n_free;
+  const int* el_outer = k_full_.outerIndexPtr();
+  const int* el_inner = k_full_.innerIndexPtr();
+  const double* el_values = k_full_.valuePtr();
   if (new_constraints || version != sys.contact_version || contact.size() != sys.contact_pos.size()) {
-    // The elastic stiffness on the free equations, only while the pattern is built: its
-    // values are kept in the system's pattern (elastic_values), not as a second matrix.
-    const SparseMatrix k_el = restrict_matrix(k_full_, cons.free_index, cons.n_free);
-    // Pattern column by column: the elastic rows (sorted) merged with the contact rows of
-    // the column (bucketed, sorted, unique) and the diagonal; no global sort.
-    const int nf = cons.n_free;
+    // Pattern column by column: the elastic rows of the free equations (read from k_full_
+    // through free_index, which keeps their order) merged with the contact rows of the
+    // column (bucketed, sorted, unique) and the diagonal; no restricted copy, no global sort.
+    sys.a = SparseMatrix();  // the old pattern goes before the new one is built
+    sys.equation.resize(nf);
+    for (int eq = 0; eq < dofs_.n_dofs(); ++eq)
+      if (cons.free_index[eq] >= 0) sys.equation[cons.free_index[eq]] = eq;
     std::vector<int> start(static_cast<size_t>(nf) + 2, 0), extra;
     for (const auto& tr : contact) {
       const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
@@ -310,43 +314,50 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
       if (i >= 0 && j >= 0) extra[start[j + 1]++] = i;
     }
     for (int j = 0; j < nf; ++j) extra[start[j + 1]++] = j;
-    std::vector<int> outer_new(static_cast<size_t>(nf) + 1, 0), inner_new;
-    inner_new.reserve(static_cast<size_t>(k_el.nonZeros()) + extra.size());
-    const int* el_outer = k_el.outerIndexPtr();
-    const int* el_inner = k_el.innerIndexPtr();
+    std::vector<int> extra_end(nf);
     for (int j = 0; j < nf; ++j) {
-      int* e0 = extra.data() + start[j];
-      int* e1 = extra.data() + start[j + 1];
-      std::sort(e0, e1);
-      e1 = std::unique(e0, e1);
-      const int* k0 = el_inner + el_outer[j];
-      const int* k1 = el_inner + el_outer[j + 1];
-      while (k0 != k1 || e0 != e1) {
-        int row;
-        if (e0 == e1 || (k0 != k1 && *k0 < *e0)) row = *k0++;
-        else if (k0 == k1 || *e0 < *k0) row = *e0++;
-        else row = *k0++, ++e0;  // in both
-        inner_new.push_back(row);
-      }
-      outer_new[j + 1] = static_cast<int>(inner_new.size());
+      std::sort(extra.begin() + start[j], extra.begin() + start[j + 1]);
+      extra_end[j] = static_cast<int>(std::unique(extra.begin() + start[j], extra.begin() + start[j + 1]) - extra.begin());
     }
-    sys.a = SparseMatrix(nf, nf);
-    sys.a.resizeNonZeros(static_cast<Eigen::Index>(inner_new.size()));
-    std::copy(outer_new.begin(), outer_new.end(), sys.a.outerIndexPtr());
-    std::copy(inner_new.begin(), inner_new.end(), sys.a.innerIndexPtr());
-    const int* outer = sys.a.outerIndexPtr();
-    const int* inner = sys.a.innerIndexPtr();
+    // Union of the two sorted row lists of column j, passed to emit(row).
+    auto merge_column = [&](int j, auto&& emit) {
+      const int* e0 = extra.data() + start[j];
+      const int* e1 = extra.data() + extra_end[j];
+      const int col = sys.equation[j];
+      int p = el_outer[col];
+      const int p1 = el_outer[col + 1];
+      int k = -1;  // next free elastic row of the column, -1 when none is left
+      auto next_elastic = [&] {
+        k = -1;
+        while (p < p1 && (k = cons.free_index[el_inner[p++]]) < 0) {}
+      };
+      next_elastic();
+      while (k >= 0 || e0 != e1) {
+        if (e0 == e1 || (k >= 0 && k < *e0)) emit(k), next_elastic();
+        else if (k < 0 || *e0 < k) emit(*e0++);
+        else emit(k), next_elastic(), ++e0;  // in both
+      }
+    };
+    SparseMatrix a(nf, nf);
+    int* outer = a.outerIndexPtr();
+    outer[0] = 0;
+    for (int j = 0; j < nf; ++j) {
+      int count = 0;
+      merge_column(j, [&count](int) { ++count; });
+      outer[j + 1] = outer[j] + count;
+    }
+    a.resizeNonZeros(outer[nf]);
+    int* inner = a.innerIndexPtr();
+    for (int j = 0; j < nf; ++j) {
+      int* r = inner + outer[j];
+      merge_column(j, [&r](int row) { *r++ = row; });
+    }
+    sys.a = std::move(a);
+    outer = sys.a.outerIndexPtr();
+    inner = sys.a.innerIndexPtr();
     auto position = [&](int i, int j) {
       return static_cast<int>(std::lower_bound(inner + outer[j], inner + outer[j + 1], i) - inner);
     };
-    sys.elastic_values.assign(sys.a.nonZeros(), 0.0);
-    for (int j = 0; j < nf; ++j) {  // both columns sorted: one merge per column
-      int k = outer[j];
-      for (int p = el_outer[j]; p < el_outer[j + 1]; ++p) {
-        while (inner[k] < el_inner[p]) ++k;
-        sys.elastic_values[k] = k_el.valuePtr()[p];
-      }
-    }
     sys.contact_pos.resize(contact.size());
     for (size_t k = 0; k < contact.size(); ++k) {
       const int i = cons.free_index[contact[k].row()], j = cons.free_index[contact[k].col()];
@@ -357,16 +368,37 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     sys.contact_version = version;
     ++sys.pattern;
     sys.valid = true;
+    sys.values_elastic = false;
   }
   double* values = sys.a.valuePtr();
-  std::copy(sys.elastic_values.begin(), sys.elastic_values.end(), values);
+  if (!sys.values_elastic) {
+    // K_ff in the system's pattern, straight from k_full_ (its free rows are a sorted
+    // subset of each column's rows); the other positions (contact only) get zeros.
+    const int* outer = sys.a.outerIndexPtr();
+    const int* inner = sys.a.innerIndexPtr();
+    for (int j = 0; j < nf; ++j) {
+      const int col = sys.equation[j];
+      int k = outer[j];
+      for (int p = el_outer[col]; p < el_outer[col + 1]; ++p) {
+        const int i = cons.free_index[el_inner[p]];
+        if (i < 0) continue;
+        while (inner[k] < i) values[k++] = 0.0;
+        values[k++] = el_values[p];
+      }
+      std::fill(values + k, values + outer[j + 1], 0.0);
+    }
+    sys.values_elastic = true;
+  }
   // The key of these values: the elastic part's generation, the contact values and the
   // condensed equations (FNV-1a over their bits). Equal keys, equal matrices.
   std::uint64_t key = 1469598103934665603ULL;
   auto mix = [&key](std::uint64_t v) { key = (key ^ v) * 1099511628211ULL; };
   mix(static_cast<std::uint64_t>(sys.elastic_generation));
+  // Whatever is added below leaves values that the next call must refill.
+  sys.values_elastic = sys.values_elastic && condensed.empty() && eliminated.empty();
   for (size_t k = 0; k < contact.size(); ++k) {
     if (sys.contact_pos[k] < 0) continue;
+    sys.values_elastic = false;
     const double v = contact[k].value();
     values[sys.contact_pos[k]] += v;
     std::uint64_t bits;

@@ -95,12 +95,15 @@ class StaticSolver {
   /// The restricted system, kept between iterations and instants (update_system).
   struct SystemCache {
     bool valid = false;
-    std::vector<int> constrained;      ///< Dirichlet equations of elastic_values
+    std::vector<int> constrained;      ///< Dirichlet equations the pattern was built for
+    std::vector<int> equation;         ///< equation of each free index (column of k_full_)
     long elastic_generation = 0;       ///< incremented when the Dirichlet set changes
     long contact_version = -1;         ///< contact pattern version the pattern was built for
     long pattern = 0;                  ///< incremented at each new pattern
     SparseMatrix a;                    ///< the system (pattern and current values)
-    std::vector<double> elastic_values;  ///< k_el's values in a's pattern
+    /// a's values are K_ff alone (nothing added since they were copied from k_full_), so
+    /// the next update need not copy them again. No second copy of K_ff is kept.
+    bool values_elastic = false;
     std::vector<int> contact_pos;      ///< position in a of each contact triplet, -1 if constrained
     std::vector<int> diagonal;         ///< position of each diagonal entry in a
     std::uint64_t values_key = 0;      ///< key of a's current values (update_system)
