@@ -138,7 +138,8 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   {
     Stopwatch watch(stats_.assemble_seconds);
     k_full_ = SparseMatrix();  // the previous run's matrix goes before this one is built
-    k_full_ = assemble_stiffness_matrix(model_, dofs_);
+    SparseMatrix k = assemble_stiffness_matrix(model_, dofs_);
+    k_full_.swap(k);  // Eigen 3.4's sparse assignment would copy it
   }
   k_scale_ = k_full_.nonZeros() ? k_full_.coeffs().cwiseAbs().maxCoeff() : 0.0;
 
@@ -352,7 +353,7 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
       int* r = inner + outer[j];
       merge_column(j, [&r](int row) { *r++ = row; });
     }
-    sys.a = std::move(a);
+    sys.a.swap(a);  // Eigen 3.4's sparse assignment would copy it
     outer = sys.a.outerIndexPtr();
     inner = sys.a.innerIndexPtr();
     auto position = [&](int i, int j) {
