@@ -81,6 +81,22 @@ Constraints build_constraints(const DofMap& dofs, const MechanicalLoads& loads, 
   return c;
 }
 
+/// The equations the Dirichlet conditions constrain: the same set at every instant (only
+/// the imposed values follow the load functions). Sorted.
+std::vector<int> constrained_equations(const DofMap& dofs, const MechanicalLoads& loads, const Mesh& mesh) {
+  std::vector<int> eqs;
+  for (const auto& d : loads.dirichlet) {
+    const int eq = dofs.dof(d.node, d.component);
+    if (eq < 0)
+      throw DeckError("imposed " + std::string(component_name(d.component)) + " on node " + mesh.node_names[d.node] +
+                      ", which carries no such unknown in the model");
+    eqs.push_back(eq);
+  }
+  std::sort(eqs.begin(), eqs.end());
+  eqs.erase(std::unique(eqs.begin(), eqs.end()), eqs.end());
+  return eqs;
+}
+
 Vector external_forces(const FeModel& model, const DofMap& dofs, const MechanicalLoads& loads, double t) {
   Vector f = Vector::Zero(dofs.n_dofs());
   for (const auto& p : loads.pressures)
@@ -137,11 +153,14 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   stats_.n_dofs = n;
   {
     Stopwatch watch(stats_.assemble_seconds);
-    k_full_ = SparseMatrix();  // the previous run's matrix goes before this one is built
+    const std::vector<int> constrained = constrained_equations(dofs_, loads_, *model_.mesh);
+    elastic_.ff = SparseMatrix();  // the previous run's matrices go before these are built
+    elastic_.c = SparseMatrix();
     SparseMatrix k = assemble_stiffness_matrix(model_, dofs_);
-    k_full_.swap(k);  // Eigen 3.4's sparse assignment would copy it
+    split_matrix(k, constrained, elastic_);
   }
-  k_scale_ = k_full_.nonZeros() ? k_full_.coeffs().cwiseAbs().maxCoeff() : 0.0;
+  k_scale_ = std::max(elastic_.ff.nonZeros() ? elastic_.ff.coeffs().cwiseAbs().maxCoeff() : 0.0,
+                      elastic_.c.nonZeros() ? elastic_.c.coeffs().cwiseAbs().maxCoeff() : 0.0);
 
   Vector u = Vector::Zero(n);
   steps_.clear();
@@ -217,11 +236,10 @@ SolverKind StaticSolver::backend_for(MatrixKind kind) {
 }
 
 /// The system of one Newton iteration, K_ff + contact terms restricted to the free
-/// equations, built without a full-size matrix or a restricted copy: the pattern (elastic
-/// rows of the free equations, contact, a diagonal on every free equation) is built once
-/// per set of Dirichlet conditions and contact pattern version, with the position of every
-/// contact triplet in it; each iteration copies K_ff from k_full_ into it (not when it
-/// holds K_ff already) and adds the contact terms in place.
+/// equations. Without a contact hook it is elastic_.ff itself. Otherwise its pattern (K_ff's,
+/// contact, a diagonal on every free equation) is built once per contact pattern version,
+/// with the position of every contact triplet in it; each iteration copies K_ff into it
+/// (not when it holds K_ff already) and adds the contact terms in place.
 /// Elimination of unknowns by linear relations du_E = A du_R + b (contact_hook.hpp):
 /// K' = K_RR + K_RE A + A^T K_ER + A^T K_EE A and r' = (r + K b)_R + A^T (r + K b)_E. Only
 /// the columns of K at E are read (K is symmetric), so the cost follows the relations, not
@@ -245,7 +263,10 @@ std::vector<int> StaticSolver::eliminate(const Constraints& cons, const std::vec
   std::vector<std::vector<std::pair<int, double>>> column(relations.size());
   for (size_t i = 0; i < relations.size(); ++i) {
     const int e = relations[i].eq;
-    for (SparseMatrix::InnerIterator it(k_full_, e); it; ++it) column[i].emplace_back(static_cast<int>(it.row()), it.value());
+    // Its constrained rows are left out: their residual is not solved for and no term
+    // of K' lies on them.
+    for (SparseMatrix::InnerIterator it(elastic_.ff, cons.free_index[e]); it; ++it)
+      column[i].emplace_back(elastic_.equation[it.row()], it.value());
   }
   for (const auto& tr : triplets)
     if (index_of[tr.col()] >= 0) column[index_of[tr.col()]].emplace_back(tr.row(), tr.value());
@@ -290,18 +311,23 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     sys.constrained = cons.constrained;
     ++sys.elastic_generation;
   }
+  LUNASTER_ASSERT(cons.constrained == elastic_.constrained, "the Dirichlet set changed within a run");
   const int nf = cons.n_free;
-  const int* el_outer = k_full_.outerIndexPtr();
-  const int* el_inner = k_full_.innerIndexPtr();
-  const double* el_values = k_full_.valuePtr();
+  if (!contact_) {  // K_ff alone: nothing to copy, nothing to add
+    if (new_constraints) ++sys.pattern, sys.valid = true;
+    sys.matrix = &elastic_.ff;
+    LUNASTER_ASSERT(condensed.empty() && eliminated.empty() && contact.empty(), "no contact hook, no contact terms");
+    std::uint64_t key = 1469598103934665603ULL;
+    sys.values_key = (key ^ static_cast<std::uint64_t>(sys.elastic_generation)) * 1099511628211ULL;
+    return;
+  }
+  const int* el_outer = elastic_.ff.outerIndexPtr();
+  const int* el_inner = elastic_.ff.innerIndexPtr();
+  const double* el_values = elastic_.ff.valuePtr();
   if (new_constraints || version != sys.contact_version || contact.size() != sys.contact_pos.size()) {
-    // Pattern column by column: the elastic rows of the free equations (read from k_full_
-    // through free_index, which keeps their order) merged with the contact rows of the
-    // column (bucketed, sorted, unique) and the diagonal; no restricted copy, no global sort.
+    // Pattern column by column: the rows of K_ff merged with the contact rows of the column
+    // (bucketed, sorted, unique) and the diagonal; no global sort.
     sys.a = SparseMatrix();  // the old pattern goes before the new one is built
-    sys.equation.resize(nf);
-    for (int eq = 0; eq < dofs_.n_dofs(); ++eq)
-      if (cons.free_index[eq] >= 0) sys.equation[cons.free_index[eq]] = eq;
     std::vector<int> start(static_cast<size_t>(nf) + 2, 0), extra;
     for (const auto& tr : contact) {
       const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
@@ -324,14 +350,10 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     auto merge_column = [&](int j, auto&& emit) {
       const int* e0 = extra.data() + start[j];
       const int* e1 = extra.data() + extra_end[j];
-      const int col = sys.equation[j];
-      int p = el_outer[col];
-      const int p1 = el_outer[col + 1];
-      int k = -1;  // next free elastic row of the column, -1 when none is left
-      auto next_elastic = [&] {
-        k = -1;
-        while (p < p1 && (k = cons.free_index[el_inner[p++]]) < 0) {}
-      };
+      int p = el_outer[j];
+      const int p1 = el_outer[j + 1];
+      int k = -1;  // next elastic row of the column, -1 when none is left
+      auto next_elastic = [&] { k = p < p1 ? el_inner[p++] : -1; };
       next_elastic();
       while (k >= 0 || e0 != e1) {
         if (e0 == e1 || (k >= 0 && k < *e0)) emit(k), next_elastic();
@@ -370,19 +392,18 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     ++sys.pattern;
     sys.valid = true;
     sys.values_elastic = false;
+    sys.matrix = &sys.a;
   }
   double* values = sys.a.valuePtr();
   if (!sys.values_elastic) {
-    // K_ff in the system's pattern, straight from k_full_ (its free rows are a sorted
-    // subset of each column's rows); the other positions (contact only) get zeros.
+    // K_ff in the system's pattern (its rows are a sorted subset of each column's rows);
+    // the other positions (contact only) get zeros.
     const int* outer = sys.a.outerIndexPtr();
     const int* inner = sys.a.innerIndexPtr();
     for (int j = 0; j < nf; ++j) {
-      const int col = sys.equation[j];
       int k = outer[j];
-      for (int p = el_outer[col]; p < el_outer[col + 1]; ++p) {
-        const int i = cons.free_index[el_inner[p]];
-        if (i < 0) continue;
+      for (int p = el_outer[j]; p < el_outer[j + 1]; ++p) {
+        const int i = el_inner[p];
         while (inner[k] < i) values[k++] = 0.0;
         values[k++] = el_values[p];
       }
@@ -448,7 +469,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       Vector residual;
       {
         Stopwatch watch(stats_.assemble_seconds);
-        residual = k_full_ * u - f_ext;
+        residual = elastic_.times(u) - f_ext;
       }
       if (contact_) {
         Stopwatch watch(stats_.contact_seconds);
@@ -496,7 +517,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       // no second factorisation is spent on the check.
       if (!rigid_checked_ && backend != SolverKind::Cholmod && (!contact_ || contact_->n_active() == 0)) {
         Stopwatch watch(stats_.assemble_seconds);
-        if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, k_full_, t)) throw *rigid;
+        if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, elastic_.ff, t)) throw *rigid;
         rigid_checked_ = true;
       }
       static const std::vector<int> no_equations;
@@ -512,7 +533,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         Stopwatch watch(stats_.assemble_seconds);
         update_system(cons, k_contact, condensed, eliminated_eqs);
       }
-      const SparseMatrix& a = system_->a;
+      const SparseMatrix& a = *system_->matrix;
       // Condensed unknowns: decoupled rows (unit diagonal, zero right-hand side), set by recover().
       for (int eq : condensed)
         if (cons.free_index[eq] >= 0) r_free[cons.free_index[eq]] = 0.0;
@@ -565,7 +586,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           solver->factorize(a, kind);
         } catch (const SolveError& err) {
           if (err.out_of_memory()) throw;
-          throw diagnose_singular_system(model_, dofs_, cons.free_index, k_full_, err, t);
+          throw diagnose_singular_system(model_, dofs_, cons.free_index, elastic_.ff, err, t);
         }
         ++stats_.factorisations;
         state.factorised = true;
@@ -592,7 +613,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       stats_.solve_residual = std::max(stats_.solve_residual, solve_error);
       if (!(solve_error <= kSolveTolerance))
         throw diagnose_singular_system(
-            model_, dofs_, cons.free_index, k_full_,
+            model_, dofs_, cons.free_index, elastic_.ff,
             SolveError("the linear solver returned no accurate solution (relative residual of the solve " +
                        sci(raw_error) + ", " + sci(solve_error) + " after iterative refinement; accepted below " +
                        sci(kSolveTolerance) + ")"),
