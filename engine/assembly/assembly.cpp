@@ -1,9 +1,13 @@
 /// Stiffness and internal-force assembly for linear elasticity. One pass over
-/// the volume cells with fixed-size element matrices; the triplet array is
-/// sized up front and filled by two threads writing disjoint slices.
+/// the volume cells with fixed-size element matrices. The triplet array is
+/// sized up front and filled by two threads writing disjoint slices; the
+/// compressed matrix gets its pattern from the connectivity first and is then
+/// filled by two threads that own disjoint column ranges.
 #include "engine/assembly/assembly.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <thread>
 
 #include "engine/assembly/element_kernels.hpp"
@@ -64,7 +68,154 @@ void stiffness_range(const FeModel& model, const DofMap& dofs, const std::vector
   }
 }
 
+/// Two workers (the target machine has 2 cores): `work(0)` here, `work(1)` on a helper
+/// thread. Each reports the position of the cell it failed on (or SIZE_MAX) and its
+/// exception; the one of the earlier cell is re-thrown, so the error is the one a single
+/// pass in cell order would raise.
+template <class Work>
+void run_two_workers(Work&& work) {
+  std::exception_ptr failure[2];
+  size_t failed_at[2] = {SIZE_MAX, SIZE_MAX};
+  auto guarded = [&](int w) {
+    try {
+      work(w, failed_at[w]);
+    } catch (...) {
+      failure[w] = std::current_exception();
+    }
+  };
+  std::thread helper(guarded, 1);
+  guarded(0);
+  helper.join();
+  const int first = failed_at[1] < failed_at[0] ? 1 : 0;
+  if (failure[first]) std::rethrow_exception(failure[first]);
+  if (failure[1 - first]) std::rethrow_exception(failure[1 - first]);
+}
+
+/// Compressed pattern of the stiffness: column (node b, component k) holds, for every node
+/// a sharing a cell with b in increasing equation order, the rows of a's DIM components.
+/// The DIM columns of a node have the same rows. Displacement DOFs of a node are
+/// consecutive equations (DofMap numbers them node by node).
+void stiffness_pattern(const Mesh& mesh, const DofMap& dofs, const std::vector<int>& cells, SparseMatrix& k) {
+  const int n_nodes = mesh.n_nodes(), dim = dofs.dim(), n = dofs.n_dofs();
+  // Cells of each node (CSR).
+  std::vector<int> cell_start(static_cast<size_t>(n_nodes) + 1, 0), node_cells;
+  for (int c : cells)
+    for (int a = 0, nn = mesh.cell_n_nodes(c); a < nn; ++a) ++cell_start[mesh.cell(c)[a] + 1];
+  for (int v = 0; v < n_nodes; ++v) cell_start[v + 1] += cell_start[v];
+  node_cells.resize(cell_start[n_nodes]);
+  {
+    std::vector<int> fill(cell_start.begin(), cell_start.end() - 1);
+    for (int c : cells)
+      for (int a = 0, nn = mesh.cell_n_nodes(c); a < nn; ++a) node_cells[fill[mesh.cell(c)[a]]++] = c;
+  }
+  // Coupled nodes of each node, sorted by their first equation.
+  std::vector<int> adj_start(static_cast<size_t>(n_nodes) + 1, 0), adj;
+  adj.reserve(node_cells.size() * 3);
+  std::vector<int> mark(n_nodes, -1);
+  auto by_equation = [&dofs](int x, int y) { return dofs.dof(x, 0) < dofs.dof(y, 0); };
+  for (int v = 0; v < n_nodes; ++v) {
+    const size_t first = adj.size();
+    for (int p = cell_start[v]; p < cell_start[v + 1]; ++p) {
+      const int c = node_cells[p];
+      for (int a = 0, nn = mesh.cell_n_nodes(c); a < nn; ++a) {
+        const int w = mesh.cell(c)[a];
+        if (mark[w] != v) mark[w] = v, adj.push_back(w);
+      }
+    }
+    std::sort(adj.begin() + static_cast<std::ptrdiff_t>(first), adj.end(), by_equation);
+    adj_start[v + 1] = static_cast<int>(adj.size());
+    if (adj.size() > first)
+      for (int k = 1; k < dim; ++k)
+        LUNASTER_ASSERT(dofs.dof(v, k) == dofs.dof(v, 0) + k, "stiffness pattern: node DOFs are not consecutive");
+  }
+  std::vector<int>().swap(node_cells);
+  // Columns: DIM rows per coupled node; none for the other unknowns (multipliers).
+  k = SparseMatrix(n, n);
+  int* outer = k.outerIndexPtr();
+  outer[0] = 0;
+  for (int eq = 0; eq < n; ++eq) {
+    const int v = dofs.node_of(eq);
+    const long long rows = is_displacement(dofs.component_of(eq)) ? static_cast<long long>(dim) * (adj_start[v + 1] - adj_start[v]) : 0;
+    LUNASTER_ASSERT(outer[eq] + rows <= std::numeric_limits<int>::max(), "stiffness pattern: more than 2^31 entries");
+    outer[eq + 1] = outer[eq] + static_cast<int>(rows);
+  }
+  k.resizeNonZeros(outer[n]);
+  int* inner = k.innerIndexPtr();
+  for (int eq = 0; eq < n; ++eq) {
+    if (outer[eq + 1] == outer[eq]) continue;
+    const int v = dofs.node_of(eq);
+    int* r = inner + outer[eq];
+    for (int p = adj_start[v]; p < adj_start[v + 1]; ++p)
+      for (int l = 0, row = dofs.dof(adj[p], 0); l < dim; ++l) *r++ = row + l;
+  }
+}
+
+/// Adds the stiffness of cells[i] for the cells touching columns [col_begin, col_end) of k,
+/// in cell order, into those columns only. `failed_at` is set to the position of a cell
+/// whose stiffness throws.
+void stiffness_columns(const FeModel& model, const DofMap& dofs, const std::vector<int>& cells, int col_begin,
+                       int col_end, SparseMatrix& k, size_t& failed_at) {
+  const Mesh& mesh = *model.mesh;
+  const int* outer = k.outerIndexPtr();
+  const int* inner = k.innerIndexPtr();
+  double* values = k.valuePtr();
+  std::fill(values + outer[col_begin], values + outer[col_end], 0.0);
+  size_t i = 0;
+  try {
+    for (; i < cells.size(); ++i) {
+      const int cell = cells[i];
+      dispatch_volume(mesh.cell_types[cell], [&](auto nn, auto dim) {
+        constexpr int NN = decltype(nn)::value, DIM = decltype(dim)::value, ND = NN * DIM;
+        int eq[ND];
+        cell_equations<NN, DIM>(mesh, dofs, cell, eq);
+        bool mine = false;
+        for (int b = 0; b < NN && !mine; ++b) mine = eq[DIM * b] >= col_begin && eq[DIM * b] < col_end;
+        if (!mine) return;
+        Eigen::Matrix<double, ND, ND> ke;
+        element_stiffness<NN, DIM>(model, cell, ke);
+        for (int b = 0; b < NN; ++b) {
+          const int j0 = eq[DIM * b];
+          if (j0 < col_begin || j0 >= col_end) continue;
+          const int* col = inner + outer[j0];
+          const int* col_end_ptr = inner + outer[j0 + 1];
+          for (int a = 0; a < NN; ++a) {
+            // Offset of node a's rows in the columns of node b (the same in its DIM columns).
+            const int offset = static_cast<int>(std::lower_bound(col, col_end_ptr, eq[DIM * a]) - col);
+            LUNASTER_DASSERT(col + offset < col_end_ptr && col[offset] == eq[DIM * a], "stiffness entry outside its pattern");
+            for (int kk = 0; kk < DIM; ++kk) {
+              double* v = values + outer[j0 + kk] + offset;
+              for (int l = 0; l < DIM; ++l) v[l] += ke(DIM * a + l, DIM * b + kk);
+            }
+          }
+        }
+      });
+    }
+  } catch (...) {
+    failed_at = i;
+    throw;
+  }
+}
+
 }  // namespace
+
+SparseMatrix assemble_stiffness_matrix(const FeModel& model, const DofMap& dofs) {
+  LUNASTER_ASSERT(model.mesh != nullptr, "assemble_stiffness_matrix: model without mesh");
+  const std::vector<int> cells = model.volume_cells();
+  SparseMatrix k;
+  stiffness_pattern(*model.mesh, dofs, cells, k);
+  // Two column ranges of about half the entries each. Each worker computes the element
+  // matrices of the cells that touch its columns (those straddling the split twice) and
+  // writes its columns only: no two threads write one entry, and each entry sums its
+  // cells in cell order whatever the split.
+  const int n = static_cast<int>(k.cols());
+  const int* outer = k.outerIndexPtr();
+  int split = static_cast<int>(std::lower_bound(outer, outer + n, outer[n] / 2) - outer);
+  while (split < n && dofs.component_of(split) != DX && is_displacement(dofs.component_of(split))) ++split;  // a node's columns together
+  run_two_workers([&](int w, size_t& failed_at) {
+    stiffness_columns(model, dofs, cells, w == 0 ? 0 : split, w == 0 ? split : n, k, failed_at);
+  });
+  return k;
+}
 
 void assemble_stiffness(const FeModel& model, const DofMap& dofs, std::vector<Triplet>& out) {
   LUNASTER_ASSERT(model.mesh != nullptr, "assemble_stiffness: model without mesh");

@@ -12,6 +12,14 @@ namespace lunaster::engine {
 /// Full integration for every element type (see engine/fe/quadrature).
 void assemble_stiffness(const FeModel& model, const DofMap& dofs, std::vector<Triplet>& out);
 
+/// The same stiffness assembled straight into a compressed matrix (n_dofs x n_dofs, both
+/// triangles, sorted columns): the pattern comes from the cell connectivity (each node
+/// coupled with every node of its cells, all their displacement components; DOFs that are
+/// not displacements get empty columns) and the element matrices are added in place, so no
+/// triplet list is ever stored. Each entry sums its cells in the same order as the
+/// triplets' setFromTriplets does: pattern and values are those of that matrix.
+SparseMatrix assemble_stiffness_matrix(const FeModel& model, const DofMap& dofs);
+
 /// f_int = K u for linear elasticity, assembled cell by cell (no global matrix needed).
 void assemble_internal_forces(const FeModel& model, const DofMap& dofs, const Vector& u, Vector& f_int);
 

@@ -1,5 +1,6 @@
 #pragma once
 /// Restriction of an assembled matrix to a subset of its equations.
+#include <algorithm>
 #include <vector>
 
 #include "engine/solver/linear_solver.hpp"
@@ -11,5 +12,24 @@ namespace lunaster::engine {
 /// equations (so each column stays sorted). One linear pass, no sorting:
 /// used to eliminate Dirichlet equations without going back to triplets.
 SparseMatrix restrict_matrix(const SparseMatrix& a, const std::vector<int>& index, int n_kept);
+
+/// A symmetric matrix K split by a set C of constrained equations (Dirichlet conditions)
+/// into what a solve with C eliminated needs: K(F, F) on the free equations F and the
+/// columns K(:, C). Together they are K (K(C, F) = K(F, C)^T): no full copy is kept.
+struct SplitMatrix {
+  SparseMatrix ff;               ///< K(F, F), column free_index[eq] for equation eq
+  SparseMatrix c;                ///< K(:, C): column k is equation constrained[k], every row
+  std::vector<int> constrained;  ///< C, sorted
+  std::vector<int> free_index;   ///< per equation: its column in ff, -1 in C
+  std::vector<int> equation;     ///< per column of ff: its equation
+  /// K u over the whole numbering.
+  Vector times(const Vector& u) const;
+};
+
+/// Splits K (square, symmetric, compressed, sorted columns) into `out`; `constrained` need
+/// not be sorted nor unique. K's storage becomes out.ff's (the free entries moved to its
+/// front, the rest left unused) and k is left empty, so no second copy of K is ever
+/// allocated. (An output argument: Eigen 3.4's SparseMatrix copies where it would move.)
+void split_matrix(SparseMatrix& k, std::vector<int> constrained, SplitMatrix& out);
 
 }  // namespace lunaster::engine

@@ -49,11 +49,12 @@ std::string body_name(const Mesh& mesh, const std::vector<int>& body) {
 std::optional<SolveError> find_rigid_body_mode(const FeModel& model, const DofMap& dofs,
                                                const std::vector<int>& free_index,
                                                const SparseMatrix& elastic, double t) {
-  // Reduced elastic matrix on the free displacement equations only.
-  std::vector<int> reduced(dofs.n_dofs(), -1), back;
+  // Reduced elastic matrix on the free displacement equations only (`elastic` is on the
+  // free equations, numbered by free_index).
+  std::vector<int> reduced(elastic.cols(), -1), back;
   for (int eq = 0; eq < dofs.n_dofs(); ++eq)
     if (free_index[eq] >= 0 && is_displacement(dofs.component_of(eq))) {
-      reduced[eq] = static_cast<int>(back.size());
+      reduced[free_index[eq]] = static_cast<int>(back.size());
       back.push_back(eq);
     }
   SparseMatrix k = restrict_matrix(elastic, reduced, static_cast<int>(back.size()));

@@ -20,6 +20,8 @@ namespace lunaster::engine {
 /// elastic part alone is regular (the singularity then comes from contact).
 /// The rigid-body error for the elastic part on the free displacement equations,
 /// or nothing if that part is regular (CHOLMOD with its pivot-ratio test).
+/// `elastic` is the elastic stiffness on the free equations, column free_index[eq] for
+/// equation eq.
 std::optional<SolveError> find_rigid_body_mode(const FeModel& model, const DofMap& dofs,
                                                const std::vector<int>& free_index,
                                                const SparseMatrix& elastic, double t);

@@ -12,7 +12,6 @@
 
 #include "engine/assembly/assembly.hpp"
 #include "engine/core/error.hpp"
-#include "engine/nonlinear/reduction.hpp"
 #include "engine/nonlinear/rigid_body.hpp"
 #include "engine/solver/krylov.hpp"
 
@@ -82,6 +81,22 @@ Constraints build_constraints(const DofMap& dofs, const MechanicalLoads& loads, 
   return c;
 }
 
+/// The equations the Dirichlet conditions constrain: the same set at every instant (only
+/// the imposed values follow the load functions). Sorted.
+std::vector<int> constrained_equations(const DofMap& dofs, const MechanicalLoads& loads, const Mesh& mesh) {
+  std::vector<int> eqs;
+  for (const auto& d : loads.dirichlet) {
+    const int eq = dofs.dof(d.node, d.component);
+    if (eq < 0)
+      throw DeckError("imposed " + std::string(component_name(d.component)) + " on node " + mesh.node_names[d.node] +
+                      ", which carries no such unknown in the model");
+    eqs.push_back(eq);
+  }
+  std::sort(eqs.begin(), eqs.end());
+  eqs.erase(std::unique(eqs.begin(), eqs.end()), eqs.end());
+  return eqs;
+}
+
 Vector external_forces(const FeModel& model, const DofMap& dofs, const MechanicalLoads& loads, double t) {
   Vector f = Vector::Zero(dofs.n_dofs());
   for (const auto& p : loads.pressures)
@@ -138,12 +153,14 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   stats_.n_dofs = n;
   {
     Stopwatch watch(stats_.assemble_seconds);
-    std::vector<Triplet> triplets;
-    assemble_stiffness(model_, dofs_, triplets);
-    k_full_ = SparseMatrix(n, n);
-    k_full_.setFromTriplets(triplets.begin(), triplets.end());
-  }  // the triplets are freed here: only the compressed matrix is kept
-  k_scale_ = k_full_.nonZeros() ? k_full_.coeffs().cwiseAbs().maxCoeff() : 0.0;
+    const std::vector<int> constrained = constrained_equations(dofs_, loads_, *model_.mesh);
+    elastic_.ff = SparseMatrix();  // the previous run's matrices go before these are built
+    elastic_.c = SparseMatrix();
+    SparseMatrix k = assemble_stiffness_matrix(model_, dofs_);
+    split_matrix(k, constrained, elastic_);
+  }
+  k_scale_ = std::max(elastic_.ff.nonZeros() ? elastic_.ff.coeffs().cwiseAbs().maxCoeff() : 0.0,
+                      elastic_.c.nonZeros() ? elastic_.c.coeffs().cwiseAbs().maxCoeff() : 0.0);
 
   Vector u = Vector::Zero(n);
   steps_.clear();
@@ -231,11 +248,10 @@ SolverKind StaticSolver::backend_for(MatrixKind kind) {
 }
 
 /// The system of one Newton iteration, K_ff + contact terms restricted to the free
-/// equations, built without a full-size matrix: the elastic part is restricted once per
-/// set of Dirichlet conditions; the pattern (elastic, contact, a diagonal on every free
-/// equation) is built once per contact pattern version, with the position of every
-/// elastic value and contact triplet in it; each iteration then copies the elastic values
-/// and adds the contact ones in place.
+/// equations. Without a contact hook it is elastic_.ff itself. Otherwise its pattern (K_ff's,
+/// contact, a diagonal on every free equation) is built once per contact pattern version,
+/// with the position of every contact triplet in it; each iteration copies K_ff into it
+/// (not when it holds K_ff already) and adds the contact terms in place.
 /// Elimination of unknowns by linear relations du_E = A du_R + b (contact_hook.hpp):
 /// K' = K_RR + K_RE A + A^T K_ER + A^T K_EE A and r' = (r + K b)_R + A^T (r + K b)_E. Only
 /// the columns of K at E are read (K is symmetric), so the cost follows the relations, not
@@ -259,7 +275,10 @@ std::vector<int> StaticSolver::eliminate(const Constraints& cons, const std::vec
   std::vector<std::vector<std::pair<int, double>>> column(relations.size());
   for (size_t i = 0; i < relations.size(); ++i) {
     const int e = relations[i].eq;
-    for (SparseMatrix::InnerIterator it(k_full_, e); it; ++it) column[i].emplace_back(static_cast<int>(it.row()), it.value());
+    // Its constrained rows are left out: their residual is not solved for and no term
+    // of K' lies on them.
+    for (SparseMatrix::InnerIterator it(elastic_.ff, cons.free_index[e]); it; ++it)
+      column[i].emplace_back(elastic_.equation[it.row()], it.value());
   }
   for (const auto& tr : triplets)
     if (index_of[tr.col()] >= 0) column[index_of[tr.col()]].emplace_back(tr.row(), tr.value());
@@ -325,13 +344,23 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     sys.constrained = cons.constrained;
     ++sys.elastic_generation;
   }
+  LUNASTER_ASSERT(cons.constrained == elastic_.constrained, "the Dirichlet set changed within a run");
+  const int nf = cons.n_free;
+  if (!contact_) {  // K_ff alone: nothing to copy, nothing to add
+    if (new_constraints) ++sys.pattern, sys.valid = true;
+    sys.matrix = &elastic_.ff;
+    LUNASTER_ASSERT(condensed.empty() && eliminated.empty() && contact.empty(), "no contact hook, no contact terms");
+    std::uint64_t key = 1469598103934665603ULL;
+    sys.values_key = (key ^ static_cast<std::uint64_t>(sys.elastic_generation)) * 1099511628211ULL;
+    return;
+  }
+  const int* el_outer = elastic_.ff.outerIndexPtr();
+  const int* el_inner = elastic_.ff.innerIndexPtr();
+  const double* el_values = elastic_.ff.valuePtr();
   if (new_constraints || version != sys.contact_version || contact.size() != sys.contact_pos.size()) {
-    // The elastic stiffness on the free equations, only while the pattern is built: its
-    // values are kept in the system's pattern (elastic_values), not as a second matrix.
-    const SparseMatrix k_el = restrict_matrix(k_full_, cons.free_index, cons.n_free);
-    // Pattern column by column: the elastic rows (sorted) merged with the contact rows of
-    // the column (bucketed, sorted, unique) and the diagonal; no global sort.
-    const int nf = cons.n_free;
+    // Pattern column by column: the rows of K_ff merged with the contact rows of the column
+    // (bucketed, sorted, unique) and the diagonal; no global sort.
+    sys.a = SparseMatrix();  // the old pattern goes before the new one is built
     std::vector<int> start(static_cast<size_t>(nf) + 2, 0), extra;
     for (const auto& tr : contact) {
       const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
@@ -345,43 +374,46 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
       if (i >= 0 && j >= 0) extra[start[j + 1]++] = i;
     }
     for (int j = 0; j < nf; ++j) extra[start[j + 1]++] = j;
-    std::vector<int> outer_new(static_cast<size_t>(nf) + 1, 0), inner_new;
-    inner_new.reserve(static_cast<size_t>(k_el.nonZeros()) + extra.size());
-    const int* el_outer = k_el.outerIndexPtr();
-    const int* el_inner = k_el.innerIndexPtr();
+    std::vector<int> extra_end(nf);
     for (int j = 0; j < nf; ++j) {
-      int* e0 = extra.data() + start[j];
-      int* e1 = extra.data() + start[j + 1];
-      std::sort(e0, e1);
-      e1 = std::unique(e0, e1);
-      const int* k0 = el_inner + el_outer[j];
-      const int* k1 = el_inner + el_outer[j + 1];
-      while (k0 != k1 || e0 != e1) {
-        int row;
-        if (e0 == e1 || (k0 != k1 && *k0 < *e0)) row = *k0++;
-        else if (k0 == k1 || *e0 < *k0) row = *e0++;
-        else row = *k0++, ++e0;  // in both
-        inner_new.push_back(row);
-      }
-      outer_new[j + 1] = static_cast<int>(inner_new.size());
+      std::sort(extra.begin() + start[j], extra.begin() + start[j + 1]);
+      extra_end[j] = static_cast<int>(std::unique(extra.begin() + start[j], extra.begin() + start[j + 1]) - extra.begin());
     }
-    sys.a = SparseMatrix(nf, nf);
-    sys.a.resizeNonZeros(static_cast<Eigen::Index>(inner_new.size()));
-    std::copy(outer_new.begin(), outer_new.end(), sys.a.outerIndexPtr());
-    std::copy(inner_new.begin(), inner_new.end(), sys.a.innerIndexPtr());
-    const int* outer = sys.a.outerIndexPtr();
-    const int* inner = sys.a.innerIndexPtr();
+    // Union of the two sorted row lists of column j, passed to emit(row).
+    auto merge_column = [&](int j, auto&& emit) {
+      const int* e0 = extra.data() + start[j];
+      const int* e1 = extra.data() + extra_end[j];
+      int p = el_outer[j];
+      const int p1 = el_outer[j + 1];
+      int k = -1;  // next elastic row of the column, -1 when none is left
+      auto next_elastic = [&] { k = p < p1 ? el_inner[p++] : -1; };
+      next_elastic();
+      while (k >= 0 || e0 != e1) {
+        if (e0 == e1 || (k >= 0 && k < *e0)) emit(k), next_elastic();
+        else if (k < 0 || *e0 < k) emit(*e0++);
+        else emit(k), next_elastic(), ++e0;  // in both
+      }
+    };
+    SparseMatrix a(nf, nf);
+    int* outer = a.outerIndexPtr();
+    outer[0] = 0;
+    for (int j = 0; j < nf; ++j) {
+      int count = 0;
+      merge_column(j, [&count](int) { ++count; });
+      outer[j + 1] = outer[j] + count;
+    }
+    a.resizeNonZeros(outer[nf]);
+    int* inner = a.innerIndexPtr();
+    for (int j = 0; j < nf; ++j) {
+      int* r = inner + outer[j];
+      merge_column(j, [&r](int row) { *r++ = row; });
+    }
+    sys.a.swap(a);  // Eigen 3.4's sparse assignment would copy it
+    outer = sys.a.outerIndexPtr();
+    inner = sys.a.innerIndexPtr();
     auto position = [&](int i, int j) {
       return static_cast<int>(std::lower_bound(inner + outer[j], inner + outer[j + 1], i) - inner);
     };
-    sys.elastic_values.assign(sys.a.nonZeros(), 0.0);
-    for (int j = 0; j < nf; ++j) {  // both columns sorted: one merge per column
-      int k = outer[j];
-      for (int p = el_outer[j]; p < el_outer[j + 1]; ++p) {
-        while (inner[k] < el_inner[p]) ++k;
-        sys.elastic_values[k] = k_el.valuePtr()[p];
-      }
-    }
     sys.contact_pos.resize(contact.size());
     for (size_t k = 0; k < contact.size(); ++k) {
       const int i = cons.free_index[contact[k].row()], j = cons.free_index[contact[k].col()];
@@ -392,16 +424,36 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     sys.contact_version = version;
     ++sys.pattern;
     sys.valid = true;
+    sys.values_elastic = false;
+    sys.matrix = &sys.a;
   }
   double* values = sys.a.valuePtr();
-  std::copy(sys.elastic_values.begin(), sys.elastic_values.end(), values);
+  if (!sys.values_elastic) {
+    // K_ff in the system's pattern (its rows are a sorted subset of each column's rows);
+    // the other positions (contact only) get zeros.
+    const int* outer = sys.a.outerIndexPtr();
+    const int* inner = sys.a.innerIndexPtr();
+    for (int j = 0; j < nf; ++j) {
+      int k = outer[j];
+      for (int p = el_outer[j]; p < el_outer[j + 1]; ++p) {
+        const int i = el_inner[p];
+        while (inner[k] < i) values[k++] = 0.0;
+        values[k++] = el_values[p];
+      }
+      std::fill(values + k, values + outer[j + 1], 0.0);
+    }
+    sys.values_elastic = true;
+  }
   // The key of these values: the elastic part's generation, the contact values and the
   // condensed equations (FNV-1a over their bits). Equal keys, equal matrices.
   std::uint64_t key = 1469598103934665603ULL;
   auto mix = [&key](std::uint64_t v) { key = (key ^ v) * 1099511628211ULL; };
   mix(static_cast<std::uint64_t>(sys.elastic_generation));
+  // Whatever is added below leaves values that the next call must refill.
+  sys.values_elastic = sys.values_elastic && condensed.empty() && eliminated.empty();
   for (size_t k = 0; k < contact.size(); ++k) {
     if (sys.contact_pos[k] < 0) continue;
+    sys.values_elastic = false;
     const double v = contact[k].value();
     values[sys.contact_pos[k]] += v;
     std::uint64_t bits;
@@ -450,7 +502,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       Vector residual;
       {
         Stopwatch watch(stats_.assemble_seconds);
-        residual = k_full_ * u - f_ext;
+        residual = elastic_.times(u) - f_ext;
       }
       if (contact_) {
         Stopwatch watch(stats_.contact_seconds);
@@ -498,7 +550,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       // no second factorisation is spent on the check.
       if (!rigid_checked_ && backend != SolverKind::Cholmod && (!contact_ || contact_->n_active() == 0)) {
         Stopwatch watch(stats_.assemble_seconds);
-        if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, k_full_, t)) throw *rigid;
+        if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, elastic_.ff, t)) throw *rigid;
         rigid_checked_ = true;
       }
       static const std::vector<int> no_equations;
@@ -514,7 +566,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         Stopwatch watch(stats_.assemble_seconds);
         update_system(cons, k_contact, condensed, eliminated_eqs);
       }
-      const SparseMatrix& a = system_->a;
+      const SparseMatrix& a = *system_->matrix;
       // Condensed unknowns: decoupled rows (unit diagonal, zero right-hand side), set by recover().
       for (int eq : condensed)
         if (cons.free_index[eq] >= 0) r_free[cons.free_index[eq]] = 0.0;
@@ -567,7 +619,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           solver->factorize(a, kind);
         } catch (const SolveError& err) {
           if (err.out_of_memory()) throw;
-          throw diagnose_singular_system(model_, dofs_, cons.free_index, k_full_, err, t);
+          throw diagnose_singular_system(model_, dofs_, cons.free_index, elastic_.ff, err, t);
         }
         ++stats_.factorisations;
         state.factorised = true;
@@ -594,7 +646,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       stats_.solve_residual = std::max(stats_.solve_residual, solve_error);
       if (!(solve_error <= kSolveTolerance))
         throw diagnose_singular_system(
-            model_, dofs_, cons.free_index, k_full_,
+            model_, dofs_, cons.free_index, elastic_.ff,
             SolveError("the linear solver returned no accurate solution (relative residual of the solve " +
                        sci(raw_error) + ", " + sci(solve_error) + " after iterative refinement; accepted below " +
                        sci(kSolveTolerance) + ")"),

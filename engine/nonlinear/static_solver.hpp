@@ -14,6 +14,7 @@
 #include "engine/fields/fields.hpp"
 #include "engine/nonlinear/contact_hook.hpp"
 #include "engine/nonlinear/loads.hpp"
+#include "engine/nonlinear/reduction.hpp"
 #include "engine/solver/linear_solver.hpp"
 
 namespace lunaster::engine {
@@ -98,12 +99,15 @@ class StaticSolver {
   /// The restricted system, kept between iterations and instants (update_system).
   struct SystemCache {
     bool valid = false;
-    std::vector<int> constrained;      ///< Dirichlet equations of elastic_values
+    std::vector<int> constrained;      ///< Dirichlet equations the pattern was built for
     long elastic_generation = 0;       ///< incremented when the Dirichlet set changes
     long contact_version = -1;         ///< contact pattern version the pattern was built for
     long pattern = 0;                  ///< incremented at each new pattern
-    SparseMatrix a;                    ///< the system (pattern and current values)
-    std::vector<double> elastic_values;  ///< k_el's values in a's pattern
+    SparseMatrix a;                    ///< the system (pattern and current values) with a contact hook
+    const SparseMatrix* matrix = nullptr;  ///< the system: &a, or elastic_.ff without a contact hook
+    /// a's values are K_ff alone (nothing added since they were copied from elastic_.ff), so
+    /// the next update need not copy them again. No second copy of K_ff is kept.
+    bool values_elastic = false;
     std::vector<int> contact_pos;      ///< position in a of each contact triplet, -1 if constrained
     std::vector<int> diagonal;         ///< position of each diagonal entry in a
     std::uint64_t values_key = 0;      ///< key of a's current values (update_system)
@@ -116,7 +120,12 @@ class StaticSolver {
   /// Backend for a system of this kind: Cholmod gives way to Mumps (said once per run).
   SolverKind backend_for(MatrixKind kind);
 
-  SparseMatrix k_full_;
+  /// The elastic stiffness K split by the Dirichlet conditions of the run (one set for every
+  /// instant, only the imposed values follow the load functions): K_ff (numbered as
+  /// Constraints::free_index), the system itself when there is no contact, and the
+  /// constrained columns. Nothing else of K is kept: they give K u, the system's refill and
+  /// the eliminations' columns.
+  SplitMatrix elastic_;
   /// One solver per backend for the whole run (each keeps its analysis while the pattern holds).
   std::unique_ptr<LinearSolver> solvers_[3];
   std::unique_ptr<SystemCache> system_;

@@ -1,10 +1,14 @@
-/// CHOLMOD supernodal Cholesky. The Eigen matrix is viewed in place (no copy)
-/// as a CHOLMOD matrix whose upper triangle is used (stype = 1). The symbolic
-/// analysis (fill-reducing ordering) is reused while the sparsity pattern does
-/// not change, which is the common case across Newton iterations.
+/// CHOLMOD supernodal Cholesky. The upper triangle of the Eigen matrix is viewed
+/// in place (no copy) as an unpacked CHOLMOD matrix (stype = 1): the sorted rows
+/// of column j up to its diagonal, so that CHOLMOD's own permuted copy of A is
+/// sized for one triangle, not two. The symbolic analysis (fill-reducing
+/// ordering) is reused while the sparsity pattern does not change, which is the
+/// common case across Newton iterations; the pattern is recognised by its size and
+/// a 64-bit fingerprint instead of a kept copy of it.
 #include <cholmod.h>
 
 #include <algorithm>
+#include <cstdint>
 
 #include <string>
 #include <vector>
@@ -35,37 +39,57 @@ class CholmodSolver final : public LinearSolver {
   int failed_column() const override { return failed_; }
 
  private:
-  bool same_pattern(const SparseMatrix& a) const {
-    return factor_ && outer_.size() == static_cast<size_t>(a.cols()) + 1 &&
-           std::equal(outer_.begin(), outer_.end(), a.outerIndexPtr()) &&
-           inner_.size() == static_cast<size_t>(a.nonZeros()) &&
-           std::equal(inner_.begin(), inner_.end(), a.innerIndexPtr());
+  bool same_pattern(const SparseMatrix& a, std::uint64_t fingerprint) const {
+    return factor_ && n_ == a.cols() && nnz_ == a.nonZeros() && fingerprint_ == fingerprint;
   }
   int smallest_pivot_column(const SparseMatrix& a) const;
   [[noreturn]] void fail(int column, const std::string& why);
 
   mutable cholmod_common common_{};
   cholmod_factor* factor_ = nullptr;
-  std::vector<int> outer_, inner_;
+  Eigen::Index n_ = -1, nnz_ = -1;  ///< size of the analysed pattern
+  std::uint64_t fingerprint_ = 0;   ///< pattern_fingerprint of the analysed pattern
+  std::vector<int> upper_count_;    ///< rows of each column up to the diagonal (the view's nz)
   int failed_ = -1;
   bool ready_ = false;
 };
 
-cholmod_sparse view(const SparseMatrix& a) {
+/// The upper triangle of a (compressed, sorted columns) as an unpacked CHOLMOD matrix:
+/// column j is the first upper_count[j] entries of a's column j. Fills upper_count.
+cholmod_sparse upper_view(const SparseMatrix& a, std::vector<int>& upper_count) {
+  const int n = static_cast<int>(a.cols());
+  const int* p = a.outerIndexPtr();
+  const int* i = a.innerIndexPtr();
+  upper_count.resize(n);
+  for (int j = 0; j < n; ++j) upper_count[j] = static_cast<int>(std::upper_bound(i + p[j], i + p[j + 1], j) - (i + p[j]));
   cholmod_sparse s{};
   s.nrow = a.rows();
   s.ncol = a.cols();
   s.nzmax = a.nonZeros();
-  s.p = const_cast<int*>(a.outerIndexPtr());
-  s.i = const_cast<int*>(a.innerIndexPtr());
+  s.p = const_cast<int*>(p);
+  s.i = const_cast<int*>(i);
+  s.nz = upper_count.data();
   s.x = const_cast<double*>(a.valuePtr());
   s.stype = 1;
   s.itype = CHOLMOD_INT;
   s.xtype = CHOLMOD_REAL;
   s.dtype = CHOLMOD_DOUBLE;
   s.sorted = 1;
-  s.packed = 1;
+  s.packed = 0;
   return s;
+}
+
+/// FNV-1a over the column pointers and row indices: equal patterns, equal fingerprints.
+/// A different pattern taken for the analysed one would not go unnoticed either: the
+/// caller checks every solve's residual against the matrix itself.
+std::uint64_t pattern_fingerprint(const SparseMatrix& a) {
+  std::uint64_t h = 1469598103934665603ULL;
+  auto mix = [&h](const int* v, Eigen::Index count) {
+    for (Eigen::Index k = 0; k < count; ++k) h = (h ^ static_cast<std::uint32_t>(v[k])) * 1099511628211ULL;
+  };
+  mix(a.outerIndexPtr(), a.cols() + 1);
+  mix(a.innerIndexPtr(), a.nonZeros());
+  return h;
 }
 
 /// Fill-reducing ordering computed by AMD on the quotient graph whose
@@ -169,8 +193,9 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     compressed.makeCompressed();
     m = &compressed;
   }
-  cholmod_sparse s = view(*m);
-  if (!same_pattern(*m)) {
+  cholmod_sparse s = upper_view(*m, upper_count_);
+  const std::uint64_t fingerprint = pattern_fingerprint(*m);
+  if (!same_pattern(*m, fingerprint)) {
     if (factor_) cholmod_free_factor(&factor_, &common_);
     std::vector<int> perm = node_graph_ordering(*m, &common_, false);
     if (!perm.empty()) {
@@ -197,8 +222,9 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     if (!factor_ && common_.status == CHOLMOD_OUT_OF_MEMORY)
       throw SolveError::out_of_memory("CHOLMOD", m->rows(), "symbolic analysis");
     if (!factor_) fail(-1, "symbolic analysis failed (status " + std::to_string(common_.status) + ")");
-    outer_.assign(m->outerIndexPtr(), m->outerIndexPtr() + m->cols() + 1);
-    inner_.assign(m->innerIndexPtr(), m->innerIndexPtr() + m->nonZeros());
+    n_ = m->cols();
+    nnz_ = m->nonZeros();
+    fingerprint_ = fingerprint;
   }
   const int ok = cholmod_factorize(&s, factor_, &common_);
   if (common_.status == CHOLMOD_NOT_POSDEF) {

@@ -162,6 +162,19 @@ TEST(Solvers, RefactorisationWithNewValuesAndNewPatterns) {
     const SparseMatrix b = spd_matrix(31);  // other pattern and size
     s->factorize(b, MatrixKind::SymmetricPositiveDefinite);
     check_solution(b, s->solve(rhs(31)), s->name() + " new pattern");
+    // Same size and number of entries, one coupling moved: still another pattern.
+    std::vector<Triplet> moved;
+    for (int col = 0; col < b.outerSize(); ++col)
+      for (SparseMatrix::InnerIterator it(b, col); it; ++it) {
+        const bool pair = (it.row() == 0 && col == 3) || (it.row() == 3 && col == 0);
+        moved.emplace_back(pair ? (it.row() == 0 ? 0 : 30) : it.row(), pair ? (col == 0 ? 0 : 30) : col, it.value());
+      }
+    SparseMatrix b2(31, 31);
+    b2.setFromTriplets(moved.begin(), moved.end());
+    ASSERT_EQ(b2.nonZeros(), b.nonZeros());
+    ASSERT_EQ(b2.coeff(0, 30), -0.5);
+    s->factorize(b2, MatrixKind::SymmetricPositiveDefinite);
+    check_solution(b2, s->solve(rhs(31)), s->name() + " moved entry, same size");
     if (kind != SolverKind::Cholmod) {
       const SparseMatrix c = saddle_matrix(12);  // other kind
       s->factorize(c, MatrixKind::SymmetricIndefinite);
