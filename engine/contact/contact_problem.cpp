@@ -21,6 +21,35 @@ std::string node_label(const Mesh& mesh, int node) {
   return "#" + std::to_string(node);
 }
 
+std::vector<double> current_coordinates(const Mesh& mesh, const DofMap& dofs, int dim, const Vector& u) {
+  std::vector<double> xyz(mesh.coords);
+  const int n = std::min(static_cast<int>(xyz.size() / 3), dofs.n_nodes());
+  for (int node = 0; node < n; ++node)
+    for (int k = 0; k < dim; ++k) {
+      const int eq = dofs.dof(node, k);
+      if (eq >= 0 && eq < u.size()) xyz[3 * static_cast<size_t>(node) + k] += u[eq];
+    }
+  return xyz;
+}
+
+double geometric_residual(const std::vector<int>& nodes, const DofMap& dofs, int dim, const Vector& u,
+                          const Vector& u_before) {
+  double du_max = 0.0, u_max = 0.0;
+  for (int node : nodes) {
+    double du2 = 0.0, u2 = 0.0;
+    for (int k = 0; k < dim; ++k) {
+      const int eq = dofs.dof(node, k);
+      if (eq < 0) continue;
+      const double prev = eq < u_before.size() ? u_before[eq] : 0.0;
+      du2 += (u[eq] - prev) * (u[eq] - prev);
+      u2 += u[eq] * u[eq];
+    }
+    du_max = std::max(du_max, std::sqrt(du2));
+    u_max = std::max(u_max, std::sqrt(u2));
+  }
+  return u_max > 0.0 ? du_max / u_max : 0.0;
+}
+
 double smallest_edge(const Mesh& mesh, const std::vector<int>& cells) {
   double h = 1e300;
   for (int c : cells) {
@@ -137,20 +166,8 @@ MatrixKind ContactProblem::matrix_kind() const {
   return MatrixKind::SymmetricPositiveDefinite;
 }
 
-std::vector<double> ContactProblem::current_coordinates(const Vector& u) const {
-  std::vector<double> xyz(mesh_.coords);
-  const int n = static_cast<int>(xyz.size() / 3);
-  const int nmap = dofs_.n_nodes();
-  for (int node = 0; node < std::min(n, nmap); ++node)
-    for (int k = 0; k < dim_; ++k) {
-      const int eq = dofs_.dof(node, k);
-      if (eq >= 0 && eq < u.size()) xyz[3 * static_cast<size_t>(node) + k] += u[eq];
-    }
-  return xyz;
-}
-
 void ContactProblem::pair(const Vector& u) {
-  const std::vector<double> xyz = current_coordinates(u);
+  const std::vector<double> xyz = current_coordinates(mesh_, dofs_, dim_, u);
   for (auto& m : masters_) m->update(xyz);
   recovery_->ready = false;
   ++pattern_version_;
@@ -198,23 +215,6 @@ void ContactProblem::pair_and_record(const Vector& u) {
   pair(u);
   u_at_pairing_ = u;
   ++n_pairings_;
-}
-
-double ContactProblem::geometric_residual(const Vector& u) const {
-  double du_max = 0.0, u_max = 0.0;
-  for (int node : geometry_nodes_) {
-    double du2 = 0.0, u2 = 0.0;
-    for (int k = 0; k < dim_; ++k) {
-      const int eq = dofs_.dof(node, k);
-      if (eq < 0) continue;
-      const double prev = eq < u_at_pairing_.size() ? u_at_pairing_[eq] : 0.0;
-      du2 += (u[eq] - prev) * (u[eq] - prev);
-      u2 += u[eq] * u[eq];
-    }
-    du_max = std::max(du_max, std::sqrt(du2));
-    u_max = std::max(u_max, std::sqrt(u2));
-  }
-  return u_max > 0.0 ? du_max / u_max : 0.0;
 }
 
 void ContactProblem::first_pairing_report(const Log& log) const {
@@ -304,7 +304,7 @@ bool ContactProblem::settle(const Vector& u, const Log& log) {
       if (n_pairings_ >= def_.nb_iter_geom) return true;
       break;
     case GeometryUpdate::Automatic: {
-      const double resi = geometric_residual(u);
+      const double resi = geometric_residual(geometry_nodes_, dofs_, dim_, u, u_at_pairing_);
       std::ostringstream msg;
       msg << "contact: geometric residual " << resi << " (tolerance " << def_.resi_geom << ")";
       log.info(msg.str());
@@ -449,7 +449,7 @@ void ContactProblem::write_fields(const Vector& u, ResultStep& step) const {
     return;
   }
   // Integration points: each slave node projected on the master surface in the current configuration.
-  const std::vector<double> xyz = current_coordinates(u);
+  const std::vector<double> xyz = current_coordinates(mesh_, dofs_, dim_, u);
   std::vector<std::unique_ptr<MasterSurface>> current;
   for (const auto& m : masters_) {
     current.push_back(std::make_unique<MasterSurface>(*m));

@@ -61,10 +61,8 @@ class ContactProblem final : public ContactHook {
   double rho(int zone) const { return rho_[zone]; }
   /// True when an active point couples LAGS_C to the displacements (no condensation).
   bool coupled() const;
-  std::vector<double> current_coordinates(const Vector& u) const;
   void pair(const Vector& u);
   void pair_and_record(const Vector& u);
-  double geometric_residual(const Vector& u) const;
   void init_statuses(const Vector& u, const Log& log);
   int update_statuses(const Vector& u);
   void first_pairing_report(const Log& log) const;
@@ -101,6 +99,12 @@ class ContactProblem final : public ContactHook {
 std::string cell_label(const Mesh& mesh, int cell);
 /// "N5" or "#4".
 std::string node_label(const Mesh& mesh, int node);
+/// Node coordinates in the configuration u (3 per node; nodes without displacement unknowns unmoved).
+std::vector<double> current_coordinates(const Mesh& mesh, const DofMap& dofs, int dim, const Vector& u);
+/// Largest displacement change of `nodes` since `u_before`, over their largest displacement
+/// (0 when nothing moved): the geometry loops' criterion for a new pairing.
+double geometric_residual(const std::vector<int>& nodes, const DofMap& dofs, int dim, const Vector& u,
+                          const Vector& u_before);
 /// Smallest vertex-to-vertex edge length of surface cells (m).
 double smallest_edge(const Mesh& mesh, const std::vector<int>& cells);
 
