@@ -161,17 +161,6 @@ void MortarProblem::set_dirichlet(const std::vector<DirichletValue>& dirichlet) 
 
 void MortarProblem::add_dofs(DofMap& dofs) { dofs_ = dofs; }
 
-std::vector<double> MortarProblem::current_coordinates(const Vector& u) const {
-  std::vector<double> xyz(mesh_.coords);
-  const int n = std::min(static_cast<int>(xyz.size() / 3), dofs_.n_nodes());
-  for (int node = 0; node < n; ++node)
-    for (int k = 0; k < dim_; ++k) {
-      const int eq = dofs_.dof(node, k);
-      if (eq >= 0 && eq < u.size()) xyz[3 * static_cast<size_t>(node) + k] += u[eq];
-    }
-  return xyz;
-}
-
 double MortarProblem::complementarity(int zone) const {
   const double e = def_.modulus > 0.0 ? def_.modulus : 1.0;
   return def_.zones[zone].coef_cont * e / h_[zone];
@@ -180,7 +169,7 @@ double MortarProblem::complementarity(int zone) const {
 std::vector<MortarRow> MortarProblem::build_rows(const Vector& u,
                                                  std::vector<std::vector<std::pair<int, double>>>& masters,
                                                  int& n_whole_cell) const {
-  const std::vector<double> xyz = current_coordinates(u);
+  const std::vector<double> xyz = current_coordinates(mesh_, dofs_, dim_, u);
   std::vector<MortarRow> rows;
   masters.clear();
   n_whole_cell = 0;
@@ -374,6 +363,12 @@ void MortarProblem::pair(const Vector& u, const Log* log) {
   std::vector<std::vector<std::pair<int, double>>> masters;
   int n_whole_cell = 0;
   std::vector<MortarRow> rows = build_rows(u, masters, n_whole_cell);
+  adopt(u, std::move(rows), std::move(masters), n_whole_cell, log);
+}
+
+void MortarProblem::adopt(const Vector& u, std::vector<MortarRow> rows,
+                          std::vector<std::vector<std::pair<int, double>>> masters, int n_whole_cell,
+                          const Log* log) {
   // Statuses follow the nodes.
   for (auto& r : rows) {
     const int old = row_of_node_.empty() ? -1 : row_of_node_[r.node];
@@ -599,11 +594,14 @@ bool MortarProblem::newton_converged() const { return !changed_in_newton_; }
 
 bool MortarProblem::settle(const Vector& u, const Log& log) {
   if (def_.reac_geom == GeometryUpdate::None) return true;
-  // Pair again in the converged configuration; a pairing that gives the same rows (a
-  // translation, small strain) leaves everything as it is.
+  // Converged when the nodes of the zones moved little since the last pairing.
+  const double resi = geometric_residual(geometry_nodes_, dofs_, dim_, u, u_at_pairing_);
+  if (resi <= def_.resi_geom) return true;
+  // Otherwise pair again in the converged configuration; a pairing that gives the same rows
+  // (a translation, small strain) leaves everything as it is.
   std::vector<std::vector<std::pair<int, double>>> masters;
   int n_whole_cell = 0;
-  const std::vector<MortarRow> rows = build_rows(u, masters, n_whole_cell);
+  std::vector<MortarRow> rows = build_rows(u, masters, n_whole_cell);
   // Same rows: same nodes, and coefficients equal to 1e-10 of the row's largest (a term at
   // round-off level, e.g. a zero-length overlap at coincident nodes, counts as zero).
   bool same = rows.size() == rows_.size();
@@ -621,22 +619,6 @@ bool MortarProblem::settle(const Vector& u, const Log& log) {
     for (size_t k = 0; same && k < b.eq.size(); ++k) same = std::abs(b.coef[k] - value(a, b.eq[k])) <= 1e-10 * scale;
   }
   if (same) return true;
-  // Otherwise converged when the nodes of the zones moved little since the last pairing.
-  double du_max = 0.0, u_max = 0.0;
-  for (int node : geometry_nodes_) {
-    double du2 = 0.0, u2 = 0.0;
-    for (int k = 0; k < dim_; ++k) {
-      const int eq = dofs_.dof(node, k);
-      if (eq < 0) continue;
-      const double prev = eq < u_at_pairing_.size() ? u_at_pairing_[eq] : 0.0;
-      du2 += (u[eq] - prev) * (u[eq] - prev);
-      u2 += u[eq] * u[eq];
-    }
-    du_max = std::max(du_max, std::sqrt(du2));
-    u_max = std::max(u_max, std::sqrt(u2));
-  }
-  const double resi = u_max > 0.0 ? du_max / u_max : 0.0;
-  if (resi <= def_.resi_geom) return true;
   if (def_.reac_geom == GeometryUpdate::Controlled && n_pairings_ >= def_.nb_iter_geom) return true;
   if (++n_geom_iter_ > def_.iter_geom_maxi) {
     ConvergenceError err("mortar contact: the pairing still changed after " + std::to_string(def_.iter_geom_maxi) +
@@ -646,7 +628,7 @@ bool MortarProblem::settle(const Vector& u, const Log& log) {
     err.failure().limit = def_.iter_geom_maxi;
     throw err;
   }
-  pair(u, nullptr);
+  adopt(u, std::move(rows), std::move(masters), n_whole_cell, nullptr);
   log.info("mortar contact: new pairing (geometry iteration " + std::to_string(n_geom_iter_) + ")");
   return false;
 }

@@ -97,11 +97,13 @@ class MortarProblem final : public ContactHook {
 
  private:
   bool lagrange() const { return def_.method == ContactMethod::MortarLagrange; }
-  std::vector<double> current_coordinates(const Vector& u) const;
   /// Builds the rows from the configuration u (statuses kept for nodes still paired).
   std::vector<MortarRow> build_rows(const Vector& u, std::vector<std::vector<std::pair<int, double>>>& masters,
                                     int& n_whole_cell) const;
   void pair(const Vector& u, const Log* log);
+  /// Makes `rows` the current pairing (statuses kept node by node) and checks them.
+  void adopt(const Vector& u, std::vector<MortarRow> rows, std::vector<std::vector<std::pair<int, double>>> masters,
+             int n_whole_cell, const Log* log);
   void update_pressures(const Vector& residual);
   int update_statuses(const Vector& u);
   void build_eliminations(const Vector& u);
