@@ -689,6 +689,10 @@ class Translator {
   void translate(Statement& st) {
     std::vector<CommIssue>& why = st.reasons;
     add_lexical(st);
+    if (!why.empty()) {  // unterminated or stray: the statement is not read further, one issue says why
+      st.refused = true;
+      return;
+    }
     auto refuse = [&](const Token& t, std::string what, std::string hint) {
       for (const auto& r : why)
         if (r.line == t.line && r.what == what) return;
@@ -769,7 +773,10 @@ class Translator {
               std::string_view(a_.tz.source).substr(t.begin + open, t.end - t.begin - open - (t.triple ? 3 : 1)),
               t.prefix.find('r') != std::string::npos, t.prefix.find('b') != std::string::npos);
           if (v.named_escape) refuse(t, "'\\N{...}' escape in a string", "write the character itself");
-          if (after && after->kind == Kind::String) lua += " ..";
+          if (after && after->kind == Kind::String) {
+            lua += " ..";
+            if (t.end < a_.tz.source.size() && !std::isspace(static_cast<unsigned char>(a_.tz.source[t.end]))) lua += ' ';
+          }
           if (after && is_op(*after, "%")) {
             refuse(t, "'%' string formatting", "write the text, or build it in Lua with .. and string.format");
           }
@@ -1051,7 +1058,7 @@ class Checker {
   }
 
   /// The '(' positions of the _F calls a factor keyword's value is made of ([a, b] inclusive).
-  void factor_calls(std::size_t a, std::size_t b, std::vector<std::size_t>& calls, bool& listed) const {
+  void factor_calls(std::size_t a, std::size_t b, std::vector<std::size_t>& calls) const {
     if (a > b) return;
     const Token& f = *sig_[a];
     if (is_name(f, "_F") && a + 1 <= b && is_op(*sig_[a + 1], "(") && sig_[a + 1]->match == index_of_[b]) {
@@ -1059,21 +1066,8 @@ class Checker {
       return;
     }
     if ((is_op(f, "(") || is_op(f, "[")) && f.match == index_of_[b]) {
-      const auto list = items(a, b);
-      if (list.size() != 1 || has_comma(a, b)) listed = true;
-      for (const auto& [x, y] : list) factor_calls(x, y, calls, listed);
+      for (const auto& [x, y] : items(a, b)) factor_calls(x, y, calls);
     }
-  }
-
-  bool has_comma(std::size_t o, std::size_t c) const {
-    for (std::size_t p = o + 1; p < c; ++p) {
-      if (opener(p)) {
-        p = pos_.at(sig_[p]->match);
-        continue;
-      }
-      if (is_op(*sig_[p], ",")) return true;
-    }
-    return false;
   }
 
   void check_arguments(const catalog::CommandSpec& command, const catalog::Keyword& spec, std::size_t o,
@@ -1099,10 +1093,10 @@ class Checker {
       }
       if (!kw->is_factor) continue;
       std::vector<std::size_t> calls;
-      bool listed = false;
-      factor_calls(a + 2, b, calls, listed);
+      factor_calls(a + 2, b, calls);
       for (std::size_t i = 0; i < calls.size(); ++i) {
-        const std::string sub = listed ? path + "[" + std::to_string(i + 1) + "]" : path;
+        // occurrences are numbered where the factor may repeat, as in the run-time keyword paths
+        const std::string sub = kw->max_occurs != 1 ? path + "[" + std::to_string(i + 1) + "]" : path;
         check_arguments(command, *kw, calls[i], pos_.at(sig_[calls[i]]->match), sub, false);
       }
     }
