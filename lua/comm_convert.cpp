@@ -57,11 +57,22 @@ const std::set<std::string>& python_keywords() {
   return k;
 }
 
+/// Python keywords and Lua reserved words all start with a lower-case letter, except True, False
+/// and None: most .comm names (upper case) skip the set lookups.
+bool maybe_keyword(const std::string& s) {
+  return !s.empty() && (std::islower(static_cast<unsigned char>(s[0])) || s == "True" || s == "False" || s == "None");
+}
+bool is_python_keyword(const std::string& s);
+bool is_lua_only_reserved(const std::string& s);
+
 const std::set<std::string>& lua_only_reserved() {
   static const std::set<std::string> k = {"do",  "elseif", "end",  "false", "function", "goto",
                                           "local", "nil",  "repeat", "then", "true",   "until"};
   return k;
 }
+
+bool is_python_keyword(const std::string& s) { return maybe_keyword(s) && python_keywords().count(s); }
+bool is_lua_only_reserved(const std::string& s) { return maybe_keyword(s) && lua_only_reserved().count(s); }
 
 /// Pieces of a Python string literal after the quote: its value cut at each source newline.
 struct StringValue {
@@ -430,13 +441,14 @@ Tokenized tokenize(std::string_view text) {
     static const char* const ops[] = {"**=", "//=", ">>=", "<<=", "...", "!=", "==", "<=", ">=", "**", "//", "<<",
                                       ">>",  "->",  ":=",  "+=",  "-=",  "*=", "/=", "%=", "&=", "|=", "^=", "@="};
     std::size_t len = 0;
-    for (const char* op : ops) {
-      std::size_t l = std::strlen(op);
-      if (s.compare(i, l, op) == 0) {
-        len = l;
-        break;
+    if (i + 1 < n && std::strchr("*/<>.!=-:+%&|^@", s[i + 1]) && s[i + 1] != '\0')
+      for (const char* op : ops) {
+        const std::size_t l = op[2] ? 3 : 2;
+        if (i + l <= n && s[i] == op[0] && s[i + 1] == op[1] && (l == 2 || s[i + 2] == op[2])) {
+          len = l;
+          break;
+        }
       }
-    }
     if (!len && std::strchr("+-*/%<>=()[]{},:;.@&|^~", c) && c != '\0') len = 1;
     if (!len) {
       std::size_t k = i + 1;
@@ -650,7 +662,7 @@ class Translator {
 
   static bool callable_before(const Token* t) {
     if (!t) return false;
-    if (t->kind == Kind::Name) return !python_keywords().count(t->text);
+    if (t->kind == Kind::Name) return !is_python_keyword(t->text);
     if (t->kind == Kind::String) return true;
     return t->kind == Kind::Op && (t->text == ")" || t->text == "]" || t->text == "}");
   }
@@ -740,9 +752,9 @@ class Translator {
             refuse(t, "Python operator '" + t.text + "'", "compute the value and write it, or finish in Lua");
           } else if (t.text == "exec" || t.text == "eval") {
             refuse(t, "'" + t.text + "'", "not translatable: write out the code it runs");
-          } else if (python_keywords().count(t.text)) {
+          } else if (is_python_keyword(t.text)) {
             refuse(t, "'" + t.text + "' inside a statement", "not translatable: finish by hand in Lua");
-          } else if (lua_only_reserved().count(t.text)) {
+          } else if (is_lua_only_reserved(t.text)) {
             refuse(t, "identifier '" + t.text + "' (a Lua reserved word)",
                    "rename it everywhere in the study (e.g. '" + t.text + "_')");
           } else {
@@ -816,7 +828,7 @@ class Translator {
                      "code_aster commands take keywords only: write KEY=value");
           }
         } else if (before->kind == Kind::Name) {
-          if (before->text != "exec" && before->text != "eval" && !lua_only_reserved().count(before->text))
+          if (before->text != "exec" && before->text != "eval" && !is_lua_only_reserved(before->text))
             refuse(*before, "Python function call '" + before->text + "'", hint_for_function(before->text));
         } else {
           refuse(t, "call of an expression", "compute the value and write it, or finish in Lua");
@@ -929,7 +941,7 @@ class Translator {
     for (std::size_t p = a; p < e; ++p) {
       const Token& t = t_[st.toks[p]];
       const bool want_name = (p - a) % 2 == 0;
-      if (want_name ? t.kind != Kind::Name || python_keywords().count(t.text) : !is_op(t, ",")) names_only = false;
+      if (want_name ? t.kind != Kind::Name || is_python_keyword(t.text) : !is_op(t, ",")) names_only = false;
       if (want_name) ++n_targets;
     }
     if (e > a && is_op(t_[st.toks[e - 1]], ",")) names_only = false;
@@ -1004,6 +1016,7 @@ class Checker {
         index_of_.push_back(k);
         sig_.push_back(&tokens[k]);
       }
+    pos_.assign(tokens.size(), 0);
     for (std::size_t p = 0; p < sig_.size(); ++p) pos_[index_of_[p]] = p;
   }
 
@@ -1033,7 +1046,7 @@ class Checker {
   std::vector<CommIssue>& issues_;
   std::vector<const Token*> sig_;
   std::vector<int> index_of_;
-  std::map<int, std::size_t> pos_;
+  std::vector<std::size_t> pos_;  ///< token index -> position in sig_
 
   bool opener(std::size_t p) const {
     const Token& t = *sig_[p];
