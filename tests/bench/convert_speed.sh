@@ -96,9 +96,15 @@ for r in $(seq "$runs"); do
   syss+=("$(awk -F': ' '/System time/ { print $2 }' "$work/time.txt")")
   rss+=("$(awk -F': ' '/Maximum resident/ { print $2 }' "$work/time.txt")")
 done
-start=$(date +%s%N)
-for r in $(seq "$batch"); do "$bin" convert "$comm" -o "$work/study.lua"; done
-end=$(date +%s%N)
+mean_ms() {  # COMMAND...: mean wall time of $batch back-to-back runs, in ms
+  local t0 t1; t0=$(date +%s%N)
+  for _ in $(seq "$batch"); do "$@"; done
+  t1=$(date +%s%N); awk -v d=$((t1 - t0)) -v n="$batch" 'BEGIN { printf "%.2f", d / n / 1e6 }'
+}
+: >"$work/empty.comm"
+study_ms=$(mean_ms "$bin" convert "$comm" -o "$work/study.lua")
+empty_ms=$(mean_ms "$bin" convert "$work/empty.comm" -o "$work/empty.lua")
 echo "study: $lines lines, $(wc -c <"$comm") bytes; $runs runs under /usr/bin/time -v, then $batch back to back"
 echo "median wall $(printf '%s\n' "${walls[@]}" | median) s, user $(printf '%s\n' "${users[@]}" | median) s, sys $(printf '%s\n' "${syss[@]}" | median) s, peak RSS $(printf '%s\n' "${rss[@]}" | median) kB"
-echo "mean per run over $batch back-to-back runs (whole process): $(awk -v d=$((end - start)) -v n="$batch" 'BEGIN { printf "%.2f", d / n / 1e6 }') ms"
+echo "mean of $batch back-to-back runs: study $study_ms ms, empty .comm (start-up) $empty_ms ms," \
+     "difference (reading, converting and writing the study) $(awk -v a="$study_ms" -v b="$empty_ms" 'BEGIN { printf "%.2f", a - b }') ms"
