@@ -10,6 +10,7 @@
 #include "catalog/doc.hpp"
 #include "commands/registry.hpp"
 #include "engine/io/atomic_file.hpp"
+#include "lua/comm_convert.hpp"
 #include "lua/export_file.hpp"
 #include "lua/runner.hpp"
 #include "lua/verify.hpp"
@@ -26,6 +27,9 @@ constexpr const char* kUsage = R"(usage:
   lunaster verify [PATHS...] [-j N] [--out DIR] [--junit FILE] [--json FILE] [--time-limit S] [--memory-limit MB]
                   [--vale-calc=check|report]  run decks (.lua, .export, and .comm without an .export;
                                               default: testcases/) and summarise TEST_RESU
+  lunaster convert CASE.comm [-o CASE.lua] [--check]
+                                              translate a code_aster .comm file to a deck, line for line
+                                              (--check: only list what lunaster would not take)
   lunaster help [COMMAND]                     list commands, or the keywords of one command
   lunaster --dump-catalog md [FILE]           the catalogue as Markdown (docs/commands.md)
   lunaster --help                             this text
@@ -211,6 +215,54 @@ int dump_command(const std::vector<std::string>& args) {
   return 0;
 }
 
+/// `lunaster convert CASE.comm [-o CASE.lua] [--check]`: 0 if everything was translated (or,
+/// with --check, is known), 2 otherwise; the deck is written in both cases.
+int convert_command(const std::vector<std::string>& args) {
+  fs::path comm, out;
+  bool check = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "-o" && i + 1 < args.size()) out = args[++i];
+    else if (args[i] == "--check") check = true;
+    else if (comm.empty() && args[i][0] != '-') comm = args[i];
+    else return usage_error("convert: unexpected argument '" + args[i] + "'");
+  }
+  if (comm.empty()) return usage_error("convert: no .comm file given");
+  std::ifstream in(comm, std::ios::binary);
+  if (!in) {
+    std::cerr << "lunaster: convert: cannot read " << comm.string() << "\n";
+    return static_cast<int>(ErrorKind::Deck);
+  }
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string name = comm.string();
+  auto print = [&](const std::vector<lua::CommIssue>& issues) {
+    for (const auto& issue : issues)
+      std::cerr << name << ":" << issue.line << ": " << issue.what << ": " << issue.hint << "\n";
+  };
+  if (check) {
+    const auto issues = lua::check_comm(text);
+    print(issues);
+    std::cerr << name << ": " << (issues.empty() ? "nothing to finish by hand, every command and keyword is known"
+                                                  : std::to_string(issues.size()) + " issue(s)")
+              << "\n";
+    return issues.empty() ? 0 : static_cast<int>(ErrorKind::Deck);
+  }
+  if (out.empty()) out = fs::path(comm).replace_extension(".lua");
+  std::error_code ec;
+  if (out == comm || (fs::exists(out, ec) && fs::equivalent(out, comm, ec))) {
+    std::cerr << "lunaster: convert: the output " << out.string() << " is the .comm file itself\n";
+    return static_cast<int>(ErrorKind::Deck);
+  }
+  const auto conversion = lua::convert_comm(text);
+  try {
+    engine::write_file_atomically(out, [&](std::ostream& file) { file << conversion.lua; });
+  } catch (const Error& e) {
+    std::cerr << "lunaster: " << e.message() << "\n";
+    return static_cast<int>(ErrorKind::Deck);
+  }
+  print(conversion.refused);
+  return conversion.refused.empty() ? 0 : static_cast<int>(ErrorKind::Deck);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -225,6 +277,7 @@ int main(int argc, char** argv) {
     if (verb == "run") return run_command(rest);
     if (verb == "verify") return verify_command(rest);
     if (verb == "help") return help_command(rest);
+    if (verb == "convert") return convert_command(rest);
     if (verb == "--dump-catalog") return dump_command(rest);
   } catch (const std::exception& e) {
     std::cerr << "lunaster: internal error: " << e.what() << "\n";
