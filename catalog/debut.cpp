@@ -3,11 +3,20 @@
 
 namespace lunaster::catalog {
 
+// code_aster's debugging and batch switches change nothing in a lunaster run's results; they
+// are accepted (and documented as such) so that code_aster command files run as they are.
 const CommandSpec& debut_spec() {
   static const CommandSpec spec = make_command(
       "DEBUT", "", "Start of a study (accepted for code_aster decks; a deck may also start without it)",
       {text("CODE", "code_aster test-suite marker, accepted and ignored").into_values({"OUI", "NON"}).legacy(),
-       text("PAR_LOT", "code_aster batch mode switch, accepted and ignored").into_values({"OUI", "NON"}).legacy()});
+       text("PAR_LOT", "code_aster batch mode switch, accepted and ignored").into_values({"OUI", "NON"}).legacy(),
+       factor("DEBUG", {text("SDVERI", "code_aster data-structure checks, accepted and ignored").into_values({"OUI", "NON"})},
+              "code_aster debugging switches, accepted and ignored")
+           .legacy(),
+       text("IGNORE_ALARM", "code_aster alarm identifiers to silence, accepted and ignored (lunaster's warnings "
+                            "have no identifiers)")
+           .many()
+           .legacy()});
   return spec;
 }
 

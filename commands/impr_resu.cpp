@@ -21,6 +21,13 @@ namespace {
 std::filesystem::path output_path(const Args& args, const Session& session, const std::string& ext) {
   if (args.has("FICHIER")) return session.output_file(args.text("FICHIER"));
   const std::string unit = args.has("UNITE") ? std::to_string(args.integer("UNITE")) : (ext == "rmed" ? "80" : "8");
+  // An .export names the file of a result unit: it is written under that name in the output folder.
+  if (const auto found = session.result_units.find(std::stoi(unit)); found != session.result_units.end()) {
+    if (found->second.type != ext)
+      throw args.error("UNITE", "a '" + ext + "' unit for this FORMAT",
+                       "unit " + unit + ", a '" + found->second.type + "' file in " + session.export_path.string());
+    return session.output_file(found->second.path.filename().string());
+  }
   return session.output_file(session.deck_path.stem().string() + "_" + unit + "." + ext);
 }
 

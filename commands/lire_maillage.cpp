@@ -13,11 +13,25 @@ namespace lunaster::cmd {
 
 namespace {
 
+/// Under an .export, UNITE is the unit its `F mmed|msh PATH D UNIT` line binds. Otherwise
 /// UNITE 20 is the mesh of the study: <deck name>.med (or .msh) beside the deck;
 /// any other unit maps to fort.<UNITE> beside the deck, as in a code_aster study folder.
 std::filesystem::path mesh_path(const Args& args, const Session& session, const std::string& format) {
   if (args.has("FICHIER")) return session.resolve_input(args.text("FICHIER"));
   const long long unit = args.integer("UNITE");
+  if (!session.export_path.empty()) {
+    const std::string type = format == "GMSH" ? "msh" : "mmed";
+    const auto found = session.data_units.find(static_cast<int>(unit));
+    std::string units;
+    for (const auto& [n, f] : session.data_units) units += (units.empty() ? "" : ", ") + std::to_string(n) + " (" + f.type + ")";
+    if (found == session.data_units.end())
+      throw args.error("UNITE", "a data unit of " + session.export_path.string() + (units.empty() ? " (it has none)" : ": " + units),
+                       std::to_string(unit), {"add a line 'F " + type + " MESH_FILE D " + std::to_string(unit) + "' to the .export"});
+    if (found->second.type != type)
+      throw args.error("UNITE", "a '" + type + "' file for FORMAT='" + format + "'",
+                       "unit " + std::to_string(unit) + ", a '" + found->second.type + "' file in " + session.export_path.string());
+    return found->second.path;
+  }
   if (unit == 20) {
     std::filesystem::path p = session.deck_path;
     p.replace_extension(format == "GMSH" ? ".msh" : ".med");

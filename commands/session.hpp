@@ -61,6 +61,30 @@ class Session {
 
   bool fin_called = false;
 
+  // ---- code_aster studies: units of an .export, VALE_CALC of a .comm ----
+  /// A file bound to a logical unit by an .export (`F mmed mesh.med D 20`).
+  struct UnitFile {
+    std::string type;  ///< mmed, msh (read); rmed, resu, mess (written)
+    std::filesystem::path path;
+  };
+  /// The .export of the run (empty for a deck run on its own): LIRE_MAILLAGE and IMPR_RESU
+  /// then take their UNITE from `data_units` / `result_units` instead of the deck's name.
+  std::filesystem::path export_path;
+  std::map<int, UnitFile> data_units;
+  std::map<int, UnitFile> result_units;
+  /// The deck is a code_aster .comm: its VALE_CALC are code_aster's results, so TEST_RESU
+  /// reports them as comparisons with code_aster (kind CODE_ASTER).
+  bool code_aster_vale_calc = false;
+  /// ... and, with `--vale-calc=report`, prints those comparisons without counting them as
+  /// checks (the VALE_REFE checks alone decide OK/NOOK).
+  bool vale_calc_report = false;
+  /// One comparison of a .comm's VALE_CALC (code_aster's value) with lunaster's.
+  struct Comparison {
+    std::string what;
+    double lunaster = 0.0, code_aster = 0.0, difference = 0.0, tolerance = 0.0;
+  };
+  std::vector<Comparison> comparisons;
+
  private:
   Log& log_;
 };

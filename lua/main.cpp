@@ -1,4 +1,5 @@
 /// The lunaster command line: run a deck, verify a suite, show help, dump the catalogue.
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -9,6 +10,8 @@
 #include "catalog/doc.hpp"
 #include "commands/registry.hpp"
 #include "engine/io/atomic_file.hpp"
+#include "lua/comm_convert.hpp"
+#include "lua/export_file.hpp"
 #include "lua/runner.hpp"
 #include "lua/verify.hpp"
 
@@ -18,19 +21,65 @@ using namespace lunaster;
 namespace {
 
 constexpr const char* kUsage = R"(usage:
-  lunaster run DECK.lua [--out DIR] [-v|-q] [--time-limit S] [--memory-limit MB]
-                                              run a deck (output folder default: ./out/<deck name>)
+  lunaster run DECK [--out DIR] [-v|-q] [--time-limit S] [--memory-limit MB] [--vale-calc=check|report]
+                                              run a deck: DECK.lua, a code_aster DECK.comm, or a DECK.export
+                                              naming a .comm, its units and limits (output: ./out/<deck name>)
   lunaster verify [PATHS...] [-j N] [--out DIR] [--junit FILE] [--json FILE] [--time-limit S] [--memory-limit MB]
-                                              run decks (default: testcases/) and summarise TEST_RESU
+                  [--vale-calc=check|report]  run decks (.lua, .export, and .comm without an .export;
+                                              default: testcases/) and summarise TEST_RESU
+  lunaster convert CASE.comm [-o CASE.lua] [--check]
+                                              translate a code_aster .comm file to a deck, line for line
+                                              (--check: only list what lunaster would not take)
   lunaster help [COMMAND]                     list commands, or the keywords of one command
   lunaster --dump-catalog md [FILE]           the catalogue as Markdown (docs/commands.md)
   lunaster --help                             this text
 budgets: --time-limit (wall-clock seconds) and --memory-limit (resident MB) override the deck
-  header "-- lunaster: time_limit=S memory_limit=MB"; run has no limit unless one is given,
-  verify defaults to 300 s and half of the machine's memory per deck
+  header "-- lunaster: time_limit=S memory_limit=MB" (an .export's P time_limit / memory_limit);
+  run has no limit unless one is given, verify defaults to 300 s and half of the machine's memory per deck
+code_aster VALE_CALC: in a .comm they are code_aster's results, checked as CODE_ASTER comparisons;
+  --vale-calc=report prints them as SAME/DIFF report lines instead (the VALE_REFE checks decide)
 exit status: 0 OK, 1 some TEST_RESU NOOK, 2 deck error, 3 solve error, 4 internal error,
   5 time limit exceeded, 6 memory limit exceeded (or out of memory)
 )";
+
+/// Writes to a first stream buffer and, if given, copies into a second one.
+class TeeBuffer : public std::streambuf {
+ public:
+  TeeBuffer(std::streambuf* first, std::streambuf* copy) : first_(first), copy_(copy) {}
+
+ protected:
+  int overflow(int ch) override {
+    if (ch == traits_type::eof()) return traits_type::not_eof(ch);
+    if (copy_) copy_->sputc(static_cast<char>(ch));
+    return first_->sputc(static_cast<char>(ch));
+  }
+  std::streamsize xsputn(const char* s, std::streamsize n) override {
+    if (copy_) copy_->sputn(s, n);
+    return first_->sputn(s, n);
+  }
+  int sync() override {
+    if (copy_) copy_->pubsync();
+    return first_->pubsync();
+  }
+
+ private:
+  std::streambuf* first_;
+  std::streambuf* copy_;
+};
+
+/// "3 comparison(s) with code_aster's VALE_CALC: 1 beyond tolerance, largest difference 3.5e-03 (DEPL  O  DY)".
+std::string comparison_summary(const std::vector<cmd::Session::Comparison>& comparisons) {
+  int beyond = 0;
+  const cmd::Session::Comparison* largest = nullptr;
+  for (const auto& c : comparisons) {
+    beyond += c.difference > c.tolerance;
+    if (!largest || c.difference > largest->difference) largest = &c;
+  }
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3e", largest->difference);
+  return "lunaster: " + std::to_string(comparisons.size()) + " comparison(s) with code_aster's VALE_CALC: " +
+         std::to_string(beyond) + " beyond tolerance, largest difference " + text + " (" + largest->what + ")";
+}
 
 int usage_error(const std::string& message) {
   std::cerr << "lunaster: " << message << "\n" << kUsage;
@@ -57,12 +106,15 @@ int run_command(const std::vector<std::string>& args) {
   std::string deck;
   fs::path out;
   int verbosity = 1;
+  bool vale_calc_report = false;
   lua::Budget budget;
   for (std::size_t i = 0; i < args.size(); ++i) {
     if (is_budget_option(args[i]) && i + 1 < args.size()) {
       if (!budget_option("run", args[i], args[i + 1], budget)) return static_cast<int>(ErrorKind::Deck);
       ++i;
     } else if (args[i] == "--out" && i + 1 < args.size()) out = args[++i];
+    else if (args[i] == "--vale-calc=report" || args[i] == "--vale-calc=check")
+      vale_calc_report = args[i] == "--vale-calc=report";
     else if (args[i] == "-v") verbosity = 2;
     else if (args[i] == "-q") verbosity = 0;
     else if (deck.empty() && args[i][0] != '-') deck = args[i];
@@ -70,17 +122,37 @@ int run_command(const std::vector<std::string>& args) {
   }
   if (deck.empty()) return usage_error("run: no deck given");
   if (out.empty()) out = fs::path("out") / fs::path(deck).stem();
-  Log log(std::cout, verbosity);
+  // An .export's message file (`F mess NAME R 6`) gets a copy of everything the run prints.
+  std::ofstream mess;
+  if (lua::is_export_file(deck)) {
+    try {
+      for (const auto& [unit, f] : lua::read_export(deck).results)
+        if (f.type == "mess") {
+          fs::create_directories(out);
+          mess.open(out / f.path.filename());
+        }
+    } catch (const Error&) {
+      // run_deck reads the .export again and reports what is wrong with it.
+    }
+  }
+  TeeBuffer out_tee(std::cout.rdbuf(), mess.is_open() ? mess.rdbuf() : nullptr);
+  TeeBuffer err_tee(std::cerr.rdbuf(), mess.is_open() ? mess.rdbuf() : nullptr);
+  std::ostream log_stream(&out_tee), err_stream(&err_tee);
+  Log log(log_stream, verbosity);
   cmd::Session session(log);
   session.deck_path = deck;
   session.output_dir = out;
-  int code = lua::run_deck(deck, session, cmd::find_handler, std::cerr, budget);
+  session.vale_calc_report = vale_calc_report;
+  int code = lua::run_deck(deck, session, cmd::find_handler, err_stream, budget);
   if (code <= 1) {
     int n_ok = 0;
     for (const auto& t : session.tests) n_ok += t.ok;
     log.info("lunaster: " + std::to_string(n_ok) + " check(s) OK, " + std::to_string(session.tests.size() - n_ok) +
              " NOOK");
+    if (!session.comparisons.empty()) log.info(comparison_summary(session.comparisons));
   }
+  log_stream.flush();
+  err_stream.flush();
   return code;
 }
 
@@ -99,6 +171,8 @@ int verify_command(const std::vector<std::string>& args) {
       ++i;
     } else if (args[i] == "--junit" && has_value) options.junit_file = args[++i];
     else if (args[i] == "--json" && has_value) options.json_file = args[++i];
+    else if (args[i] == "--vale-calc=report" || args[i] == "--vale-calc=check")
+      options.vale_calc_report = args[i] == "--vale-calc=report";
     else if (args[i] == "--out" && has_value) options.out_dir = args[++i];
     else if (args[i][0] == '-') return usage_error("verify: unexpected option '" + args[i] + "'");
     else options.paths.emplace_back(args[i]);
@@ -141,6 +215,54 @@ int dump_command(const std::vector<std::string>& args) {
   return 0;
 }
 
+/// `lunaster convert CASE.comm [-o CASE.lua] [--check]`: 0 if everything was translated (or,
+/// with --check, is known), 2 otherwise; the deck is written in both cases.
+int convert_command(const std::vector<std::string>& args) {
+  fs::path comm, out;
+  bool check = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "-o" && i + 1 < args.size()) out = args[++i];
+    else if (args[i] == "--check") check = true;
+    else if (comm.empty() && args[i][0] != '-') comm = args[i];
+    else return usage_error("convert: unexpected argument '" + args[i] + "'");
+  }
+  if (comm.empty()) return usage_error("convert: no .comm file given");
+  std::ifstream in(comm, std::ios::binary);
+  if (!in) {
+    std::cerr << "lunaster: convert: cannot read " << comm.string() << "\n";
+    return static_cast<int>(ErrorKind::Deck);
+  }
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string name = comm.string();
+  auto print = [&](const std::vector<lua::CommIssue>& issues) {
+    for (const auto& issue : issues)
+      std::cerr << name << ":" << issue.line << ": " << issue.what << ": " << issue.hint << "\n";
+  };
+  if (check) {
+    const auto issues = lua::check_comm(text);
+    print(issues);
+    std::cerr << name << ": " << (issues.empty() ? "nothing to finish by hand, every command and keyword is known"
+                                                  : std::to_string(issues.size()) + " issue(s)")
+              << "\n";
+    return issues.empty() ? 0 : static_cast<int>(ErrorKind::Deck);
+  }
+  if (out.empty()) out = fs::path(comm).replace_extension(".lua");
+  std::error_code ec;
+  if (out == comm || (fs::exists(out, ec) && fs::equivalent(out, comm, ec))) {
+    std::cerr << "lunaster: convert: the output " << out.string() << " is the .comm file itself\n";
+    return static_cast<int>(ErrorKind::Deck);
+  }
+  const auto conversion = lua::convert_comm(text);
+  try {
+    engine::write_file_atomically(out, [&](std::ostream& file) { file << conversion.lua; });
+  } catch (const Error& e) {
+    std::cerr << "lunaster: " << e.message() << "\n";
+    return static_cast<int>(ErrorKind::Deck);
+  }
+  print(conversion.refused);
+  return conversion.refused.empty() ? 0 : static_cast<int>(ErrorKind::Deck);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -155,6 +277,7 @@ int main(int argc, char** argv) {
     if (verb == "run") return run_command(rest);
     if (verb == "verify") return verify_command(rest);
     if (verb == "help") return help_command(rest);
+    if (verb == "convert") return convert_command(rest);
     if (verb == "--dump-catalog") return dump_command(rest);
   } catch (const std::exception& e) {
     std::cerr << "lunaster: internal error: " << e.what() << "\n";

@@ -1,11 +1,15 @@
 #include "lua/runner.hpp"
 
+#include <fstream>
 #include <new>
 #include <ostream>
+#include <sstream>
 
 #include "catalog/args.hpp"
 #include "catalog/lookup.hpp"
 #include "lua/bridge.hpp"
+#include "lua/comm_convert.hpp"
+#include "lua/export_file.hpp"
 
 namespace lunaster::lua {
 
@@ -166,7 +170,34 @@ void Runner::run_file(const std::filesystem::path& deck) {
   if (session_.deck_path.empty()) session_.deck_path = deck;
   deck_dir_ = deck.parent_path();
   if (!std::filesystem::is_regular_file(deck)) throw DeckError("cannot open deck '" + deck.string() + "'");
+  if (is_comm_file(deck)) return run_comm(deck);
   run_loaded(luaL_loadfilex(state_, deck.string().c_str(), "t"));
+}
+
+void Runner::run_comm(const std::filesystem::path& comm) {
+  std::ifstream in(comm, std::ios::binary);
+  if (!in) throw DeckError("cannot open command file '" + comm.string() + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const CommConversion converted = convert_comm(text.str());
+  if (!converted.refused.empty()) {
+    // Nothing runs from a file that cannot be converted whole: the first form to finish stops it.
+    const CommIssue& first = converted.refused.front();
+    std::vector<std::string> hints;
+    if (!first.hint.empty()) hints.push_back(first.hint);
+    if (converted.refused.size() > 1)
+      hints.push_back(std::to_string(converted.refused.size() - 1) + " more form(s) to finish by hand: `lunaster convert --check " +
+                      comm.string() + "` lists them all");
+    DeckError error(first.what + " is not part of the command language lunaster runs", hints);
+    ErrorContext where;
+    where.file = comm.string();
+    where.line = first.line;
+    error.fill_context(where);
+    throw error;
+  }
+  session_.code_aster_vale_calc = true;
+  // The Lua text keeps the .comm's lines: Lua's messages name the .comm file and line.
+  run_string(converted.lua, comm.string());
 }
 
 void Runner::run_string(const std::string& code, const std::string& chunk_name) {
@@ -206,11 +237,36 @@ int run_in(const std::filesystem::path& deck, cmd::Session& session, HandlerLook
 
 }  // namespace
 
-int run_deck(const std::filesystem::path& deck, cmd::Session& session, HandlerLookup lookup, std::ostream& err,
+bool is_comm_file(const std::filesystem::path& deck) { return deck.extension() == ".comm"; }
+bool is_export_file(const std::filesystem::path& deck) { return deck.extension() == ".export"; }
+
+void apply_export(const ExportFile& study, cmd::Session& session) {
+  session.export_path = study.file;
+  session.deck_path = study.comm;
+  for (const auto& [unit, f] : study.data) session.data_units[unit] = {f.type, f.path};
+  for (const auto& [unit, f] : study.results) session.result_units[unit] = {f.type, f.path};
+  if (!study.ignored.empty()) {
+    std::string names;
+    for (const auto& name : study.ignored) names += (names.empty() ? "" : ", ") + name;
+    session.log().debug(study.file.string() + ": parameters with no effect on a lunaster run: " + names);
+  }
+}
+
+int run_deck(const std::filesystem::path& given, cmd::Session& session, HandlerLookup lookup, std::ostream& err,
              const Budget& overrides) {
   Budget budget;
+  std::filesystem::path deck = given;
   try {
-    budget = override_budget(read_budget_header(deck), overrides);
+    if (is_export_file(given)) {
+      const ExportFile study = read_export(given);
+      apply_export(study, session);
+      deck = study.comm;
+      budget = override_budget(study.budget, overrides);
+    } else if (is_comm_file(given)) {
+      budget = overrides;  // a .comm has no budget header: the .export or the command line gives it
+    } else {
+      budget = override_budget(read_budget_header(deck), overrides);
+    }
   } catch (const Error& e) {
     err << e.what() << "\n";
     return static_cast<int>(e.kind());

@@ -37,6 +37,10 @@ class Runner {
   /// errors become DeckError with the location Lua reports; a deck over its budget
   /// (or out of memory) raises an Error of kind TimeLimit (OutOfMemory).
   void run_file(const std::filesystem::path& deck);
+  /// Runs a code_aster command file: converted to Lua line for line (lua/comm_convert.hpp) and
+  /// run under the .comm's name, so every message names the .comm file and line. A file with
+  /// forms the converter cannot translate stops before its first command (DeckError at the first).
+  void run_comm(const std::filesystem::path& comm);
   /// Runs deck text; `chunk_name` is the file name used in messages.
   void run_string(const std::string& code, const std::string& chunk_name);
   /// Lua traceback of the last failed run (shown for InternalError only).
@@ -71,7 +75,12 @@ class Runner {
   catalog::KeywordReads* reads_ = nullptr;
 };
 
-/// Runs one deck and maps the outcome to the exit code of STYLE.md §3
+/// A code_aster command file (.comm) or study description (.export), by extension.
+bool is_comm_file(const std::filesystem::path& deck);
+bool is_export_file(const std::filesystem::path& deck);
+
+/// Runs one deck (a Lua deck, a .comm, or an .export naming a .comm, its units and its
+/// limits) and maps the outcome to the exit code of STYLE.md §3
 /// (0 OK, 1 some TEST_RESU NOOK, 2 DeckError, 3 SolveError, 4 InternalError,
 /// 5 over the time budget, 6 over the memory budget or out of memory),
 /// printing any error to `err` (with a traceback for InternalError only).

@@ -1,5 +1,6 @@
 /// The sandboxed Lua environment of a deck: allowed libraries only, text-only
 /// `load`, deck-relative `require`, `_F`, command trampolines, strict globals.
+#include <cctype>
 #include <filesystem>
 #include <vector>
 
@@ -98,6 +99,21 @@ void collect_names(lua_State* L, int table, std::vector<std::string>& out) {
   }
 }
 
+/// A code_aster command name: upper case, digits and underscores, with an underscore (MA, RESU are concepts).
+bool looks_like_command(const std::string& name) {
+  if (name.find('_') == std::string::npos || name.front() == '_') return false;
+  for (char ch : name)
+    if (!(std::isupper(static_cast<unsigned char>(ch)) || std::isdigit(static_cast<unsigned char>(ch)) || ch == '_'))
+      return false;
+  return true;
+}
+
+std::string command_names() {
+  std::string out;
+  for (const auto& spec : catalog::all_commands()) out += (out.empty() ? "" : ", ") + spec.name;
+  return out;
+}
+
 /// __index of _G: deck variables live in upvalue 1; reading an unknown name is an error.
 int strict_index(lua_State* L) {
   lua_pushvalue(L, 2);
@@ -118,9 +134,11 @@ int strict_index(lua_State* L) {
     collect_names(L, lua_gettop(L), names);
     collect_names(L, 1, names);
     lua_pop(L, 1);
-    std::string message = std::string("unknown name '") + lua_tostring(L, 2) + "'";
-    std::string suggestion = catalog::closest_name(lua_tostring(L, 2), names);
+    const std::string name = lua_tostring(L, 2);
+    std::string message = "unknown name '" + name + "'";
+    std::string suggestion = catalog::closest_name(name, names);
     if (!suggestion.empty()) message += " (did you mean " + suggestion + "?)";
+    else if (looks_like_command(name)) message += ": not a lunaster command; the commands are " + command_names();
     lua_pushlstring(L, message.data(), message.size());
   }
   lua_concat(L, 2);

@@ -15,16 +15,36 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <set>
 #include <sstream>
 #include <thread>
 
 #include "engine/io/atomic_file.hpp"
+#include "lua/export_file.hpp"
 
 extern char** environ;
 
 namespace lunaster::lua {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+/// The command file an .export names (`F comm NAME D 1`), read leniently: the child run
+/// reports whatever else is wrong with the file.
+fs::path export_comm(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string f, type, path;
+    if (words >> f >> type >> path && f == "F" && type == "comm")
+      return fs::path(path).is_absolute() ? fs::path(path) : file.parent_path() / path;
+  }
+  return {};
+}
+
+}  // namespace
 
 std::vector<fs::path> collect_decks(const std::vector<fs::path>& paths) {
   std::vector<fs::path> decks;
@@ -38,9 +58,21 @@ std::vector<fs::path> collect_decks(const std::vector<fs::path>& paths) {
         it.disable_recursion_pending();
         continue;
       }
-      if (it->is_regular_file() && it->path().extension() == ".lua") decks.push_back(it->path());
+      if (!it->is_regular_file()) continue;
+      const auto ext = it->path().extension();
+      if (ext == ".lua" || ext == ".export" || ext == ".comm") decks.push_back(it->path());
     }
   }
+  // A .comm named by an .export of the list runs through that .export only.
+  std::set<fs::path> named;
+  for (const auto& deck : decks)
+    if (deck.extension() == ".export")
+      if (auto comm = export_comm(deck); !comm.empty()) named.insert(comm.lexically_normal());
+  decks.erase(std::remove_if(decks.begin(), decks.end(),
+                             [&](const fs::path& d) {
+                               return d.extension() == ".comm" && named.count(d.lexically_normal());
+                             }),
+              decks.end());
   std::sort(decks.begin(), decks.end());
   decks.erase(std::unique(decks.begin(), decks.end()), decks.end());
   return decks;
@@ -56,6 +88,37 @@ void count_checks(const std::string& output, int& n_ok, int& n_nook) {
   }
 }
 
+std::vector<CodeAsterComparison> code_aster_comparisons(const std::string& output) {
+  std::vector<CodeAsterComparison> out;
+  std::istringstream in(output);
+  std::string line;
+  while (std::getline(in, line)) {
+    // "<status> CODE_ASTER     <what>  refe=<code_aster>  calc=<lunaster>  err=<d>  tol=<t>  <critere>"
+    if (line.size() < 16 || line.compare(5, 11, "CODE_ASTER ") != 0) continue;
+    const auto refe = line.find("  refe="), calc = line.find("  calc="), err = line.find("  err="),
+               tol = line.find("  tol=");
+    if (refe == std::string::npos || calc == std::string::npos || err == std::string::npos || tol == std::string::npos)
+      continue;
+    CodeAsterComparison c;
+    const auto start = line.find_first_not_of(' ', 16);
+    c.check = line.substr(start, refe - start);
+    try {
+      c.code_aster = std::stod(line.substr(refe + 7));
+      c.lunaster = std::stod(line.substr(calc + 7));
+      c.difference = std::stod(line.substr(err + 6));
+      c.tolerance = std::stod(line.substr(tol + 6));
+    } catch (const std::exception&) {
+      continue;
+    }
+    out.push_back(c);
+  }
+  return out;
+}
+
+fs::path deck_out_dir(const fs::path& out_dir, const fs::path& deck) {
+  return out_dir / (deck.extension() == ".lua" ? deck.stem() : deck.filename());
+}
+
 std::string deck_status(int exit_code, int n_nook) {
   if (exit_code == 0) return n_nook ? "NOOK" : "OK";
   if (exit_code == 1) return "NOOK";
@@ -67,7 +130,8 @@ std::string deck_status(int exit_code, int n_nook) {
 Budget verify_budget(const fs::path& deck, const Budget& overrides) {
   Budget header;
   try {
-    header = read_budget_header(deck);
+    if (deck.extension() == ".export") header = read_export(deck).budget;
+    else if (deck.extension() != ".comm") header = read_budget_header(deck);
   } catch (const std::exception&) {
     // The child reports the malformed header as a deck error; the defaults guard it meanwhile.
   }
@@ -77,7 +141,8 @@ Budget verify_budget(const fs::path& deck, const Budget& overrides) {
   return budget;
 }
 
-DeckOutcome run_child(const fs::path& executable, const fs::path& deck, const fs::path& out_dir, const Budget& budget) {
+DeckOutcome run_child(const fs::path& executable, const fs::path& deck, const fs::path& out_dir, const Budget& budget,
+                      const std::vector<std::string>& extra_args) {
   DeckOutcome outcome;
   outcome.deck = deck;
   outcome.time_limit = budget.seconds.value_or(0.0);
@@ -96,6 +161,7 @@ DeckOutcome run_child(const fs::path& executable, const fs::path& deck, const fs
   std::vector<std::string> words = {executable.string(), "run", deck.string(), "--out", out_dir.string()};
   if (budget.seconds) words.insert(words.end(), {"--time-limit", budget_text(*budget.seconds)});
   if (budget.megabytes) words.insert(words.end(), {"--memory-limit", budget_text(*budget.megabytes)});
+  words.insert(words.end(), extra_args.begin(), extra_args.end());
   std::vector<char*> argv;
   for (auto& word : words) argv.push_back(word.data());
   argv.push_back(nullptr);
@@ -145,6 +211,7 @@ DeckOutcome run_child(const fs::path& executable, const fs::path& deck, const fs
   close(fds[0]);
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   count_checks(outcome.output, outcome.n_ok, outcome.n_nook);
+  outcome.comparisons = code_aster_comparisons(outcome.output);
   outcome.status = killed ? "TIMEOUT" : deck_status(outcome.exit_code, outcome.n_nook);
   return outcome;
 }
@@ -198,6 +265,12 @@ std::string tail(const std::string& text, int n_lines) {
   return out;
 }
 
+std::string number_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9e", v);
+  return buf;
+}
+
 std::string seconds_text(double s) {
   std::ostringstream out;
   out << std::fixed << std::setprecision(3) << s;
@@ -219,8 +292,17 @@ std::string junit_xml(const std::vector<DeckOutcome>& outcomes) {
       << "  <testsuite name=\"lunaster.verify\" tests=\"" << outcomes.size() << "\" failures=\"" << failures
       << "\" errors=\"" << errors << "\" time=\"" << seconds_text(total) << "\">\n";
   for (const auto& o : outcomes) {
-    out << "    <testcase classname=\"decks\" name=\"" << xml_escape(o.deck.stem().string()) << "\" file=\""
+    out << "    <testcase classname=\"decks\" name=\"" << xml_escape(deck_out_dir("", o.deck).string()) << "\" file=\""
         << xml_escape(o.deck.string()) << "\" time=\"" << seconds_text(o.seconds) << "\">";
+    if (!o.comparisons.empty()) {
+      // The migration report: lunaster against code_aster's VALE_CALC, one property per check.
+      out << "\n      <properties>";
+      for (const auto& c : o.comparisons)
+        out << "\n        <property name=\"code_aster: " << xml_escape(c.check) << "\" value=\"lunaster="
+            << number_text(c.lunaster) << " code_aster=" << number_text(c.code_aster)
+            << " difference=" << number_text(c.difference) << " tolerance=" << number_text(c.tolerance) << "\"/>";
+      out << "\n      </properties>\n    ";
+    }
     if (o.status == "NOOK")
       out << "\n      <failure message=\"" << o.n_nook << " NOOK check(s)\">" << xml_escape(o.output) << "</failure>\n    ";
     else if (o.status == "ERROR")
@@ -248,8 +330,19 @@ std::string json_report(const std::vector<DeckOutcome>& outcomes) {
     out << (i ? "," : "") << "\n    {\"deck\": " << json_escape(o.deck.string()) << ", \"status\": \"" << o.status
         << "\", \"exit_code\": " << o.exit_code << ", \"checks_ok\": " << o.n_ok << ", \"checks_nook\": " << o.n_nook
         << ", \"seconds\": " << seconds_text(o.seconds) << ", \"time_limit\": " << budget_text(o.time_limit)
-        << ", \"memory_limit_mb\": " << budget_text(o.memory_limit_mb) << ", \"output\": " << json_escape(o.output)
-        << "}";
+        << ", \"memory_limit_mb\": " << budget_text(o.memory_limit_mb);
+    if (!o.comparisons.empty()) {
+      out << ", \"code_aster\": [";
+      for (std::size_t k = 0; k < o.comparisons.size(); ++k) {
+        const auto& c = o.comparisons[k];
+        out << (k ? ", " : "") << "{\"check\": " << json_escape(c.check) << ", \"lunaster\": " << number_text(c.lunaster)
+            << ", \"code_aster\": " << number_text(c.code_aster) << ", \"difference\": " << number_text(c.difference)
+            << ", \"tolerance\": " << number_text(c.tolerance)
+            << ", \"within\": " << (c.difference <= c.tolerance ? "true" : "false") << "}";
+      }
+      out << "]";
+    }
+    out << ", \"output\": " << json_escape(o.output) << "}";
   }
   out << "\n  ],\n  \"passed\": " << passed << ",\n  \"failed\": " << outcomes.size() - passed << "\n}\n";
   return out.str();
@@ -268,10 +361,12 @@ int verify(const VerifyOptions& options, std::ostream& out) {
   int jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   jobs = std::min<int>(jobs, std::max<std::size_t>(decks.size(), 1));
   std::atomic<std::size_t> next{0};
+  std::vector<std::string> extra;
+  if (options.vale_calc_report) extra.push_back("--vale-calc=report");
   auto worker = [&] {
     for (std::size_t i = next++; i < decks.size(); i = next++)
-      outcomes[i] = run_child(options.executable, decks[i], options.out_dir / decks[i].stem(),
-                              verify_budget(decks[i], options.budget));
+      outcomes[i] = run_child(options.executable, decks[i], deck_out_dir(options.out_dir, decks[i]),
+                              verify_budget(decks[i], options.budget), extra);
   };
   std::vector<std::thread> threads;
   for (int j = 0; j < jobs; ++j) threads.emplace_back(worker);
@@ -287,6 +382,20 @@ int verify(const VerifyOptions& options, std::ostream& out) {
     out << std::left << std::setw(static_cast<int>(width)) << o.deck.string() << "  " << std::setw(13) << o.status << "  "
         << std::setw(15) << checks << "  " << std::right << std::setw(8) << seconds_text(o.seconds) << "\n";
   }
+  // The migration report: converted code_aster cases against code_aster's own VALE_CALC.
+  std::size_t n_compared = 0, n_beyond = 0;
+  for (const auto& o : outcomes) {
+    for (const auto& c : o.comparisons) {
+      if (!n_compared++) out << "\ncomparisons with code_aster (VALE_CALC of .comm cases): lunaster, code_aster, relative difference\n";
+      n_beyond += c.difference > c.tolerance;
+      out << "  " << o.deck.filename().string() << "  " << c.check << "  " << number_text(c.lunaster) << "  "
+          << number_text(c.code_aster) << "  " << std::scientific << std::setprecision(2) << c.difference
+          << (c.difference > c.tolerance ? "  beyond " : "  within ") << c.tolerance << std::defaultfloat << "\n";
+    }
+  }
+  if (n_compared)
+    out << n_compared << " comparison(s), " << n_beyond << " beyond tolerance"
+        << (options.vale_calc_report ? " (reported: --vale-calc=report)" : " (counted as checks)") << "\n\n";
   for (const auto& o : outcomes) {
     if (o.status == "OK") continue;
     out << "\n---- " << o.deck.string() << " (" << o.status << ", exit " << o.exit_code;

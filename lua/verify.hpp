@@ -19,12 +19,19 @@ struct VerifyOptions {
   std::filesystem::path out_dir = "out/verify";  ///< each deck writes to out_dir/<deck name>
   std::filesystem::path executable;          ///< the lunaster binary run as `exe run DECK --out DIR`
   Budget budget;                             ///< --time-limit / --memory-limit: override every deck header
+  bool vale_calc_report = false;             ///< --vale-calc=report: a .comm's VALE_CALC are report lines
 };
 
 /// Default budget of a deck under `lunaster verify` (when neither the command line nor the deck header sets one).
 constexpr double kVerifyDefaultSeconds = 300.0;
 /// The parent stops a child this long after its time limit if it has not stopped itself.
 constexpr double kVerifyKillGraceSeconds = 1.0;
+
+/// One comparison of a .comm's VALE_CALC (code_aster's value) with lunaster's, as the deck printed it.
+struct CodeAsterComparison {
+  std::string check;  ///< NOM_CHAM, point, NOM_CMP [, LEGENDE]
+  double lunaster = 0.0, code_aster = 0.0, difference = 0.0, tolerance = 0.0;
+};
 
 /// Result of one deck.
 struct DeckOutcome {
@@ -36,17 +43,25 @@ struct DeckOutcome {
   int n_ok = 0, n_nook = 0;
   double seconds = 0.0;  ///< wall time
   std::string output;    ///< captured stdout + stderr
+  std::vector<CodeAsterComparison> comparisons;  ///< CODE_ASTER lines of the output
 };
 
-/// Decks named by `paths`: files as given; folders searched recursively for
-/// *.lua, skipping folders named `errors` (must-fail decks). Sorted, unique.
+/// Decks named by `paths`: files as given; folders searched recursively for *.lua,
+/// *.export, and *.comm files that no .export of the same folder names, skipping folders
+/// named `errors` (must-fail decks). Sorted, unique.
 std::vector<std::filesystem::path> collect_decks(const std::vector<std::filesystem::path>& paths);
 /// Counts TEST_RESU lines (" OK ..." and "NOOK ...") in a deck's output.
 void count_checks(const std::string& output, int& n_ok, int& n_nook);
+/// The CODE_ASTER lines (checks or SAME/DIFF report lines) of a deck's output.
+std::vector<CodeAsterComparison> code_aster_comparisons(const std::string& output);
+/// The output folder of a deck under verify's `out_dir`: its name, with ".comm"/".export" kept
+/// so that a .comm case and a Lua deck of the same name do not share a folder.
+std::filesystem::path deck_out_dir(const std::filesystem::path& out_dir, const std::filesystem::path& deck);
 /// "OK" (exit 0, no NOOK), "NOOK" (exit 1, or NOOK lines), "TIMEOUT" (exit 5),
 /// "OUT_OF_MEMORY" (exit 6) or "ERROR".
 std::string deck_status(int exit_code, int n_nook);
-/// The budget a deck runs with under verify: `overrides` (command line), else its header,
+/// The budget a deck runs with under verify: `overrides` (command line), else its header
+/// (an .export's P time_limit / memory_limit),
 /// else 300 s and half of the machine's memory. A malformed header is left to the child
 /// to report as a deck error.
 Budget verify_budget(const std::filesystem::path& deck, const Budget& overrides);
@@ -55,7 +70,8 @@ Budget verify_budget(const std::filesystem::path& deck, const Budget& overrides)
 /// itself; if it is still running kVerifyKillGraceSeconds after its time limit, it is
 /// killed (SIGKILL, that child only) and reported as TIMEOUT.
 DeckOutcome run_child(const std::filesystem::path& executable, const std::filesystem::path& deck,
-                      const std::filesystem::path& out_dir, const Budget& budget = {});
+                      const std::filesystem::path& out_dir, const Budget& budget = {},
+                      const std::vector<std::string>& extra_args = {});
 /// JUnit XML for the outcomes (one testcase per deck).
 std::string junit_xml(const std::vector<DeckOutcome>& outcomes);
 /// JSON report for the outcomes.

@@ -1,0 +1,493 @@
+// The .comm -> Lua converter: every Python form of a study file, translated and loaded by
+// Lua 5.4 (and run against recording fake commands to read the tables back), every refused
+// form (what, line, hint, the line commented out, the line count kept), check_comm against
+// the real catalogue, and robustness on random and truncated input.
+#include <gtest/gtest.h>
+
+#include <lua.hpp>
+
+#include <algorithm>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "lua/comm_convert.hpp"
+
+using lunaster::lua::check_comm;
+using lunaster::lua::CommIssue;
+using lunaster::lua::convert_comm;
+
+namespace {
+
+const std::string kMarker = "--[lunaster convert: finish by hand] ";
+
+std::size_t count_lines(const std::string& s) { return std::count(s.begin(), s.end(), '\n') + 1; }
+
+std::vector<std::string> lines_of(const std::string& s) {
+  std::vector<std::string> out;
+  std::size_t b = 0;
+  for (;;) {
+    std::size_t e = s.find('\n', b);
+    out.push_back(s.substr(b, e == std::string::npos ? std::string::npos : e - b));
+    if (e == std::string::npos) return out;
+    b = e + 1;
+  }
+}
+
+/// Loads (and, with `run`, runs) Lua text with recording fake commands: every call of an
+/// upper-case global appends {name=..., args=...} to CALLS and returns {concept=name};
+/// _F returns its table. Then evaluates `expression` and returns it as text (or the error).
+class Lua {
+ public:
+  Lua() : L(luaL_newstate()) {
+    luaL_openlibs(L);
+    const char* harness = R"(
+      CALLS = {}
+      _F = function(t) return t end
+      setmetatable(_G, { __index = function(_, name)
+        if type(name) == 'string' and name:match('^[A-Z_][A-Z0-9_]*$') then
+          return function(t) CALLS[#CALLS + 1] = { name = name, args = t }; return { concept = name } end
+        end
+      end })
+    )";
+    luaL_dostring(L, harness);
+  }
+  ~Lua() { lua_close(L); }
+  /// "" if the chunk loads and runs, else Lua's message.
+  std::string run(const std::string& text, const char* chunk = "=case.comm") {
+    if (luaL_loadbuffer(L, text.data(), text.size(), chunk) != LUA_OK || lua_pcall(L, 0, 0, 0) != LUA_OK) {
+      std::string message = lua_tostring(L, -1);
+      lua_pop(L, 1);
+      return message;
+    }
+    return "";
+  }
+  /// The value of a Lua expression as shown by tostring, with its math.type for numbers.
+  std::string eval(const std::string& expression) {
+    std::string code = "local v = " + expression +
+                       "\nif math.type(v) then return math.type(v) .. ':' .. tostring(v) end return tostring(v)";
+    if (luaL_dostring(L, code.c_str()) != LUA_OK) {
+      std::string message = lua_tostring(L, -1);
+      lua_pop(L, 1);
+      return "error: " + message;
+    }
+    std::string v = lua_tostring(L, -1);
+    lua_pop(L, 1);
+    return v;
+  }
+
+ private:
+  lua_State* L;
+};
+
+/// "" if `text` loads as a Lua chunk (syntax only), else the message.
+std::string load_error(const std::string& text) {
+  lua_State* L = luaL_newstate();
+  std::string message;
+  if (luaL_loadbuffer(L, text.data(), text.size(), "=case.comm") != LUA_OK) message = lua_tostring(L, -1);
+  lua_close(L);
+  return message;
+}
+
+/// Converts, checks that nothing was refused, that the lines stay aligned and that Lua runs it.
+std::string convert_clean(const std::string& comm, Lua& lua) {
+  auto c = convert_comm(comm);
+  EXPECT_TRUE(c.refused.empty()) << (c.refused.empty() ? "" : c.refused[0].what) << "\n" << c.lua;
+  EXPECT_EQ(count_lines(c.lua), count_lines(comm));
+  EXPECT_EQ(lua.run(c.lua), "") << c.lua;
+  return c.lua;
+}
+
+}  // namespace
+
+TEST(CommConvert, CommandCallsBecomeTableCallsWithTheirKeywords) {
+  const std::string comm =
+      "DEBUT()\n"
+      "MA=LIRE_MAILLAGE(FORMAT='MED',\n"
+      "                 UNITE=20)\n"
+      "MA=DEFI_GROUP(reuse =MA, MAILLAGE=MA,\n"
+      "              CREA_GROUP_NO=(_F(GROUP_MA='AB'), _F(GROUP_MA=('CD', 'EF'),),),)\n"
+      "FIN ();\n";
+  Lua lua;
+  const std::string out = convert_clean(comm, lua);
+  const auto l = lines_of(out);
+  EXPECT_EQ(l[0], "DEBUT{}");
+  EXPECT_EQ(l[1], "MA=LIRE_MAILLAGE{FORMAT='MED',");
+  EXPECT_EQ(l[2], "                 UNITE=20}");
+  EXPECT_EQ(l[4], "              CREA_GROUP_NO={_F{GROUP_MA='AB'}, _F{GROUP_MA={'CD', 'EF'},},},}");
+  EXPECT_EQ(l[5], "FIN {};");
+  EXPECT_EQ(lua.eval("#CALLS"), "integer:4");
+  EXPECT_EQ(lua.eval("CALLS[1].name"), "DEBUT");
+  EXPECT_EQ(lua.eval("CALLS[2].args.UNITE"), "integer:20");
+  EXPECT_EQ(lua.eval("CALLS[3].args.reuse.concept"), "LIRE_MAILLAGE");
+  EXPECT_EQ(lua.eval("CALLS[3].args.CREA_GROUP_NO[1].GROUP_MA"), "AB");
+  EXPECT_EQ(lua.eval("CALLS[3].args.CREA_GROUP_NO[2].GROUP_MA[2]"), "EF");
+  EXPECT_EQ(lua.eval("#CALLS[3].args.CREA_GROUP_NO"), "integer:2");
+  EXPECT_EQ(lua.eval("CALLS[4].name"), "FIN");
+}
+
+TEST(CommConvert, TuplesAndListsBecomeArraysAndParenthesisedValuesStayValues) {
+  const std::string comm =
+      "A = CMD(ONE=('A',), EMPTY=(), PLAIN=('PLAQUE1'), SUM=(1+2)*3, LIST=[1, [2, 3]], NEST=((1, 2), (3,)))\n";
+  Lua lua;
+  const std::string out = convert_clean(comm, lua);
+  EXPECT_EQ(out, "A = CMD{ONE={'A',}, EMPTY={}, PLAIN=('PLAQUE1'), SUM=(1+2)*3, LIST={1, {2, 3}}, NEST={{1, 2}, {3,}}}\n");
+  EXPECT_EQ(lua.eval("CALLS[1].args.ONE[1]"), "A");
+  EXPECT_EQ(lua.eval("#CALLS[1].args.ONE"), "integer:1");
+  EXPECT_EQ(lua.eval("next(CALLS[1].args.EMPTY)"), "nil");
+  EXPECT_EQ(lua.eval("CALLS[1].args.PLAIN"), "PLAQUE1");
+  EXPECT_EQ(lua.eval("CALLS[1].args.SUM"), "integer:9");
+  EXPECT_EQ(lua.eval("CALLS[1].args.LIST[2][2]"), "integer:3");
+  EXPECT_EQ(lua.eval("CALLS[1].args.NEST[2][1]"), "integer:3");
+}
+
+TEST(CommConvert, NumbersAsCodeAsterWritesThemReadTheSameInLua) {
+  const std::string comm =
+      "V = CMD(A=20.0E+05, B=1., C=.5, D=-1.E5, E=1e-3, F=1_000, G=7, H=0x1F, I=0o17, J=0b101, K=1_0.2_5, L=0)\n";
+  Lua lua;
+  const std::string out = convert_clean(comm, lua);
+  EXPECT_EQ(out, "V = CMD{A=20.0E+05, B=1., C=.5, D=-1.E5, E=1e-3, F=1000, G=7, H=0x1F, I=15, J=5, K=10.25, L=0}\n");
+  EXPECT_EQ(lua.eval("CALLS[1].args.A"), "float:2000000.0");
+  EXPECT_EQ(lua.eval("CALLS[1].args.B"), "float:1.0");
+  EXPECT_EQ(lua.eval("CALLS[1].args.C"), "float:0.5");
+  EXPECT_EQ(lua.eval("CALLS[1].args.D"), "float:-100000.0");
+  EXPECT_EQ(lua.eval("CALLS[1].args.E"), "float:0.001");
+  EXPECT_EQ(lua.eval("CALLS[1].args.F"), "integer:1000");
+  EXPECT_EQ(lua.eval("CALLS[1].args.G"), "integer:7");
+  EXPECT_EQ(lua.eval("CALLS[1].args.H"), "integer:31");
+  EXPECT_EQ(lua.eval("CALLS[1].args.I"), "integer:15");
+  EXPECT_EQ(lua.eval("CALLS[1].args.J"), "integer:5");
+  EXPECT_EQ(lua.eval("CALLS[1].args.K"), "float:10.25");
+  EXPECT_EQ(lua.eval("CALLS[1].args.L"), "integer:0");
+}
+
+TEST(CommConvert, StringsInBothQuotesWithPythonEscapesTranslated) {
+  const std::string comm =
+      "S1 = 'it''s'\n"               // adjacent literals
+      "S2 = \"say 'hi'\"\n"
+      "S3 = 'tab\\there\\n'\n"
+      "S4 = '\\u00e9\\x41\\101\\0'\n"  // é (UTF-8), A, A, NUL
+      "S5 = 'C:\\data\\d'\n"          // unknown escapes keep their backslash in Python
+      "S6 = 'a\\'b' \"c\\\"d\"\n"
+      "S7 = 'ab\\\ncd'\n";            // backslash-newline inside a string
+  Lua lua;
+  const std::string out = convert_clean(comm, lua);
+  const auto l = lines_of(out);
+  EXPECT_EQ(l[0], "S1 = 'it' .. 's'");
+  EXPECT_EQ(l[1], "S2 = \"say 'hi'\"");
+  EXPECT_EQ(lua.eval("S1"), "its");
+  EXPECT_EQ(lua.eval("S2"), "say 'hi'");
+  EXPECT_EQ(lua.eval("S3 == 'tab\\there\\n'"), "true");
+  EXPECT_EQ(lua.eval("S4 == '\\xC3\\xA9AA\\0'"), "true");
+  EXPECT_EQ(lua.eval("S5"), "C:\\data\\d");
+  EXPECT_EQ(lua.eval("S6"), "a'bc\"d");
+  EXPECT_EQ(lua.eval("S7"), "abcd");
+}
+
+TEST(CommConvert, RawAndTripleQuotedStringsKeepTheirLines) {
+  const std::string comm =
+      "R = r'\\n\\d'\n"
+      "T = \"\"\"first\n"
+      "  second ]] 'q'\n"
+      "\"\"\"\n"
+      "U = '''\n"
+      "after a newline'''\n"
+      "W = '''x\\ty\n"
+      "z'''\n"
+      "X = R'''raw\\n\n"
+      "two'''\n";
+  Lua lua;
+  const std::string out = convert_clean(comm, lua);
+  const auto l = lines_of(out);
+  EXPECT_EQ(l[1], "T = [=[first");  // long bracket with enough '=' for the ']]' inside
+  EXPECT_EQ(lua.eval("R"), "\\n\\d");
+  EXPECT_EQ(lua.eval("T == 'first\\n  second ]] \\'q\\'\\n'"), "true");
+  EXPECT_EQ(lua.eval("U == '\\nafter a newline'"), "true");
+  EXPECT_EQ(lua.eval("W == 'x\\ty\\nz'"), "true");
+  EXPECT_EQ(lua.eval("X == 'raw\\\\n\\ntwo'"), "true");
+}
+
+TEST(CommConvert, CommentsBlankLinesAndIndentationAreKept) {
+  const std::string comm =
+      "# coding: utf-8\n"
+      "\n"
+      "A = CMD(VALE='#not a comment',  # real comment\n"
+      "        X=1 -# minus, then a comment\n"
+      "          2)\n"
+      "#[[ not a Lua long comment\n"
+      "B = 3\n";
+  Lua lua;
+  const std::string out = convert_clean(comm, lua);
+  const auto l = lines_of(out);
+  EXPECT_EQ(l[0], "-- coding: utf-8");
+  EXPECT_EQ(l[1], "");
+  EXPECT_EQ(l[2], "A = CMD{VALE='#not a comment',  -- real comment");
+  EXPECT_EQ(l[5], "-- [[ not a Lua long comment");
+  EXPECT_EQ(lua.eval("CALLS[1].args.VALE"), "#not a comment");
+  EXPECT_EQ(lua.eval("CALLS[1].args.X"), "integer:-1");
+  EXPECT_EQ(lua.eval("B"), "integer:3");
+}
+
+TEST(CommConvert, OperatorsAndConstantsTranslate) {
+  const std::string comm =
+      "A = True; B = False; c = None\n"
+      "D = 2**3**2\n"
+      "E = 7 // 2; F = 7 % 3; G = 7 / 2\n"
+      "H = (1 != 2) and not (3 == 4) or False\n"
+      "I = -2**2\n"
+      "J = 'N' + 'O'\n"
+      "K, L = 1, 2\n";
+  Lua lua;
+  const std::string out = convert_clean(comm, lua);
+  const auto l = lines_of(out);
+  EXPECT_EQ(l[0], "A = true; B = false; c = nil");
+  EXPECT_EQ(l[1], "D = 2^3^2");
+  EXPECT_EQ(l[3], "H = (1 ~= 2) and not (3 == 4) or false");
+  EXPECT_EQ(lua.eval("A"), "true");
+  EXPECT_EQ(lua.eval("c"), "nil");
+  EXPECT_EQ(lua.eval("D"), "float:512.0");
+  EXPECT_EQ(lua.eval("E"), "integer:3");
+  EXPECT_EQ(lua.eval("F"), "integer:1");
+  EXPECT_EQ(lua.eval("G"), "float:3.5");
+  EXPECT_EQ(lua.eval("H"), "true");
+  EXPECT_EQ(lua.eval("I"), "float:-4.0");
+  EXPECT_EQ(lua.eval("J"), "NO");
+  EXPECT_EQ(lua.eval("L"), "integer:2");
+}
+
+TEST(CommConvert, BackslashContinuationsDropTheBackslashAndKeepTheLine) {
+  const std::string comm =
+      "A = 1 + \\\n"
+      "    2\n"
+      "B = CMD(X=A, \\\n"
+      "        Y=2)\n";
+  Lua lua;
+  const std::string out = convert_clean(comm, lua);
+  EXPECT_EQ(out, "A = 1 + \n    2\nB = CMD{X=A, \n        Y=2}\n");
+  EXPECT_EQ(lua.eval("A"), "integer:3");
+  EXPECT_EQ(lua.eval("CALLS[1].args.Y"), "integer:2");
+}
+
+TEST(CommConvert, LuaErrorLinesAreCommLines) {
+  // A runtime error on .comm line 4 is reported by Lua at line 4 of the chunk named after the .comm.
+  const std::string comm =
+      "A = '''one\n"
+      "two'''\n"
+      "B = CMD(X=1,\n"
+      "        Y=undefined_value + 1)\n";
+  const auto c = convert_comm(comm);
+  ASSERT_TRUE(c.refused.empty());
+  Lua lua;
+  EXPECT_NE(lua.run(c.lua, "=study.comm").find("study.comm:4:"), std::string::npos);
+}
+
+namespace {
+
+struct Refusal {
+  std::string comm;     ///< the .comm text
+  int line;             ///< the issue's line
+  std::string what;     ///< a part of the issue's what
+  std::string hint;     ///< a part of its hint
+  std::vector<int> commented;  ///< lines (1-based) commented out with the marker
+};
+
+void expect_refused(const Refusal& r) {
+  SCOPED_TRACE(r.comm);
+  const auto c = convert_comm(r.comm);
+  ASSERT_FALSE(c.refused.empty());
+  const auto it = std::find_if(c.refused.begin(), c.refused.end(),
+                               [&](const CommIssue& i) { return i.what.find(r.what) != std::string::npos; });
+  ASSERT_NE(it, c.refused.end()) << "first issue: " << c.refused[0].what;
+  EXPECT_EQ(it->line, r.line);
+  EXPECT_NE(it->hint.find(r.hint), std::string::npos) << it->hint;
+  EXPECT_EQ(count_lines(c.lua), count_lines(r.comm));
+  const auto out = lines_of(c.lua);
+  const auto src = lines_of(r.comm);
+  for (std::size_t l = 1; l <= out.size(); ++l) {
+    const bool commented = std::find(r.commented.begin(), r.commented.end(), static_cast<int>(l)) != r.commented.end();
+    if (commented) {
+      EXPECT_EQ(out[l - 1].rfind(kMarker, 0), 0u) << "line " << l << ": " << out[l - 1];
+      // the original text follows the marker ('#' comments in Lua spelling)
+      std::string original = src[l - 1];
+      const auto hash = original.find('#');
+      if (hash != std::string::npos && original.find('\'') == std::string::npos) original.replace(hash, 1, "--");
+      EXPECT_EQ(out[l - 1].substr(kMarker.size()), original);
+    } else {
+      EXPECT_NE(out[l - 1].rfind(kMarker, 0), 0u) << "line " << l << " should be translated: " << out[l - 1];
+    }
+  }
+  EXPECT_EQ(load_error(c.lua), "") << c.lua;
+}
+
+}  // namespace
+
+TEST(CommConvert, RefusedFormsAreReportedAndCommentedOut) {
+  const std::vector<Refusal> cases = {
+      {"import math\nA = 1\n", 1, "import", "math", {1}},
+      {"A = 1\nfrom Utilitai.partition import *\n", 2, "import", "remove it", {2}},
+      {"def f(x):\n    return x*2\n\nA = 1\n", 1, "function definition 'def f'", "Lua function", {1, 2}},
+      {"class C:\n    pass\nA = 1\n", 1, "class definition 'class C'", "by hand", {1, 2}},
+      {"for i in range(3):\n    X = CMD(A=i)  # body\n    Y = 2\nZ = 1\n", 1, "'for' loop", "Lua loop", {1, 2, 3}},
+      {"while n < 3:\n    n = n + 1\nZ = 1\n", 1, "'while' loop", "Lua loop", {1, 2}},
+      {"A = 1\nif A > 0:\n    B = 1\nelif A < 0:\n    B = 2\nelse:\n    B = 3\nC = 4\n", 2, "'if' block", "branch",
+       {2, 3, 4, 5, 6, 7}},
+      {"A = 1\nif A > 0:\n    B = 1\nelif A < 0:\n    B = 2\nelse:\n    B = 3\nC = 4\n", 6, "'else' block", "branch",
+       {2, 3, 4, 5, 6, 7}},
+      {"try:\n    A = 1\nexcept Exception:\n    A = 2\n", 3, "'except' block", "clear error", {1, 2, 3, 4}},
+      {"with open('f') as f:\n    A = 1\nB = 2\n", 1, "'with' block", "body", {1, 2}},
+      {"A = 1\nreturn A\n", 2, "'return' statement", "by hand", {2}},
+      {"F = lambda x: x**2\nA = 1\n", 1, "'lambda'", "function (x)", {1}},
+      {"L = [i*2 for i in range(3)]\nA = 1\n", 1, "comprehension", "Lua loop", {1}},
+      {"T = f'N{i}'\nA = 1\n", 1, "f-string", "string.format", {1}},
+      {"D = {'a': 1}\nA = 1\n", 1, "dict", "_F(...)", {1}},
+      {"A = 1\nX = RESU.LIST_PARA()\n", 2, "method call 'RESU.LIST_PARA()'", "no Python methods", {2}},
+      {"X = MA.nom\n", 1, "attribute access 'MA.nom'", "finish in Lua", {1}},
+      {"A = 1\nV = TAB['X', 1]\n", 2, "subscript 'TAB[...]'", "indexed from 1", {2}},
+      {"Y = sqrt(2.)\n", 1, "Python function call 'sqrt'", "math.sqrt", {1}},
+      {"A = CMD(LIST=range(3))\n", 1, "Python function call 'range'", "Lua loop", {1}},
+      {"print('done')\n", 1, "Python function call 'print'", "drop it", {1}},
+      {"B = abs(-1)\n", 1, "Python function call 'abs'", "math.abs", {1}},
+      {"end = 3\nA = 1\n", 1, "identifier 'end' (a Lua reserved word)", "rename", {1}},
+      {"A = CMD(X=local)\n", 1, "identifier 'local' (a Lua reserved word)", "rename", {1}},
+      {"exec('A = 1')\n", 1, "'exec'", "write out", {1}},
+      {"A = eval('1+2')\n", 1, "'eval'", "write out", {1}},
+      {"A = DEFI_GROUP(MA,\n               CREA_GROUP_NO=_F(GROUP_MA='AB'))\nB = 1\n", 1,
+       "positional argument in DEFI_GROUP(...)", "keywords only", {1, 2}},
+      {"A = 1\nB = 'N%d' % A\n", 2, "'%' string formatting", "string.format", {2}},
+      {"A = 1\nA += 2\n", 2, "augmented assignment '+='", "X = X + value", {2}},
+      {"A = B = 1\n", 1, "chained assignment", "one assignment per name", {1}},
+      {"A = 1 if B else 2\n", 1, "conditional expression", "c and a or b", {1}},
+  };
+  for (const auto& r : cases) expect_refused(r);
+}
+
+TEST(CommConvert, RefusedStatementIsCommentedOutOnAllItsLinesAndTheRestConverted) {
+  const std::string comm =
+      "A = CMD(X=1)\n"
+      "B = CMD(Y=sqrt(2.),\n"
+      "        Z=(1, 2))   # note\n"
+      "C = CMD(W=[3])\n";
+  const auto c = convert_comm(comm);
+  ASSERT_EQ(c.refused.size(), 1u);
+  EXPECT_EQ(c.refused[0].line, 2);
+  const auto l = lines_of(c.lua);
+  EXPECT_EQ(l[0], "A = CMD{X=1}");
+  EXPECT_EQ(l[1], kMarker + "B = CMD(Y=sqrt(2.),");
+  EXPECT_EQ(l[2], kMarker + "        Z=(1, 2))   -- note");
+  EXPECT_EQ(l[3], "C = CMD{W={3}}");
+  Lua lua;
+  EXPECT_EQ(lua.run(c.lua), "");
+  EXPECT_EQ(lua.eval("#CALLS"), "integer:2");
+  EXPECT_EQ(lua.eval("CALLS[2].args.W[1]"), "integer:3");
+}
+
+TEST(CommConvert, UnterminatedStringsAndBracketsGiveOneIssueWhereTheyStart) {
+  {
+    const std::string comm = "A = 1\nB = 'open\nC = 2\n";
+    const auto c = convert_comm(comm);
+    ASSERT_EQ(c.refused.size(), 1u);
+    EXPECT_EQ(c.refused[0].line, 2);
+    EXPECT_EQ(c.refused[0].what, "unterminated string");
+    EXPECT_EQ(count_lines(c.lua), 4u);
+    EXPECT_EQ(lines_of(c.lua)[2], "C = 2");
+    EXPECT_EQ(load_error(c.lua), "");
+  }
+  {
+    const std::string comm = "A = 1\nB = CMD(X=(1, 2),\n  Y=3\nC = 2\n";
+    const auto c = convert_comm(comm);
+    ASSERT_EQ(c.refused.size(), 1u);
+    EXPECT_EQ(c.refused[0].line, 2);
+    EXPECT_EQ(c.refused[0].what, "unclosed '('");
+    EXPECT_EQ(count_lines(c.lua), 5u);
+    EXPECT_EQ(lines_of(c.lua)[0], "A = 1");
+    EXPECT_EQ(lines_of(c.lua)[3].rfind(kMarker, 0), 0u);
+    EXPECT_EQ(load_error(c.lua), "");
+  }
+  {
+    const std::string comm = "A = '''never\nclosed\n";
+    const auto c = convert_comm(comm);
+    ASSERT_EQ(c.refused.size(), 1u);
+    EXPECT_EQ(c.refused[0].line, 1);
+    EXPECT_EQ(c.refused[0].what, "unterminated triple-quoted string");
+    EXPECT_EQ(count_lines(c.lua), 3u);
+  }
+}
+
+TEST(CommCheck, UnknownCommandIsReportedWithItsLine) {
+  const auto issues = check_comm("DEBUT()\n\nT = POST_RELEVE_T(ACTION=_F(INTITULE='X'))\nR = STAT_NON_LIN(MODELE=MO)\n");
+  ASSERT_EQ(issues.size(), 2u);
+  EXPECT_EQ(issues[0].line, 3);
+  EXPECT_EQ(issues[0].what, "unknown command POST_RELEVE_T");
+  EXPECT_EQ(issues[1].line, 4);
+  EXPECT_EQ(issues[1].what, "unknown command STAT_NON_LIN (did you mean STAT_NON_LINE?)");
+  EXPECT_FALSE(issues[1].hint.empty());
+}
+
+TEST(CommCheck, UnknownKeywordsAtEveryFactorDepthWithClosestNames) {
+  const std::string comm =
+      "RESU = STAT_NON_LINE(MODELE=MO, CHAM_MATER=CHMAT,\n"
+      "                     EXCIT=(_F(CHARGE=CHA1, FONC_MUL=RAMPE),\n"
+      "                            _F(CHARG=CHA2),),\n"
+      "                     NEWTON=_F(REAC_ITE=1),\n"
+      "                     INCREMENT=_F(LIST_INST=L_INST),\n"
+      "                     CONVERGENC=_F(RESI_GLOB_RELA=1.E-6))\n"
+      "MAT = DEFI_MATERIAU(ELAS=[_F(E=2.0E6, NUU=0.3)])\n";
+  const auto issues = check_comm(comm);
+  ASSERT_EQ(issues.size(), 5u);
+  EXPECT_EQ(issues[0].line, 2);
+  EXPECT_EQ(issues[0].what, "STAT_NON_LINE: unknown keyword EXCIT[1]/FONC_MUL (did you mean FONC_MULT?)");
+  EXPECT_EQ(issues[1].line, 3);
+  EXPECT_EQ(issues[1].what, "STAT_NON_LINE: unknown keyword EXCIT[2]/CHARG (did you mean CHARGE?)");
+  EXPECT_EQ(issues[2].line, 4);
+  EXPECT_EQ(issues[2].what, "STAT_NON_LINE: unknown keyword NEWTON/REAC_ITE (did you mean REAC_ITER?)");
+  EXPECT_EQ(issues[3].line, 6);
+  EXPECT_EQ(issues[3].what, "STAT_NON_LINE: unknown keyword CONVERGENC (did you mean CONVERGENCE?)");
+  EXPECT_EQ(issues[4].line, 7);
+  EXPECT_EQ(issues[4].what, "DEFI_MATERIAU: unknown keyword ELAS/NUU (did you mean NU?)");
+  EXPECT_NE(issues[0].hint.find("lunaster help STAT_NON_LINE"), std::string::npos);
+}
+
+TEST(CommCheck, AKnownStudyHasNoIssueAndRefusedFormsAreIncluded) {
+  const std::string comm =
+      "DEBUT()\n"
+      "MA = LIRE_MAILLAGE(FORMAT='MED')\n"
+      "MO = AFFE_MODELE(MAILLAGE=MA, AFFE=_F(TOUT='OUI', PHENOMENE='MECANIQUE', MODELISATION='D_PLAN'))\n"
+      "MAT = DEFI_MATERIAU(ELAS=_F(E=2.0E6, NU=0.0))\n"
+      "L_INST = DEFI_LIST_REEL(DEBUT=0.0, INTERVALLE=_F(JUSQU_A=1.0, NOMBRE=1))\n"
+      "FIN()\n";
+  EXPECT_TRUE(check_comm(comm).empty());
+  const auto issues = check_comm(comm + "import os\n");
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].line, 7);
+  EXPECT_EQ(issues[0].what, "import");
+}
+
+TEST(CommConvert, RandomAndTruncatedInputsReturnWithTheLineCountKept) {
+  const std::string study =
+      "# study\nDEBUT()\nMA=DEFI_GROUP(reuse=MA, MAILLAGE=MA, CREA_GROUP_NO=(_F(GROUP_MA='AB'),),)\n"
+      "T = '''a\nb''' \"c\\\"\" r'\\d'\nX = [1., .5, -1.E5, 1_0]; Y = (1,)\nfor i in range(2):\n    Z = sqrt(i)\n"
+      "def f(x):\n  return {1: x}\nA = B.c[1] ** 2 != 3 \\\n  + 4\nF = f'{x}' # end\n";
+  for (std::size_t n = 0; n <= study.size(); ++n) {
+    const std::string part = study.substr(0, n);
+    const auto c = convert_comm(part);
+    ASSERT_EQ(count_lines(c.lua), count_lines(part)) << part;
+    check_comm(part);
+  }
+  const std::vector<std::string> pieces = {"(", ")", "[", "]", "{", "}", "'", "\"", "'''", "\"\"\"", "\\", "\n",
+                                           "\\\n", "#", " ", "\t", "\r", "=", ",", ":", ";", ".", "_F", "CMD", "x",
+                                           "r", "f", "1", "1.", ".5", "e5", "**", "!=", "for", "if", "def", "end",
+                                           "\\x", "\\u12", "\\N", "0o", "0b2", "1j", "\xc3\xa9", std::string(1, '\0')};
+  std::mt19937 random(12345);
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::string text;
+    const int count = 1 + static_cast<int>(random() % 40);
+    for (int k = 0; k < count; ++k) text += pieces[random() % pieces.size()];
+    const auto c = convert_comm(text);
+    ASSERT_EQ(count_lines(c.lua), count_lines(text)) << text;
+    for (const auto& issue : c.refused) {
+      ASSERT_GE(issue.line, 1);
+      ASSERT_LE(static_cast<std::size_t>(issue.line), count_lines(text));
+    }
+    check_comm(text);
+  }
+}
