@@ -14,7 +14,8 @@ const CommandSpec& affe_materiau_spec() {
               "One assignment of a material to cells")
            .required()
            .occurs(1, -1)
-           .with_rules({exactly_one({"TOUT", "GROUP_MA"})})});
+           .with_rules({exactly_one({"TOUT", "GROUP_MA"})}),
+       common::info()});
   return spec;
 }
 

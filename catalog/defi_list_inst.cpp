@@ -1,3 +1,4 @@
+#include "catalog/common/keywords.hpp"
 #include "catalog/specs.hpp"
 
 namespace lunaster::catalog {
@@ -17,7 +18,8 @@ const CommandSpec& defi_list_inst_spec() {
                integer("SUBD_PAS", "Number of sub-steps a failed step is cut into").def(4LL).range(2, std::nullopt),
                integer("SUBD_NIVEAU", "Maximum number of successive cuts").def(3LL).range(0, std::nullopt)},
               "What to do when a step fails")
-           .occurs(0, -1)});
+           .occurs(0, -1),
+       common::info()});
   return spec;
 }
 

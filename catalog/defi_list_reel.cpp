@@ -1,3 +1,4 @@
+#include "catalog/common/keywords.hpp"
 #include "catalog/specs.hpp"
 
 namespace lunaster::catalog {
@@ -13,7 +14,7 @@ const CommandSpec& defi_list_reel_spec() {
               "One interval after the previous end, cut into equal steps")
            .occurs(0, -1)
            .with_rules({exactly_one({"NOMBRE", "PAS"})}),
-       real("VALE", "The values, given directly").many()},
+       real("VALE", "The values, given directly").many(), common::info()},
       {exactly_one({"DEBUT", "VALE"}), at_most_one({"VALE", "INTERVALLE"}), together({"DEBUT", "INTERVALLE"})});
   return spec;
 }

@@ -1,3 +1,4 @@
+#include "catalog/common/keywords.hpp"
 #include "catalog/specs.hpp"
 
 namespace lunaster::catalog {
@@ -10,7 +11,8 @@ const CommandSpec& defi_materiau_spec() {
                real("NU", "Poisson's ratio").required().above(-1.0).below(0.5),
                real("RHO", "Density (kg/m3)").range(0.0, std::nullopt)},
               "Isotropic linear elasticity")
-           .required()});
+           .required(),
+       common::info()});
   return spec;
 }
 

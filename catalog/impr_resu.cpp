@@ -1,3 +1,4 @@
+#include "catalog/common/keywords.hpp"
 #include "catalog/specs.hpp"
 
 namespace lunaster::catalog {
@@ -18,7 +19,8 @@ const CommandSpec& impr_resu_spec() {
               "What to write")
            .required()
            .occurs(1, -1)
-           .with_rules({at_least_one({"RESULTAT", "MAILLAGE"})})});
+           .with_rules({at_least_one({"RESULTAT", "MAILLAGE"})}),
+       common::info()});
   return spec;
 }
 

@@ -67,10 +67,15 @@ struct Keyword {
   std::vector<Keyword> children;
   std::vector<Rule> rules;
   std::vector<Block> blocks;
+  /// A simple keyword that code_aster also takes as a factor occurrence (DEBUT's CODE='OUI'
+  /// and older CODE=_F(NIV_PUB_WEB=...)): the children of that form (empty: simple only).
+  std::vector<Keyword> factor_form;
 
   // ---- fluent construction (each returns a modified copy) ----
   Keyword required() const { Keyword k = *this; k.status = Status::Required; if (k.is_factor && k.min_occurs < 1) k.min_occurs = 1; return k; }
   Keyword legacy() const { Keyword k = *this; k.status = Status::Legacy; return k; }
+  /// Also accepted as one factor occurrence with these children (see factor_form).
+  Keyword or_factor(std::vector<Keyword> children) const { Keyword k = *this; k.factor_form = std::move(children); return k; }
   Keyword def(Scalar v) const { Keyword k = *this; k.default_value = std::move(v); return k; }
   Keyword into_values(std::vector<Scalar> v) const { Keyword k = *this; k.into = std::move(v); return k; }
   /// Inclusive bounds lo <= x <= hi (either may be absent).

@@ -85,10 +85,15 @@ void Checker::check(const Keyword& spec, KwNode& node, const std::string& prefix
   // Blocks are re-evaluated after unknown keywords were removed; defaults of the
   // condition keywords count (code_aster injects defaults before evaluating blocks).
   for (const Keyword* kw : active_keywords(spec, node)) {
-    if (kw->is_factor)
+    if (kw->is_factor) {
       check_factor(*kw, node, prefix);
-    else
+    } else if (!kw->factor_form.empty() && node.factors.count(kw->name)) {
+      Keyword as_factor = factor(kw->name, kw->factor_form, kw->doc);
+      as_factor.status = kw->status;
+      check_factor(as_factor, node, prefix);
+    } else {
       check_simple(*kw, node, prefix);
+    }
   }
   std::vector<Rule> rules = spec.rules;
   for (const Block* block : active_blocks(spec, node)) rules.insert(rules.end(), block->rules.begin(), block->rules.end());

@@ -343,3 +343,33 @@ TEST(ClosestName, CaseInsensitiveAndOnlyWhenClose) {
   EXPECT_EQ(closest_name("XYZ", {"AUTO", "GAUSS", "SIMPSON"}), "");
   EXPECT_EQ(closest_name("E", {"NU", "RHO"}), "");
 }
+
+// DEBUT's CODE is 'OUI' in current code_aster files and _F(NIV_PUB_WEB=...) in older ones:
+// both forms validate, and each is checked as what it is.
+TEST(Validate, SimpleKeywordWithAFactorFormTakesBoth) {
+  const CommandSpec& debut = *find_command("DEBUT");
+  auto debut_error = [&](KwNode node) -> std::string {
+    try {
+      validate(debut, node);
+    } catch (const DeckError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  KwNode simple;
+  simple.simple["CODE"] = {std::string("OUI")};
+  EXPECT_EQ(debut_error(simple), "");
+  KwNode old_style;
+  KwNode code;
+  code.simple["NIV_PUB_WEB"] = {std::string("INTERNET")};
+  old_style.factors["CODE"] = {code};
+  EXPECT_EQ(debut_error(old_style), "");
+  KwNode misspelt = old_style;
+  misspelt.factors["CODE"][0].simple["NIV_PUB_WBE"] = {std::string("INTERNET")};
+  EXPECT_NE(debut_error(misspelt).find("CODE.NIV_PUB_WBE: expected a keyword of CODE, got unknown keyword 'NIV_PUB_WBE'"),
+            std::string::npos)
+      << debut_error(misspelt);
+  KwNode bad_value;
+  bad_value.simple["CODE"] = {std::string("PEUT-ETRE")};
+  EXPECT_NE(debut_error(bad_value).find("DEBUT: CODE: expected"), std::string::npos) << debut_error(bad_value);
+}

@@ -53,6 +53,9 @@ const std::map<std::string, std::string> kValidatorOnly = {
 const std::map<std::string, std::string> kCompatibilityOnly = {
     {"DEBUT/CODE", "code_aster test-suite marker; lunaster has no test-suite mode to switch"},
     {"DEBUT/PAR_LOT", "code_aster batch-mode switch; lunaster always runs a deck command by command"},
+    {"DEBUT/DEBUG", "code_aster debugging switches; lunaster has no data-structure checks to turn on"},
+    {"DEBUT/DEBUG/SDVERI", "code_aster data-structure checks; lunaster has none to turn on"},
+    {"DEBUT/IGNORE_ALARM", "code_aster alarm identifiers; lunaster's warnings have none"},
     {"DEFI_FONCTION/NOM_RESU", "name of the values in code_aster's function tables; lunaster prints none"},
     {"AFFE_CHAR_MECA/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
     {"AFFE_MODELE/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
@@ -65,6 +68,11 @@ const std::map<std::string, std::string> kCompatibilityOnly = {
     {"LIRE_MAILLAGE/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
     {"MODI_MAILLAGE/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
     {"STAT_NON_LINE/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
+    {"DEFI_MATERIAU/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
+    {"AFFE_MATERIAU/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
+    {"DEFI_LIST_INST/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
+    {"IMPR_RESU/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
+    {"DEFI_LIST_REEL/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
 };
 
 /// Every keyword declared by `spec` under `prefix` (children and block keywords, recursively),
