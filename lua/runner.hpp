@@ -79,6 +79,11 @@ class Runner {
 bool is_comm_file(const std::filesystem::path& deck);
 bool is_export_file(const std::filesystem::path& deck);
 
+struct ExportFile;
+/// Binds an .export's command file and units to `session`, as `lunaster run X.export` does
+/// before running its .comm (with Runner::run_comm).
+void apply_export(const ExportFile& study, cmd::Session& session);
+
 /// Runs one deck (a Lua deck, a .comm, or an .export naming a .comm, its units and its
 /// limits) and maps the outcome to the exit code of STYLE.md §3
 /// (0 OK, 1 some TEST_RESU NOOK, 2 DeckError, 3 SolveError, 4 InternalError,

@@ -23,6 +23,7 @@
 #include "catalog/args.hpp"
 #include "catalog/spec.hpp"
 #include "commands/registry.hpp"
+#include "lua/export_file.hpp"
 #include "lua/runner.hpp"
 #include "lua/verify.hpp"
 
@@ -103,7 +104,16 @@ catalog::KeywordReads read_by_the_decks() {
     try {
       lua::Runner runner(session, cmd::find_handler);
       runner.set_keyword_reads(&reads);
-      runner.run_file(deck);
+      // testcases/comm holds code_aster studies (.export naming a .comm): run them as `lunaster run` does
+      if (lua::is_export_file(deck)) {
+        const lua::ExportFile study = lua::read_export(deck);
+        lua::apply_export(study, session);
+        runner.run_comm(study.comm);
+      } else if (lua::is_comm_file(deck)) {
+        runner.run_comm(deck);
+      } else {
+        runner.run_file(deck);
+      }
     } catch (const Error& e) {
       ADD_FAILURE() << deck << " failed: " << e.what();
     }
