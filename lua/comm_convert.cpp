@@ -1083,6 +1083,24 @@ class Checker {
     }
   }
 
+  /// Every declaration of factor `name` in `spec` (its children and all its blocks) as one
+  /// factor whose children and blocks are those of all the declarations.
+  static catalog::Keyword merged_declarations(const catalog::Keyword& spec, const catalog::Keyword& first) {
+    const std::string& name = first.name;
+    std::vector<const catalog::Keyword*> found = {&first};
+    for (const auto& child : spec.children)
+      if (child.name == name && child.is_factor && &child != &first) found.push_back(&child);
+    for (const auto& block : spec.blocks)
+      for (const auto& kw : block.keywords)
+        if (kw.name == name && kw.is_factor && &kw != &first) found.push_back(&kw);
+    catalog::Keyword merged = *found.front();
+    for (std::size_t k = 1; k < found.size(); ++k) {
+      merged.children.insert(merged.children.end(), found[k]->children.begin(), found[k]->children.end());
+      merged.blocks.insert(merged.blocks.end(), found[k]->blocks.begin(), found[k]->blocks.end());
+    }
+    return merged;
+  }
+
   void check_arguments(const catalog::CommandSpec& command, const catalog::Keyword& spec, std::size_t o,
                        std::size_t c, const std::string& prefix, bool top) {
     for (const auto& [a, b] : items(o, c)) {
@@ -1105,12 +1123,15 @@ class Checker {
         continue;
       }
       if (!kw->is_factor) continue;
+      // A factor declared in several blocks (DEFI_CONTACT's ZONE, one per FORMULATION) takes the
+      // keywords of every declaration: which block applies is decided at run time.
+      const catalog::Keyword merged = merged_declarations(spec, *kw);
       std::vector<std::size_t> calls;
       factor_calls(a + 2, b, calls);
       for (std::size_t i = 0; i < calls.size(); ++i) {
         // occurrences are numbered where the factor may repeat, as in the run-time keyword paths
         const std::string sub = kw->max_occurs != 1 ? path + "[" + std::to_string(i + 1) + "]" : path;
-        check_arguments(command, *kw, calls[i], pos_.at(sig_[calls[i]]->match), sub, false);
+        check_arguments(command, merged, calls[i], pos_.at(sig_[calls[i]]->match), sub, false);
       }
     }
   }

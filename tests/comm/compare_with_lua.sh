@@ -60,7 +60,12 @@ status=$?
 [ $status -eq 0 ] || fail "lunaster run $(basename "$export_file") --vale-calc=report failed (exit $status), see $out/comm.log:
 $(tail -20 "$out/comm.log")"
 
-# 3. The converted deck, run as an ordinary Lua deck.
+# 3. `convert --check` finds nothing to finish in a case that runs; then the converted deck, run as
+#    an ordinary Lua deck.
+"$exe" convert --check "$comm" > "$out/check.log" 2>&1
+status=$?
+[ $status -eq 0 ] || fail "lunaster convert --check $(basename "$comm") reports issues (exit $status):
+$(tail -20 "$out/check.log")"
 converted=$out/converted/$name.lua
 "$exe" convert "$comm" -o "$converted" > "$out/convert.log" 2>&1
 status=$?

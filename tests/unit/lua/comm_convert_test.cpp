@@ -491,3 +491,17 @@ TEST(CommConvert, RandomAndTruncatedInputsReturnWithTheLineCountKept) {
     check_comm(text);
   }
 }
+
+// DEFI_CONTACT declares ZONE once per FORMULATION: --check takes the keywords of both, since
+// which one applies (DISCRETE by default) is decided at run time.
+TEST(CommCheck, AFactorDeclaredInSeveralBlocksTakesTheKeywordsOfAll) {
+  const auto issues = check_comm(
+      "CONT = DEFI_CONTACT(MODELE=MO, ZONE=_F(GROUP_MA_ESCL='EF', GROUP_MA_MAIT='AB', ALGO_CONT='PENALISATION', "
+      "E_N=1.e7))\n"
+      "CONT = DEFI_CONTACT(MODELE=MO, FORMULATION='CONTINUE', ZONE=_F(GROUP_MA_ESCL='EF', GROUP_MA_MAIT='AB', "
+      "COEF_CONT=100.))\n"
+      "CONT = DEFI_CONTACT(MODELE=MO, ZONE=_F(GROUP_MA_ESCL='EF', GROUP_MA_MAIT='AB', E_NN=1.e7))\n");
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].line, 3);
+  EXPECT_NE(issues[0].what.find("unknown keyword ZONE[1]/E_NN (did you mean E_N?)"), std::string::npos) << issues[0].what;
+}

@@ -155,7 +155,7 @@ TEST_F(RunnerTest, HandlersReceiveValidatedArgsWithDefaults) {
   const KwNode& elas = recorder.last.factors.at("ELAS")[0];
   EXPECT_DOUBLE_EQ(std::get<double>(elas.simple.at("E")[0]), 2.0);  // Int accepted for Real, converted
   EXPECT_EQ(recorder.lines, std::vector<int>{1});
-  EXPECT_NE(out.str().find("t.lua:1: DEFI_MATERIAU{ ELAS=_F{ E=2, NU=0.3 } }"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("t.lua:1: DEFI_MATERIAU{ INFO=1, ELAS=_F{ E=2, NU=0.3 } }"), std::string::npos) << out.str();
   ASSERT_EQ(run("MA = LIRE_MAILLAGE{}"), "");
   EXPECT_EQ(std::get<long long>(recorder.last.simple.at("UNITE")[0]), 20);
   EXPECT_EQ(std::get<std::string>(recorder.last.simple.at("FORMAT")[0]), "MED");

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# An .export's result units and message file, and the migration report through `lunaster verify`:
+#   - `F rmed NAME R 80` makes IMPR_RESU(UNITE=80) write NAME in the output folder;
+#   - `F mess NAME R 6` gets a copy of everything the run prints;
+#   - verify --vale-calc=report --json carries each comparison with code_aster (the "code_aster"
+#     array) and the run is OK on its analytical checks, while the default (check) counts the
+#     comparisons beyond tolerance as NOOK.
+#   - convert --check lists every form to finish in a file, with its line, and exits 2.
+# Usage: export_units.sh LUNASTER SOURCE_DIR OUTDIR
+set -u
+exe=$1; src=$2; out=$3
+rm -rf "$out"; mkdir -p "$out/case"
+fail() { echo "FAIL: $*"; exit 1; }
+
+cp "$src/testcases/comm/ssnp121a.comm" "$out/case/"
+cat > "$out/case/study.export" <<EOT
+P time_limit 60
+P memory_limit 512
+F comm ssnp121a.comm D 1
+F mmed $src/testcases/ssnp121a.med D 20
+F rmed contact_result.rmed R 80
+F mess study.mess R 6
+EOT
+"$exe" run "$out/case/study.export" --vale-calc=report --out "$out/run" > "$out/run.log" 2>&1
+status=$?
+[ $status -eq 0 ] || fail "run exited $status: $(tail -5 "$out/run.log")"
+[ -s "$out/run/contact_result.rmed" ] || fail "IMPR_RESU(UNITE=80) did not write contact_result.rmed: $(ls "$out/run")"
+[ -s "$out/run/study.mess" ] || fail "no message file study.mess"
+grep -q '^ OK  ANALYTIQUE     DEPL  O  LAGS_C' "$out/run/study.mess" || fail "the message file lacks the TEST_RESU lines"
+grep -q '^\(SAME\|DIFF\) CODE_ASTER     DEPL  O  LAGS_C  refe=-1.003510000e+05' "$out/run.log" ||
+  fail "no CODE_ASTER report line for LAGS_C at O"
+grep -q "comparison(s) with code_aster's VALE_CALC" "$out/run.log" || fail "no comparison summary"
+
+"$exe" verify "$out/case" -j 1 --vale-calc=report --out "$out/verify" --json "$out/verify.json" > "$out/verify.log" 2>&1
+status=$?
+[ $status -eq 0 ] || fail "verify --vale-calc=report exited $status: $(tail -5 "$out/verify.log")"
+grep -q '"code_aster": \[{"check": "DEPL  A  DY", "lunaster": ' "$out/verify.json" || fail "JSON lacks the code_aster array"
+grep -q 'comparisons with code_aster' "$out/verify.log" || fail "verify prints no comparison table"
+"$exe" verify "$out/case" -j 1 --out "$out/verify-check" > "$out/verify-check.log" 2>&1
+[ $? -eq 1 ] || fail "verify (check mode) should report the comparisons beyond TOLE_MACHINE as NOOK"
+
+"$exe" convert --check "$src/testcases/errors/comm_python_loop.comm" > "$out/check.log" 2>&1
+status=$?
+[ $status -eq 2 ] || fail "convert --check exited $status on a file with forms to finish"
+grep -q "comm_python_loop.comm:8: 'for' loop" "$out/check.log" || fail "convert --check: no line 8 'for' loop: $(cat "$out/check.log")"
+grep -q "comm_python_loop.comm:10: " "$out/check.log" || fail "convert --check: no line 10 import: $(cat "$out/check.log")"
+echo "PASS"
