@@ -12,6 +12,7 @@
 #include "engine/io/med_reader.hpp"
 #include "engine/io/med_writer.hpp"
 #include "tools/gmsh_writer.hpp"
+#include "tools/hertz_mesh.hpp"
 #include "tools/ssnp121_mesh.hpp"
 
 namespace {
@@ -32,6 +33,19 @@ const char* kUsage =
     "      nodes A_X A_Y P_X P_Y (ring, r = A, B) Q_X Q_Y C_X C_Y (sleeve, r = B, C)\n"
     "  lunaster-meshgen --block TYPE:N [--distort A] [--name MESH] -o FILE.med\n"
     "      unit square/cube; --distort moves interior vertices by up to A cell sizes (default 0.2 if given without A)\n"
+    "  lunaster-meshgen --hertz TYPE:N [--radius R] [--box W,H] [--grading G] [--refine K] [--name MESH] -o FILE.med\n"
+    "      Hertz contact: ball of radius R (default 1) resting on a block, touching at O = origin, meshed\n"
+    "      independently (non-matching). 2D (TYPE quad4|quad8|tria3|tria6; axisymmetric x = r, y = axis, or a\n"
+    "      plane-strain cylinder): BALL = quarter disc x >= 0, y <= R centred at (0,R), BLOCK = [0,W]x[-H,0].\n"
+    "      3D (TYPE hexa8|hexa20): BALL = quarter (x,y >= 0) of the sphere's lower half, BLOCK = [0,W]^2x[-H,0].\n"
+    "      Cell size at O h0 = R/(N K); with --grading G > 1 (default 1) a uniform core of m = round(1/(G-1))\n"
+    "      cells per direction around O, then layers one cell thick growing by about G; G = 1: (quasi-)uniform.\n"
+    "      Quadratic edges on the sphere have their mid-side nodes on it. Default W = H = R.\n"
+    "      groups BALL BLOCK BALL_SURF (curved side) BALL_TOP (flat top, load) BLOCK_TOP (contact)\n"
+    "      BLOCK_BOTTOM BLOCK_SIDE, 2D AXIS_BALL AXIS_BLOCK (x = 0), 3D SYMX_BALL SYMX_BLOCK (x = 0)\n"
+    "      SYMY_BALL SYMY_BLOCK (y = 0); nodes O_BALL O_BLOCK (contact point), C_BALL (top of the axis),\n"
+    "      D_BLOCK (bottom of the axis). Nodes of BLOCK_TOP near O sit at multiples of h0 (the core); list\n"
+    "      them with --info FILE --nodes BLOCK_TOP to pick the node nearest a radius\n"
     "  lunaster-meshgen --info FILE [--nodes GROUP[,GROUP]]    (.med, or .msh for Gmsh)\n"
     "      --nodes also lists the nodes of these groups (node or cell groups): 'node NAME X Y Z'\n"
     "  --test-result adds an analytic result RESU (2 steps, DEPL and SIGM_ELNO) for interop tests\n"
@@ -59,7 +73,7 @@ Options parse(int argc, char** argv) {
     } else if (a == "-o" || a == "--upper" || a == "--lower" || a == "--v1" || a == "--v2" || a == "--block" ||
                a == "--ring" || a == "--sleeve" || a == "--radii" || a == "--nodes" ||
                a == "--refine" || a == "--distort" || a == "--name" || a == "--info" || a == "--mirror" ||
-               a == "--msh-version") {
+               a == "--msh-version" || a == "--hertz" || a == "--radius" || a == "--box" || a == "--grading") {
       if (i + 1 >= argc) throw DeckError("meshgen: option " + a + " needs a value");
       o.values[a] = argv[++i];
     } else {
@@ -158,8 +172,50 @@ int run(int argc, char** argv) {
   if (refine < 1) throw DeckError("meshgen: --refine must be >= 1");
   const bool ring = !get("--ring").empty() || !get("--sleeve").empty();
   if (!get("--radii").empty() && !ring) throw DeckError("meshgen: --radii needs --ring/--sleeve", {kUsage});
+  const bool hertz = !get("--hertz").empty();
+  for (const char* key : {"--radius", "--box", "--grading"})
+    if (!get(key).empty() && !hertz) throw DeckError(std::string("meshgen: ") + key + " needs --hertz", {kUsage});
   engine::Mesh mesh;
-  if (!get("--upper").empty() || !get("--lower").empty()) {
+  if (hertz) {
+    tools::HertzOptions opt;
+    const std::string spec = get("--hertz");
+    const auto colon = spec.find(':');
+    std::string name = spec.substr(0, colon);
+    std::transform(name.begin(), name.end(), name.begin(), ::toupper);
+    if (colon == std::string::npos || !engine::cell_type_from_name(name, opt.type))
+      throw DeckError("meshgen: --hertz expects TYPE:N (quad4, quad8, tria3, tria6, hexa8, hexa20), got '" + spec + "'");
+    const std::string count = spec.substr(colon + 1);
+    if (count.empty() || count.size() > 6 || count.find_first_not_of("0123456789") != std::string::npos)
+      throw DeckError("meshgen: --hertz: bad cell count in '" + spec + "'");
+    opt.n = std::stoi(count);
+    opt.refine = refine;
+    const auto number = [&](const std::string& key, const std::string& text) {
+      size_t used = 0;
+      double x = 0.0;
+      try {
+        x = std::stod(text, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used == 0 || used != text.size()) throw DeckError("meshgen: " + key + " expects a number, got '" + text + "'");
+      return x;
+    };
+    if (!get("--radius").empty()) opt.radius = number("--radius", get("--radius"));
+    opt.width = opt.height = opt.radius;
+    if (!get("--box").empty()) {
+      const std::string box = get("--box");
+      const auto comma = box.find(',');
+      if (comma == std::string::npos) throw DeckError("meshgen: --box expects W,H, got '" + box + "'");
+      opt.width = number("--box", box.substr(0, comma));
+      opt.height = number("--box", box.substr(comma + 1));
+    }
+    if (!get("--grading").empty()) opt.grading = number("--grading", get("--grading"));
+    tools::HertzLayout lay;
+    mesh = tools::make_hertz(opt, &lay);
+    std::cout << "hertz: h0 " << lay.h0 << ", ball core " << lay.m_ball << " layers " << lay.layers_ball
+              << " growth " << lay.g_ball << ", block core " << lay.m_block[0] << " layers " << lay.layers_block
+              << " growth " << lay.g_block[0] << "\n";
+  } else if (!get("--upper").empty() || !get("--lower").empty()) {
     tools::Ssnp121Options2d opt;
     opt.upper = refined(get("--upper").empty() ? "quad4:12" : get("--upper"), 2, refine);
     opt.lower = refined(get("--lower").empty() ? "quad4:11" : get("--lower"), 2, refine);
