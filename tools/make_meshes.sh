@@ -26,6 +26,10 @@ mkdir -p "$m"
 "$gen" --ring quad4:96x16 --sleeve quad4:80x16 -o "$tc/ring_sleeve_mortar.med"
 "$gen" --ring quad8:48x8 --sleeve quad8:40x8 -o "$tc/ring_sleeve_mortar_quad8.med"
 
+# Hertz contact: cylinder on block (D_PLAN) and sphere on block (3D quarter model)
+"$gen" --hertz quad8:400 --grading 1.1 -o "$tc/hertz_cylinder_dplan.med"
+"$gen" --hertz hexa20:20 --grading 1.25 -o "$tc/hertz_sphere_3d.med"
+
 # Glued (conforming) versions: both blocks share the interface nodes
 "$gen" --upper quad4:4 --lower quad4:4 --glued -o "$m/glued2d_quad4.med"
 "$gen" --upper quad8:4 --lower quad8:4 --glued -o "$m/glued2d_quad8.med"
