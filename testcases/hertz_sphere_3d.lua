@@ -3,25 +3,26 @@
 -- symmetry DX = 0 on x = 0 and DY = 0 on y = 0): the quarter of the sphere's lower half, BALL,
 -- touches the block BLOCK = [0,1]^2 x [-1,0] at the origin; a pressure Q on the sphere's flat
 -- top BALL_TOP (z = R) gives the whole sphere the force F = Q pi R^2. The block's bottom is fixed.
--- Mesh: `lunaster-meshgen --hertz hexa20:20 --grading 1.25` (tools/make_meshes.sh), HEXA20 cells
--- of h0 = R/20 = 0.05 m in a core of 4 x 4 x 4 cells around O, growing by 1.25 away from it
--- (4760 nodes).
+-- Mesh: `lunaster-meshgen --hertz hexa20:80 --grading 1.5` (tools/make_meshes.sh), HEXA20 cells
+-- of h0 = R/80 = 0.0125 m in a core of 2 x 2 x 2 cells around O, growing by about 1.5 per layer
+-- away from it (1522 nodes).
 -- Hertz (two identical bodies, E = 1e9 Pa, nu = 0.3): 1/E* = 2 (1 - nu^2) / E, contact radius
 -- a = (3 F R / (4 E*))^(1/3), peak pressure p0 = 3 F / (2 pi a^2), p(r) = p0 sqrt(1 - r^2/a^2).
--- F is chosen so that a = 0.3 m = 6 h0 (a/R = 0.3, the coarsest scene that keeps the deck at
--- about 2 s): the block is 3.3 a wide and deep.
--- Error budget, measured with this deck (p0 at O, relative to Hertz): +0.49 % on this mesh;
--- growing the block to 2 x 2 x 2 and 3 x 3 x 3 gives +0.07 % and -0.04 % (the half-space
--- idealisation costs about 0.5 % at W = 3.3 a, the block being too small in 3D as well); halving
--- h0 (--refine 2) gives -0.77 %. The +0.5 % here is thus a sum of terms of both signs of about
--- 1 % each (discretisation, finite block, and a/R = 0.3 where Hertz's paraboloid is 2 % off the
--- sphere at r = a): the deck checks p0 and p(a/2) to 2 %, not better. Checked: p0 at O, p(a/2)
--- (N2817, y = 0.15 on the symmetry line x = 0; +0.49 % and +1.3 % off Hertz) and the edge of
--- the contact on that line, between y = 0.284 (N3478, in contact) and y = 0.358 (N3708, open),
--- i.e. a to within one cell (the node at y = 0.317, 6 % beyond a, still reads in contact: its
--- dual basis function reaches back inside a).
+-- F is chosen so that a = 0.1 m = 8 h0 (a/R = 0.1): the block is 10 a wide and deep.
+-- Error budget, measured with this deck (p0 at O, relative to Hertz): -0.16 % on this mesh;
+-- growing the block to 2 x 2 x 2 gives -0.24 % (the half-space idealisation costs about 0.1 % at
+-- W = 10 a; on a 4 x 4 x 4 block, whose outer slave cells are 100 times the master's, the active
+-- set ends on a wrong state: not a usable point of comparison); --refine 2 gives -0.15 % and the
+-- coarser `--hertz hexa20:40 --grading 1.5` (h0 = a/4) +0.28 %: the discretisation error here is
+-- under 0.05 %, the rest is the finite block and a/R (the paraboloid of Hertz is 0.25 % off the
+-- sphere at r = a). The nodal multipliers of the quadratic dual basis alternate between corner and
+-- mid-side nodes in the graded cells (+6 % and -2 % at r = 0.57 a and 0.47 a), hence 2 % on p(r)
+-- away from O. Checked: p0 at O to 0.5 %, p(0.472 a) (N1016, the node
+-- nearest a/2, on the symmetry line x = 0) to 2 % and the edge of the contact on that line, between r = 0.855 a
+-- (N1079, in contact) and r = 1.29 a (N1147, open); the node at 1.07 a (N1152) still reads in
+-- contact (its dual basis function reaches back inside a), so a is found to within one cell.
 DEBUT()
-local R, E, NU, A = 1.0, 1.0e9, 0.3, 0.3
+local R, E, NU, A = 1.0, 1.0e9, 0.3, 0.1
 local E_STAR = 1.0 / (2.0 * (1.0 - NU ^ 2) / E)
 local F = 4.0 * E_STAR * A ^ 3 / (3.0 * R)  -- force on the whole sphere giving the contact radius A
 local Q = F / (math.pi * R ^ 2)
@@ -58,9 +59,9 @@ local function status(node, calc, refe)
              REFERENCE = 'ANALYTIQUE', VALE_REFE = refe, CRITERE = 'ABSOLU', PRECISION = 0.0 }
 end
 TEST_RESU{ RESU = {
-  pressure('O_BLOCK', -1.054489980e+08, 0.0, 2.0e-2),
-  pressure('N2817', -9.202963273e+07, 0.15, 2.0e-2),
-  status('N3478', 1, 1),
-  status('N3708', 0, 0),
+  pressure('O_BLOCK', -3.492303893e+07, 0.0, 5.0e-3),
+  pressure('N1016', -3.026229880e+07, 0.047207059007525171, 2.0e-2),
+  status('N1079', 1, 1),
+  status('N1147', 0, 0),
 } }
 FIN()
