@@ -17,8 +17,8 @@
 -- under 0.05 %, the rest is the finite block and a/R (the paraboloid of Hertz is 0.25 % off the
 -- sphere at r = a). The nodal multipliers of the quadratic dual basis alternate between corner and
 -- mid-side nodes in the graded cells (+6 % and -2 % at r = 0.57 a and 0.47 a), hence 2 % on p(r)
--- away from O. Checked: p0 at O to 0.5 %, p(0.472 a) (N1016, the node
--- nearest a/2, on the symmetry line x = 0) to 2 % and the edge of the contact on that line, between r = 0.855 a
+-- away from O. Checked: p0 at O to 0.5 %, p(0.472 a) (N1016, the node nearest a/2, on the
+-- symmetry line x = 0) to 2 % and the edge of the contact on that line, between r = 0.855 a
 -- (N1079, in contact) and r = 1.29 a (N1147, open); the node at 1.07 a (N1152) still reads in
 -- contact (its dual basis function reaches back inside a), so a is found to within one cell.
 DEBUT()

@@ -48,7 +48,8 @@ def save(fig, docs, name):
 def style(method):
     colors = {"CONTINUE-GAUSS": "#1f77b4", "CONTINUE-SIMPSON": "#2ca02c", "CONTINUE-NCOTES": "#17becf",
               "CONTRAINTE": "#d62728", "PENALISATION-1e7": "#ff7f0e", "PENALISATION-1e9": "#e377c2",
-              "PENALISATION-1e11": "#8c564b", "MORTAR": "#bcbd22", "MORTAR-PEN-1e11": "#393b79"}
+              "PENALISATION-1e11": "#8c564b", "MORTAR": "#bcbd22", "MORTAR-PEN-1e11": "#393b79",
+              "CONTINUE": "#1f77b4", "MORTAR-PEN-1e13": "#393b79", "PENALISATION-1e13": "#8c564b"}
     if method.startswith("CalculiX"):
         c = {"NTS": "#7f7f7f", "STS": "#000000", "MORTAR": "#9467bd"}[method.split("-")[1]]
         return dict(color=c, ls="--", marker="s" if "1e11" in method else "D", mfc="white")
@@ -210,10 +211,141 @@ def main():
         axes[1].legend(fontsize=7)
         save(fig, docs, "atlas_2d3d")
 
-    summary(work, docs, c2, c3)
+    hz = read(os.path.join(out, "chart_hertz.csv")) + read(os.path.join(out, "chart_hertz_ccx.csv"))
+    if hz:
+        hertz_chart(hz, docs)
+    summary(work, docs, c2, c3, hz)
 
 
-def summary(work, docs, c2, c3):
+HERTZ_FAMILIES = {  # family -> (panel title, colour of its envelope)
+    "D_PLAN": ("D_PLAN: cylinder on block (line contact, b = R/50), QUAD8 graded 1.1", "#1f77b4"),
+    "AXIS-U": ("AXIS: sphere on block (a = R/10), uniform", "#9467bd"),
+    "AXIS-G": ("AXIS: sphere on block (a = R/10), graded", "#2ca02c"),
+    "3D-U": ("3D quarter: sphere on block (a = R/10), HEXA20 uniform", "#ff7f0e"),
+    "3D-G": ("3D quarter: sphere on block (a = R/10), HEXA20 graded 1.5", "#d62728"),
+}
+HERTZ_LEVELS = (5e-2, 1e-2, 5e-3)
+
+
+def hertz_ok(rows):
+    return [r for r in rows if r["status"] == "ok" and num(r, "err_p0") is not None and num(r, "t_total") is not None]
+
+
+def hertz_cheapest(rows, level):
+    """Cheapest run at or under `level` whose finer runs (same family and method) stay under it
+    too: a coarse mesh that hits p0 by chance (3D-U has h0 >= a) does not count."""
+    ok = hertz_ok(rows)
+
+    def kept(r):
+        return all(num(s, "err_p0") <= level for s in ok
+                   if s["family"] == r["family"] and s["method"] == r["method"] and float(s["k"]) >= float(r["k"]))
+    hits = [r for r in ok if kept(r)]
+    return min(hits, key=lambda r: num(r, "t_total")) if hits else None
+
+
+def hertz_chart(rows, docs):
+    """chart_hertz: one panel per model family (a line per method, over refinement), and a last
+    panel with, per family, the lower envelope: the cheapest run reaching each error."""
+    fams = [f for f in HERTZ_FAMILIES if any(r["family"] == f for r in rows)]
+    n = len(fams) + 1
+    cols = 3
+    fig, axes = plt.subplots((n + cols - 1) // cols, cols, figsize=(16, 5.2 * ((n + cols - 1) // cols)), squeeze=False)
+    axes = axes.ravel()
+    for ax, fam in zip(axes, fams):
+        sel = [r for r in rows if r["family"] == fam]
+        for m in dict.fromkeys(r["method"] for r in sel):
+            pts = sorted(((num(r, "t_total"), max(num(r, "err_p0"), FLOOR), r["k"]) for r in hertz_ok(sel)
+                          if r["method"] == m), key=lambda p: float(p[2]))
+            if not pts:
+                continue
+            ax.plot([p[0] for p in pts], [p[1] for p in pts], label=m, lw=1.4, ms=5, **style(m))
+            for t, e, k in pts:
+                ax.annotate(k, (t, e), textcoords="offset points", xytext=(3, 3), fontsize=7, color=style(m)["color"])
+        failed = sorted({r["method"] for r in sel if r["status"] != "ok"})
+        title = HERTZ_FAMILIES[fam][0] + (("\nfailed: " + ", ".join(failed)) if failed else "")
+        ax.set_title(title, fontsize=8.5)
+        ax.legend(fontsize=7)
+    last = axes[len(fams)]
+    for fam in fams:
+        ok = sorted(hertz_ok([r for r in rows if r["family"] == fam]), key=lambda r: num(r, "t_total"))
+        env, best = [], None
+        for r in ok:  # the runs that beat every cheaper run of the family
+            e = num(r, "err_p0")
+            if best is None or e < best:
+                best = e
+                env.append((num(r, "t_total"), max(e, FLOOR)))
+        if env:
+            last.step([p[0] for p in env], [p[1] for p in env], where="post", color=HERTZ_FAMILIES[fam][1], lw=1.6,
+                      marker="o", ms=4, label=fam)
+    last.set_title("per family: best error reached within a time (any method, CalculiX included)", fontsize=8.5)
+    last.legend(fontsize=7.5)
+    for ax in axes[:n]:
+        for level in HERTZ_LEVELS:
+            ax.axhline(level, color="#bbbbbb", lw=0.8, ls=":")
+        ax.set_xscale("log"); ax.set_yscale("log")
+        ax.set_xlabel("wall time of the run (s)"); ax.set_ylabel("|p(O) - p0| / p0 (peak pressure)")
+        ax.grid(True, which="major", color="#eeeeee")
+    for ax in axes[n:]:
+        ax.axis("off")
+    fig.suptitle("Hertz contact: peak-pressure error against cost over refinement (points labelled by k; "
+                 "dotted: 5 %, 1 %, 0.5 %)", fontsize=10)
+    save(fig, docs, "chart_hertz")
+
+
+def hertz_text(rows):
+    """Summary section of the Hertz chart: cheapest run per family and level, and the cost ratio
+    of the 2D model (AXIS if present, else D_PLAN) over 3D at equal accuracy."""
+    if not rows:
+        return []
+    lines = ["## Hertz contact: model no more than the scene needs", "",
+             "![Hertz chart](chart_hertz.png)", "",
+             "Peak-pressure error |p(O) - p0| / p0 against Hertz (chart_hertz.lua, ccx_run.py --hertz): D_PLAN "
+             "cylinder with b = R/50, sphere with a = R/10 (quarter model in 3D), R = 1 m, E = 1e9 Pa, nu = 0.3, "
+             "the ball held by the contact alone (CONTACT_INIT = 'OUI'). Cheapest run (any method, CalculiX included) "
+             "reaching each level and staying under it on every finer mesh of the same method:", "",
+             "| family | " + " | ".join(f"{l * 100:g} %: method k, time (s), error" for l in HERTZ_LEVELS) + " | best error |",
+             "|---|" + "---|" * (len(HERTZ_LEVELS) + 1)]
+    fams = [f for f in HERTZ_FAMILIES if any(r["family"] == f for r in rows)]
+    best = {}
+    for fam in fams:
+        sel = [r for r in rows if r["family"] == fam]
+        cells = []
+        for level in HERTZ_LEVELS:
+            r = hertz_cheapest(sel, level)
+            best[(fam, level)] = r
+            cells.append(f"{r['method']} k={r['k']}, {num(r, 't_total'):.3g}, {num(r, 'err_p0'):.2g}" if r else "never")
+        errs = [num(r, "err_p0") for r in hertz_ok(sel)]
+        lines.append(f"| {fam} | " + " | ".join(cells) + f" | {min(errs):.2g} |" if errs else f"| {fam} | " +
+                     " | ".join(cells) + " | - |")
+    lines.append("")
+    two = [f for f in ("AXIS-G", "AXIS-U", "D_PLAN") if f in fams]
+    three = [f for f in ("3D-G", "3D-U") if f in fams]
+    if two and three:
+        lines += ["Cost ratio at equal accuracy (cheapest run of the family reaching the level; "
+                  "D_PLAN is a different scene, line contact, shown while AXIS is not charted):", "",
+                  "| level | 2D family | time (s) | 3D family | time (s) | ratio 2D / 3D |", "|---|---|---|---|---|---|"]
+        for level in HERTZ_LEVELS:
+            for f2 in two:
+                for f3 in three:
+                    a, b = best[(f2, level)], best[(f3, level)]
+                    if a and b:
+                        lines.append(f"| {level * 100:g} % | {f2} ({a['method']} k={a['k']}) | {num(a, 't_total'):.3g} | "
+                                     f"{f3} ({b['method']} k={b['k']}) | {num(b, 't_total'):.3g} | "
+                                     f"{num(a, 't_total') / num(b, 't_total'):.2g} |")
+                    else:
+                        ta = f"{num(a, 't_total'):.3g}" if a else "never"
+                        tb = f"{num(b, 't_total'):.3g}" if b else "never"
+                        lines.append(f"| {level * 100:g} % | {f2} | {ta} | {f3} | {tb} | - |")
+        lines.append("")
+    failed = [r for r in rows if r["status"] != "ok"]
+    if failed:
+        lines += ["Hertz runs that failed (kept out of the chart):", ""]
+        lines += [f"- {r['family']} {r['method']} k={r['k']}: {r['status'][:160]}" for r in failed]
+        lines.append("")
+    return lines
+
+
+def summary(work, docs, c2, c3, hz=()):
     cpu = "unknown CPU"
     for line in open("/proc/cpuinfo"):
         if line.startswith("model name"):
@@ -297,6 +429,7 @@ def summary(work, docs, c2, c3):
         lines += ["", "Runs that failed (kept out of the charts):", ""]
         lines += [f"- {r['family']} {r['method']} k={r['k']}: {r['status'][:140]}" for r in failed]
     lines.append("")
+    lines += hertz_text(list(hz))
     lines += atlas_text(os.path.join(work, "out"), docs)
     with open(os.path.join(docs, "summary.md"), "w") as f:
         f.write("\n".join(lines))

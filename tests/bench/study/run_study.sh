@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The speed/accuracy study (`make study`): SSNP121 mesh families, every lunaster contact
 # method on each (Lua decks looping inside one lunaster run per family), CalculiX on the
-# same meshes, the stability atlas, then the charts and the summary under docs/study/.
+# same meshes, the stability atlas, the Hertz chart (chart_hertz.lua: D_PLAN cylinder, 3D
+# sphere uniform and graded, CalculiX on the same meshes), then the charts and the summary
+# under docs/study/.
 # Usage: tests/bench/study/run_study.sh [BUILD_DIR] [--quick]
 # --quick is a smoke run: its charts and summary go to BUILD_DIR/study/quick-docs/, never over
 # the published docs/study/ (only the full study writes there).
@@ -24,11 +26,38 @@ cp "$here"/*.lua "$work/"
 if [ "$quick" = "--quick" ]; then ks2d="1 2 4"; ks3di="1"; ks3dd="1"; ccx2d="1 2 4"; ratio="12 24 48"
 else ks2d="1 2 4 8 16 32"; ks3di="1 2 4"; ks3dd="1 2"; ccx2d="1 2 4 8 16"; ratio="96 60 48 36 28 24 20 17 13 12 9 7 6"
 fi
+# Hertz chart: "FAMILY:K[:METHOD,...]" runs of chart_hertz.lua (no method list: every method), and
+# "FAMILY:K:CONTACT" CalculiX runs (45 s timeout each: the ball, held by the contact alone, makes
+# CalculiX cut back, 10-40 s a run). D_PLAN and 3D-G: --refine K; 3D-U: K cells per radius.
+if [ "$quick" = "--quick" ]; then
+  hertz_runs="D_PLAN:1 D_PLAN:2 3D-G:1 3D-G:2 3D-U:4:MORTAR"
+  hertz_ccx="D_PLAN:1:sts"
+else
+  hertz_runs="D_PLAN:1 D_PLAN:2 D_PLAN:4 D_PLAN:8 3D-G:1 3D-G:2 3D-G:4 3D-G:8 3D-U:4 3D-U:6 3D-U:8:MORTAR,CONTINUE"
+  hertz_ccx="D_PLAN:1:nts D_PLAN:1:sts D_PLAN:2:sts D_PLAN:4:sts 3D-G:2:mortar 3D-G:2:sts 3D-G:4:sts 3D-U:4:sts"
+fi
+hertz_lua() {
+  local out="" fam k ms
+  for r in $hertz_runs; do
+    IFS=: read -r fam k ms <<< "$r"
+    if [ -n "$ms" ]; then ms=", { $(echo "$ms" | sed "s/\([^,]*\)/['\1'] = true/g") }"; fi
+    out="$out{ '$fam', $k$ms }, "
+  done
+  echo "{ $out}"
+}
+hertz_mesh() {  # family k -> mesh of chart_hertz.lua
+  case "$1" in
+    D_PLAN) echo "--hertz quad8:50 --grading 1.1 --refine $2" ;;
+    3D-G) echo "--hertz hexa20:20 --grading 1.5 --refine $2" ;;
+    3D-U) echo "--hertz hexa20:$2" ;;
+  esac
+}
+hertz_file() { echo "$work/meshes/hertz_$(echo "$1" | tr -cd '[:alnum:]' | tr '[:upper:]' '[:lower:]')_k$2.med"; }
 lua_list() { echo "{ $(echo "$@" | sed 's/ /, /g') }"; }
 cat > "$work/config.lua" <<LUA
 -- written by run_study.sh
 return { ks_2d = $(lua_list $ks2d), max_k_2d = { CONTINUE = 16, ['PENALISATION-1e7'] = 16, ['PENALISATION-1e11'] = 16 }, ks_3d_i = $(lua_list $ks3di), ks_3d_d = $(lua_list $ks3dd),
-         ratio_ns = $(lua_list $ratio), atlas_ks = { 1, 4 } }
+         ratio_ns = $(lua_list $ratio), atlas_ks = { 1, 4 }, hertz_runs = $(hertz_lua) }
 LUA
 
 echo "study: meshes"
@@ -47,13 +76,19 @@ for g in "e penta15 penta15" "f penta15 hexa20" "j penta6 penta15" "k penta6 hex
   read -r id v1 v2 <<< "$g"
   "$gen" --v1 "$v1:4x4x4" --v2 "$v2:4x4x4" -o "$work/meshes/ssnp121$id.med" >/dev/null
 done
+for r in $hertz_runs; do
+  IFS=: read -r fam k _ <<< "$r"
+  f=$(hertz_file "$fam" "$k")
+  # shellcheck disable=SC2046
+  [ -f "$f" ] || "$gen" $(hertz_mesh "$fam" "$k") -o "$f" >/dev/null
+done
 
 run_deck() {  # deck name; a deck that stops is reported, the study goes on
   local t0=$SECONDS
   if (cd "$work" && "$lun" run "$1.lua" --out out -q > "logs/$1.log" 2>&1); then status=ok; else status="exit $?"; fi
   echo "study: $1 ($status, $((SECONDS - t0)) s)"
 }
-for deck in chart_2d atlas_penalty atlas_coef atlas_ratio atlas_init chart_3d atlas_incompat atlas_2d3d atlas_schemes; do run_deck "$deck"; done
+for deck in chart_2d atlas_penalty atlas_coef atlas_ratio atlas_init chart_3d atlas_incompat atlas_2d3d atlas_schemes chart_hertz; do run_deck "$deck"; done
 # Warnings and errors the user sees, for the atlas text.
 (cd "$work" && "$lun" run atlas_incompat.lua --out out_v > logs/atlas_incompat_full.log 2>&1 || true)
 
@@ -85,6 +120,18 @@ for fam in i d; do
     fi
   done
 done
+
+# Hertz: the same meshes and scene (ccx_run.py --hertz), penalty slope 1e12 Pa/m.
+csvh="$work/out/chart_hertz_ccx.csv"
+head -1 "$work/out/chart_hertz.csv" > "$csvh"
+t0=$SECONDS
+for r in $hertz_ccx; do
+  IFS=: read -r fam k c <<< "$r"
+  scene=3d; [ "$fam" = D_PLAN ] && scene=dplan
+  $py "$here/ccx/ccx_run.py" "$csvh" "$(hertz_file "$fam" "$k")" "$fam" "$k" --hertz "$scene" --contact "$c" \
+    --penalty 1e12 --timeout 45 --work "$work/ccx" || true
+done
+echo "study: CalculiX Hertz ($((SECONDS - t0)) s)"
 
 echo "study: charts"
 $py "$here/plot_study.py" "$work" "$docs"

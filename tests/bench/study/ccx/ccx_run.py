@@ -14,6 +14,11 @@ from nodal values on the nodes med2inp.py lists in its .json sidecar:
   err_A/O/B  CPRESS at the points A, O, B (3D: A21, A22, A23), as lunaster's CONTINUE rows
   err_u      the normal displacement over both interface faces
 The .frd prints 6 significant digits, so errors below ~1e-5 are not resolved.
+
+    ccx_run.py CSV MESH.med FAMILY K --hertz {dplan,axis,3d} --contact ... --penalty K
+
+runs the Hertz scene of chart_hertz.lua instead (same R, E, nu, b or a, load and supports; see
+hertz_load) and writes one column of errors, err_p0 = |CPRESS(O) - p0| / p0 at O_BLOCK.
 Never a pass/fail test.
 """
 import argparse
@@ -91,6 +96,19 @@ def max_rel(values, ref):
     return f"{max(abs(v - ref) / abs(ref) for v in values):.6g}" if values else ""
 
 
+def hertz_load(scene):
+    """(Q on BALL_TOP, exact p0) of chart_hertz.lua's scenes: R = 1, E = 1e9, nu = 0.3 on both
+    bodies; D_PLAN cylinder with half-width b = 0.02, sphere (AXIS, 3D) with contact radius a = 0.1."""
+    r, e_star = 1.0, 1.0 / (2.0 * (1.0 - 0.3 ** 2) / 1.0e9)
+    if scene == "dplan":
+        b = 0.02
+        p = np.pi * e_star * b ** 2 / (4.0 * r)
+        return p / (2.0 * r), 2.0 * p / (np.pi * b)
+    a = 0.1
+    f = 4.0 * e_star * a ** 3 / (3.0 * r)
+    return f / (np.pi * r ** 2), 3.0 * f / (2.0 * np.pi * a ** 2)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("csv")
@@ -100,6 +118,7 @@ def main():
     ap.add_argument("--contact", default="sts")
     ap.add_argument("--penalty", type=float, default=1e9)
     ap.add_argument("--slab", action="store_true")
+    ap.add_argument("--hertz", choices=("dplan", "axis", "3d"))
     ap.add_argument("--work", default=".")
     ap.add_argument("--timeout", type=float, default=300)
     a = ap.parse_args()
@@ -107,6 +126,9 @@ def main():
     inp = os.path.join(a.work, name + ".inp")
     cmd = [sys.executable, os.path.join(HERE, "med2inp.py"), a.mesh, inp, "--contact", a.contact,
            "--penalty", str(a.penalty)] + (["--slab"] if a.slab else [])
+    if a.hertz:
+        q, p0 = hertz_load(a.hertz)
+        cmd += ["--hertz", repr(q)] + (["--axis"] if a.hertz == "axis" else [])
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     method = f"CalculiX-{a.contact.upper()}-{a.penalty:.0e}".replace("e+", "e")
     env = dict(os.environ, OMP_NUM_THREADS="2")
@@ -134,7 +156,15 @@ def main():
     row = dict(family=a.family, method=method, k=a.k, status=status, nodes="", unknowns=eqs, free_unknowns=eqs,
                instants=incs, newton_iter=iters, contact_passes="", t_total=f"{wall:.6g}", peak_rss_mb=f"{peak:.6g}")
     frd = os.path.join(a.work, name + ".frd")
-    if status == "ok" and os.path.exists(frd):
+    if status == "ok" and os.path.exists(frd) and a.hertz:
+        with open(inp[:-4] + ".json") as f:
+            side = json.load(f)
+        coords, elements, res = frd_results(frd)
+        block = body_nodes(elements, side["slave_elements"])
+        v = node_values(coords, block, res.get("CONTACT", {}), [side["o_xyz"]])[0]
+        p_o = v[3] if v is not None else 0.0  # CPRESS, positive in compression
+        row["err_p0"] = f"{abs(p_o - p0) / p0:.6g}"
+    elif status == "ok" and os.path.exists(frd):
         with open(inp[:-4] + ".json") as f:
             nodes = json.load(f)
         coords, elements, res = frd_results(frd)
@@ -160,7 +190,7 @@ def main():
         header = next(csv.reader(f))
     with open(a.csv, "a", newline="") as f:
         csv.writer(f).writerow([row.get(h, "") for h in header])
-    print(f"{method} k={a.k}: {status}, {wall:.2f} s, err_p={row.get('err_p', '')}")
+    print(f"{method} k={a.k}: {status}, {wall:.2f} s, err_p={row.get('err_p', row.get('err_p0', ''))}")
 
 
 if __name__ == "__main__":

@@ -40,6 +40,8 @@ MED_TO_VTK = {
     "hexahedron": [0, 3, 2, 1, 4, 7, 6, 5],
     "hexahedron20": [0, 3, 2, 1, 4, 7, 6, 5, 11, 10, 9, 8, 15, 14, 13, 12, 16, 19, 18, 17],
 }
+# Hertz scene (lunaster-meshgen --hertz): 2D element names for plane strain and axisymmetry.
+AXIS_ELEMENTS = {"quad": "CAX4", "quad8": "CAX8"}
 SCENES = {
     2: dict(bodies=("PLAQUE1", "PLAQUE2"), top="CD", bottom="GH", slave="AB", master="EF", normal=2,
             points=("A", "O", "B")),
@@ -123,12 +125,17 @@ def main():
     ap.add_argument("out")
     ap.add_argument("--contact", choices=("nts", "sts", "mortar"), default="sts")
     ap.add_argument("--penalty", type=float, default=1e9, help="LINEAR pressure-overclosure slope (Pa/m)")
+    ap.add_argument("--hertz", metavar="Q",  type=float,
+                    help="Hertz scene (ball on block, groups BALL, BLOCK, ...): the pressure Q on BALL_TOP")
+    ap.add_argument("--axis", action="store_true", help="Hertz 2D meshes: axisymmetric CAX4/CAX8 instead of CPE4/CPE8")
     ap.add_argument("--slab", action="store_true",
                     help="2D meshes: one layer of C3D8 with DZ = 0 everywhere instead of CPE4 (CalculiX's mortar "
                          "contact refuses the MPCs of its own 2D expansion)")
     a = ap.parse_args()
     mesh = meshio.read(a.mesh)
     to_vtk_order(mesh)
+    if a.hertz is not None:
+        return hertz(mesh, a)
     sc = SCENES[3 if any(c.type.startswith("hexa") for c in mesh.cells) else 2]
     # Node numbers of the faces and points in the mesh as read (extrusion keeps them).
     cells, nodes = groups(mesh)
@@ -203,6 +210,70 @@ def main():
         f.write("\n".join(lines) + "\n")
     with open(a.out[:-4] + ".json", "w") as f:
         json.dump(sidecar, f)
+    print(f"{a.out}: {len(mesh.points)} nodes, {next_id - 1} elements, contact {ctype}")
+
+
+def hertz(mesh, a):
+    """The Hertz scene of testcases/hertz_*.lua: ball (BALL) pressed by Q on BALL_TOP onto the
+    block (BLOCK, bottom fixed), symmetry on x = 0 (2D: AXIS_*; 3D: SYMX_* and SYMY_* on y = 0),
+    E = 1e9 Pa, nu = 0.3, frictionless; slave BLOCK_TOP, master BALL_SURF. The ball is held by
+    the contact alone. The sidecar gives the point O_BLOCK and the elements of the block."""
+    cells, nodes = groups(mesh)
+    dim = 3 if any(c.type.startswith("hexa") for c in mesh.cells) else 2
+    lines = ["*HEADING", f"Hertz {dim}D from {a.mesh} (lunaster tests/bench/study)", "*NODE, NSET=NALL"]
+    for n, x in enumerate(mesh.points):
+        z = x[2] if dim == 3 else 0.0
+        lines.append(f"{n + 1}, {x[0]:.12g}, {x[1]:.12g}, {z:.12g}")
+    next_id, body_range = 1, {}
+    for body in ("BALL", "BLOCK"):
+        first = next_id
+        by_type = {}
+        for b, i in cells[body]:
+            by_type.setdefault(mesh.cells[b].type, []).append((b, i))
+        for ctype, members in by_type.items():
+            name = AXIS_ELEMENTS[ctype] if a.axis else ELEMENTS[ctype][0]
+            lines.append(f"*ELEMENT, TYPE={name}, ELSET={body}")
+            for b, i in members:
+                element_ids[(b, i)] = next_id
+                entries = [str(next_id)] + [str(int(n) + 1) for n in mesh.cells[b].data[i]]
+                lines += [", ".join(entries[k:k + 16]) + ("," if k + 16 < len(entries) else "")
+                          for k in range(0, len(entries), 16)]
+                next_id += 1
+        body_range[body] = [first, next_id - 1]
+    fixed = {"BLOCK_BOTTOM": (1, dim)}
+    if dim == 2:
+        fixed.update(AXIS_BALL=(1, 1), AXIS_BLOCK=(1, 1))
+    else:
+        fixed.update(SYMX_BALL=(1, 1), SYMX_BLOCK=(1, 1), SYMY_BALL=(2, 2), SYMY_BLOCK=(2, 2))
+    for name in fixed:
+        members = sorted({int(n) + 1 for b, i in cells[name] for n in mesh.cells[b].data[i]})
+        lines.append(f"*NSET, NSET=N{name}")
+        lines += [", ".join(map(str, members[k:k + 12])) for k in range(0, len(members), 12)]
+    lines.append("*SURFACE, NAME=SBLOCK_TOP, TYPE=ELEMENT")
+    lines += [f"{e}, S{f}" for e, f in face_surface(mesh, cells, "BLOCK_TOP", ["BLOCK"])]
+    lines.append("*SURFACE, NAME=SBALL_SURF, TYPE=ELEMENT")
+    lines += [f"{e}, S{f}" for e, f in face_surface(mesh, cells, "BALL_SURF", ["BALL"])]
+    lines += ["*MATERIAL, NAME=MAT", "*ELASTIC", "1.0e9, 0.3"]
+    for body in ("BALL", "BLOCK"):
+        lines.append(f"*SOLID SECTION, ELSET={body}, MATERIAL=MAT")
+        if dim == 2 and not a.axis:
+            lines.append("1.")
+    lines += ["*SURFACE INTERACTION, NAME=SI1", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR",
+              f"{a.penalty:.6g}"]
+    ctype = {"nts": "NODE TO SURFACE", "sts": "SURFACE TO SURFACE", "mortar": "MORTAR"}[a.contact]
+    lines += [f"*CONTACT PAIR, INTERACTION=SI1, TYPE={ctype}", "SBLOCK_TOP, SBALL_SURF"]
+    lines += ["*STEP", "*STATIC", "1., 1.", "*BOUNDARY"]
+    lines += [f"N{name}, {lo}, {hi}, 0." for name, (lo, hi) in fixed.items()]
+    lines.append("*DLOAD")
+    lines += [f"{e}, P{f}, {a.hertz:.12g}" for e, f in face_surface(mesh, cells, "BALL_TOP", ["BALL"])]
+    out3d = ", OUTPUT=3D" if dim == 2 else ""
+    lines += [f"*NODE FILE{out3d}", "U", "*CONTACT FILE", "CSTR", "*END STEP"]
+    with open(a.out, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    o = nodes["O_BLOCK"][0]
+    with open(a.out[:-4] + ".json", "w") as f:
+        json.dump(dict(hertz=True, o_xyz=[float(v) for v in mesh.points[o][:dim]],
+                       slave_elements=body_range["BLOCK"]), f)
     print(f"{a.out}: {len(mesh.points)} nodes, {next_id - 1} elements, contact {ctype}")
 
 
