@@ -57,9 +57,10 @@ void write_table(std::ostream& out, const Args& args, const Table& table, const 
   for (const auto& line : text) {
     for (size_t k = 0; k < line.size(); ++k) {
       if (k) out << sep;
+      const std::string pad(width[k] - line[k].size(), ' ');
       if (!aligned) out << csv_cell(line[k], sep);
-      else if (k + 1 == line.size()) out << line[k];
-      else out << line[k] << std::string(width[k] - line[k].size(), ' ');
+      else if (table.columns[static_cast<size_t>(cols[k])].type != 'K') out << pad << line[k];  // numbers to the right
+      else out << line[k] << (k + 1 == line.size() ? "" : pad);
     }
     out << '\n';
   }
