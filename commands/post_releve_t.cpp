@@ -51,7 +51,7 @@ const engine::NodalField& field_of(const Args& occ, const engine::ResultStep& st
 /// Columns of the components read: NOM_CMP, RESULTANTE or every component (TOUT_CMP).
 std::vector<int> component_columns(const Args& occ, const engine::NodalField& field, std::vector<std::string>& names) {
   const char* kw = occ.has("RESULTANTE") ? "RESULTANTE" : "NOM_CMP";
-  names = occ.has(kw) ? occ.texts(kw) : field.components;
+  names = occ.has("TOUT_CMP") ? field.components : occ.texts(kw);
   std::vector<int> out;
   for (const auto& name : names) {
     const int c = field.component_index(name);

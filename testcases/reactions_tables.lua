@@ -67,7 +67,7 @@ IMPR_TABLE{ TABLE = NODES, FICHIER = 'reactions_gh.csv', SEPARATEUR = ',', NOM_P
             FORMAT_R = 'E22.15' }
 -- Interface AB: the mean displacement is the exact -0.05 m; its internal forces balance (inner nodes).
 MEAN = POST_RELEVE_T{ ACTION = _F{ OPERATION = 'MOYENNE_ARITH', INTITULE = 'AB', RESULTAT = RESU, NOM_CHAM = 'DEPL',
-                                   GROUP_NO = 'AB', NOM_CMP = { 'DX', 'DY' }, INST = 1.0 } }
+                                   GROUP_NO = 'AB', TOUT_CMP = 'OUI', INST = 1.0 } }
 TEST_TABLE{ TABLE = MEAN, NOM_PARA = 'DY', REFERENCE = 'ANALYTIQUE', VALE_REFE = -0.05, PRECISION = 1.0e-10,
             VALE_CALC = -0.05 }
 TEST_RESU{ RESU = _F{ RESULTAT = RESU, NUME_ORDRE = 2, NOM_CHAM = 'FORC_NODA', NOM_CMP = 'DY', TYPE_TEST = 'SOMM',
