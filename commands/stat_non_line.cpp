@@ -146,6 +146,7 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     for (const auto& m : model.materials) definition.modulus = std::max(definition.modulus, m.young);
     hook = engine::make_contact_hook(definition, *model.mesh, model.dim);
   }
+  result->loads = loads;
   engine::StaticSolver solver(model, loads, options, hook.get(), session.log());
   {
     Session::Timer timer(session, "solve");

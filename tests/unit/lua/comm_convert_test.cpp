@@ -414,10 +414,10 @@ TEST(CommConvert, UnterminatedStringsAndBracketsGiveOneIssueWhereTheyStart) {
 }
 
 TEST(CommCheck, UnknownCommandIsReportedWithItsLine) {
-  const auto issues = check_comm("DEBUT()\n\nT = POST_RELEVE_T(ACTION=_F(INTITULE='X'))\nR = STAT_NON_LIN(MODELE=MO)\n");
+  const auto issues = check_comm("DEBUT()\n\nT = POST_ELEM(MASS_INER=_F(TOUT='OUI'))\nR = STAT_NON_LIN(MODELE=MO)\n");
   ASSERT_EQ(issues.size(), 2u);
   EXPECT_EQ(issues[0].line, 3);
-  EXPECT_EQ(issues[0].what, "unknown command POST_RELEVE_T");
+  EXPECT_EQ(issues[0].what, "unknown command POST_ELEM");
   EXPECT_EQ(issues[1].line, 4);
   EXPECT_EQ(issues[1].what, "unknown command STAT_NON_LIN (did you mean STAT_NON_LINE?)");
   EXPECT_FALSE(issues[1].hint.empty());
