@@ -369,11 +369,14 @@ Mesh make_block(const BlockOptions& o) {
   if (dim < 2) throw DeckError("meshgen: a block needs a 2D or 3D cell type");
   Builder b;
   const int pool = b.new_pool();
-  BlockGeom g{{0, 0, 0}, {1, 1, dim == 3 ? 1.0 : 0.0}, dim, o.distort, "BLOCK", {}, pool};
-  g.faces = {{"LEFT", 0, 0.0}, {"RIGHT", 0, 1.0}};
+  const bool rect = o.lo != std::array<double, 2>{0.0, 0.0} || o.hi != std::array<double, 2>{1.0, 1.0};
+  if (rect && dim != 2) throw DeckError("meshgen: a block rectangle (--rect) needs a 2D cell type");
+  if (!(o.lo[0] < o.hi[0] && o.lo[1] < o.hi[1])) throw DeckError("meshgen: --rect needs X0 < X1 and Y0 < Y1");
+  BlockGeom g{{o.lo[0], o.lo[1], 0}, {o.hi[0], o.hi[1], dim == 3 ? 1.0 : 0.0}, dim, o.distort, "BLOCK", {}, pool};
+  g.faces = {{"LEFT", 0, g.lo[0]}, {"RIGHT", 0, g.hi[0]}};
   if (dim == 2) {
-    g.faces.push_back({"BOTTOM", 1, 0.0});
-    g.faces.push_back({"TOP", 1, 1.0});
+    g.faces.push_back({"BOTTOM", 1, g.lo[1]});
+    g.faces.push_back({"TOP", 1, g.hi[1]});
   } else {
     g.faces.push_back({"FRONT", 1, 0.0});
     g.faces.push_back({"BACK", 1, 1.0});
@@ -385,7 +388,7 @@ Mesh make_block(const BlockOptions& o) {
   for (int c = 0; c < n_corners; ++c) {
     const int x = c & 1, y = (c >> 1) & 1, z = (c >> 2) & 1;
     std::string name = "C" + std::to_string(x) + std::to_string(y) + (dim == 3 ? std::to_string(z) : "");
-    b.add_node_group(name, pool, {double(x), double(y), double(z)});
+    b.add_node_group(name, pool, {x ? g.hi[0] : g.lo[0], y ? g.hi[1] : g.lo[1], double(z)});
   }
   return b.finish();
 }

@@ -37,6 +37,9 @@ struct Ssnp121Options3d {
 struct BlockOptions {
   BlockCells cells{engine::CellType::Hexa8, {3, 3, 3}};
   double distort = 0.0;  ///< interior vertices moved by up to distort * cell size per direction
+  /// 2D only: the rectangle [lo[0], hi[0]] x [lo[1], hi[1]] instead of the unit square
+  /// (axisymmetric sections: x is the radius).
+  std::array<double, 2> lo{0.0, 0.0}, hi{1.0, 1.0};
 };
 
 /// Quarter of a ring fitted in a sleeve (plane strain Lame verification): the ring
@@ -70,7 +73,8 @@ engine::Mesh make_ssnp121_3d(const Ssnp121Options3d& options);
 
 /// Groups: cells BLOCK; outward boundary cells LEFT (x=0), RIGHT (x=1),
 /// BOTTOM (2D: y=0; 3D: z=0), TOP (2D: y=1; 3D: z=1), FRONT (3D: y=0), BACK
-/// (3D: y=1); corner node groups C00.. (2D) / C000.. (3D), digits = coordinates.
+/// (3D: y=1); corner node groups C00.. (2D) / C000.. (3D), digits = coordinates
+/// (2D with lo/hi: LEFT is x = lo[0], RIGHT x = hi[0], C10 the corner (hi[0], lo[1]) ...).
 engine::Mesh make_block(const BlockOptions& options);
 
 /// Rewrites the volume cells of `groups` (PLAQUE2, BLOCK ...) in mirror order

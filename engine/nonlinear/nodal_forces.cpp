@@ -27,7 +27,8 @@ NodalField as_nodal_field(const FeModel& model, const DofMap& dofs, const Vector
 Vector external_forces(const FeModel& model, const DofMap& dofs, const MechanicalLoads& loads, double t) {
   Vector f = Vector::Zero(dofs.n_dofs());
   for (const auto& p : loads.pressures)
-    assemble_pressure(*model.mesh, model.dim, p.cells, p.pressure * loads.multipliers.at(p.load)(t), dofs, f);
+    assemble_pressure(*model.mesh, model.dim, p.cells, p.pressure * loads.multipliers.at(p.load)(t), dofs, f,
+                      model.axisymmetric());
   for (const auto& fn : loads.forces) {
     const int eq = dofs.dof(fn.node, fn.component);
     if (eq < 0)
