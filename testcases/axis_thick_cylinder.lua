@@ -40,6 +40,8 @@ for _, cell in ipairs({ 'quad8', 'quad4' }) do
   local R = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CM, EXCIT = _F{ CHARGE = CH },
                            COMPORTEMENT = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L } }
   R = CALC_CHAMP{ reuse = R, RESULTAT = R, CONTRAINTE = { 'SIGM_ELNO', 'SIGM_NOEU' } }
+  -- The AXIS stresses (SIXX radial, SIYY axial, SIZZ hoop, SIXY) written to the MED result.
+  if cell == 'quad8' then IMPR_RESU{ FORMAT = 'MED', RESU = _F{ RESULTAT = R } } end
   local checks = {}
   local function t(cham, cmp, node, refe)
     local f = _F{ RESULTAT = R, NUME_ORDRE = 1, NOM_CHAM = cham, NOM_CMP = cmp, GROUP_NO = node,

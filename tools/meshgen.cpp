@@ -21,8 +21,9 @@ using namespace lunaster;
 
 const char* kUsage =
     "usage:\n"
-    "  lunaster-meshgen --upper TYPE:N --lower TYPE:N [--refine K] [--glued] [--name MESH] -o FILE.med\n"
-    "      SSNP121 2D: PLAQUE1 = [-1,1]x[0,1] (upper), PLAQUE2 = [-1,1]x[-1,0]; TYPE quad4|quad8|tria3|tria6\n"
+    "  lunaster-meshgen --upper TYPE:N --lower TYPE:N [--x-range X0,X1] [--refine K] [--glued] [--name MESH] -o FILE.med\n"
+    "      SSNP121 2D: PLAQUE1 = [-1,1]x[0,1] (upper), PLAQUE2 = [-1,1]x[-1,0]; TYPE quad4|quad8|tria3|tria6;\n"
+    "      --x-range: [X0,X1] instead of [-1,1] (axisymmetric sections: x = r)\n"
     "  lunaster-meshgen --v1 TYPE:NXxNYxNZ --v2 TYPE:NXxNYxNZ [--refine K] [--glued] [--name MESH] -o FILE.med\n"
     "      SSNP121 3D: V1 = [0,1]^3, V2 = [0,1]^2x[1,2]; TYPE hexa8|hexa20|penta6|penta15|tetra4|tetra10\n"
     "  lunaster-meshgen --ring TYPE:NTxNR --sleeve TYPE:NTxNR [--radii A,B,C] [--refine K] [--name MESH] -o FILE.med\n"
@@ -75,7 +76,7 @@ Options parse(int argc, char** argv) {
                a == "--ring" || a == "--sleeve" || a == "--radii" || a == "--nodes" ||
                a == "--refine" || a == "--distort" || a == "--name" || a == "--info" || a == "--mirror" ||
                a == "--msh-version" || a == "--hertz" || a == "--radius" || a == "--box" || a == "--grading" ||
-               a == "--rect") {
+               a == "--rect" || a == "--x-range") {
       if (i + 1 >= argc) throw DeckError("meshgen: option " + a + " needs a value");
       o.values[a] = argv[++i];
     } else {
@@ -241,6 +242,11 @@ int run(int argc, char** argv) {
     opt.upper = refined(get("--upper").empty() ? "quad4:12" : get("--upper"), 2, refine);
     opt.lower = refined(get("--lower").empty() ? "quad4:11" : get("--lower"), 2, refine);
     opt.glued = o.glued;
+    if (!get("--x-range").empty()) {
+      const std::vector<double> r = number_list(get("--x-range"), "--x-range");
+      if (r.size() != 2) throw DeckError("meshgen: --x-range expects X0,X1, got '" + get("--x-range") + "'");
+      opt.x0 = r[0], opt.x1 = r[1];
+    }
     mesh = tools::make_ssnp121_2d(opt);
   } else if (!get("--v1").empty() || !get("--v2").empty()) {
     tools::Ssnp121Options3d opt;

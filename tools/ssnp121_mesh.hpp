@@ -24,6 +24,8 @@ struct Ssnp121Options2d {
   BlockCells upper{engine::CellType::Quad4, {12, 12, 1}};
   BlockCells lower{engine::CellType::Quad4, {11, 11, 1}};
   bool glued = false;  ///< share interface nodes (needs equal types and counts)
+  /// x extent of both blocks (default -1..1); e.g. 0..1 for an axisymmetric section on the axis.
+  double x0 = -1.0, x1 = 1.0;
 };
 
 /// SSNP121 3D: V1 = [0,1]^3 (lower), V2 = [0,1]^2 x [1,2] (upper).
@@ -64,7 +66,8 @@ engine::Mesh make_ring_sleeve(const RingOptions& options);
 
 /// Groups: cells PLAQUE1, PLAQUE2; boundary cells AB BC CD DA (upper) and EF FG
 /// GH HE (lower), oriented outward (counter-clockwise traversal of each
-/// block); node groups A B C D O (upper block) and E F G H (lower block).
+/// block); node groups A B C D O (upper block) and E F G H (lower block). With
+/// x0, x1: A = (x0, 0), B = (x1, 0), O = ((x0 + x1) / 2, 0) and so on.
 engine::Mesh make_ssnp121_2d(const Ssnp121Options2d& options);
 
 /// Groups: cells V1, V2; outward faces ENCAST (V1 z=0), SURESC (V1 z=1),

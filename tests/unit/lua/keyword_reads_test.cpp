@@ -36,7 +36,6 @@ namespace {
 /// the value and the handler has nothing to choose. The test checks that each still has one
 /// allowed value, so adding a second one without reading the keyword fails here.
 const std::map<std::string, std::string> kValidatorOnly = {
-    {"AFFE_CHAR_MECA/CONTACT/MODL_AXIS", "only 'NON' (a plane or 3D model); 'OUI' is refused by the catalogue"},
     {"AFFE_MODELE/AFFE/PHENOMENE", "only 'MECANIQUE', the one phenomenon"},
     {"CALC_CHAMP/TOUT_ORDRE", "only 'OUI': every step, as when neither NUME_ORDRE nor INST is given"},
     {"POST_RELEVE_T/ACTION/TOUT_ORDRE", "only 'OUI': every step, as when neither NUME_ORDRE nor INST is given"},
