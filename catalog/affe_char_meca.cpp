@@ -46,10 +46,10 @@ Keyword contact() {
       text("GROUP_MA_MAIT", "Master boundary cell group").required(),
       text("CONTACT_INIT", "Initial contact status: all active, none, or where already interpenetrating")
           .into_values({"OUI", "NON", "INTERPENETRE"}),
-      text("MODL_AXIS", "Axisymmetric model: only 'NON' (plane or 3D models)")
-          .into_values({"NON"})
-          .refuse("OUI", "axisymmetric models are not supported yet")
-          .def("NON"),
+      text("MODL_AXIS",
+           "Axisymmetric contact: 'OUI' on an AXIS model, 'NON' on a plane or 3D model (it must match MODELE); "
+           "absent: follows the model. On an AXIS model every contact measure is r dl per radian")
+          .into_values({"OUI", "NON"}),
   };
   for (auto& kw : common::contact_loop_keywords()) children.push_back(kw);
   std::vector<Block> blocks = {

@@ -58,7 +58,7 @@ struct Keyword {
   std::optional<double> val_min, val_max;  ///< bounds for Real/Int, inclusive unless marked open below
   bool min_open = false, max_open = false; ///< open (exclusive) bounds: E > 0, -1 < NU < 0.5
   /// Values of the type that are recognised but refused, each with the reason shown in the
-  /// error (e.g. MODL_AXIS = 'OUI': axisymmetric models are not supported yet).
+  /// error (e.g. ALGO_RESO_CONT = 'NEWTON' with the discrete formulation).
   std::vector<std::pair<Scalar, std::string>> refused;
   int min_values = 1, max_values = 1;      ///< number of values; max -1 = unbounded
   // ---- factor keywords ----

@@ -25,6 +25,9 @@ const CommandSpec& calc_champ_spec();
 const CommandSpec& test_resu_spec();
 const CommandSpec& impr_resu_spec();
 const CommandSpec& impr_mesure_spec();
+const CommandSpec& post_releve_t_spec();
+const CommandSpec& test_table_spec();
+const CommandSpec& impr_table_spec();
 
 /// Builds a CommandSpec from its parts (the body is a root factor keyword).
 CommandSpec make_command(std::string name, std::string result_type, std::string doc, std::vector<Keyword> keywords,

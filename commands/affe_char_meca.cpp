@@ -1,4 +1,6 @@
 // AFFE_CHAR_MECA: imposed displacements, pressures, nodal forces and (seed syntax) contact.
+#include <algorithm>
+
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
 #include "commands/contact_keywords.hpp"
@@ -54,6 +56,24 @@ engine::ContactMethod seed_method(const std::string& methode) {
   return engine::ContactMethod::Continuous;
 }
 
+/// MODL_AXIS, when given, must say what the model is: the contact measures follow the model
+/// (r dl per radian on AXIS), and a deck saying otherwise was written for another model.
+void check_modl_axis(const Args& occ, const Modele& mo) {
+  if (!occ.has("MODL_AXIS")) return;
+  const bool axis = std::any_of(mo.modelisation.begin(), mo.modelisation.end(),
+                                [](engine::Modelisation m) { return m == engine::Modelisation::Axisymmetric; });
+  const std::string given = occ.text("MODL_AXIS");
+  if (axis && given != "OUI")
+    throw occ.error("MODL_AXIS", "'OUI' (or no MODL_AXIS) on MODELE '" + mo.user_name + "', an AXIS model",
+                    "'" + given + "'");
+  if (!axis && given != "NON")
+    throw occ.error("MODL_AXIS",
+                    "'NON' (or no MODL_AXIS) on MODELE '" + mo.user_name + "', a " +
+                        (mo.dim == 3 ? std::string("3D") : std::string("plane (D_PLAN/C_PLAN)")) +
+                        " model (MODL_AXIS = 'OUI' needs AFFE_MODELE MODELISATION = 'AXIS')",
+                    "'" + given + "'");
+}
+
 }  // namespace
 
 ConceptPtr affe_char_meca(const Args& args, Session& session) {
@@ -67,6 +87,7 @@ ConceptPtr affe_char_meca(const Args& args, Session& session) {
     load->has_contact = true;
     auto& def = load->contact;
     for (const auto& occ : args.factors("CONTACT")) {
+      check_modl_axis(occ, mo);
       def.method = seed_method(occ.text("METHODE"));
       def.zones.push_back(read_contact_zone(occ, *mo.maillage->mesh, mo.dim, def.method));
       warn_coincident_slave_nodes(occ, def.zones.back(), *mo.maillage, session);

@@ -1,4 +1,6 @@
-// AFFE_MODELE: assigns mechanical elements (D_PLAN, C_PLAN, 3D) to cells.
+// AFFE_MODELE: assigns mechanical elements (D_PLAN, C_PLAN, 3D, AXIS) to cells.
+#include <sstream>
+
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
 #include "commands/selection.hpp"
@@ -10,7 +12,23 @@ namespace {
 engine::Modelisation to_modelisation(const std::string& name) {
   if (name == "D_PLAN") return engine::Modelisation::PlaneStrain;
   if (name == "C_PLAN") return engine::Modelisation::PlaneStress;
+  if (name == "AXIS") return engine::Modelisation::Axisymmetric;
   return engine::Modelisation::Solid3D;
+}
+
+/// AXIS: x is the radius, so every node of an axisymmetric cell must have x >= 0.
+template <class Occurrence>
+void check_axis_cell(const Occurrence& occ, const engine::Mesh& mesh, int c) {
+  const int* nodes = mesh.cell(c);
+  for (int a = 0, nn = mesh.cell_n_nodes(c); a < nn; ++a) {
+    const double r = mesh.node(nodes[a])[0];
+    if (r < 0.0) {
+      std::ostringstream given;
+      given.precision(17);
+      given << "node " << mesh.node_names[nodes[a]] << " of cell " << mesh.cell_names[c] << " at x = " << r;
+      throw occ.error("MODELISATION", "'AXIS' cells with every node at x = r >= 0 (x is the radius)", given.str());
+    }
+  }
 }
 
 }  // namespace
@@ -22,6 +40,7 @@ ConceptPtr affe_modele(const Args& args, Session& session) {
   mo->maillage = ma;
   mo->modelisation.assign(mesh.n_cells(), engine::Modelisation::None);
   int n_volume = 0;
+  bool axis_model = false;
   for (const auto& occ : args.factors("AFFE")) {
     const std::string name = occ.text("MODELISATION");
     const engine::Modelisation mod = to_modelisation(name);
@@ -32,12 +51,23 @@ ConceptPtr affe_modele(const Args& args, Session& session) {
     if (mesh.dim < dim)
       throw occ.error("MODELISATION", "a modelisation of the mesh's dimension (" + std::to_string(mesh.dim) + "D)",
                       "'" + name + "'");
+    // AXIS measures are per radian, plane ones per unit thickness: one model cannot hold both.
+    const bool axis = mod == engine::Modelisation::Axisymmetric;
+    if (dim == 2 && mo->dim == 2 && axis != axis_model)
+      throw occ.error("MODELISATION",
+                      axis_model ? "'AXIS' as in the other occurrences (an axisymmetric model cannot mix plane "
+                                   "modelisations)"
+                                 : "'D_PLAN' or 'C_PLAN' as in the other occurrences (a plane model cannot mix "
+                                   "'AXIS')",
+                      "'" + name + "'");
+    axis_model = axis;
     mo->dim = dim;
     for (int c : select_cells(occ, mesh)) {
       // Cells of the modelisation's dimension carry the element; boundary cells
       // (edges in 2D, faces in 3D) are kept as skins for loads and contact.
       const int cdim = engine::cell_info(mesh.cell_types[c]).dim;
       if (cdim == dim) {
+        if (axis) check_axis_cell(occ, mesh, c);
         if (mo->modelisation[c] == engine::Modelisation::None) ++n_volume;
         mo->modelisation[c] = mod;
       }

@@ -1,9 +1,11 @@
-// CALC_CHAMP: stresses (SIGM_ELNO, SIGM_NOEU) and equivalent stresses (SIEQ_*) from DEPL.
+// CALC_CHAMP: stresses (SIGM_ELNO, SIGM_NOEU), equivalent stresses (SIEQ_*) and nodal
+// forces (FORC_NODA, REAC_NODA) from DEPL.
 #include <algorithm>
 
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
 #include "engine/fe/stress.hpp"
+#include "engine/nonlinear/nodal_forces.hpp"
 
 namespace lunaster::cmd {
 
@@ -46,14 +48,25 @@ ConceptPtr calc_champ(const Args& args, Session& session) {
   auto resu = args.concept_as<EvolNoli>("RESULTAT");
   std::vector<std::string> wanted;
   if (args.has("CONTRAINTE")) wanted = args.texts("CONTRAINTE");
-  if (args.has("CRITERES"))
-    for (const auto& c : args.texts("CRITERES")) wanted.push_back(c);
+  for (const char* kw : {"CRITERES", "FORCE"})
+    if (args.has(kw))
+      for (const auto& c : args.texts(kw)) wanted.push_back(c);
   auto want = [&](const char* name) { return std::find(wanted.begin(), wanted.end(), name) != wanted.end(); };
   const engine::FeModel model = build_fe_model(*resu->modele, *resu->cham_mater, args, "RESULTAT");
   const engine::DofMap dofs(*model.mesh, model.volume_cells(), model.dim);
   for (size_t i : selected_steps(args, *resu)) {
     auto& step = resu->steps[i];
     const engine::Vector u = displacement_vector(dofs, step.nodal.at("DEPL"));
+    if (want("FORC_NODA")) step.nodal["FORC_NODA"] = engine::internal_nodal_forces(model, dofs, u);
+    if (want("REAC_NODA")) {
+      try {
+        step.nodal["REAC_NODA"] = engine::reaction_forces(model, dofs, u, resu->loads, step.inst);
+      } catch (const DeckError& err) {  // a FONC_MULT outside its range at this instant
+        throw args.error("FORCE", "loads of RESULTAT defined at instant " + std::to_string(step.inst), err.message());
+      }
+    }
+    const bool stresses = want("SIGM_ELNO") || want("SIGM_NOEU") || want("SIEQ_ELNO") || want("SIEQ_NOEU");
+    if (!stresses) continue;
     engine::ElnoField sigm = engine::compute_sigm_elno(model, dofs, u);
     if (want("SIGM_NOEU")) step.nodal["SIGM_NOEU"] = engine::elno_to_noeu(*model.mesh, sigm);
     if (want("SIEQ_ELNO") || want("SIEQ_NOEU")) {

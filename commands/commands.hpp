@@ -28,5 +28,8 @@ ConceptPtr calc_champ(const Args& args, Session& session);
 ConceptPtr test_resu(const Args& args, Session& session);
 ConceptPtr impr_resu(const Args& args, Session& session);
 ConceptPtr impr_mesure(const Args& args, Session& session);
+ConceptPtr post_releve_t(const Args& args, Session& session);
+ConceptPtr test_table(const Args& args, Session& session);
+ConceptPtr impr_table(const Args& args, Session& session);
 
 }  // namespace lunaster::cmd

@@ -11,6 +11,7 @@
 #include "engine/fe/fe_model.hpp"
 #include "engine/fields/fields.hpp"
 #include "engine/mesh/mesh.hpp"
+#include "engine/nonlinear/loads.hpp"
 #include "engine/nonlinear/static_solver.hpp"
 
 namespace lunaster::cmd {
@@ -88,6 +89,8 @@ struct EvolNoli : Concept {
   std::shared_ptr<Modele> modele;
   std::shared_ptr<ChamMater> cham_mater;
   std::vector<engine::ResultStep> steps;
+  /// The loads of the EXCIT that made it, with their multipliers: REAC_NODA subtracts them.
+  engine::MechanicalLoads loads;
   engine::SolverStats stats;  ///< cost of the STAT_NON_LINE that made it (IMPR_MESURE)
   std::string type_name() const override { return "evol_noli"; }
 };

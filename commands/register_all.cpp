@@ -25,6 +25,9 @@ const std::vector<CommandEntry>& all_handlers() {
       {"TEST_RESU", test_resu},
       {"IMPR_RESU", impr_resu},
       {"IMPR_MESURE", impr_mesure},
+      {"POST_RELEVE_T", post_releve_t},
+      {"TEST_TABLE", test_table},
+      {"IMPR_TABLE", impr_table},
   };
   return handlers;
 }

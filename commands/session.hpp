@@ -5,6 +5,7 @@
 #include <chrono>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,10 @@ class Session {
   std::chrono::steady_clock::time_point measure_mark = std::chrono::steady_clock::now();
 
   bool fin_called = false;
+
+  /// Files IMPR_TABLE wrote in this run: a further table on the same file is appended, as on
+  /// a code_aster unit.
+  std::set<std::filesystem::path> table_files;
 
   // ---- code_aster studies: units of an .export, VALE_CALC of a .comm ----
   /// A file bound to a logical unit by an .export (`F mmed mesh.med D 20`).

@@ -143,9 +143,13 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
   std::unique_ptr<engine::ContactHook> hook;
   if (contact) {
     engine::ContactDefinition definition = *contact;
+    // The contact measures follow the model: r dl per radian on an AXIS model (MODL_AXIS, when
+    // given, was checked against the model by AFFE_CHAR_MECA).
+    definition.axisymmetric = model.axisymmetric();
     for (const auto& m : model.materials) definition.modulus = std::max(definition.modulus, m.young);
     hook = engine::make_contact_hook(definition, *model.mesh, model.dim);
   }
+  result->loads = loads;
   engine::StaticSolver solver(model, loads, options, hook.get(), session.log());
   {
     Session::Timer timer(session, "solve");

@@ -13,6 +13,9 @@ class Runner;
 
 /// Pushes a concept as full userdata whose metatable `__name` is its type name.
 void push_concept(lua_State* L, const catalog::ConceptPtr& c);
+/// Adds __index (TAB['NOM_PARA'] -> a column, column[i] -> the cell) and __len (rows) to the
+/// metatable at the top of the stack, for the table concept.
+void add_table_access(lua_State* L);
 /// The concept held by the userdata at `index`, or nullptr if it is not one of ours.
 catalog::ConceptPtr* to_concept(lua_State* L, int index);
 /// Converts the keyword table at `index` to a KwNode (DeckError on bad values).

@@ -686,6 +686,23 @@ class Translator {
     return args;
   }
 
+  /// code_aster's table cell TAB['PARA', i] (a text, one top-level comma, the row) is the deck
+  /// spelling TAB['PARA'][i]: the comma becomes "][". The bracket at position `o` of `st`.
+  bool table_cell(const Statement& st, std::size_t o) {
+    const std::size_t c = pos_of(st, t_[st.toks[o]].match);
+    if (c < o + 4 || t_[st.toks[o + 1]].kind != Kind::String || !is_op(t_[st.toks[o + 2]], ",")) return false;
+    for (std::size_t q = o + 3; q < c; ++q) {  // the row: one expression, no second comma
+      const Token& u = t_[st.toks[q]];
+      if (u.match > st.toks[q] && u.kind == Kind::Op && std::strchr("([{", u.text[0])) {
+        q = pos_of(st, u.match);
+        continue;
+      }
+      if (is_op(u, ",")) return false;
+    }
+    a_.out[st.toks[o + 2]] = "][";
+    return true;
+  }
+
   bool has_top_comma(const Statement& st, std::size_t o, std::size_t c) const {
     for (std::size_t p = o + 1; p < c; ++p) {
       const Token& t = t_[st.toks[p]];
@@ -842,6 +859,7 @@ class Translator {
       return;
     }
     if (op == "[") {
+      if (callable_before(before) && before->kind == Kind::Name && t.match >= 0 && table_cell(st, p)) return;
       if (callable_before(before)) {
         std::string what = before->kind == Kind::Name ? before->text + "[...]" : "[...]";
         refuse(t, "subscript '" + what + "'",

@@ -141,6 +141,7 @@ void push_concept(lua_State* L, const ConceptPtr& c) {
     lua_setfield(L, -2, "__tostring");
     lua_pushboolean(L, 1);
     lua_setfield(L, -2, kConceptTag);
+    if (type == "table") add_table_access(L);
   }
   lua_setmetatable(L, -2);
 }

@@ -47,6 +47,22 @@ for t in hexa8 hexa20 penta6 penta15 tetra4 tetra10; do
   "$gen" --block "$t:2" --distort 0.15 -o "$m/patch_$t.med"
 done
 
+# Axisymmetric (AXIS, x = r) patch tests away from the axis: distorted blocks [1,2]x[0,1]. The
+# patch_*.med blocks above ([0,1]^2, LEFT on x = 0) are the patches touching the axis.
+for t in quad4 quad8 tria3 tria6; do
+  "$gen" --block "$t:3" --distort 0.2 --rect 1,2,0,1 -o "$m/axis_patch_$t.med"
+done
+# Thick-walled cylinder a = 1 <= r <= b = 2 (AXIS, Lame), one cell high, NR cells through the wall
+"$gen" --block quad8:96x1 --rect 1,2,0,0.0625 -o "$m/axis_cylinder_quad8.med"
+"$gen" --block quad4:128x1 --rect 1,2,0,0.0078125 -o "$m/axis_cylinder_quad4.med"
+
+# Axisymmetric contact patch tests (AXIS, x = r): the SSNP121 blocks on 0 <= r <= 1 (touching the
+# axis), matching and non-matching, and non-matching on 1 <= r <= 2; QUAD8 non-matching on the axis
+"$gen" --upper quad4:8 --lower quad4:8 --x-range 0,1 -o "$m/axis_contact_matching.med"
+"$gen" --upper quad4:12 --lower quad4:11 --x-range 0,1 -o "$m/axis_contact_nonmatching.med"
+"$gen" --upper quad4:12 --lower quad4:11 --x-range 1,2 -o "$m/axis_contact_nonmatching_away.med"
+"$gen" --upper quad8:5 --lower quad8:4 --x-range 0,1 -o "$m/axis_contact_nonmatching_quad8.med"
+
 # One-cell unit blocks (testcases/loads_and_groups.lua names their nodes N1..N4 / cell M5)
 "$gen" --block quad4:1 -o "$m/unit_quad4.med"
 "$gen" --block hexa8:1 -o "$m/unit_hexa8.med"

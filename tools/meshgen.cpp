@@ -21,8 +21,9 @@ using namespace lunaster;
 
 const char* kUsage =
     "usage:\n"
-    "  lunaster-meshgen --upper TYPE:N --lower TYPE:N [--refine K] [--glued] [--name MESH] -o FILE.med\n"
-    "      SSNP121 2D: PLAQUE1 = [-1,1]x[0,1] (upper), PLAQUE2 = [-1,1]x[-1,0]; TYPE quad4|quad8|tria3|tria6\n"
+    "  lunaster-meshgen --upper TYPE:N --lower TYPE:N [--x-range X0,X1] [--refine K] [--glued] [--name MESH] -o FILE.med\n"
+    "      SSNP121 2D: PLAQUE1 = [-1,1]x[0,1] (upper), PLAQUE2 = [-1,1]x[-1,0]; TYPE quad4|quad8|tria3|tria6;\n"
+    "      --x-range: [X0,X1] instead of [-1,1] (axisymmetric sections: x = r)\n"
     "  lunaster-meshgen --v1 TYPE:NXxNYxNZ --v2 TYPE:NXxNYxNZ [--refine K] [--glued] [--name MESH] -o FILE.med\n"
     "      SSNP121 3D: V1 = [0,1]^3, V2 = [0,1]^2x[1,2]; TYPE hexa8|hexa20|penta6|penta15|tetra4|tetra10\n"
     "  lunaster-meshgen --ring TYPE:NTxNR --sleeve TYPE:NTxNR [--radii A,B,C] [--refine K] [--name MESH] -o FILE.med\n"
@@ -31,8 +32,9 @@ const char* kUsage =
     "      TYPE quad4|quad8 (quad8 arc edges curved, mid-side nodes on the circle); default radii 0.5,0.75,1\n"
     "      groups RING SLEEVE INNER RING_OUT SLEEVE_IN OUTER X0_RING Y0_RING X0_SLEEVE Y0_SLEEVE,\n"
     "      nodes A_X A_Y P_X P_Y (ring, r = A, B) Q_X Q_Y C_X C_Y (sleeve, r = B, C)\n"
-    "  lunaster-meshgen --block TYPE:N [--distort A] [--name MESH] -o FILE.med\n"
+    "  lunaster-meshgen --block TYPE:N [--distort A] [--rect X0,X1,Y0,Y1] [--name MESH] -o FILE.med\n"
     "      unit square/cube; --distort moves interior vertices by up to A cell sizes (default 0.2 if given without A)\n"
+    "      --rect X0,X1,Y0,Y1 (2D types): the rectangle [X0,X1]x[Y0,Y1] instead (axisymmetric sections: x = r)\n"
     "  lunaster-meshgen --hertz TYPE:N [--radius R] [--box W,H] [--grading G] [--refine K] [--name MESH] -o FILE.med\n"
     "      Hertz contact: ball of radius R (default 1) resting on a block, touching at O = origin, meshed\n"
     "      independently (non-matching). 2D (TYPE quad4|quad8|tria3|tria6; axisymmetric x = r, y = axis, or a\n"
@@ -73,7 +75,8 @@ Options parse(int argc, char** argv) {
     } else if (a == "-o" || a == "--upper" || a == "--lower" || a == "--v1" || a == "--v2" || a == "--block" ||
                a == "--ring" || a == "--sleeve" || a == "--radii" || a == "--nodes" ||
                a == "--refine" || a == "--distort" || a == "--name" || a == "--info" || a == "--mirror" ||
-               a == "--msh-version" || a == "--hertz" || a == "--radius" || a == "--box" || a == "--grading") {
+               a == "--msh-version" || a == "--hertz" || a == "--radius" || a == "--box" || a == "--grading" ||
+               a == "--rect" || a == "--x-range") {
       if (i + 1 >= argc) throw DeckError("meshgen: option " + a + " needs a value");
       o.values[a] = argv[++i];
     } else {
@@ -81,6 +84,25 @@ Options parse(int argc, char** argv) {
     }
   }
   return o;
+}
+
+/// Comma-separated numbers of an option; DeckError naming the option on anything else.
+std::vector<double> number_list(const std::string& text, const std::string& option) {
+  std::vector<double> out;
+  std::stringstream list(text);
+  for (std::string v; std::getline(list, v, ',');) {
+    size_t used = 0;
+    double x = 0.0;
+    try {
+      x = std::stod(v, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != v.size())
+      throw DeckError("meshgen: " + option + " expects comma-separated numbers, got '" + text + "'");
+    out.push_back(x);
+  }
+  return out;
 }
 
 tools::BlockCells refined(const std::string& spec, int dim, int refine) {
@@ -220,6 +242,11 @@ int run(int argc, char** argv) {
     opt.upper = refined(get("--upper").empty() ? "quad4:12" : get("--upper"), 2, refine);
     opt.lower = refined(get("--lower").empty() ? "quad4:11" : get("--lower"), 2, refine);
     opt.glued = o.glued;
+    if (!get("--x-range").empty()) {
+      const std::vector<double> r = number_list(get("--x-range"), "--x-range");
+      if (r.size() != 2) throw DeckError("meshgen: --x-range expects X0,X1, got '" + get("--x-range") + "'");
+      opt.x0 = r[0], opt.x1 = r[1];
+    }
     mesh = tools::make_ssnp121_2d(opt);
   } else if (!get("--v1").empty() || !get("--v2").empty()) {
     tools::Ssnp121Options3d opt;
@@ -232,19 +259,7 @@ int run(int argc, char** argv) {
     opt.ring = refined(get("--ring").empty() ? "quad4:12x4" : get("--ring"), 2, refine);
     opt.sleeve = refined(get("--sleeve").empty() ? "quad4:9x4" : get("--sleeve"), 2, refine);
     if (!get("--radii").empty()) {
-      std::vector<double> r;
-      std::stringstream list(get("--radii"));
-      for (std::string v; std::getline(list, v, ',');) {
-        size_t used = 0;
-        double x = 0.0;
-        try {
-          x = std::stod(v, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-        if (used == 0 || used != v.size()) throw DeckError("meshgen: --radii expects A,B,C (numbers), got '" + get("--radii") + "'");
-        r.push_back(x);
-      }
+      const std::vector<double> r = number_list(get("--radii"), "--radii");
       if (r.size() != 3) throw DeckError("meshgen: --radii expects three radii A,B,C, got '" + get("--radii") + "'");
       opt.a = r[0], opt.b = r[1], opt.c = r[2];
     }
@@ -258,6 +273,11 @@ int run(int argc, char** argv) {
     const int dim = engine::cell_type_from_name(name, type) ? engine::cell_info(type).dim : 3;
     opt.cells = refined(spec, dim, refine);
     opt.distort = get("--distort").empty() ? 0.0 : std::stod(get("--distort"));
+    if (!get("--rect").empty()) {
+      const std::vector<double> r = number_list(get("--rect"), "--rect");
+      if (r.size() != 4) throw DeckError("meshgen: --rect expects X0,X1,Y0,Y1, got '" + get("--rect") + "'");
+      opt.lo = {r[0], r[2]}, opt.hi = {r[1], r[3]};
+    }
     mesh = tools::make_block(opt);
   } else {
     throw DeckError("meshgen: nothing to generate", {kUsage});

@@ -304,17 +304,19 @@ Mesh make_ssnp121_2d(const Ssnp121Options2d& o) {
   Builder b;
   const int up = b.new_pool();
   const int low = o.glued ? up : b.new_pool();
-  BlockGeom upper{{-1, 0, 0}, {1, 1, 0}, 2, 0.0, "PLAQUE1",
-                  {{"AB", 1, 0.0}, {"BC", 0, 1.0}, {"CD", 1, 1.0}, {"DA", 0, -1.0}}, up};
-  BlockGeom lower{{-1, -1, 0}, {1, 0, 0}, 2, 0.0, "PLAQUE2",
-                  {{"EF", 1, 0.0}, {"FG", 0, 1.0}, {"GH", 1, -1.0}, {"HE", 0, -1.0}}, low};
+  if (!(o.x0 < o.x1)) throw DeckError("meshgen: --x-range needs X0 < X1");
+  const double x0 = o.x0, x1 = o.x1, xm = 0.5 * (o.x0 + o.x1);
+  BlockGeom upper{{x0, 0, 0}, {x1, 1, 0}, 2, 0.0, "PLAQUE1",
+                  {{"AB", 1, 0.0}, {"BC", 0, x1}, {"CD", 1, 1.0}, {"DA", 0, x0}}, up};
+  BlockGeom lower{{x0, -1, 0}, {x1, 0, 0}, 2, 0.0, "PLAQUE2",
+                  {{"EF", 1, 0.0}, {"FG", 0, x1}, {"GH", 1, -1.0}, {"HE", 0, x0}}, low};
   BlockMesher(b, o.upper, upper).run();
   BlockMesher(b, o.lower, lower).run();
   for (const auto& [name, x, y] : std::vector<std::tuple<std::string, double, double>>{
-           {"A", -1, 0}, {"B", 1, 0}, {"C", 1, 1}, {"D", -1, 1}, {"O", 0, 0}})
+           {"A", x0, 0}, {"B", x1, 0}, {"C", x1, 1}, {"D", x0, 1}, {"O", xm, 0}})
     b.add_node_group(name, up, {x, y, 0});
   for (const auto& [name, x, y] : std::vector<std::tuple<std::string, double, double>>{
-           {"E", -1, 0}, {"F", 1, 0}, {"G", 1, -1}, {"H", -1, -1}})
+           {"E", x0, 0}, {"F", x1, 0}, {"G", x1, -1}, {"H", x0, -1}})
     b.add_node_group(name, low, {x, y, 0});
   return b.finish();
 }
@@ -369,11 +371,14 @@ Mesh make_block(const BlockOptions& o) {
   if (dim < 2) throw DeckError("meshgen: a block needs a 2D or 3D cell type");
   Builder b;
   const int pool = b.new_pool();
-  BlockGeom g{{0, 0, 0}, {1, 1, dim == 3 ? 1.0 : 0.0}, dim, o.distort, "BLOCK", {}, pool};
-  g.faces = {{"LEFT", 0, 0.0}, {"RIGHT", 0, 1.0}};
+  const bool rect = o.lo != std::array<double, 2>{0.0, 0.0} || o.hi != std::array<double, 2>{1.0, 1.0};
+  if (rect && dim != 2) throw DeckError("meshgen: a block rectangle (--rect) needs a 2D cell type");
+  if (!(o.lo[0] < o.hi[0] && o.lo[1] < o.hi[1])) throw DeckError("meshgen: --rect needs X0 < X1 and Y0 < Y1");
+  BlockGeom g{{o.lo[0], o.lo[1], 0}, {o.hi[0], o.hi[1], dim == 3 ? 1.0 : 0.0}, dim, o.distort, "BLOCK", {}, pool};
+  g.faces = {{"LEFT", 0, g.lo[0]}, {"RIGHT", 0, g.hi[0]}};
   if (dim == 2) {
-    g.faces.push_back({"BOTTOM", 1, 0.0});
-    g.faces.push_back({"TOP", 1, 1.0});
+    g.faces.push_back({"BOTTOM", 1, g.lo[1]});
+    g.faces.push_back({"TOP", 1, g.hi[1]});
   } else {
     g.faces.push_back({"FRONT", 1, 0.0});
     g.faces.push_back({"BACK", 1, 1.0});
@@ -385,7 +390,7 @@ Mesh make_block(const BlockOptions& o) {
   for (int c = 0; c < n_corners; ++c) {
     const int x = c & 1, y = (c >> 1) & 1, z = (c >> 2) & 1;
     std::string name = "C" + std::to_string(x) + std::to_string(y) + (dim == 3 ? std::to_string(z) : "");
-    b.add_node_group(name, pool, {double(x), double(y), double(z)});
+    b.add_node_group(name, pool, {x ? g.hi[0] : g.lo[0], y ? g.hi[1] : g.lo[1], double(z)});
   }
   return b.finish();
 }

@@ -24,6 +24,8 @@ struct Ssnp121Options2d {
   BlockCells upper{engine::CellType::Quad4, {12, 12, 1}};
   BlockCells lower{engine::CellType::Quad4, {11, 11, 1}};
   bool glued = false;  ///< share interface nodes (needs equal types and counts)
+  /// x extent of both blocks (default -1..1); e.g. 0..1 for an axisymmetric section on the axis.
+  double x0 = -1.0, x1 = 1.0;
 };
 
 /// SSNP121 3D: V1 = [0,1]^3 (lower), V2 = [0,1]^2 x [1,2] (upper).
@@ -37,6 +39,9 @@ struct Ssnp121Options3d {
 struct BlockOptions {
   BlockCells cells{engine::CellType::Hexa8, {3, 3, 3}};
   double distort = 0.0;  ///< interior vertices moved by up to distort * cell size per direction
+  /// 2D only: the rectangle [lo[0], hi[0]] x [lo[1], hi[1]] instead of the unit square
+  /// (axisymmetric sections: x is the radius).
+  std::array<double, 2> lo{0.0, 0.0}, hi{1.0, 1.0};
 };
 
 /// Quarter of a ring fitted in a sleeve (plane strain Lame verification): the ring
@@ -61,7 +66,8 @@ engine::Mesh make_ring_sleeve(const RingOptions& options);
 
 /// Groups: cells PLAQUE1, PLAQUE2; boundary cells AB BC CD DA (upper) and EF FG
 /// GH HE (lower), oriented outward (counter-clockwise traversal of each
-/// block); node groups A B C D O (upper block) and E F G H (lower block).
+/// block); node groups A B C D O (upper block) and E F G H (lower block). With
+/// x0, x1: A = (x0, 0), B = (x1, 0), O = ((x0 + x1) / 2, 0) and so on.
 engine::Mesh make_ssnp121_2d(const Ssnp121Options2d& options);
 
 /// Groups: cells V1, V2; outward faces ENCAST (V1 z=0), SURESC (V1 z=1),
@@ -70,7 +76,8 @@ engine::Mesh make_ssnp121_3d(const Ssnp121Options3d& options);
 
 /// Groups: cells BLOCK; outward boundary cells LEFT (x=0), RIGHT (x=1),
 /// BOTTOM (2D: y=0; 3D: z=0), TOP (2D: y=1; 3D: z=1), FRONT (3D: y=0), BACK
-/// (3D: y=1); corner node groups C00.. (2D) / C000.. (3D), digits = coordinates.
+/// (3D: y=1); corner node groups C00.. (2D) / C000.. (3D), digits = coordinates
+/// (2D with lo/hi: LEFT is x = lo[0], RIGHT x = hi[0], C10 the corner (hi[0], lo[1]) ...).
 engine::Mesh make_block(const BlockOptions& options);
 
 /// Rewrites the volume cells of `groups` (PLAQUE2, BLOCK ...) in mirror order

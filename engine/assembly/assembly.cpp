@@ -28,9 +28,32 @@ void cell_equations(const Mesh& mesh, const DofMap& dofs, int cell, int* eq) {
     }
 }
 
-/// Element stiffness K_e = sum_q B^T D B |det J| w_q (thickness 1 in 2D).
+/// AXIS element stiffness K_e = sum_q B^T D B |det J| w_q r (per radian).
+template <int NN>
+void axis_element_stiffness(const FeModel& model, int cell, Eigen::Matrix<double, NN * 2, NN * 2>& ke) {
+  constexpr int NS = kernels::kVoigtAxis;
+  const Mesh& mesh = *model.mesh;
+  const ReferenceElement& re = reference_element(mesh.cell_types[cell]);
+  const auto x = kernels::cell_coordinates<NN, 2>(mesh, cell);
+  const Eigen::Matrix4d d = kernels::cell_hooke_axis(model, cell);
+  Eigen::Matrix<double, NN, 2> g;
+  Eigen::Matrix<double, NS, NN * 2> b;
+  Eigen::Matrix<double, NS, NN * 2> db;
+  ke.setZero();
+  double sign = 0.0;
+  for (int q = 0; q < re.n_qp; ++q) {
+    const double w = kernels::axis_point<NN>(re, q, x, mesh, cell, sign, g, b);
+    db.noalias() = w * (d * b);
+    ke.noalias() += b.transpose() * db;
+  }
+}
+
+/// Element stiffness K_e = sum_q B^T D B |det J| w_q (thickness 1 in 2D; AXIS: see above).
 template <int NN, int DIM>
 void element_stiffness(const FeModel& model, int cell, Eigen::Matrix<double, NN * DIM, NN * DIM>& ke) {
+  if constexpr (DIM == 2) {
+    if (model.modelisation[cell] == Modelisation::Axisymmetric) return axis_element_stiffness<NN>(model, cell, ke);
+  }
   constexpr int NS = kernels::kVoigt<DIM>;
   const Mesh& mesh = *model.mesh;
   const ReferenceElement& re = reference_element(mesh.cell_types[cell]);
@@ -261,6 +284,21 @@ void assemble_internal_forces(const FeModel& model, const DofMap& dofs, const Ve
       for (int r = 0; r < ND; ++r) ue(r) = u(eq[r]);
       const ReferenceElement& re = reference_element(mesh.cell_types[cell]);
       const auto x = kernels::cell_coordinates<NN, DIM>(mesh, cell);
+      if constexpr (DIM == 2) {
+        if (model.modelisation[cell] == Modelisation::Axisymmetric) {
+          const Eigen::Matrix4d d4 = kernels::cell_hooke_axis(model, cell);
+          Eigen::Matrix<double, NN, 2> g;
+          Eigen::Matrix<double, kernels::kVoigtAxis, ND> b;
+          double sign = 0.0;
+          for (int q = 0; q < re.n_qp; ++q) {
+            const double w = kernels::axis_point<NN>(re, q, x, mesh, cell, sign, g, b);
+            const Eigen::Matrix<double, kernels::kVoigtAxis, 1> sigma = d4 * (b * ue);
+            fe.noalias() += w * (b.transpose() * sigma);
+          }
+          for (int r = 0; r < ND; ++r) f_int(eq[r]) += fe(r);
+          return;
+        }
+      }
       const auto d = kernels::cell_hooke<DIM>(model, cell);
       Eigen::Matrix<double, NN, DIM> g;
       Eigen::Matrix<double, NS, ND> b;

@@ -9,7 +9,8 @@
 namespace lunaster::engine {
 
 /// Appends the stiffness of every volume cell of `model` as triplets.
-/// Full integration for every element type (see engine/fe/quadrature).
+/// Full integration for every element type (see engine/fe/quadrature). AXIS cells are
+/// integrated per radian (weight r = x), as code_aster's AXIS elements.
 void assemble_stiffness(const FeModel& model, const DofMap& dofs, std::vector<Triplet>& out);
 
 /// The same stiffness assembled straight into a compressed matrix (n_dofs x n_dofs, both
@@ -26,8 +27,9 @@ void assemble_internal_forces(const FeModel& model, const DofMap& dofs, const Ve
 /// Adds the consistent nodal forces of a pressure `pressure` (Pa, positive
 /// pushes against the boundary cell's normal, as PRES_REP) on boundary cells
 /// (SEG2/SEG3 in 2D, TRIA3/6 and QUAD4/8 in 3D) to `f_ext`. Cell normals follow
-/// the cell's node order (ORIE_PEAU makes them outward).
+/// the cell's node order (ORIE_PEAU makes them outward). `axisymmetric` (AXIS model, x = r):
+/// the surface measure is r dl, per radian like the AXIS stiffness.
 void assemble_pressure(const Mesh& mesh, int dim, const std::vector<int>& cells, double pressure,
-                       const DofMap& dofs, Vector& f_ext);
+                       const DofMap& dofs, Vector& f_ext, bool axisymmetric = false);
 
 }  // namespace lunaster::engine

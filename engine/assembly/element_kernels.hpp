@@ -86,6 +86,11 @@ void strain_matrix(const Eigen::Matrix<double, NN, DIM>& g, Eigen::Matrix<double
   }
 }
 
+/// Name of a cell for messages (its mesh name, or #index).
+inline std::string cell_label(const Mesh& mesh, int cell) {
+  return cell < static_cast<int>(mesh.cell_names.size()) ? mesh.cell_names[cell] : "#" + std::to_string(cell + 1);
+}
+
 /// Checks the Jacobian signs of a cell: all of one sign and non-zero. Cells of
 /// either orientation are accepted (|det J| weights the integrals, as
 /// code_aster does); a sign change or a zero means a tangled or degenerate cell.
@@ -109,6 +114,51 @@ inline const ElasticMaterial& cell_material(const FeModel& model, int cell) {
     throw DeckError("cell " + name + " carries an element but no material");
   }
   return model.materials[m];
+}
+
+/// Axisymmetric (AXIS) kernels. x is the radius r, y the axis. Strains in the order of the
+/// stress components SIXX SIYY SIZZ SIXY: (eps_rr, eps_zz, eps_tt = u_r / r, gamma_rz), with
+/// z the axis (mesh y) and t the hoop direction (reported as SIZZ, as code_aster does).
+constexpr int kVoigtAxis = 4;
+
+/// Strain-displacement matrix of an AXIS cell at a point of radius r > 0 where the shape
+/// functions are `n` and their physical gradients `g`: rows rr, zz, tt (N_a / r), rz.
+template <int NN>
+void axis_strain_matrix(const Eigen::Matrix<double, NN, 2>& g, const double* n, double r,
+                        Eigen::Matrix<double, kVoigtAxis, 2 * NN>& b) {
+  b.setZero();
+  for (int a = 0; a < NN; ++a) {
+    const int c = 2 * a;
+    b(0, c) = g(a, 0);
+    b(1, c + 1) = g(a, 1);
+    b(2, c) = n[a] / r;
+    b(3, c) = g(a, 1);
+    b(3, c + 1) = g(a, 0);
+  }
+}
+
+/// One quadrature point of an AXIS cell: fills B and returns the integration weight
+/// |det J| w_q r (per radian, code_aster's AXIS measure). Quadrature points are interior,
+/// so r > 0 there for any cell with its nodes at r >= 0 and straight edges; a point at
+/// r <= 0 (a cell lying on the axis, or curved across it) is a DeckError naming the cell.
+template <int NN>
+double axis_point(const ReferenceElement& re, int q, const Eigen::Matrix<double, NN, 2>& x, const Mesh& mesh,
+                  int cell, double& sign, Eigen::Matrix<double, NN, 2>& g, Eigen::Matrix<double, kVoigtAxis, 2 * NN>& b) {
+  const double det = physical_gradients<NN, 2>(re, q, x, g);
+  check_jacobian(det, sign, mesh, cell);
+  const double* n = &re.n[static_cast<size_t>(q) * NN];
+  double r = 0.0;
+  for (int a = 0; a < NN; ++a) r += n[a] * x(a, 0);
+  if (!(r > 0.0))
+    throw DeckError("cell " + cell_label(mesh, cell) + " (AXIS): integration point at radius r = " + std::to_string(r) +
+                    " (expected r > 0; x is the radius in an axisymmetric model)");
+  axis_strain_matrix<NN>(g, n, r, b);
+  return std::abs(det) * re.weight[q] * r;
+}
+
+/// Hooke matrix of an AXIS cell, order rr, zz, tt, rz.
+inline Eigen::Matrix4d cell_hooke_axis(const FeModel& model, int cell) {
+  return elasticity_axis(cell_material(model, cell));
 }
 
 /// Hooke matrix of a cell in kernel Voigt order (3x3 in 2D, 6x6 in 3D).

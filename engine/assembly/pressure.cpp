@@ -4,6 +4,9 @@
 /// 3D faces: n dS = (dx/dxi x dx/deta) dxi deta, i.e. along (x2-x1) x (x3-x1).
 /// A positive pressure pushes against the normal (into the body when the
 /// normal is outward, as ORIE_PEAU makes it).
+/// Axisymmetric models (x = r): dS = r dl per radian, the measure of the AXIS
+/// elements, so a pressure stays a pressure and the forces are per radian. A
+/// segment lying on the axis (r = 0) has no area and receives no force.
 #include "engine/assembly/assembly.hpp"
 
 #include <string>
@@ -20,7 +23,8 @@ bool is_boundary_type(CellType type, int dim) {
 }
 
 /// Adds the pressure forces of one boundary cell.
-void cell_pressure(const Mesh& mesh, int dim, int cell, double pressure, const DofMap& dofs, Vector& f_ext) {
+void cell_pressure(const Mesh& mesh, int dim, int cell, double pressure, bool axisymmetric, const DofMap& dofs,
+                   Vector& f_ext) {
   const CellType type = mesh.cell_types[cell];
   const ReferenceElement& re = reference_element(type);
   const int* nodes = mesh.cell(cell);
@@ -44,8 +48,13 @@ void cell_pressure(const Mesh& mesh, int dim, int cell, double pressure, const D
       ns[1] = a1[2] * a2[0] - a1[0] * a2[2];
       ns[2] = a1[0] * a2[1] - a1[1] * a2[0];
     }
+    double radius = 1.0;
+    if (axisymmetric) {
+      radius = 0.0;
+      for (int a = 0; a < nn; ++a) radius += n[a] * mesh.node(nodes[a])[0];
+    }
     for (int a = 0; a < nn; ++a) {
-      const double s = -pressure * n[a] * re.weight[q];
+      const double s = -pressure * n[a] * re.weight[q] * radius;
       for (int k = 0; k < dim; ++k) {
         const int eq = dofs.dof(nodes[a], k);
         if (eq < 0) {
@@ -63,7 +72,7 @@ void cell_pressure(const Mesh& mesh, int dim, int cell, double pressure, const D
 }  // namespace
 
 void assemble_pressure(const Mesh& mesh, int dim, const std::vector<int>& cells, double pressure,
-                       const DofMap& dofs, Vector& f_ext) {
+                       const DofMap& dofs, Vector& f_ext, bool axisymmetric) {
   if (f_ext.size() != dofs.n_dofs()) f_ext = Vector::Zero(dofs.n_dofs());
   for (int cell : cells) {
     if (!is_boundary_type(mesh.cell_types[cell], dim)) {
@@ -72,7 +81,7 @@ void assemble_pressure(const Mesh& mesh, int dim, const std::vector<int>& cells,
       throw DeckError("pressure on cell " + name + ": expected a boundary cell (" +
                       std::string(dim == 2 ? "SEG2/SEG3" : "TRIA3/TRIA6/QUAD4/QUAD8") + ")");
     }
-    cell_pressure(mesh, dim, cell, pressure, dofs, f_ext);
+    cell_pressure(mesh, dim, cell, pressure, axisymmetric, dofs, f_ext);
   }
 }
 

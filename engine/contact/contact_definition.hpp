@@ -47,6 +47,10 @@ struct ContactDefinition {
   int nb_iter_geom = 2;      ///< with REAC_GEOM='CONTROLE'
   double resi_geom = 0.01;
   double modulus = 0.0;      ///< largest Young's modulus of the model (Pa; scales mortar's complementarity constant)
+  /// AXIS model (2D, x = r): every surface measure is r dl per radian, as the AXIS elements'
+  /// (integration-point and mortar weights, nodal tributary areas), so contact pressures stay
+  /// pressures and contact forces are per radian like the model's nodal forces.
+  bool axisymmetric = false;
 };
 
 }  // namespace lunaster::engine

@@ -14,8 +14,12 @@ std::unique_ptr<ContactHook> make_contact_hook(const ContactDefinition& definiti
   switch (definition.method) {
     case ContactMethod::Continuous: where = make_integration_points(), how = make_augmented_lagrangian_law(); break;
     case ContactMethod::ContinuousPenalty: where = make_integration_points(), how = make_penalty_law(false); break;
-    case ContactMethod::DiscreteLagrange: where = make_node_to_segment(), how = make_active_set_law(); break;
-    case ContactMethod::DiscretePenalty: where = make_node_to_segment(), how = make_penalty_law(true); break;
+    case ContactMethod::DiscreteLagrange:
+      where = make_node_to_segment(definition.axisymmetric), how = make_active_set_law();
+      break;
+    case ContactMethod::DiscretePenalty:
+      where = make_node_to_segment(definition.axisymmetric), how = make_penalty_law(true);
+      break;
     default: break;
   }
   return std::make_unique<ContactProblem>(definition, mesh, dim, std::move(where), std::move(how));

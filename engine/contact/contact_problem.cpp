@@ -181,8 +181,11 @@ void ContactProblem::pair(const Vector& u) {
         for (int i = 0; i < 3; ++i) slave_xyz[3 * a + i] = xyz[3 * static_cast<size_t>(p.slave_nodes[a]) + i];
       const SurfacePoint sp = surface_point(t, slave_xyz, p.xi);
       std::copy(sp.x, sp.x + 3, x);
-      regular = sp.jacobian > 0.0 && std::isfinite(sp.jacobian);
-      p.wjac = regular ? p.weight * sp.jacobian : 0.0;
+      // AXIS: the measure r dl (per radian) at the point's current radius; a point on the
+      // axis (a slave line lying on it) has no area.
+      const double radius = def_.axisymmetric ? sp.x[0] : 1.0;
+      regular = sp.jacobian > 0.0 && std::isfinite(sp.jacobian) && radius > 0.0;
+      p.wjac = regular ? p.weight * sp.jacobian * radius : 0.0;
     } else {
       for (int i = 0; i < 3; ++i) {
         x[i] = 0.0;

@@ -7,7 +7,8 @@
 ///
 /// - NodeToSegment (node_to_segment.cpp): code_aster's FORMULATION='DISCRETE'
 ///   (R5.03.50). One point per slave vertex, weighted by its tributary length/area
-///   (integral of its linear shape function over the slave cells); quadratic cells are
+///   (integral of its linear shape function over the slave cells; AXIS: times r, per
+///   radian, so a discrete E_N is a spring per radian); quadratic cells are
 ///   linearised (vertices only on both sides); each QUAD8 face's mid-side nodes are tied
 ///   to the mean of their edge's vertices (linear relations, code_aster's CONTACT_8);
 ///   SEG3/TRIA6 mid-side nodes stay free (reported).
@@ -48,7 +49,8 @@ class Discretisation {
   virtual void report(const Log& /*log*/) const {}
 };
 
-std::unique_ptr<Discretisation> make_node_to_segment();
+/// `axisymmetric`: tributary areas in the AXIS measure r dl (per radian, reference radius).
+std::unique_ptr<Discretisation> make_node_to_segment(bool axisymmetric = false);
 std::unique_ptr<Discretisation> make_integration_points();
 
 }  // namespace lunaster::engine::contact

@@ -110,6 +110,12 @@ std::vector<OrientedCell> orient_surface(const Mesh& mesh, int dim, const std::v
   return out;
 }
 
+/// Radius (x) of a point of a slave cell, for the AXIS measure r dl; 0 on the axis and,
+/// should a deformed cell cross it, beyond (no negative measure).
+double axis_radius(CellType type, const double* xyz, const double* xi) {
+  return std::max(surface_point(type, xyz, xi).x[0], 0.0);
+}
+
 }  // namespace
 
 MortarProblem::MortarProblem(const ContactDefinition& definition, const Mesh& mesh, int dim)
@@ -263,6 +269,8 @@ std::vector<MortarRow> MortarProblem::build_rows(const Vector& u,
               const size_t before = pts.size();
               const int degree = std::max(2 * shape_degree(sc.type), shape_degree(sc.type) + shape_degree(mc.type));
               overlap_points(sc.type, sx, mc.type, mx, degree, pts);
+              if (def_.axisymmetric)  // AXIS: the measure r dl per radian, r at the slave point
+                for (size_t k = before; k < pts.size(); ++k) pts[k].w *= axis_radius(sc.type, sx, pts[k].xi_s);
               owner.insert(owner.end(), pts.size() - before, mi);
             }
           }
@@ -278,7 +286,8 @@ std::vector<MortarRow> MortarProblem::build_rows(const Vector& u,
         for (const auto& q : contact_integration_rule(sc.type, IntegrationScheme::Gauss, 4)) {
           OverlapPoint op;
           op.xi_s[0] = q.xi[0], op.xi_s[1] = q.xi[1];
-          op.w = q.weight * surface_point(sc.type, sx, q.xi).jacobian;
+          const SurfacePoint sp = surface_point(sc.type, sx, q.xi);
+          op.w = q.weight * sp.jacobian * (def_.axisymmetric ? std::max(sp.x[0], 0.0) : 1.0);
           whole.push_back(op);
         }
         if (!dual_coefficients(sc.type, whole, a_dual)) continue;
@@ -427,13 +436,15 @@ void MortarProblem::begin_step(const Vector& u, const Log& log) {
       double x[3 * kMaxSurfaceNodes];
       for (int a = 0; a < oc.n; ++a)
         for (int k = 0; k < 3; ++k) x[3 * a + k] = mesh_.node(oc.nodes[a])[k];
-      for (const auto& q : contact_integration_rule(oc.type, IntegrationScheme::Gauss, 4))
-        total += q.weight * surface_point(oc.type, x, q.xi).jacobian;
+      for (const auto& q : contact_integration_rule(oc.type, IntegrationScheme::Gauss, 4)) {
+        const SurfacePoint sp = surface_point(oc.type, x, q.xi);
+        total += q.weight * sp.jacobian * (def_.axisymmetric ? std::max(sp.x[0], 0.0) : 1.0);
+      }
     }
   std::ostringstream msg;
   msg << "mortar contact: " << rows_.size() << " slave nodes paired, " << n_active << " initially in contact; "
       << "the master surface covers " << covered << " of the slave surface's " << total
-      << (dim_ == 2 ? " m" : " m^2");
+      << (def_.axisymmetric ? " m^2 per radian (AXIS)" : dim_ == 2 ? " m" : " m^2");
   log.info(msg.str());
 }
 

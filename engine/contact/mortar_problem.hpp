@@ -3,6 +3,9 @@
 /// node with dual (biorthogonal) multipliers, enforced by a primal-dual active set inside
 /// Newton (ALGO_CONT='LAGRANGIEN') or by a penalty on the weighted gaps ('PENALISATION').
 /// Facts and sources: mortar_integration.hpp and the project's research notes.
+/// AXIS models (ContactDefinition::axisymmetric): every overlap weight is multiplied by the
+/// radius of its slave point, so D_j, M_jl and the dual basis are those of the measure r dl
+/// (per radian, as the AXIS elements), and LAGS_C stays a pressure.
 ///
 /// Rows. For slave node j, with Phi_j its dual function, N~ the slave shape functions
 /// (transformed on TRIA6/QUAD8 slave cells, mortar_integration.hpp), n_j the nodal normal

@@ -13,6 +13,7 @@ namespace {
 
 class NodeToSegment final : public Discretisation {
  public:
+  explicit NodeToSegment(bool axisymmetric) : axisymmetric_(axisymmetric) {}
   bool linear_master() const override { return true; }
   bool nodal() const override { return true; }
   bool weight_follows_geometry() const override { return false; }
@@ -30,7 +31,8 @@ class NodeToSegment final : public Discretisation {
       for (const auto& q : contact_integration_rule(t, IntegrationScheme::Gauss, 2)) {
         const SurfacePoint sp = surface_point(t, xyz, q.xi);
         surface_shape(t, q.xi, n, nullptr, nullptr);
-        for (int a = 0; a < nv; ++a) area[mesh.cell(c)[a]] += q.weight * sp.jacobian * n[a];
+        const double radius = axisymmetric_ ? sp.x[0] : 1.0;  // AXIS: r dl per radian
+        for (int a = 0; a < nv; ++a) area[mesh.cell(c)[a]] += q.weight * sp.jacobian * radius * n[a];
       }
     }
     for (const auto& [node, a] : area) {
@@ -85,12 +87,15 @@ class NodeToSegment final : public Discretisation {
   }
 
  private:
+  bool axisymmetric_;
   std::set<int> tied_;
   bool free_mid_side_ = false;
 };
 
 }  // namespace
 
-std::unique_ptr<Discretisation> make_node_to_segment() { return std::make_unique<NodeToSegment>(); }
+std::unique_ptr<Discretisation> make_node_to_segment(bool axisymmetric) {
+  return std::make_unique<NodeToSegment>(axisymmetric);
+}
 
 }  // namespace lunaster::engine::contact

@@ -16,4 +16,10 @@ std::vector<int> FeModel::volume_cells() const {
   return out;
 }
 
+bool FeModel::axisymmetric() const {
+  for (Modelisation m : modelisation)
+    if (m == Modelisation::Axisymmetric) return true;
+  return false;
+}
+
 }  // namespace lunaster::engine

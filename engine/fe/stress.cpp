@@ -15,6 +15,8 @@ namespace lunaster::engine {
 namespace {
 
 /// Stresses at the Gauss points of one cell, n_qp x n_out (SIXX SIYY SIZZ SIXY [SIXZ SIYZ]).
+/// Nodal values come from extrapolating these: nothing is evaluated at a node, so nodes on
+/// the axis of an AXIS model need no special case.
 template <int NN, int DIM>
 Eigen::MatrixXd gauss_stresses(const FeModel& model, const DofMap& dofs, const Vector& u, int cell) {
   constexpr int NS = kernels::kVoigt<DIM>, ND = NN * DIM;
@@ -28,6 +30,20 @@ Eigen::MatrixXd gauss_stresses(const FeModel& model, const DofMap& dofs, const V
   for (int a = 0; a < NN; ++a)
     for (int k = 0; k < DIM; ++k) ue(DIM * a + k) = u(dofs.dof(nodes[a], k));
   Eigen::MatrixXd out(re.n_qp, DIM == 2 ? 4 : 6);
+  if constexpr (DIM == 2) {
+    // AXIS: (SIXX, SIYY, SIZZ, SIXY) = (radial, axial, hoop, rz) straight from the 4x4 law.
+    if (model.modelisation[cell] == Modelisation::Axisymmetric) {
+      const Eigen::Matrix4d d4 = kernels::cell_hooke_axis(model, cell);
+      Eigen::Matrix<double, NN, 2> g;
+      Eigen::Matrix<double, kernels::kVoigtAxis, ND> b;
+      double sign = 0.0;
+      for (int q = 0; q < re.n_qp; ++q) {
+        kernels::axis_point<NN>(re, q, x, mesh, cell, sign, g, b);
+        out.row(q) = (d4 * (b * ue)).transpose();
+      }
+      return out;
+    }
+  }
   Eigen::Matrix<double, NN, DIM> g;
   Eigen::Matrix<double, NS, ND> b;
   double sign = 0.0;

@@ -59,4 +59,12 @@ Eigen::Matrix4d elasticity_2d_full(const ElasticMaterial& mat, Modelisation mod)
   return d;
 }
 
+Eigen::Matrix4d elasticity_axis(const ElasticMaterial& mat) {
+  const Eigen::Matrix<double, 6, 6> d3 = elasticity_3d(mat);
+  Eigen::Matrix4d d = Eigen::Matrix4d::Zero();
+  d.topLeftCorner<3, 3>() = d3.topLeftCorner<3, 3>();
+  d(3, 3) = d3(3, 3);
+  return d;
+}
+
 }  // namespace lunaster::engine

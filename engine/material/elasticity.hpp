@@ -21,4 +21,8 @@ double sigma_zz_2d(const ElasticMaterial& mat, Modelisation mod, double sxx, dou
 /// plane strain ezz = 0 is implied by the caller, in plane stress the row zz is zero.
 Eigen::Matrix4d elasticity_2d_full(const ElasticMaterial& mat, Modelisation mod);
 
+/// Axisymmetric (AXIS) matrix, order rr, zz (axial), tt (hoop), rz acting on
+/// (e_rr, e_zz, e_tt, g_rz): the 3D matrix restricted to those components.
+Eigen::Matrix4d elasticity_axis(const ElasticMaterial& mat);
+
 }  // namespace lunaster::engine

@@ -12,6 +12,7 @@
 
 #include "engine/assembly/assembly.hpp"
 #include "engine/core/error.hpp"
+#include "engine/nonlinear/nodal_forces.hpp"
 #include "engine/nonlinear/rigid_body.hpp"
 #include "engine/solver/krylov.hpp"
 
@@ -95,20 +96,6 @@ std::vector<int> constrained_equations(const DofMap& dofs, const MechanicalLoads
   std::sort(eqs.begin(), eqs.end());
   eqs.erase(std::unique(eqs.begin(), eqs.end()), eqs.end());
   return eqs;
-}
-
-Vector external_forces(const FeModel& model, const DofMap& dofs, const MechanicalLoads& loads, double t) {
-  Vector f = Vector::Zero(dofs.n_dofs());
-  for (const auto& p : loads.pressures)
-    assemble_pressure(*model.mesh, model.dim, p.cells, p.pressure * loads.multipliers.at(p.load)(t), dofs, f);
-  for (const auto& fn : loads.forces) {
-    const int eq = dofs.dof(fn.node, fn.component);
-    if (eq < 0)
-      throw DeckError("nodal force " + std::string(component_name(fn.component)) + " on node " +
-                      model.mesh->node_names[fn.node] + ", which carries no such unknown in the model");
-    f[eq] += fn.value * loads.multipliers.at(fn.load)(t);
-  }
-  return f;
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
--- Must-fail deck: MODL_AXIS = 'OUI' asks for an axisymmetric model, which lunaster does
--- not have yet: refused rather than computed as a plane model.
--- EXPECT_ERROR: modl_axis_oui\.lua:9: AFFE_CHAR_MECA: CONTACT\.MODL_AXIS: expected 'NON' \(axisymmetric models are not supported yet\), got 'OUI'
+-- Must-fail deck: MODL_AXIS = 'OUI' declares axisymmetric contact, but MODELE is a plane (D_PLAN)
+-- model: the contact measures follow the model, so a deck saying otherwise was written for another
+-- model and is refused rather than computed as a plane model.
+-- EXPECT_ERROR: modl_axis_oui\.lua:10: AFFE_CHAR_MECA: CONTACT\.MODL_AXIS: expected 'NON' \(or no MODL_AXIS\) on MODELE 'MO', a plane \(D_PLAN/C_PLAN\) model \(MODL_AXIS = 'OUI' needs AFFE_MODELE MODELISATION = 'AXIS'\), got 'OUI'
 -- EXPECT_STATUS: 2
 DEBUT()
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = '../ssnp121a.med' }

@@ -1,6 +1,8 @@
 // Google Benchmark kernels: element assembly per type, each solver backend,
 // and the full linear solve of the glued 2D SSNP121-like square at the target
 // size (~544k unknowns: assemble + factorise + solve, goal < 4 s on 2 cores).
+#include <algorithm>
+
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -10,6 +12,7 @@
 #include "engine/assembly/dof_map.hpp"
 #include "engine/fe/fe_model.hpp"
 #include "engine/solver/linear_solver.hpp"
+#include "lua/comm_convert.hpp"
 
 namespace {
 
@@ -182,3 +185,51 @@ BENCHMARK(BM_Solve2DTarget)->Iterations(1)->Unit(benchmark::kMillisecond);
 }  // namespace
 
 BENCHMARK_MAIN();
+
+// .comm -> Lua conversion of a 1,000-line code_aster study (the issue's figure: under 10 ms).
+// The study: one SSNP121 A command set, as code_aster writes it, repeated with renamed
+// concepts; tests/bench/convert_speed.sh times the whole `lunaster convert` process.
+static void BM_ConvertComm1000Lines(benchmark::State& state) {
+  const std::string block = R"(# SSNP121 A: two elastic blocks pressed together
+MA@=LIRE_MAILLAGE(FORMAT='MED',);
+MO@=AFFE_MODELE(MAILLAGE=MA@,
+               AFFE=_F(TOUT='OUI',
+                       PHENOMENE='MECANIQUE',
+                       MODELISATION='D_PLAN',),);
+MAT@=DEFI_MATERIAU(ELAS=_F(E=20.0E+05,
+                          NU=0.0,),);
+CHMAT@=AFFE_MATERIAU(MAILLAGE=MA@,
+                    AFFE=_F(GROUP_MA=('PLAQUE1','PLAQUE2',),
+                            MATER=MAT@,),);
+CHA@=AFFE_CHAR_MECA(MODELE=MO@,
+                    DDL_IMPO=(_F(GROUP_NO='CD', DX=0.0, DY=-0.1,),
+                              _F(GROUP_NO='GH', DX=0.0, DY=0.0,),),);
+CONT@=DEFI_CONTACT(MODELE=MO@, FORMULATION='CONTINUE',
+                  ZONE=_F(GROUP_MA_ESCL='AB', GROUP_MA_MAIT='EF', INTEGRATION='SIMPSON',
+                          ORDRE_INT=4, COEF_CONT=1000., CONTACT_INIT='NON'))
+L_INST@=DEFI_LIST_REEL(DEBUT=0.0,
+                      INTERVALLE=_F(JUSQU_A=1.0,
+                                    NOMBRE=1,),);
+RESU@=STAT_NON_LINE(MODELE=MO@, CHAM_MATER=CHMAT@, CONTACT=CONT@,
+                   EXCIT=_F(CHARGE=CHA@,),
+                   COMPORTEMENT=_F(RELATION='ELAS',),
+                   INCREMENT=_F(LIST_INST=L_INST@,),);
+TEST_RESU(RESU=(_F(NUME_ORDRE=1, RESULTAT=RESU@, NOM_CHAM='DEPL', GROUP_NO='O', NOM_CMP='LAGS_C',
+                   VALE_CALC=-1.003593668221e+05, REFERENCE='ANALYTIQUE', VALE_REFE=-1.0E5, PRECISION=1.E-2,),),);
+
+)";
+  std::string study;
+  int lines = 0;
+  for (int copy = 0; lines < 1000; ++copy) {
+    std::string b = block;
+    for (auto at = b.find('@'); at != std::string::npos; at = b.find('@', at)) b.replace(at, 1, std::to_string(copy));
+    study += b;
+    lines += static_cast<int>(std::count(b.begin(), b.end(), '\n'));
+  }
+  for (auto _ : state) {
+    auto converted = lunaster::lua::convert_comm(study);
+    benchmark::DoNotOptimize(converted.lua.data());
+  }
+  state.counters["lines"] = lines;
+}
+BENCHMARK(BM_ConvertComm1000Lines)->Unit(benchmark::kMillisecond);

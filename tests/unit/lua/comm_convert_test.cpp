@@ -342,7 +342,8 @@ TEST(CommConvert, RefusedFormsAreReportedAndCommentedOut) {
       {"D = {'a': 1}\nA = 1\n", 1, "dict", "_F(...)", {1}},
       {"A = 1\nX = RESU.LIST_PARA()\n", 2, "method call 'RESU.LIST_PARA()'", "no Python methods", {2}},
       {"X = MA.nom\n", 1, "attribute access 'MA.nom'", "finish in Lua", {1}},
-      {"A = 1\nV = TAB['X', 1]\n", 2, "subscript 'TAB[...]'", "indexed from 1", {2}},
+      {"A = 1\nV = TAB[1]\n", 2, "subscript 'TAB[...]'", "indexed from 1", {2}},
+      {"A = 1\nV = TAB['X', 1, 2]\n", 2, "subscript 'TAB[...]'", "indexed from 1", {2}},
       {"Y = sqrt(2.)\n", 1, "Python function call 'sqrt'", "math.sqrt", {1}},
       {"A = CMD(LIST=range(3))\n", 1, "Python function call 'range'", "Lua loop", {1}},
       {"print('done')\n", 1, "Python function call 'print'", "drop it", {1}},
@@ -414,10 +415,10 @@ TEST(CommConvert, UnterminatedStringsAndBracketsGiveOneIssueWhereTheyStart) {
 }
 
 TEST(CommCheck, UnknownCommandIsReportedWithItsLine) {
-  const auto issues = check_comm("DEBUT()\n\nT = POST_RELEVE_T(ACTION=_F(INTITULE='X'))\nR = STAT_NON_LIN(MODELE=MO)\n");
+  const auto issues = check_comm("DEBUT()\n\nT = POST_ELEM(MASS_INER=_F(TOUT='OUI'))\nR = STAT_NON_LIN(MODELE=MO)\n");
   ASSERT_EQ(issues.size(), 2u);
   EXPECT_EQ(issues[0].line, 3);
-  EXPECT_EQ(issues[0].what, "unknown command POST_RELEVE_T");
+  EXPECT_EQ(issues[0].what, "unknown command POST_ELEM");
   EXPECT_EQ(issues[1].line, 4);
   EXPECT_EQ(issues[1].what, "unknown command STAT_NON_LIN (did you mean STAT_NON_LINE?)");
   EXPECT_FALSE(issues[1].hint.empty());
@@ -504,4 +505,11 @@ TEST(CommCheck, AFactorDeclaredInSeveralBlocksTakesTheKeywordsOfAll) {
   ASSERT_EQ(issues.size(), 1u);
   EXPECT_EQ(issues[0].line, 3);
   EXPECT_NE(issues[0].what.find("unknown keyword ZONE[1]/E_NN (did you mean E_N?)"), std::string::npos) << issues[0].what;
+}
+
+// code_aster's table cell TAB['PARA', i] is the deck's TAB['PARA'][i] (rows from 1 in both).
+TEST(CommConvert, TableCellsBecomeTheDeckSpelling) {
+  const auto converted = convert_comm("F = TAB['DY', 1]\nG = -2.0 * TAB[\"DX\", n + 1] / TAB['DY', len]\n");
+  ASSERT_TRUE(converted.refused.empty()) << converted.refused.front().what;
+  EXPECT_EQ(converted.lua, "F = TAB['DY'][ 1]\nG = -2.0 * TAB[\"DX\"][ n + 1] / TAB['DY'][ len]\n");
 }

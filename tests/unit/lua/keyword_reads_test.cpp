@@ -36,9 +36,10 @@ namespace {
 /// the value and the handler has nothing to choose. The test checks that each still has one
 /// allowed value, so adding a second one without reading the keyword fails here.
 const std::map<std::string, std::string> kValidatorOnly = {
-    {"AFFE_CHAR_MECA/CONTACT/MODL_AXIS", "only 'NON' (a plane or 3D model); 'OUI' is refused by the catalogue"},
     {"AFFE_MODELE/AFFE/PHENOMENE", "only 'MECANIQUE', the one phenomenon"},
     {"CALC_CHAMP/TOUT_ORDRE", "only 'OUI': every step, as when neither NUME_ORDRE nor INST is given"},
+    {"POST_RELEVE_T/ACTION/TOUT_ORDRE", "only 'OUI': every step, as when neither NUME_ORDRE nor INST is given"},
+    {"IMPR_TABLE/FORMAT", "only 'TABLEAU': the one table format (CSV is TABLEAU with SEPARATEUR)"},
     {"DEFI_CONTACT/FROTTEMENT", "only 'SANS': the contact hooks are frictionless"},
     {"DEFI_FONCTION/INTERPOL", "only 'LIN': functions are piecewise linear"},
     {"DEFI_LIST_INST/DEFI_LIST/METHODE", "only 'MANUEL': the instants are given by LIST_INST"},
@@ -61,6 +62,8 @@ const std::map<std::string, std::string> kCompatibilityOnly = {
     {"AFFE_CHAR_MECA/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
     {"AFFE_MODELE/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
     {"CALC_CHAMP/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
+    {"POST_RELEVE_T/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
+    {"TEST_TABLE/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
     {"DEFI_CONTACT/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
     {"DEFI_CONT/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
     {"MECA_NON_LINE/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},

@@ -138,7 +138,7 @@ TEST_F(RunnerTest, BooleanAndFunctionValuesNameTheKeyword) {
 TEST_F(RunnerTest, ValidationErrorsCarryFileLineAndCommand) {
   std::string err = run(std::string(kMesh) + "\nMO = AFFE_MODELE{ MAILLAGE = MA,\n"
                         "  AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLN' } }\n");
-  EXPECT_EQ(err, "t.lua:3: AFFE_MODELE: AFFE[1].MODELISATION: expected one of 'D_PLAN', 'C_PLAN', '3D', got 'D_PLN'\n"
+  EXPECT_EQ(err, "t.lua:3: AFFE_MODELE: AFFE[1].MODELISATION: expected one of 'D_PLAN', 'C_PLAN', '3D', 'AXIS', got 'D_PLN'\n"
                  "    did you mean 'D_PLAN'?");
   EXPECT_EQ(kind, ErrorKind::Deck);
   EXPECT_EQ(recorder.commands, std::vector<std::string>{"LIRE_MAILLAGE"});  // AFFE_MODELE's handler never ran

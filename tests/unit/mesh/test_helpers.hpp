@@ -7,6 +7,10 @@
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
+#include "engine/io/med_reader.hpp"
+#include "engine/io/med_writer.hpp"
 #include "engine/mesh/cell_topology.hpp"
 #include "engine/mesh/mesh.hpp"
 
@@ -52,6 +56,20 @@ inline std::string scratch_dir(const std::string& name) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();
+}
+
+/// Writes `m` as `<scratch_dir(name)>/<name>.med` and reads it back: coordinates, cells and
+/// groups must come back unchanged.
+inline void expect_med_round_trip(const Mesh& m, const std::string& name) {
+  const std::string path = scratch_dir(name) + "/" + name + ".med";
+  write_med(path, m);
+  const Mesh r = read_med(path);
+  ASSERT_EQ(r.n_nodes(), m.n_nodes());
+  EXPECT_EQ(r.coords, m.coords);
+  EXPECT_EQ(r.cell_types, m.cell_types);
+  EXPECT_EQ(r.cell_nodes, m.cell_nodes);
+  EXPECT_EQ(r.cell_groups, m.cell_groups);
+  EXPECT_EQ(r.node_groups, m.node_groups);
 }
 
 inline const std::vector<CellType>& all_cell_types() { return cell_types_in_med_order(); }

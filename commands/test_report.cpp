@@ -1,0 +1,70 @@
+#include "commands/test_report.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace lunaster::cmd {
+
+namespace {
+
+std::string check_line(bool ok, const std::string& kind, const std::string& what, double refe, double calc, double err,
+                       double tol, const std::string& critere) {
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "%s %-14s %s  refe=%.9e  calc=%.9e  err=%.3e  tol=%.3e  %s", ok ? " OK " : "NOOK",
+                kind.c_str(), what.c_str(), refe, calc, err, tol, critere.c_str());
+  return buf;
+}
+
+/// Relative (or absolute) difference as code_aster: RELATIF divides by |refe|,
+/// or by ORDRE_GRANDEUR when the reference is zero.
+double difference(double calc, double refe, bool relative, double magnitude) {
+  const double d = std::abs(calc - refe);
+  if (!relative) return d;
+  const double scale = refe != 0.0 ? std::abs(refe) : magnitude;
+  return scale > 0.0 ? d / scale : d;
+}
+
+}  // namespace
+
+void report_checks(const catalog::Args& occ, Session& session, double value, const std::string& what) {
+  const bool relative = occ.text("CRITERE") == "RELATIF";
+  const double magnitude = occ.has("ORDRE_GRANDEUR") ? occ.real("ORDRE_GRANDEUR") : 0.0;
+  bool any = false;
+  if (occ.has("VALE_CALC")) {
+    any = true;
+    const double refe = occ.real("VALE_CALC");
+    const double tol = occ.real("TOLE_MACHINE");
+    const double err = difference(value, refe, relative, magnitude);
+    const bool ok = err <= tol;
+    if (!session.code_aster_vale_calc) {
+      session.tests.push_back({ok, check_line(ok, "NON_REGRESSION", what, refe, value, err, tol, occ.text("CRITERE"))});
+      session.log().always(session.tests.back().text);
+    } else {
+      // A .comm's VALE_CALC is code_aster's result: the check compares lunaster with code_aster.
+      session.comparisons.push_back({what, value, refe, err, tol});
+      std::string line = check_line(ok, "CODE_ASTER", what, refe, value, err, tol, occ.text("CRITERE"));
+      if (session.vale_calc_report) {
+        line.replace(0, 4, ok ? "SAME" : "DIFF");  // a report line, not a check
+        session.log().always(line);
+      } else {
+        session.tests.push_back({ok, line});
+        session.log().always(line);
+      }
+    }
+  }
+  if (occ.has("VALE_REFE")) {
+    any = true;
+    const double refe = occ.real("VALE_REFE");
+    const double tol = occ.real("PRECISION");
+    const double err = difference(value, refe, relative, magnitude);
+    const bool ok = err <= tol;
+    session.tests.push_back({ok, check_line(ok, occ.text("REFERENCE"), what, refe, value, err, tol, occ.text("CRITERE"))});
+    session.log().always(session.tests.back().text);
+  }
+  char text[64];
+  std::snprintf(text, sizeof text, "%.12e", value);
+  if (!any) throw occ.error("VALE_CALC", "VALE_CALC and/or VALE_REFE", "neither", {"computed value: " + std::string(text)});
+  if (!occ.has("VALE_CALC")) session.log().always("      computed value (paste as VALE_CALC): " + std::string(text));
+}
+
+}  // namespace lunaster::cmd

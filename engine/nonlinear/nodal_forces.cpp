@@ -1,0 +1,55 @@
+#include "engine/nonlinear/nodal_forces.hpp"
+
+#include <string>
+
+#include "engine/assembly/assembly.hpp"
+#include "engine/core/error.hpp"
+
+namespace lunaster::engine {
+
+namespace {
+
+/// The vector `f` as a nodal field over the displacement unknowns of `dofs`.
+NodalField as_nodal_field(const FeModel& model, const DofMap& dofs, const Vector& f) {
+  std::vector<std::string> cmps = {"DX", "DY"};
+  if (model.dim == 3) cmps.push_back("DZ");
+  NodalField field(cmps, model.mesh->n_nodes());
+  for (int node = 0; node < model.mesh->n_nodes(); ++node)
+    for (int c = 0; c < model.dim; ++c) {
+      const int eq = dofs.dof(node, c);
+      if (eq >= 0) field.set(node, c, f[eq]);
+    }
+  return field;
+}
+
+}  // namespace
+
+Vector external_forces(const FeModel& model, const DofMap& dofs, const MechanicalLoads& loads, double t) {
+  Vector f = Vector::Zero(dofs.n_dofs());
+  for (const auto& p : loads.pressures)
+    assemble_pressure(*model.mesh, model.dim, p.cells, p.pressure * loads.multipliers.at(p.load)(t), dofs, f,
+                      model.axisymmetric());
+  for (const auto& fn : loads.forces) {
+    const int eq = dofs.dof(fn.node, fn.component);
+    if (eq < 0)
+      throw DeckError("nodal force " + std::string(component_name(fn.component)) + " on node " +
+                      model.mesh->node_names[fn.node] + ", which carries no such unknown in the model");
+    f[eq] += fn.value * loads.multipliers.at(fn.load)(t);
+  }
+  return f;
+}
+
+NodalField internal_nodal_forces(const FeModel& model, const DofMap& dofs, const Vector& u) {
+  Vector f_int;
+  assemble_internal_forces(model, dofs, u, f_int);
+  return as_nodal_field(model, dofs, f_int);
+}
+
+NodalField reaction_forces(const FeModel& model, const DofMap& dofs, const Vector& u, const MechanicalLoads& loads,
+                           double t) {
+  Vector f_int;
+  assemble_internal_forces(model, dofs, u, f_int);
+  return as_nodal_field(model, dofs, f_int - external_forces(model, dofs, loads, t));
+}
+
+}  // namespace lunaster::engine

@@ -1,0 +1,28 @@
+#pragma once
+/// Nodal forces of a converged state (code_aster's FORC_NODA and REAC_NODA) and the
+/// external load vector the Newton solver balances them against.
+#include "engine/assembly/dof_map.hpp"
+#include "engine/fe/fe_model.hpp"
+#include "engine/fields/fields.hpp"
+#include "engine/nonlinear/loads.hpp"
+#include "engine/solver/linear_solver.hpp"
+
+namespace lunaster::engine {
+
+/// External nodal forces at instant t (N): consistent pressure forces and nodal forces,
+/// each scaled by its load multiplier. DeckError for a nodal force on a node without that
+/// displacement unknown.
+Vector external_forces(const FeModel& model, const DofMap& dofs, const MechanicalLoads& loads, double t);
+
+/// Internal nodal forces B^T sigma (N, or N per unit thickness in 2D) of displacement `u`,
+/// assembled by the same element kernels as the solver's internal forces, as a nodal
+/// field DX, DY[, DZ] defined on every node carrying displacement unknowns in `dofs`.
+NodalField internal_nodal_forces(const FeModel& model, const DofMap& dofs, const Vector& u);
+
+/// Reactions: internal forces minus the external loads at instant t. What remains is what
+/// the supports (DDL_IMPO, linear relations) and, where surfaces touch, contact exert on the
+/// body, with the sign of a force the body applies on them (code_aster's REAC_NODA).
+NodalField reaction_forces(const FeModel& model, const DofMap& dofs, const Vector& u, const MechanicalLoads& loads,
+                           double t);
+
+}  // namespace lunaster::engine
