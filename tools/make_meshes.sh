@@ -26,9 +26,10 @@ mkdir -p "$m"
 "$gen" --ring quad4:96x16 --sleeve quad4:80x16 -o "$tc/ring_sleeve_mortar.med"
 "$gen" --ring quad8:48x8 --sleeve quad8:40x8 -o "$tc/ring_sleeve_mortar_quad8.med"
 
-# Hertz contact: cylinder on block (D_PLAN) and sphere on block (3D quarter model)
+# Hertz contact: cylinder on block (D_PLAN), sphere on block (3D quarter model and AXIS)
 "$gen" --hertz quad8:400 --grading 1.1 -o "$tc/hertz_cylinder_dplan.med"
 "$gen" --hertz hexa20:80 --grading 1.5 -o "$tc/hertz_sphere_3d.med"
+"$gen" --hertz quad8:160 --grading 1.5 -o "$tc/hertz_sphere_axis.med"
 
 # Glued (conforming) versions: both blocks share the interface nodes
 "$gen" --upper quad4:4 --lower quad4:4 --glued -o "$m/glued2d_quad4.med"
