@@ -219,8 +219,8 @@ def main():
 
 HERTZ_FAMILIES = {  # family -> (panel title, colour of its envelope)
     "D_PLAN": ("D_PLAN: cylinder on block (line contact, b = R/50), QUAD8 graded 1.1", "#1f77b4"),
-    "AXIS-U": ("AXIS: sphere on block (a = R/10), uniform", "#9467bd"),
-    "AXIS-G": ("AXIS: sphere on block (a = R/10), graded", "#2ca02c"),
+    "AXIS-U": ("AXIS: sphere on block (a = R/10), QUAD8 uniform", "#9467bd"),
+    "AXIS-G": ("AXIS: sphere on block (a = R/10), QUAD8 graded 1.5", "#2ca02c"),
     "3D-U": ("3D quarter: sphere on block (a = R/10), HEXA20 uniform", "#ff7f0e"),
     "3D-G": ("3D quarter: sphere on block (a = R/10), HEXA20 graded 1.5", "#d62728"),
 }
@@ -299,7 +299,9 @@ def hertz_text(rows):
         return []
     lines = ["## Hertz contact: model no more than the scene needs", "",
              "![Hertz chart](chart_hertz.png)", "",
-             "Peak-pressure error |p(O) - p0| / p0 against Hertz (chart_hertz.lua, ccx_run.py --hertz): D_PLAN "
+             "Peak-pressure error |p - p(r)| / p0 against Hertz at the slave node nearest O (or the axis) "
+             "carrying a pressure, r = 0 but for AXIS QUAD8 mortar (the axis node has no multiplier: r = h0/2) "
+             "and CalculiX's CAX8 (no pressure on the axis) (chart_hertz.lua, ccx_run.py --hertz): D_PLAN "
              "cylinder with b = R/50, sphere with a = R/10 (quarter model in 3D), R = 1 m, E = 1e9 Pa, nu = 0.3, "
              "the ball held by the contact alone (CONTACT_INIT = 'OUI'). Cheapest run (any method, CalculiX included) "
              "reaching each level and staying under it on every finer mesh of the same method:", "",

@@ -28,13 +28,15 @@ else ks2d="1 2 4 8 16 32"; ks3di="1 2 4"; ks3dd="1 2"; ccx2d="1 2 4 8 16"; ratio
 fi
 # Hertz chart: "FAMILY:K[:METHOD,...]" runs of chart_hertz.lua (no method list: every method), and
 # "FAMILY:K:CONTACT" CalculiX runs (45 s timeout each: the ball, held by the contact alone, makes
-# CalculiX cut back, 10-40 s a run). D_PLAN and 3D-G: --refine K; 3D-U: K cells per radius.
+# CalculiX cut back, 10-40 s a run). D_PLAN, AXIS-G and 3D-G: --refine K; AXIS-U and 3D-U: K cells
+# per radius.
 if [ "$quick" = "--quick" ]; then
-  hertz_runs="D_PLAN:1 D_PLAN:2 3D-G:1 3D-G:2 3D-U:4:MORTAR"
+  hertz_runs="D_PLAN:1 D_PLAN:2 AXIS-U:10 AXIS-U:20 AXIS-G:1 AXIS-G:2 AXIS-G:8 3D-G:1 3D-G:2 3D-U:4:MORTAR"
   hertz_ccx="D_PLAN:1:sts"
 else
-  hertz_runs="D_PLAN:1 D_PLAN:2 D_PLAN:4 D_PLAN:8 3D-G:1 3D-G:2 3D-G:4 3D-G:8 3D-U:4 3D-U:6 3D-U:8:MORTAR,CONTINUE"
-  hertz_ccx="D_PLAN:1:nts D_PLAN:1:sts D_PLAN:2:sts D_PLAN:4:sts 3D-G:2:mortar 3D-G:2:sts 3D-G:4:sts 3D-U:4:sts"
+  hertz_runs="D_PLAN:1 D_PLAN:2 D_PLAN:4 D_PLAN:8 AXIS-U:10 AXIS-U:20 AXIS-U:40 AXIS-U:80 AXIS-G:1 AXIS-G:2 AXIS-G:4
+              AXIS-G:8 AXIS-G:16 3D-G:1 3D-G:2 3D-G:4 3D-G:8 3D-U:4 3D-U:6 3D-U:8:MORTAR,CONTINUE"
+  hertz_ccx="D_PLAN:1:nts D_PLAN:1:sts D_PLAN:2:sts AXIS-U:20:sts AXIS-G:8:sts 3D-G:2:mortar 3D-G:2:sts 3D-G:4:sts"
 fi
 hertz_lua() {
   local out="" fam k ms
@@ -48,6 +50,8 @@ hertz_lua() {
 hertz_mesh() {  # family k -> mesh of chart_hertz.lua
   case "$1" in
     D_PLAN) echo "--hertz quad8:50 --grading 1.1 --refine $2" ;;
+    AXIS-G) echo "--hertz quad8:20 --grading 1.5 --refine $2" ;;
+    AXIS-U) echo "--hertz quad8:$2" ;;
     3D-G) echo "--hertz hexa20:20 --grading 1.5 --refine $2" ;;
     3D-U) echo "--hertz hexa20:$2" ;;
   esac
@@ -127,7 +131,7 @@ head -1 "$work/out/chart_hertz.csv" > "$csvh"
 t0=$SECONDS
 for r in $hertz_ccx; do
   IFS=: read -r fam k c <<< "$r"
-  scene=3d; [ "$fam" = D_PLAN ] && scene=dplan
+  case "$fam" in D_PLAN) scene=dplan ;; AXIS-*) scene=axis ;; *) scene=3d ;; esac
   $py "$here/ccx/ccx_run.py" "$csvh" "$(hertz_file "$fam" "$k")" "$fam" "$k" --hertz "$scene" --contact "$c" \
     --penalty 1e12 --timeout 45 --work "$work/ccx" || true
 done

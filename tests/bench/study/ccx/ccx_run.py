@@ -18,7 +18,9 @@ The .frd prints 6 significant digits, so errors below ~1e-5 are not resolved.
     ccx_run.py CSV MESH.med FAMILY K --hertz {dplan,axis,3d} --contact ... --penalty K
 
 runs the Hertz scene of chart_hertz.lua instead (same R, E, nu, b or a, load and supports; see
-hertz_load) and writes one column of errors, err_p0 = |CPRESS(O) - p0| / p0 at O_BLOCK.
+hertz_load) and writes err_p0 = |p - p(r)| / p0 and r_peak = r as chart_hertz.lua does: at the
+slave node nearest O (or the axis) whose CPRESS is not zero, r its distance to the axis (D_PLAN:
+|x|; AXIS, expanded by CalculiX into a wedge: sqrt(x^2 + z^2); 3D: sqrt(x^2 + y^2)).
 Never a pass/fail test.
 """
 import argparse
@@ -103,10 +105,10 @@ def hertz_load(scene):
     if scene == "dplan":
         b = 0.02
         p = np.pi * e_star * b ** 2 / (4.0 * r)
-        return p / (2.0 * r), 2.0 * p / (np.pi * b)
+        return p / (2.0 * r), 2.0 * p / (np.pi * b), b
     a = 0.1
     f = 4.0 * e_star * a ** 3 / (3.0 * r)
-    return f / (np.pi * r ** 2), 3.0 * f / (2.0 * np.pi * a ** 2)
+    return f / (np.pi * r ** 2), 3.0 * f / (2.0 * np.pi * a ** 2), a
 
 
 def main():
@@ -127,7 +129,7 @@ def main():
     cmd = [sys.executable, os.path.join(HERE, "med2inp.py"), a.mesh, inp, "--contact", a.contact,
            "--penalty", str(a.penalty)] + (["--slab"] if a.slab else [])
     if a.hertz:
-        q, p0 = hertz_load(a.hertz)
+        q, p0, size = hertz_load(a.hertz)
         cmd += ["--hertz", repr(q)] + (["--axis"] if a.hertz == "axis" else [])
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     method = f"CalculiX-{a.contact.upper()}-{a.penalty:.0e}".replace("e+", "e")
@@ -161,9 +163,18 @@ def main():
             side = json.load(f)
         coords, elements, res = frd_results(frd)
         block = body_nodes(elements, side["slave_elements"])
-        v = node_values(coords, block, res.get("CONTACT", {}), [side["o_xyz"]])[0]
-        p_o = v[3] if v is not None else 0.0  # CPRESS, positive in compression
-        row["err_p0"] = f"{abs(p_o - p0) / p0:.6g}"
+        found = []
+        for n, v in res.get("CONTACT", {}).items():
+            if n in block and n in coords and v[3] != 0.0:
+                x = coords[n]
+                rr = abs(x[0]) if a.hertz == "dplan" else np.hypot(x[0], x[2] if a.hertz == "axis" else x[1])
+                found.append((rr, v[3]))  # CPRESS, positive in compression
+        if found:
+            rr, p = min(found)
+            exact = p0 * np.sqrt(max(1.0 - (rr / size) ** 2, 0.0))
+            row["err_p0"], row["r_peak"] = f"{abs(p - exact) / p0:.6g}", f"{rr:.6g}"
+        else:
+            row["status"] = "failed: no slave node carries a contact pressure"
     elif status == "ok" and os.path.exists(frd):
         with open(inp[:-4] + ".json") as f:
             nodes = json.load(f)
