@@ -4,9 +4,9 @@
 -- (or O) that carries a pressure, r_peak its distance to the axis (or O): O_BLOCK itself (r = 0)
 -- except for AXIS QUAD8 mortar, where the corner node on the axis has no multiplier (its dual
 -- weight, the integral of r N over the cell, is zero) and the node is the mid-side at h0/2.
--- Scenes (testcases/hertz_cylinder_dplan.lua and hertz_sphere_3d.lua, R = 1 m, E = 1e9 Pa,
--- nu = 0.3 on both bodies, block bottom fixed, pressure on the ball's flat top, the ball held by
--- the contact alone: CONTACT_INIT = 'OUI' for every method):
+-- Scenes (testcases/hertz_cylinder_dplan.lua, hertz_sphere_axis.lua and hertz_sphere_3d.lua,
+-- R = 1 m, E = 1e9 Pa, nu = 0.3 on both bodies, block bottom fixed, pressure on the ball's flat
+-- top, the ball held by the contact alone: CONTACT_INIT = 'OUI' for every method):
 --   D_PLAN   cylinder on block, line contact, half-width b = 0.02 m; meshes `lunaster-meshgen
 --            --hertz quad8:50 --grading 1.1 --refine K` (h0 = b / K)
 --   AXIS-U   sphere on block, axisymmetric (x = r), contact radius a = 0.1 m; uniform QUAD8
@@ -16,8 +16,8 @@
 --            `--hertz hexa20:N` (h0 = 1/N)
 --   3D-G     the same, graded: `--hertz hexa20:20 --grading 1.5 --refine K` (h0 = a / (2 K))
 -- (run_study.sh makes the meshes: meshes/hertz_<family>_k<K>.med.) Slave = BLOCK_TOP, master =
--- BALL_SURF for every method. p(O) is LAGS_C for MORTAR and CONTINUE, CONT_NOEU PRES for the
--- discrete methods, at the node O_BLOCK.
+-- BALL_SURF for every method. p is LAGS_C for MORTAR and CONTINUE, CONT_NOEU PRES for the
+-- discrete methods, read over BLOCK_TOP with POST_RELEVE_T.
 -- Run: lunaster run chart_hertz.lua --out DIR (config.lua lists the runs: hertz_runs).
 local config = require('config')
 
