@@ -87,6 +87,36 @@ void read_newton(const Args& newton, bool has_contact, engine::NewtonOptions& op
 
 namespace {
 
+/// AXIS: the measure r dl vanishes on the axis, so a nodal rule gives a slave node at r = 0 no
+/// weight and its multiplier no equation. INTEGRATION='AUTO' (nodal on SEG2/SEG3) becomes Gauss
+/// with 3 points on an AXIS model (exact for the r-weighted products of SEG2 and SEG3 shapes);
+/// an explicit 'NOEUD' with a slave node on the axis is refused.
+void axis_integration(engine::ContactDefinition& definition, const engine::Mesh& mesh, Session& session) {
+  if (definition.method != engine::ContactMethod::Continuous && definition.method != engine::ContactMethod::ContinuousPenalty)
+    return;
+  for (auto& zone : definition.zones) {
+    if (zone.integration == engine::IntegrationScheme::Auto) {
+      zone.integration = engine::IntegrationScheme::Gauss;
+      zone.integration_order = 3;
+      session.log().info("  contact zone " + zone.slave_group + "/" + zone.master_group +
+                         ": INTEGRATION='AUTO' on an AXIS model is Gauss with ORDRE_INT=3 (a nodal rule would give "
+                         "slave nodes on the axis, where r dl vanishes, no weight)");
+    } else if (zone.integration == engine::IntegrationScheme::Nodes) {
+      double scale = 0.0;  // the largest radius of the slave surface: "on the axis" is relative to it
+      for (int c : zone.slave_cells)
+        for (int a = 0; a < mesh.cell_n_nodes(c); ++a) scale = std::max(scale, mesh.node(mesh.cell(c)[a])[0]);
+      for (int c : zone.slave_cells)
+        for (int a = 0; a < mesh.cell_n_nodes(c); ++a)
+          if (mesh.node(mesh.cell(c)[a])[0] <= 1e-12 * scale) {
+            const std::string node = mesh.node_names[mesh.cell(c)[a]];
+            throw DeckError("contact zone " + zone.slave_group + "/" + zone.master_group + ": INTEGRATION='NOEUD' on an AXIS "
+                            "model gives slave node " + node + ", on the axis (r = 0), no weight: its pressure would have no equation",
+                            {"use INTEGRATION='GAUSS' (or 'AUTO', which is Gauss on AXIS models), 'SIMPSON' or 'NCOTES'"});
+          }
+    }
+  }
+}
+
 ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_line) {
   auto result = std::make_shared<EvolNoli>();
   result->modele = args.concept_as<Modele>("MODELE");
@@ -146,6 +176,7 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     // The contact measures follow the model: r dl per radian on an AXIS model (MODL_AXIS, when
     // given, was checked against the model by AFFE_CHAR_MECA).
     definition.axisymmetric = model.axisymmetric();
+    if (definition.axisymmetric) axis_integration(definition, *model.mesh, session);
     for (const auto& m : model.materials) definition.modulus = std::max(definition.modulus, m.young);
     hook = engine::make_contact_hook(definition, *model.mesh, model.dim);
   }
