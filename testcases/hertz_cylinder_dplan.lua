@@ -57,4 +57,27 @@ TEST_RESU{ RESU = {
   status('N3228', 1, 1),
   status('N3238', 0, 0),
 } }
+
+-- The penalty methods on the same free cylinder: CONTACT_INIT='OUI' puts every spring in place
+-- for the first iteration (before, they waited for an overlap and the cylinder had a rigid-body
+-- mode). Mortar with a penalty of 1e13 Pa/m (p0 / 1e13 = 5.5e-7 m of penetration, far below the
+-- 1e-3 discretisation error), and the seed's discrete PENALISATION (E_N = 1e12 N/m per slave node):
+-- node-to-segment on the curved master, its nodal pressure CONT_NOEU PRES is 2.5 % off at O.
+CONT_PEN = DEFI_CONT{ MODELE = MO, REAC_GEOM = 'SANS',
+                      ZONE = _F{ APPARIEMENT = 'MORTAR', GROUP_MA_ESCL = 'BLOCK_TOP', GROUP_MA_MAIT = 'BALL_SURF',
+                                 ALGO_CONT = 'PENALISATION', COEF_CONT = 1.0e13, CONTACT_INIT = 'OUI' } }
+RESU_PEN = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CHMAT, CONTACT = CONT_PEN, EXCIT = _F{ CHARGE = CHA },
+                          COMPORTEMENT = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L_INST },
+                          CONVERGENCE = _F{ ITER_GLOB_MAXI = 40 } }
+CHA_DISC = AFFE_CHAR_MECA{ MODELE = MO, CONTACT = _F{ METHODE = 'PENALISATION', GROUP_MA_ESCL = 'BLOCK_TOP',
+                                                      GROUP_MA_MAIT = 'BALL_SURF', E_N = 1.0e12, CONTACT_INIT = 'OUI' } }
+RESU_DISC = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CHMAT, EXCIT = { _F{ CHARGE = CHA }, _F{ CHARGE = CHA_DISC } },
+                           COMP_ELAS = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L_INST },
+                           CONVERGENCE = _F{ ITER_GLOB_MAXI = 40 } }
+TEST_RESU{ RESU = {
+  _F{ RESULTAT = RESU_PEN, NUME_ORDRE = 1, GROUP_NO = 'O_BLOCK', NOM_CHAM = 'DEPL', NOM_CMP = 'LAGS_C',
+      VALE_CALC = -5.494869802e+06, REFERENCE = 'ANALYTIQUE', VALE_REFE = -P0, PRECISION = 5.0e-3 },
+  _F{ RESULTAT = RESU_DISC, NUME_ORDRE = 1, GROUP_NO = 'O_BLOCK', NOM_CHAM = 'CONT_NOEU', NOM_CMP = 'PRES',
+      VALE_CALC = -5.360075861e+06, REFERENCE = 'ANALYTIQUE', VALE_REFE = -P0, PRECISION = 3.0e-2 },
+} }
 FIN()

@@ -587,7 +587,9 @@ void MortarProblem::add_to_system(const Vector& u, std::vector<Triplet>& tangent
     for (size_t i = 0; i < rows_.size(); ++i) {
       MortarRow& r = rows_[i];
       const double g = r.weighted_gap(u) / r.d;
-      const bool active = g < 0.0;
+      // The first iteration of an instant keeps the statuses it starts with (CONTACT_INIT='OUI',
+      // or the last instant's): a body held only by contact is then held from the start.
+      const bool active = g < 0.0 || (first_iteration_ && r.active);
       if (active != r.active) r.active = active, changed_in_newton_ = true, ++n_status_changes_;
       const double kappa = def_.zones[r.zone].coef_cont;
       lambda_[i] = active ? -kappa * g : 0.0;

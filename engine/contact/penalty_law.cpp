@@ -17,8 +17,10 @@ class PenaltyLaw final : public ContactLaw {
   bool has_multipliers() const override { return !spring_; }
   double coefficient(const ContactZone& zone) const override { return zone.coef_pena; }
   bool initial_status(ContactInit init, double g, double tolerance) const override {
-    // Discrete penalty has no CONTACT_INIT: the springs act where the bodies overlap.
-    return spring_ ? g < 0.0 : ContactLaw::initial_status(init, g, tolerance);
+    // Discrete penalty: the springs act where the bodies overlap, and everywhere with
+    // CONTACT_INIT='OUI' (a body held only by contact is held from the first iteration).
+    if (spring_) return init == ContactInit::Yes || (init != ContactInit::No && g < 0.0);
+    return ContactLaw::initial_status(init, g, tolerance);
   }
   bool status(double, double g, double) const override { return g < 0.0; }
   PointCoefficients coefficients(const ContactPoint& p, double rho) const override {
