@@ -1,15 +1,6 @@
 -- Must-fail deck: POST_RELEVE_T reads a field the result does not hold (FORC_NODA not asked of CALC_CHAMP).
--- EXPECT_ERROR: post_releve_t_field_not_computed\.lua:14: POST_RELEVE_T: ACTION\[1\]\.NOM_CHAM: expected a nodal field stored at NUME_ORDRE 0 \(DEPL, REAC_NODA\), got 'FORC_NODA'
+-- EXPECT_ERROR: post_releve_t_field_not_computed\.lua:5: POST_RELEVE_T: ACTION\[1\]\.NOM_CHAM: expected a nodal field stored at NUME_ORDRE 0 \(DEPL, REAC_NODA\), got 'FORC_NODA'
 -- EXPECT_STATUS: 2
-DEBUT()
-MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = '../meshes/unit_quad4.med' }
-MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN' } }
-MAT = DEFI_MATERIAU{ ELAS = _F{ E = 2.0e6, NU = 0.3 } }
-CM = AFFE_MATERIAU{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', MATER = MAT } }
-CH = AFFE_CHAR_MECA{ MODELE = MO, DDL_IMPO = { _F{ GROUP_NO = 'LEFT', DX = 0.0 }, _F{ GROUP_NO = 'BOTTOM', DY = 0.0 },
-                                               _F{ GROUP_NO = 'TOP', DY = -0.01 } } }
-L = DEFI_LIST_REEL{ VALE = { 0.0, 1.0 } }
-R = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CM, EXCIT = _F{ CHARGE = CH }, INCREMENT = _F{ LIST_INST = L } }
-R = CALC_CHAMP{ reuse = R, RESULTAT = R, FORCE = 'REAC_NODA' }
+require('lib.reaction_scene')
 T = POST_RELEVE_T{ ACTION = _F{ OPERATION = 'EXTRACTION', INTITULE = 'TOP', RESULTAT = R, NOM_CHAM = 'FORC_NODA', GROUP_NO = 'TOP', RESULTANTE = 'DY' } }
 FIN()

@@ -1,16 +1,7 @@
 -- Must-fail deck: a deck reads a table row that does not exist.
--- EXPECT_ERROR: table_cell_out_of_range\.lua:15: table T\['DY'\]: row 2 out of range \(the table has 1 row\(s\): 1\.\.1\)
+-- EXPECT_ERROR: table_cell_out_of_range\.lua:6: table T\['DY'\]: row 2 out of range \(the table has 1 row\(s\): 1\.\.1\)
 -- EXPECT_STATUS: 2
-DEBUT()
-MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = '../meshes/unit_quad4.med' }
-MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN' } }
-MAT = DEFI_MATERIAU{ ELAS = _F{ E = 2.0e6, NU = 0.3 } }
-CM = AFFE_MATERIAU{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', MATER = MAT } }
-CH = AFFE_CHAR_MECA{ MODELE = MO, DDL_IMPO = { _F{ GROUP_NO = 'LEFT', DX = 0.0 }, _F{ GROUP_NO = 'BOTTOM', DY = 0.0 },
-                                               _F{ GROUP_NO = 'TOP', DY = -0.01 } } }
-L = DEFI_LIST_REEL{ VALE = { 0.0, 1.0 } }
-R = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CM, EXCIT = _F{ CHARGE = CH }, INCREMENT = _F{ LIST_INST = L } }
-R = CALC_CHAMP{ reuse = R, RESULTAT = R, FORCE = 'REAC_NODA' }
+require('lib.reaction_scene')
 T = POST_RELEVE_T{ ACTION = _F{ OPERATION = 'EXTRACTION', INTITULE = 'TOP', RESULTAT = R, NOM_CHAM = 'REAC_NODA', GROUP_NO = 'TOP', RESULTANTE = 'DY', NUME_ORDRE = 1 } }
 local f = T['DY'][2]
 FIN()
