@@ -67,8 +67,9 @@ bool edge_vertices(CellType type, int local_node, int* v1, int* v2);
 /// (their xi_s and w; the cell's own Jacobian is already in w): with
 /// Me_ij = sum_p w N~_i N~_j and De = diag(sum_p w N~_i), A = De Me^-1 (n x n, row-major, n
 /// the cell's node count) and Phi_i = sum_j A_ij N~_j, so that sum_p w Phi_i N~_j = delta_ij
-/// De_ii. Returns false (A untouched) when Me is singular to working precision or some De_ii
-/// is not positive: the covered part is too small to carry multipliers.
+/// De_ii. A node with De_ii = 0 (to round-off: the axis vertex of an AXIS SEG3) gets Phi_i = 0.
+/// Returns false (A untouched) when Me is singular to working precision or some De_ii is
+/// negative: the covered part is too small to carry multipliers.
 bool dual_coefficients(CellType type, const std::vector<OverlapPoint>& points, double* a);
 
 }  // namespace lunaster::engine::contact::mortar

@@ -828,3 +828,27 @@ TEST(MortarDualBasis, RefusesTooSmallCoverage) {
     for (double v : a) EXPECT_EQ(v, 42.0);
   }
 }
+
+// AXIS: a SEG3 slave cell from the axis (r = 0 at its first vertex) weighted by r dl. The
+// integral of r N over the cell vanishes for the axis vertex, so that vertex carries no
+// multiplier (Phi = 0) while the other two dual functions stay biorthogonal to all three
+// shape functions and the dual functions still sum to one: the cell keeps its mid-side and
+// outer multipliers (before, the whole cell was dropped and its neighbour took its load).
+TEST(MortarDualBasis, AxisSeg3FromTheAxisKeepsItsOtherMultipliers) {
+  const double h = 0.0125;
+  std::vector<mortar::OverlapPoint> pts;
+  for (const auto& q : contact::contact_integration_rule(CellType::Seg3, IntegrationScheme::Gauss, 4)) {
+    mortar::OverlapPoint p;
+    p.xi_s[0] = q.xi[0];
+    const double r = h * (1.0 + q.xi[0]) / 2.0;  // node 0 at r = 0, node 1 at r = h, node 2 (mid) at h/2
+    p.w = q.weight * (h / 2.0) * r;
+    pts.push_back(p);
+  }
+  const std::vector<double> de = expect_biorthogonal(CellType::Seg3, pts, h * h / 2.0);
+  EXPECT_NEAR(de[0], 0.0, 1e-16);
+  EXPECT_NEAR(de[1], h * h / 6.0, 1e-16);  // the integral of r N over [0, h] for the outer vertex
+  EXPECT_NEAR(de[2], h * h / 3.0, 1e-16);  // and for the mid-side node
+  std::vector<double> a(9, 0.0);
+  ASSERT_TRUE(mortar::dual_coefficients(CellType::Seg3, pts, a.data()));
+  for (int j = 0; j < 3; ++j) EXPECT_EQ(a[j], 0.0) << "Phi of the axis vertex, coefficient " << j;
+}
