@@ -30,6 +30,7 @@ mkdir -p "$m"
 "$gen" --hertz quad8:400 --grading 1.1 -o "$tc/hertz_cylinder_dplan.med"
 "$gen" --hertz hexa20:80 --grading 1.5 -o "$tc/hertz_sphere_3d.med"
 "$gen" --hertz quad8:160 --grading 1.5 -o "$tc/hertz_sphere_axis.med"
+"$gen" --hertz hexa20:20 --grading 1.5 -o "$tc/meshes/hertz_sphere_3d_coarse.med"
 
 # Glued (conforming) versions: both blocks share the interface nodes
 "$gen" --upper quad4:4 --lower quad4:4 --glued -o "$m/glued2d_quad4.med"

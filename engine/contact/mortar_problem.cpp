@@ -189,13 +189,14 @@ std::vector<MortarRow> MortarProblem::build_rows(const Vector& u,
     // Per slave node of the zone: D_j, sum of normals, M_jl.
     std::unordered_map<int, int> local;
     std::vector<int> nodes;
-    std::vector<double> d, normal;
+    std::vector<double> d, d_full, normal;
     std::vector<std::vector<std::pair<int, double>>> m;
     auto index = [&](int node) {
       auto [it, fresh] = local.try_emplace(node, static_cast<int>(nodes.size()));
       if (fresh) {
         nodes.push_back(node);
         d.push_back(0.0);
+        d_full.push_back(0.0);
         normal.insert(normal.end(), {0.0, 0.0, 0.0});
         m.emplace_back();
       }
@@ -239,6 +240,15 @@ std::vector<MortarRow> MortarProblem::build_rows(const Vector& u,
     for (size_t s = 0; s < slaves.size(); ++s) {
       const OrientedCell& sc = slaves[s];
       coords(sc, sx);
+      // The integral of each N~_j over the whole slave cell: a node whose covered share is
+      // under half of it gets no row (below).
+      for (const auto& q : contact_integration_rule(sc.type, IntegrationScheme::Gauss, 4)) {
+        const SurfacePoint sp = surface_point(sc.type, sx, q.xi);
+        const double w = q.weight * sp.jacobian * (def_.axisymmetric ? std::max(sp.x[0], 0.0) : 1.0);
+        double nt[kMaxSurfaceNodes];
+        slave_shape(sc.type, q.xi, nt);
+        for (int a = 0; a < sc.n; ++a) d_full[index(sc.nodes[a])] += w * nt[a];
+      }
       // Nodal normals: the cell's normal at each of its nodes.
       for (int a = 0; a < sc.n; ++a) {
         double xi[2];
@@ -327,6 +337,12 @@ std::vector<MortarRow> MortarProblem::build_rows(const Vector& u,
     const double dist = def_.zones[z].dist_mait + def_.zones[z].dist_escl;
     for (int j : order) {
       if (!(d[j] > d_min)) continue;
+      // A slave node whose cells face the master surface on less than half of its share lies
+      // past the master's edge: its weighted gap, an average over the little that is covered
+      // (with the whole cell's dual basis where the covered part cannot carry one), says
+      // nothing of its own position, and such a row could hold the bodies apart or together
+      // far from any real contact. It is left out, like a node that projects nowhere.
+      if (d[j] < 0.5 * d_full[j]) continue;
       MortarRow row;
       row.zone = static_cast<int>(z);
       row.node = nodes[j];
