@@ -154,23 +154,8 @@ def main():
     for n, x in enumerate(mesh.points):
         z = x[2] if dim == 3 else 0.0
         lines.append(f"{n + 1}, {x[0]:.12g}, {x[1]:.12g}, {z:.12g}")
-    next_id = 1
-    body_range = {}
-    for body in sc["bodies"]:
-        first = next_id
-        by_type = {}
-        for b, i in cells[body]:
-            by_type.setdefault(mesh.cells[b].type, []).append((b, i))
-        for ctype, members in by_type.items():
-            lines.append(f"*ELEMENT, TYPE={ELEMENTS[ctype][0]}, ELSET={body}")
-            for b, i in members:
-                element_ids[(b, i)] = next_id
-                # At most 16 entries per line: a C3D20 continues on a second line.
-                entries = [str(next_id)] + [str(int(n) + 1) for n in mesh.cells[b].data[i]]
-                lines += [", ".join(entries[k:k + 16]) + ("," if k + 16 < len(entries) else "")
-                          for k in range(0, len(entries), 16)]
-                next_id += 1
-        body_range[body] = [first, next_id - 1]
+    body_range, next_id = element_cards(mesh, cells, sc["bodies"], lambda ctype: ELEMENTS[ctype][0], element_ids,
+                                        lines)
     for name in (sc["top"], sc["bottom"], sc["slave"], sc["master"]):
         members = sorted({int(n) + 1 for b, i in cells[name] for n in mesh.cells[b].data[i]})
         lines.append(f"*NSET, NSET=N{name}")
@@ -213,6 +198,29 @@ def main():
     print(f"{a.out}: {len(mesh.points)} nodes, {next_id - 1} elements, contact {ctype}")
 
 
+def element_cards(mesh, cells, bodies, element_name, element_ids, lines):
+    """*ELEMENT cards of the cells of `bodies` (one ELSET per body, one card per cell type named
+    by element_name(meshio type)), numbered from 1; fills element_ids[(block, index)] and returns
+    ({body: [first, last]}, next free number). At most 16 entries per line: a C3D20 continues on
+    a second line."""
+    next_id, body_range = 1, {}
+    for body in bodies:
+        first = next_id
+        by_type = {}
+        for b, i in cells[body]:
+            by_type.setdefault(mesh.cells[b].type, []).append((b, i))
+        for ctype, members in by_type.items():
+            lines.append(f"*ELEMENT, TYPE={element_name(ctype)}, ELSET={body}")
+            for b, i in members:
+                element_ids[(b, i)] = next_id
+                entries = [str(next_id)] + [str(int(n) + 1) for n in mesh.cells[b].data[i]]
+                lines += [", ".join(entries[k:k + 16]) + ("," if k + 16 < len(entries) else "")
+                          for k in range(0, len(entries), 16)]
+                next_id += 1
+        body_range[body] = [first, next_id - 1]
+    return body_range, next_id
+
+
 def hertz(mesh, a):
     """The Hertz scene of testcases/hertz_*.lua: ball (BALL) pressed by Q on BALL_TOP onto the
     block (BLOCK, bottom fixed), symmetry on x = 0 (2D: AXIS_*; 3D: SYMX_* and SYMY_* on y = 0),
@@ -224,22 +232,9 @@ def hertz(mesh, a):
     for n, x in enumerate(mesh.points):
         z = x[2] if dim == 3 else 0.0
         lines.append(f"{n + 1}, {x[0]:.12g}, {x[1]:.12g}, {z:.12g}")
-    next_id, body_range = 1, {}
-    for body in ("BALL", "BLOCK"):
-        first = next_id
-        by_type = {}
-        for b, i in cells[body]:
-            by_type.setdefault(mesh.cells[b].type, []).append((b, i))
-        for ctype, members in by_type.items():
-            name = AXIS_ELEMENTS[ctype] if a.axis else ELEMENTS[ctype][0]
-            lines.append(f"*ELEMENT, TYPE={name}, ELSET={body}")
-            for b, i in members:
-                element_ids[(b, i)] = next_id
-                entries = [str(next_id)] + [str(int(n) + 1) for n in mesh.cells[b].data[i]]
-                lines += [", ".join(entries[k:k + 16]) + ("," if k + 16 < len(entries) else "")
-                          for k in range(0, len(entries), 16)]
-                next_id += 1
-        body_range[body] = [first, next_id - 1]
+    body_range, next_id = element_cards(mesh, cells, ("BALL", "BLOCK"),
+                                        lambda ctype: AXIS_ELEMENTS[ctype] if a.axis else ELEMENTS[ctype][0],
+                                        element_ids, lines)
     fixed = {"BLOCK_BOTTOM": (1, dim)}
     if dim == 2:
         fixed.update(AXIS_BALL=(1, 1), AXIS_BLOCK=(1, 1))
