@@ -49,7 +49,9 @@ void say_in_keywords(Error& err) {
         if (h.rfind("nothing holds this body", 0) == 0)
           h = "nothing holds this body in that direction: add DDL_IMPO on it (AFFE_CHAR_MECA),";
         else if (h.rfind("or, if only contact holds it", 0) == 0)
-          h = "or, if only contact holds it, activate contact from the start with CONTACT_INIT='OUI'";
+          h = "or, if only contact holds it, activate contact from the start with CONTACT_INIT='OUI' (DEFI_CONT, "
+              "DEFI_CONTACT FORMULATION='CONTINUE', or the CONTACT of AFFE_CHAR_MECA; DEFI_CONTACT "
+              "FORMULATION='DISCRETE' has no CONTACT_INIT)";
         else if (h.rfind("so that the contact pressure", 0) == 0)
           h = "so that the contact pressure carries the load from the first iteration";
       }
