@@ -54,7 +54,8 @@ std::vector<fs::path> collect_decks(const std::vector<fs::path>& paths) {
       continue;
     }
     for (auto it = fs::recursive_directory_iterator(path); it != fs::recursive_directory_iterator(); ++it) {
-      if (it->is_directory() && it->path().filename() == "errors") {
+      // errors/: must-fail decks; lib/: modules the decks require, not decks.
+      if (it->is_directory() && (it->path().filename() == "errors" || it->path().filename() == "lib")) {
         it.disable_recursion_pending();
         continue;
       }

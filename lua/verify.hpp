@@ -48,7 +48,7 @@ struct DeckOutcome {
 
 /// Decks named by `paths`: files as given; folders searched recursively for *.lua,
 /// *.export, and *.comm files that no .export of the same folder names, skipping folders
-/// named `errors` (must-fail decks). Sorted, unique.
+/// named `errors` (must-fail decks) and `lib` (modules that decks require). Sorted, unique.
 std::vector<std::filesystem::path> collect_decks(const std::vector<std::filesystem::path>& paths);
 /// Counts TEST_RESU lines (" OK ..." and "NOOK ...") in a deck's output.
 void count_checks(const std::string& output, int& n_ok, int& n_nook);

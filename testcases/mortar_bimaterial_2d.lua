@@ -56,30 +56,10 @@ local calc = {
   ['SIGM_NOEU SIYY MAX(EF)'] = -1.500000000000e+05,
 }
 
-local checks = {}
-local function check(field, cmp, refe, where, kind)
-  local key = field .. ' ' .. cmp .. ' ' .. (kind and kind .. '(' .. where .. ')' or where)
-  local test = _F{ RESULTAT = RESU, NUME_ORDRE = 1, NOM_CHAM = field, NOM_CMP = cmp, VALE_CALC = assert(calc[key], key),
-                   REFERENCE = 'ANALYTIQUE', VALE_REFE = refe, PRECISION = 1.0e-8 }
-  if kind then test.GROUP_MA = where; test.TYPE_TEST = kind else test.GROUP_NO = where end
-  checks[#checks + 1] = test
-end
 -- Two springs in series: 0.1 = p / E1 + p / E2 (blocks of unit height).
 local p = 0.1 / (1.0 / E1 + 1.0 / E2)
 local dy = -p / E2                                          -- the interface, on both sides
-for _, point in ipairs({ 'A', 'O', 'B' }) do
-  check('DEPL', 'LAGS_C', -p, point)
-  check('DEPL', 'DY', dy, point)
-end
-for _, point in ipairs({ 'E', 'F' }) do
-  check('DEPL', 'DY', dy, point)
-end
-for _, kind in ipairs({ 'MIN', 'MAX' }) do
-  check('DEPL', 'LAGS_C', -p, 'AB', kind)
-  for _, group in ipairs({ 'AB', 'EF' }) do
-    check('DEPL', 'DY', dy, group, kind)
-    check('SIGM_NOEU', 'SIYY', -p, group, kind)
-  end
-end
-TEST_RESU{ RESU = checks }
+local checks = require('lib.mortar_checks').new(RESU, calc)
+checks.patch({ 'A', 'O', 'B' }, { 'A', 'O', 'B', 'E', 'F' }, 'AB', { 'AB', 'EF' }, 'DY', 'SIYY', -p, dy)
+TEST_RESU{ RESU = checks.list }
 FIN()

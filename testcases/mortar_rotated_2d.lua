@@ -70,14 +70,8 @@ local calc = {
   ['SIGM_NOEU SIXY MAX(EF)'] = 4.330127018922e+04,
 }
 
-local checks = {}
-local function check(field, cmp, refe, where, kind)
-  local key = field .. ' ' .. cmp .. ' ' .. (kind and kind .. '(' .. where .. ')' or where)
-  local test = _F{ RESULTAT = RESU, NUME_ORDRE = 1, NOM_CHAM = field, NOM_CMP = cmp, VALE_CALC = assert(calc[key], key),
-                   REFERENCE = 'ANALYTIQUE', VALE_REFE = refe, PRECISION = 1.0e-8 }
-  if kind then test.GROUP_MA = where; test.TYPE_TEST = kind else test.GROUP_NO = where end
-  checks[#checks + 1] = test
-end
+local checks = require('lib.mortar_checks').new(RESU, calc)
+local check = checks.check
 -- The analytical solution turned by ANGLE: the rotated vertical is n = (-s, c); the interface moves
 -- by -0.05 n, the stress is -1e5 n n^T.
 local u = { DX = 0.05 * s, DY = -0.05 * c }
@@ -93,5 +87,5 @@ for _, kind in ipairs({ 'MIN', 'MAX' }) do
     for _, cmp in ipairs({ 'SIXX', 'SIYY', 'SIXY' }) do check('SIGM_NOEU', cmp, sigma[cmp], group, kind) end
   end
 end
-TEST_RESU{ RESU = checks }
+TEST_RESU{ RESU = checks.list }
 FIN()

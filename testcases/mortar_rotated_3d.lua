@@ -98,14 +98,8 @@ local calc = {
   ['SIGM_NOEU SIYZ MAX(SURMAI)'] = 6.554919071474e+03,
 }
 
-local checks = {}
-local function check(field, cmp, refe, where, kind)
-  local key = field .. ' ' .. cmp .. ' ' .. (kind and kind .. '(' .. where .. ')' or where)
-  local test = _F{ RESULTAT = RESU, NUME_ORDRE = 1, NOM_CHAM = field, NOM_CMP = cmp, VALE_CALC = assert(calc[key], key),
-                   REFERENCE = 'ANALYTIQUE', VALE_REFE = refe, PRECISION = 1.0e-8 }
-  if kind then test.GROUP_MA = where; test.TYPE_TEST = kind else test.GROUP_NO = where end
-  checks[#checks + 1] = test
-end
+local checks = require('lib.mortar_checks').new(RESU, calc)
+local check = checks.check
 -- The analytical solution turned: the interface moves by -0.05 n, the stress is -1e5 n n^T.
 local u = { DX = -0.05 * n[1], DY = -0.05 * n[2], DZ = -0.05 * n[3] }
 local sigma = { SIXX = -1.0e5 * n[1] * n[1], SIYY = -1.0e5 * n[2] * n[2], SIZZ = -1.0e5 * n[3] * n[3],
@@ -123,5 +117,5 @@ for _, kind in ipairs({ 'MIN', 'MAX' }) do
     end
   end
 end
-TEST_RESU{ RESU = checks }
+TEST_RESU{ RESU = checks.list }
 FIN()

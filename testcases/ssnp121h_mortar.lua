@@ -47,24 +47,7 @@ local calc = {
   ['SIGM_NOEU SIYY MAX(EF)'] = -1.000000000000e+05,
 }
 
-local checks = {}
-local function check(field, cmp, refe, where, kind)
-  local key = field .. ' ' .. cmp .. ' ' .. (kind and kind .. '(' .. where .. ')' or where)
-  local test = _F{ RESULTAT = RESU, NUME_ORDRE = 1, NOM_CHAM = field, NOM_CMP = cmp, VALE_CALC = assert(calc[key], key),
-                   REFERENCE = 'ANALYTIQUE', VALE_REFE = refe, PRECISION = 1.0e-8 }
-  if kind then test.GROUP_MA = where; test.TYPE_TEST = kind else test.GROUP_NO = where end
-  checks[#checks + 1] = test
-end
-for _, point in ipairs({ 'A', 'O', 'B' }) do
-  check('DEPL', 'LAGS_C', -1.0e5, point)
-  check('DEPL', 'DY', -0.05, point)
-end
-for _, kind in ipairs({ 'MIN', 'MAX' }) do
-  check('DEPL', 'LAGS_C', -1.0e5, 'AB', kind)
-  for _, group in ipairs({ 'AB', 'EF' }) do
-    check('DEPL', 'DY', -0.05, group, kind)
-    check('SIGM_NOEU', 'SIYY', -1.0e5, group, kind)
-  end
-end
-TEST_RESU{ RESU = checks }
+local checks = require('lib.mortar_checks').new(RESU, calc)
+checks.patch({ 'A', 'O', 'B' }, { 'A', 'O', 'B' }, 'AB', { 'AB', 'EF' }, 'DY', 'SIYY', -1.0e5, -0.05)
+TEST_RESU{ RESU = checks.list }
 FIN()

@@ -43,12 +43,14 @@ TEST(Verify, RunsDecksInParallelAndWritesReports) {
   fs::path dir = fs::path(LUNASTER_BINARY_DIR) / "unit-verify";
   fs::remove_all(dir);
   fs::create_directories(dir / "suite" / "errors");
+  fs::create_directories(dir / "suite" / "lib");
+  std::ofstream(dir / "suite" / "lib" / "module.lua") << "return {}\n";
   std::ofstream(dir / "suite" / "a_ok.lua") << " OK  x\n OK  y\nexit 0\n";
   std::ofstream(dir / "suite" / "b_nook.lua") << " OK  x\nNOOK  y <z>\nexit 1\n";
   std::ofstream(dir / "suite" / "c_error.lua") << "t.lua:1: unknown name 'X'\nexit 2\n";
   std::ofstream(dir / "suite" / "errors" / "must_fail.lua") << "exit 2\n";
   auto decks = collect_decks({dir / "suite"});
-  ASSERT_EQ(decks.size(), 3u);  // errors/ is skipped
+  ASSERT_EQ(decks.size(), 3u);  // errors/ (must-fail decks) and lib/ (modules) are skipped
   EXPECT_EQ(decks[0].filename(), "a_ok.lua");
   // An explicit file is taken even from errors/.
   EXPECT_EQ(collect_decks({dir / "suite" / "errors" / "must_fail.lua"}).size(), 1u);
