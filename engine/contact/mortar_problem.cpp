@@ -183,6 +183,7 @@ std::vector<MortarRow> MortarProblem::build_rows(const Vector& u,
   for (size_t i = 0; i < mid_edges_.size(); ++i) mid_index[mid_edges_[i][0]] = static_cast<int>(i);
   std::vector<OverlapPoint> pts;
   std::vector<int> owner;
+  std::vector<OverlapPoint> whole;
   for (size_t z = 0; z < slave_cells_.size(); ++z) {
     const std::vector<OrientedCell>& slaves = slave_cells_[z];
     const std::vector<OrientedCell>& mcells = master_cells_[z];
@@ -240,14 +241,19 @@ std::vector<MortarRow> MortarProblem::build_rows(const Vector& u,
     for (size_t s = 0; s < slaves.size(); ++s) {
       const OrientedCell& sc = slaves[s];
       coords(sc, sx);
-      // The integral of each N~_j over the whole slave cell: a node whose covered share is
-      // under half of it gets no row (below).
+      // The whole slave cell as integration points (the measure r dl on an AXIS model): the
+      // integral of each N~_j over it (a node whose covered share is under half of it gets no
+      // row, below), and the dual basis of a partly covered cell that cannot carry its own.
+      whole.clear();
       for (const auto& q : contact_integration_rule(sc.type, IntegrationScheme::Gauss, 4)) {
+        OverlapPoint op;
+        op.xi_s[0] = q.xi[0], op.xi_s[1] = q.xi[1];
         const SurfacePoint sp = surface_point(sc.type, sx, q.xi);
-        const double w = q.weight * sp.jacobian * (def_.axisymmetric ? std::max(sp.x[0], 0.0) : 1.0);
+        op.w = q.weight * sp.jacobian * (def_.axisymmetric ? std::max(sp.x[0], 0.0) : 1.0);
         double nt[kMaxSurfaceNodes];
         slave_shape(sc.type, q.xi, nt);
-        for (int a = 0; a < sc.n; ++a) d_full[index(sc.nodes[a])] += w * nt[a];
+        for (int a = 0; a < sc.n; ++a) d_full[index(sc.nodes[a])] += op.w * nt[a];
+        whole.push_back(op);
       }
       // Nodal normals: the cell's normal at each of its nodes.
       for (int a = 0; a < sc.n; ++a) {
@@ -292,14 +298,6 @@ std::vector<MortarRow> MortarProblem::build_rows(const Vector& u,
         // D_j below is then the integral of Phi_j over the covered part (not biorthogonal
         // there), which keeps a rigid translation gap-free; such cells only occur where the
         // master surface ends.
-        std::vector<OverlapPoint> whole;
-        for (const auto& q : contact_integration_rule(sc.type, IntegrationScheme::Gauss, 4)) {
-          OverlapPoint op;
-          op.xi_s[0] = q.xi[0], op.xi_s[1] = q.xi[1];
-          const SurfacePoint sp = surface_point(sc.type, sx, q.xi);
-          op.w = q.weight * sp.jacobian * (def_.axisymmetric ? std::max(sp.x[0], 0.0) : 1.0);
-          whole.push_back(op);
-        }
         if (!dual_coefficients(sc.type, whole, a_dual)) continue;
         ++n_whole_cell;
       }
