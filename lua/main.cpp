@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -124,16 +125,19 @@ int run_command(const std::vector<std::string>& args) {
   if (out.empty()) out = fs::path("out") / fs::path(deck).stem();
   // An .export's message file (`F mess NAME R 6`) gets a copy of everything the run prints.
   std::ofstream mess;
+  std::optional<lua::ExportFile> study;
   if (lua::is_export_file(deck)) {
     try {
-      for (const auto& [unit, f] : lua::read_export(deck).results)
-        if (f.type == "mess") {
-          fs::create_directories(out);
-          mess.open(out / f.path.filename());
-        }
-    } catch (const Error&) {
-      // run_deck reads the .export again and reports what is wrong with it.
+      study = lua::read_export(deck);
+    } catch (const Error& e) {
+      std::cerr << e.what() << "\n";
+      return static_cast<int>(e.kind());
     }
+    for (const auto& [unit, f] : study->results)
+      if (f.type == "mess") {
+        fs::create_directories(out);
+        mess.open(out / f.path.filename());
+      }
   }
   TeeBuffer out_tee(std::cout.rdbuf(), mess.is_open() ? mess.rdbuf() : nullptr);
   TeeBuffer err_tee(std::cerr.rdbuf(), mess.is_open() ? mess.rdbuf() : nullptr);
@@ -143,7 +147,7 @@ int run_command(const std::vector<std::string>& args) {
   session.deck_path = deck;
   session.output_dir = out;
   session.vale_calc_report = vale_calc_report;
-  int code = lua::run_deck(deck, session, cmd::find_handler, err_stream, budget);
+  int code = lua::run_deck(deck, session, cmd::find_handler, err_stream, budget, study ? &*study : nullptr);
   if (code <= 1) {
     int n_ok = 0;
     for (const auto& t : session.tests) n_ok += t.ok;

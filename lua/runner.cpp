@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <new>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
@@ -253,12 +254,13 @@ void apply_export(const ExportFile& study, cmd::Session& session) {
 }
 
 int run_deck(const std::filesystem::path& given, cmd::Session& session, HandlerLookup lookup, std::ostream& err,
-             const Budget& overrides) {
+             const Budget& overrides, const ExportFile* read) {
   Budget budget;
   std::filesystem::path deck = given;
   try {
     if (is_export_file(given)) {
-      const ExportFile study = read_export(given);
+      std::optional<ExportFile> own;
+      const ExportFile& study = read ? *read : own.emplace(read_export(given));
       apply_export(study, session);
       deck = study.comm;
       budget = override_budget(study.budget, overrides);

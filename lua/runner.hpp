@@ -18,6 +18,8 @@ struct lua_State;
 
 namespace lunaster::lua {
 
+struct ExportFile;
+
 /// Finds the handler of a command (nullptr if it has none). main() passes
 /// cmd::find_handler; tests inject fakes.
 using HandlerLookup = std::function<cmd::Handler(const std::string&)>;
@@ -79,7 +81,6 @@ class Runner {
 bool is_comm_file(const std::filesystem::path& deck);
 bool is_export_file(const std::filesystem::path& deck);
 
-struct ExportFile;
 /// Binds an .export's command file and units to `session`, as `lunaster run X.export` does
 /// before running its .comm (with Runner::run_comm).
 void apply_export(const ExportFile& study, cmd::Session& session);
@@ -91,7 +92,8 @@ void apply_export(const ExportFile& study, cmd::Session& session);
 /// printing any error to `err` (with a traceback for InternalError only).
 /// The budget is the deck header's (read_budget_header) with the fields of
 /// `overrides` (the command line) replacing it; a hard stop ends the process.
+/// An .export the caller has already read (to open its message file) is passed as `read`.
 int run_deck(const std::filesystem::path& deck, cmd::Session& session, HandlerLookup lookup, std::ostream& err,
-             const Budget& overrides = {});
+             const Budget& overrides = {}, const ExportFile* read = nullptr);
 
 }  // namespace lunaster::lua
