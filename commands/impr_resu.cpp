@@ -20,15 +20,13 @@ namespace {
 /// Output file: FICHIER in the output folder, else <deck>_<UNITE>.<ext>.
 std::filesystem::path output_path(const Args& args, const Session& session, const std::string& ext) {
   if (args.has("FICHIER")) return session.output_file(args.text("FICHIER"));
-  const std::string unit = args.has("UNITE") ? std::to_string(args.integer("UNITE")) : (ext == "rmed" ? "80" : "8");
-  // An .export names the file of a result unit: it is written under that name in the output folder.
-  if (const auto found = session.result_units.find(std::stoi(unit)); found != session.result_units.end()) {
-    if (found->second.type != ext)
-      throw args.error("UNITE", "a '" + ext + "' unit for this FORMAT",
-                       "unit " + unit + ", a '" + found->second.type + "' file in " + session.export_path.string());
-    return session.output_file(found->second.path.filename().string());
-  }
-  return session.output_file(session.deck_path.stem().string() + "_" + unit + "." + ext);
+  const int unit = args.has("UNITE") ? static_cast<int>(args.integer("UNITE")) : (ext == "rmed" ? 80 : 8);
+  // An .export binds the unit to a file of its own type: MED results to rmed, text to resu.
+  if (const auto found = session.result_units.find(unit); found != session.result_units.end() && found->second.type != ext)
+    throw args.error("UNITE", "a '" + ext + "' unit for this FORMAT",
+                     "unit " + std::to_string(unit) + ", a '" + found->second.type + "' file in " +
+                         session.export_path.string());
+  return session.unit_output_file(unit, ext);
 }
 
 /// The steps of RESULTAT chosen by NUME_ORDRE, with only the fields NOM_CHAM names (all by

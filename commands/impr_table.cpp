@@ -14,11 +14,7 @@ namespace {
 
 std::filesystem::path output_path(const Args& args, const Session& session) {
   if (args.has("FICHIER")) return session.output_file(args.text("FICHIER"));
-  const int unit = static_cast<int>(args.integer("UNITE"));
-  // An .export that binds the unit names the file (written in the output folder).
-  if (const auto found = session.result_units.find(unit); found != session.result_units.end())
-    return session.output_file(found->second.path.filename().string());
-  return session.output_file(session.deck_path.stem().string() + "_" + std::to_string(unit) + ".tab");
+  return session.unit_output_file(static_cast<int>(args.integer("UNITE")), "tab");
 }
 
 std::string trimmed(const std::string& text) {

@@ -13,6 +13,12 @@ std::filesystem::path Session::output_file(const std::string& name) const {
   return output_dir / name;
 }
 
+std::filesystem::path Session::unit_output_file(int unit, const std::string& ext) const {
+  if (const auto found = result_units.find(unit); found != result_units.end())
+    return output_file(found->second.path.filename().string());
+  return output_file(deck_path.stem().string() + "_" + std::to_string(unit) + "." + ext);
+}
+
 void Session::warn(const std::string& message) {
   std::string where;
   if (!current.file.empty()) where = current.file + ":" + std::to_string(current.line) + ": ";

@@ -33,6 +33,9 @@ class Session {
   std::filesystem::path resolve_input(const std::string& relative) const;
   /// Path of an output file in output_dir (the folder is created).
   std::filesystem::path output_file(const std::string& name) const;
+  /// The output file of logical unit `unit` with extension `ext`: the file an .export binds to
+  /// the unit (its name, in output_dir), else <deck name>_<unit>.<ext>.
+  std::filesystem::path unit_output_file(int unit, const std::string& ext) const;
 
   /// Location of the command being run (for warnings and errors).
   ErrorContext current;
