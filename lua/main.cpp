@@ -15,6 +15,7 @@
 #include "lua/export_file.hpp"
 #include "lua/runner.hpp"
 #include "lua/verify.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 
 namespace fs = std::filesystem;
 using namespace lunaster;
@@ -277,6 +278,9 @@ int main(int argc, char** argv) {
   }
   const std::string verb = args[0];
   const std::vector<std::string> rest(args.begin() + 1, args.end());
+  // Under mpirun every rank learns its number before the deck runs; a single process
+  // initialises MPI only if a solver needs it (engine/parallel/mpi_runtime.hpp).
+  if (lunaster::engine::parallel::launched_by_mpi()) lunaster::engine::parallel::ensure_initialised();
   try {
     if (verb == "run") return run_command(rest);
     if (verb == "verify") return verify_command(rest);

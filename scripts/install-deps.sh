@@ -8,7 +8,9 @@ PACKAGES=(
   liblua5.4-dev               # deck interpreter (Lua 5.4 C API, built as C++)
   libeigen3-dev               # dense/sparse linear algebra containers
   libsuitesparse-dev          # CHOLMOD (SPD), UMFPACK (general)
-  libmumps-seq-dev            # MUMPS sequential (MPI build later for large models)
+  libmumps-dev                # MUMPS, MPI build: one process or the ranks of mpirun
+  libpetsc-real-dev           # PETSc (Krylov solvers, algebraic multigrid: GAMG, hypre BoomerAMG, ML)
+  openmpi-bin                 # mpirun, for decks run on several processes
   libopenblas-pthread-dev     # OpenBLAS: the BLAS/LAPACK under CHOLMOD, UMFPACK and MUMPS
   libmedc-dev libhdf5-openmpi-dev libopenmpi-dev  # MED-file 4.1 (built on the OpenMPI HDF5): meshes, results
   libgtest-dev libgmock-dev   # unit tests

@@ -1,6 +1,8 @@
-/// Sequential MUMPS through the C interface. Centralised assembled input in
-/// coordinate form (1-based); for symmetric kinds only the upper triangle is
-/// passed. Null-pivot detection (ICNTL(24) = 1) reports singular matrices and
+/// MUMPS (Debian's MPI build) through the C interface. Centralised assembled input
+/// in coordinate form (1-based) on the host, rank 0; for symmetric kinds only the
+/// upper triangle is passed. One process is a one-rank run (MPI initialised on the
+/// first factorisation); under mpirun every rank takes part in the factorisation
+/// and the solution is broadcast from the host. Null-pivot detection (ICNTL(24) = 1) reports singular matrices and
 /// the first null pivot's equation.
 #include <algorithm>
 #include <dmumps_c.h>
@@ -9,12 +11,11 @@
 #include <vector>
 
 #include "engine/core/error.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 #include "engine/solver/backends.hpp"
 
 namespace lunaster::engine {
 namespace {
-
-constexpr int kUseCommWorld = -987654;
 
 class MumpsSolver final : public LinearSolver {
  public:
@@ -94,7 +95,7 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   } else {
     release();
     id_ = DMUMPS_STRUC_C{};
-    id_.comm_fortran = kUseCommWorld;
+    id_.comm_fortran = parallel::fortran_comm_world();
     id_.par = 1;
     id_.sym = sym;
     id_.job = -1;
@@ -157,6 +158,7 @@ Vector MumpsSolver::solve(const Vector& b) const {
   id_.job = 3;
   dmumps_c(&id_);
   check("solve");
+  parallel::broadcast(x.data(), x.size());  // the solution is on the host
   return x;
 }
 
