@@ -65,12 +65,38 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                    "when the system is symmetric positive definite and with MUMPS otherwise (contact "
                    "multipliers, mid-side ties, continuous penalty; the log says so once); AUTO also gives 3D "
                    "systems of more than 100,000 unknowns to MUMPS, whose orderings fill less there; MUMPS and "
-                   "UMFPACK are used as asked")
-                  .into_values({"AUTO", "MUMPS", "LDLT", "MULT_FRONT", "CHOLMOD", "UMFPACK"})
+                   "UMFPACK are used as asked; PETSC solves iteratively (a Krylov method and a preconditioner)")
+                  .into_values({"AUTO", "MUMPS", "LDLT", "MULT_FRONT", "CHOLMOD", "UMFPACK", "PETSC"})
                   .def("AUTO")},
              "Linear solver")
-          .by_default(),
-      common::info(),
+          .by_default()
+          .with_blocks({Block{
+              "METHODE",
+              {"PETSC"},
+              {text("ALGORITHME", "Krylov method: CG (symmetric positive definite systems), GMRES (restarted every 30 "
+                                  "iterations, right-preconditioned), FGMRES (flexible GMRES)")
+                   .into_values({"FGMRES", "GMRES", "CG"})
+                   .def("FGMRES"),
+               text("PRE_COND",
+                    "Preconditioner: LDLT_SP a single-precision MUMPS factorisation (any system, contact included); "
+                    "GAMG (PETSc), ML (Trilinos) and BOOMER (hypre BoomerAMG) algebraic multigrid, given the "
+                    "rigid-body modes as near null space (systems without contact multipliers); JACOBI, SOR point "
+                    "relaxations; SANS none")
+                   .into_values({"LDLT_SP", "GAMG", "ML", "BOOMER", "JACOBI", "SOR", "SANS"})
+                   .def("LDLT_SP"),
+               real("RESI_RELA", "Relative residual |b - A x| / |b| each linear solve must reach; a solve that does "
+                                 "not reach it is a solve failure")
+                   .def(1e-6)
+                   .above(0.0)
+                   .below(1.0),
+               integer("NMAX_ITER", "Largest number of Krylov iterations per solve; 0: no limit but 10,000")
+                   .def(0LL)
+                   .range(0, std::nullopt)},
+              {}}}),
+      integer("INFO", "Amount of printed information: 1 normal; 2 also prints each Krylov iteration's relative "
+                      "residual when SOLVEUR METHODE='PETSC'")
+          .into_values({1LL, 2LL})
+          .def(1LL),
   };
   // COMP_ELAS is the seed's STAT_NON_LINE spelling; code_aster 17's MECA_NON_LINE has none.
   if (meca_non_line)

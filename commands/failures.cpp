@@ -69,6 +69,15 @@ void say_in_keywords(Error& err) {
           h = "the factors do not fit in this machine's memory: use SOLVEUR=_F(METHODE='MUMPS') (least fill-in on "
               "contact systems), a coarser mesh, or a larger machine";
       break;
+    case Failure::What::IterativeSolve:
+      for (auto& h : hints) {
+        if (h.rfind("a saddle-point system", 0) == 0)
+          h = "a saddle-point system (contact multipliers) needs PRE_COND='LDLT_SP' with ALGORITHME='FGMRES' or "
+              "'GMRES' (SOLVEUR METHODE='PETSC'), or a direct solver: METHODE='MUMPS'";
+        else if (h.rfind("allow more iterations", 0) == 0)
+          h = "raise NMAX_ITER or RESI_RELA, choose another PRE_COND, or use a direct solver: METHODE='MUMPS'";
+      }
+      break;
     case Failure::What::NotAMedFile:
       for (auto& h : hints)
         if (h.rfind("this reader reads MED files", 0) == 0) h = "LIRE_MAILLAGE reads MED files; use FORMAT='GMSH' for .msh";

@@ -14,6 +14,7 @@ namespace {
 
 engine::SolverKind solver_kind(const std::string& methode) {
   if (methode == "MUMPS") return engine::SolverKind::Mumps;
+  if (methode == "PETSC") return engine::SolverKind::Petsc;
   if (methode == "UMFPACK") return engine::SolverKind::Umfpack;
   return engine::SolverKind::Cholmod;  // AUTO, CHOLMOD, LDLT, MULT_FRONT: Cholmod, Mumps if not SPD (engine)
 }
@@ -68,6 +69,22 @@ void check_behaviour(const Args& args, const engine::Mesh& mesh) {
         throw occ.error("RELATION", "'ELAS' (the only behaviour lunaster implements)", "'" + occ.text("RELATION") + "'");
       select_cells(occ, mesh);  // TOUT / GROUP_MA: unknown or empty groups are errors
     }
+}
+
+/// SOLVEUR METHODE='PETSC': the Krylov method and its preconditioner, by code_aster's names.
+void read_petsc(const Args& solveur, engine::IterativeSettings& settings) {
+  using S = engine::IterativeSettings;
+  const std::string algorithm = solveur.text("ALGORITHME"), precond = solveur.text("PRE_COND");
+  settings.krylov = algorithm == "CG" ? S::Krylov::CG : algorithm == "GMRES" ? S::Krylov::GMRES : S::Krylov::FGMRES;
+  settings.preconditioner = precond == "GAMG"     ? S::Preconditioner::Gamg
+                            : precond == "ML"     ? S::Preconditioner::Ml
+                            : precond == "BOOMER" ? S::Preconditioner::Boomer
+                            : precond == "JACOBI" ? S::Preconditioner::Jacobi
+                            : precond == "SOR"    ? S::Preconditioner::Sor
+                            : precond == "SANS"   ? S::Preconditioner::None
+                                                  : S::Preconditioner::LdltSp;
+  settings.relative_residual = solveur.real("RESI_RELA");
+  settings.max_iterations = static_cast<int>(solveur.integer("NMAX_ITER"));
 }
 
 /// NEWTON: which matrix Newton factorises, and how often (engine's matrix policy).
@@ -167,6 +184,8 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
   options.iter_glob_maxi = static_cast<int>(conv.integer("ITER_GLOB_MAXI"));
   options.solver = solver_kind(args.factor("SOLVEUR").text("METHODE"));
   options.auto_solver = args.factor("SOLVEUR").text("METHODE") == "AUTO";
+  if (options.solver == engine::SolverKind::Petsc) read_petsc(args.factor("SOLVEUR"), options.iterative);
+  options.krylov_history = args.integer("INFO") >= 2;
   read_newton(args.factor("NEWTON"), contact != nullptr, options);
   const std::vector<double> times = instants(args.factor("INCREMENT"), options);
 

@@ -33,6 +33,7 @@ struct Failure {
     ContactConditioning,  ///< regular elastic part, singular or ill-conditioned system with contact terms
     OutOfMemory,          ///< a linear solver's factors do not fit
     NotAMedFile,          ///< a mesh file that is not MED
+    IterativeSolve,       ///< an iterative linear solver that did not converge or cannot precondition this system
   };
   What what = What::Unspecified;
   int limit = 0;

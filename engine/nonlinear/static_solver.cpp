@@ -209,7 +209,34 @@ void StaticSolver::advance(double t0, double t1, int level, Vector& u) {
   steps_.push_back(std::move(result));
 }
 
+SystemLayout StaticSolver::system_layout(const Constraints& cons, const std::vector<int>& condensed,
+                                         const std::vector<int>& eliminated) const {
+  const Mesh& mesh = *model_.mesh;
+  SystemLayout layout;
+  layout.dim = model_.dim;
+  layout.block.assign(cons.n_free, -1);
+  layout.component.assign(cons.n_free, 0);
+  std::vector<char> outside(cons.n_free, 0);
+  for (const std::vector<int>* rows : {&condensed, &eliminated})
+    for (int eq : *rows)
+      if (cons.free_index[eq] >= 0) outside[cons.free_index[eq]] = 1;
+  std::vector<int> block_of_node(mesh.n_nodes(), -1);
+  for (int eq = 0; eq < dofs_.n_dofs(); ++eq) {
+    const int k = cons.free_index[eq], c = dofs_.component_of(eq);
+    if (k < 0 || outside[k] || !is_displacement(c) || c >= layout.dim) continue;
+    const int node = dofs_.node_of(eq);
+    if (block_of_node[node] < 0) {
+      block_of_node[node] = layout.n_blocks();
+      for (int d = 0; d < layout.dim; ++d) layout.coords.push_back(mesh.node(node)[d]);
+    }
+    layout.block[k] = block_of_node[node];
+    layout.component[k] = c;
+  }
+  return layout;
+}
+
 SolverKind StaticSolver::backend_for(MatrixKind kind) {
+  if (options_.solver == SolverKind::Petsc) return SolverKind::Petsc;  // iterative: any kind, as asked
   // A large 3D SPD system: MUMPS beat CHOLMOD on the 2.8e5-unknown HEXA8/HEXA20 mortar benchmark
   // (factorisation 63 s and 6.6 GB against 139 s and 11 GB; CHOLMOD's best ordering there, METIS
   // on the node graph, still filled 8.8e8 entries). Below, CHOLMOD stays faster.
@@ -535,7 +562,10 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       // solution of a singular but consistent system (a free rigid translation).
       // CHOLMOD's own factorisation stops on such a system (then diagnosed below):
       // no second factorisation is spent on the check.
-      if (!rigid_checked_ && backend != SolverKind::Cholmod && (!contact_ || contact_->n_active() == 0)) {
+      // The check is itself a Cholesky factorisation: an iterative backend, chosen because
+      // factorising does not fit, skips it (a singular system then fails to converge).
+      if (!rigid_checked_ && backend != SolverKind::Cholmod && backend != SolverKind::Petsc &&
+          (!contact_ || contact_->n_active() == 0)) {
         Stopwatch watch(stats_.assemble_seconds);
         if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, elastic_.ff, t)) throw *rigid;
         rigid_checked_ = true;
@@ -561,7 +591,12 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       RefinedSolve accuracy;
       SystemState& state = system_->state[static_cast<int>(backend)];
       auto& solver = solvers_[static_cast<int>(backend)];
-      if (!solver) solver = make_linear_solver(backend);
+      if (!solver) {
+        IterativeSettings settings = options_.iterative;
+        if (options_.krylov_history) settings.history = [this](const std::string& line) { log_.info(line); };
+        solver = make_linear_solver(backend, settings);
+      }
+      const bool iterative = solver->iterative();
       const unsigned long long statuses = contact_ ? contact_->status_key() : 0ULL;
       const bool same_matrix =
           state.factorised && state.pattern == system_->pattern && state.values_key == system_->values_key;
@@ -575,8 +610,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         solved = true;
         log_.info("         (factorisation of iteration " + std::to_string(state.iteration) + " reused)");
       }
-      if (!solved && !same_matrix && state.factorised && state.n == a.rows() && state.statuses == statuses &&
-          state.pattern != system_->pattern) {
+      if (!solved && !iterative && !same_matrix && state.factorised && state.n == a.rows() &&
+          state.statuses == statuses && state.pattern != system_->pattern) {
         // A new pairing with the same statuses: the previous factorisation is a close
         // preconditioner; a few Krylov iterations replace a factorisation when they converge.
         Stopwatch watch(stats_.solve_seconds);
@@ -595,7 +630,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       if (!solved && !same_matrix) {
         // One set of factors alive at a time: the other backends' (e.g. CHOLMOD's of a pass
         // without active contact) are released before this one is built.
-        for (int other = 0; other < 3; ++other)
+        for (int other = 0; other < kSolverKinds; ++other)
           if (other != static_cast<int>(backend) && solvers_[other]) {
             solvers_[other].reset();
             system_->state[other] = SystemState{};
@@ -603,9 +638,10 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         try {
           Stopwatch watch(stats_.factorize_seconds);
           state.factorised = false;
+          if (iterative) solver->set_layout(system_layout(cons, condensed, eliminated_eqs));
           solver->factorize(a, kind);
         } catch (const SolveError& err) {
-          if (err.out_of_memory()) throw;
+          if (err.out_of_memory() || err.failure().what == Failure::What::IterativeSolve) throw;
           throw diagnose_singular_system(model_, dofs_, cons.free_index, elastic_.ff, err, t);
         }
         ++stats_.factorisations;
@@ -617,9 +653,19 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         state.iteration = iter;
       } else if (same_matrix) {
         log_.info(options_.elastic_matrix ? std::string("         (factorisation of the elastic matrix reused)")
-                                          : std::string("         (same matrix as the last factorisation: factors reused)"));
+                  : iterative     ? std::string("         (same matrix as the last solve: preconditioner reused)")
+                                  : std::string("         (same matrix as the last factorisation: factors reused)"));
       }
-      if (!solved) {
+      if (!solved && iterative) {
+        // The Krylov solver iterates to its own tolerance and fails when it does not get
+        // there: no refinement on top.
+        Stopwatch watch(stats_.solve_seconds);
+        du = solver->solve(-r_free);
+        accuracy.raw_residual = accuracy.residual = relative_residual(a, du, -r_free);
+        stats_.krylov_iterations += solver->iterations();
+        log_.info("  linear solve: " + solver->name() + ", " + std::to_string(solver->iterations()) +
+                  " iteration(s), relative residual " + sci(accuracy.residual));
+      } else if (!solved) {
         Stopwatch watch(stats_.solve_seconds);
         accuracy = solve_with_refinement(*solver, a, -r_free, du);
       }
@@ -631,12 +677,14 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       const double raw_error = accuracy.raw_residual, solve_error = accuracy.residual;
       stats_.solve_residual_raw = std::max(stats_.solve_residual_raw, raw_error);
       stats_.solve_residual = std::max(stats_.solve_residual, solve_error);
-      if (!(solve_error <= kSolveTolerance))
+      const double accepted =
+          iterative ? std::max(kSolveTolerance, 1.01 * options_.iterative.relative_residual) : kSolveTolerance;
+      if (!(solve_error <= accepted))
         throw diagnose_singular_system(
             model_, dofs_, cons.free_index, elastic_.ff,
             SolveError("the linear solver returned no accurate solution (relative residual of the solve " +
                        sci(raw_error) + ", " + sci(solve_error) + " after iterative refinement; accepted below " +
-                       sci(kSolveTolerance) + ")"),
+                       sci(accepted) + ")"),
             t);
       for (int eq = 0; eq < n; ++eq)
         if (cons.free_index[eq] >= 0) u[eq] += du[cons.free_index[eq]];

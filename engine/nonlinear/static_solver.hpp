@@ -37,6 +37,10 @@ struct NewtonOptions {
   /// elasticity, the only behaviour, it is the tangent: factorised once per run either way.
   /// Not for runs with contact (the multiplier equations would be empty).
   bool elastic_matrix = false;
+  /// SolverKind::Petsc: the Krylov method, preconditioner and tolerance.
+  IterativeSettings iterative;
+  /// Print each Krylov iteration's residual in the log (code_aster's INFO=2).
+  bool krylov_history = false;
   int subdivide_levels = 0;  ///< on a Newton failure, split the step this many times at most
   int subdivide_parts = 4;   ///< sub-steps per split
 };
@@ -61,7 +65,7 @@ struct SolverStats {
   double solve_residual = 0.0;
   int refinement_steps = 0;        ///< extra solves spent on iterative refinement
   int factorisations = 0;          ///< numeric factorisations (a solve may reuse the last one)
-  int krylov_iterations = 0;       ///< GMRES iterations preconditioned by a previous factorisation
+  int krylov_iterations = 0;       ///< GMRES iterations preconditioned by a previous factorisation, or of an iterative solver
   double resi_glob_rela = 0.0;     ///< RESI_GLOB_RELA reached at the last converged Newton iteration
 };
 
@@ -111,12 +115,16 @@ class StaticSolver {
     std::vector<int> contact_pos;      ///< position in a of each contact triplet, -1 if constrained
     std::vector<int> diagonal;         ///< position of each diagonal entry in a
     std::uint64_t values_key = 0;      ///< key of a's current values (update_system)
-    SystemState state[3];              ///< per backend (SolverKind)
+    SystemState state[kSolverKinds];              ///< per backend (SolverKind)
   };
   void update_system(const Constraints& cons, const std::vector<Triplet>& contact, const std::vector<int>& condensed,
                      const std::vector<int>& eliminated);
   std::vector<int> eliminate(const Constraints& cons, const std::vector<Elimination>& relations, const Vector& residual,
                              std::vector<Triplet>& triplets, Vector& r_free);
+  /// The node blocks of the system's equations (condensed and eliminated equations left
+  /// out): what algebraic multigrid aggregates, with the coordinates of its rigid-body modes.
+  SystemLayout system_layout(const Constraints& cons, const std::vector<int>& condensed,
+                             const std::vector<int>& eliminated) const;
   /// Backend for a system of this kind: Cholmod gives way to Mumps (said once per run).
   SolverKind backend_for(MatrixKind kind);
 
@@ -127,7 +135,7 @@ class StaticSolver {
   /// the eliminations' columns.
   SplitMatrix elastic_;
   /// One solver per backend for the whole run (each keeps its analysis while the pattern holds).
-  std::unique_ptr<LinearSolver> solvers_[3];
+  std::unique_ptr<LinearSolver> solvers_[kSolverKinds];
   std::unique_ptr<SystemCache> system_;
   double k_scale_ = 0.0;
   bool rigid_checked_ = false;  ///< elastic part proven free of rigid-body modes

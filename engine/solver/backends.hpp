@@ -10,8 +10,10 @@ namespace lunaster::engine {
 std::unique_ptr<LinearSolver> make_cholmod_solver();
 /// UMFPACK unsymmetric multifrontal LU (any square matrix).
 std::unique_ptr<LinearSolver> make_umfpack_solver();
-/// Sequential MUMPS (LDL^T for symmetric kinds, LU otherwise).
+/// MUMPS (LDL^T for symmetric kinds, LU otherwise), on every rank of the run.
 std::unique_ptr<LinearSolver> make_mumps_solver();
+/// PETSc Krylov solver and preconditioner, from the module loaded on first use.
+std::unique_ptr<LinearSolver> make_petsc_solver(const IterativeSettings& settings);
 
 /// Pivot-ratio threshold used to call a factorisation singular: a pivot that
 /// lost more than this relative size against its matrix diagonal (about 10

@@ -11,12 +11,13 @@
 
 namespace lunaster::engine {
 
-std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind) {
+std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind, const IterativeSettings& iterative) {
   configure_blas();
   switch (kind) {
     case SolverKind::Cholmod: return make_cholmod_solver();
     case SolverKind::Umfpack: return make_umfpack_solver();
     case SolverKind::Mumps: return make_mumps_solver();
+    case SolverKind::Petsc: return make_petsc_solver(iterative);
   }
   throw InternalError("make_linear_solver: unknown solver kind");
 }

@@ -3,8 +3,10 @@
 /// compressed-column matrix built from (row, col, value) triplets: the same
 /// triplets are what a distributed MUMPS takes (ICN_loc/JCN_loc/A_loc), so
 /// moving to MPI means giving each rank its triplets, not changing assembly.
+#include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Eigen/Sparse>
 
@@ -18,7 +20,35 @@ using Triplet = Eigen::Triplet<double, int>;
 enum class MatrixKind { SymmetricPositiveDefinite, SymmetricIndefinite, General };
 
 /// Available backends. Cholmod needs an SPD matrix; Umfpack and Mumps take any.
-enum class SolverKind { Cholmod, Umfpack, Mumps };
+/// Petsc is iterative (a Krylov method and a preconditioner, IterativeSettings).
+enum class SolverKind { Cholmod, Umfpack, Mumps, Petsc };
+constexpr int kSolverKinds = 4;
+
+/// What an iterative backend does: code_aster's SOLVEUR METHODE='PETSC' keywords.
+struct IterativeSettings {
+  enum class Krylov { CG, GMRES, FGMRES };
+  /// Gamg, Ml, Boomer: algebraic multigrid (PETSc's GAMG, Trilinos ML, hypre BoomerAMG),
+  /// given the rigid-body modes as near null space; LdltSp: a single-precision MUMPS
+  /// factorisation; Jacobi, Sor: point relaxations; None: no preconditioner.
+  enum class Preconditioner { Gamg, Ml, Boomer, LdltSp, Jacobi, Sor, None };
+  Krylov krylov = Krylov::FGMRES;
+  Preconditioner preconditioner = Preconditioner::LdltSp;
+  double relative_residual = 1e-6;  ///< |b - A x| / |b| to reach (true residual, not preconditioned)
+  int max_iterations = 0;           ///< 0: no limit but the backend's own (10,000)
+  /// Receives one line per Krylov iteration (iteration, residual) when set.
+  std::function<void(const std::string&)> history;
+};
+
+/// The node blocks of a system: which equations are the displacement components of one
+/// node. Dirichlet conditions remove some of a node's components, so the system's own
+/// numbering has no fixed block size; an iterative backend may rebuild the blocks from this.
+struct SystemLayout {
+  int dim = 0;                  ///< displacement components per node (2 or 3); 0: no layout
+  std::vector<int> block;       ///< per equation: its node block, -1 outside any (multipliers, condensed)
+  std::vector<int> component;   ///< per equation in a block: its component, 0..dim-1
+  std::vector<double> coords;   ///< dim per block: the node's coordinates
+  int n_blocks() const { return dim > 0 ? static_cast<int>(coords.size()) / dim : 0; }
+};
 
 /// Direct solver: factorise once, solve for many right-hand sides.
 class LinearSolver {
@@ -33,10 +63,19 @@ class LinearSolver {
   virtual std::string name() const = 0;
   /// Equation where the last factorisation failed, -1 if none / unknown.
   virtual int failed_column() const { return -1; }
+  /// An iterative backend: factorize() builds the preconditioner, solve() iterates to
+  /// its own tolerance (and throws SolveError when it does not get there).
+  virtual bool iterative() const { return false; }
+  /// Where the equations of the next matrices live (SystemLayout): algebraic multigrid
+  /// aggregates node blocks and builds its coarse spaces from the rigid-body modes.
+  /// Direct backends ignore it.
+  virtual void set_layout(SystemLayout /*layout*/) {}
+  /// Krylov iterations of the last solve (0 for a direct backend).
+  virtual int iterations() const { return 0; }
 };
 
-/// Builds a backend. Never returns null.
-std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind);
+/// Builds a backend. Never returns null. `iterative` is read by SolverKind::Petsc only.
+std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind, const IterativeSettings& iterative = {});
 
 /// |A x - b| / |b| (2-norms); +inf if x is not finite.
 double relative_residual(const SparseMatrix& a, const Vector& x, const Vector& b);

@@ -1,0 +1,448 @@
+/// PETSc's Krylov solvers and preconditioners behind LinearSolver. Built as a
+/// module of its own (liblunaster_petsc.so), loaded by engine/solver/petsc_module.cpp
+/// on the first METHODE='PETSC' solve: PETSc and the hundred libraries it brings
+/// (hypre, ML, SuperLU, ScaLAPACK...) would otherwise add 50 ms to every start-up.
+///
+/// One process: a sequential AIJ matrix. Under mpirun: each rank owns a block of rows
+/// of an MPI AIJ matrix (PETSc's default split), the solution is gathered on every rank.
+#include <mpi.h>
+#include <petscksp.h>
+#include <petscpc.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <smumps_c.h>
+#include <string>
+#include <vector>
+
+#include "engine/core/error.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
+#include "engine/solver/linear_solver.hpp"
+
+namespace lunaster::engine {
+namespace {
+
+using Settings = IterativeSettings;
+
+/// A solve that did not converge, or a preconditioner that cannot work on this system.
+SolveError iterative_failure(const std::string& message, std::vector<std::string> hints) {
+  SolveError err(message, std::move(hints));
+  Failure f;
+  f.what = Failure::What::IterativeSolve;
+  err.set_failure(f);
+  return err;
+}
+
+/// A PETSc call that failed: PETSc's own message, our context.
+void check(PetscErrorCode code, const char* what) {
+  if (code == 0) return;
+  const char* text = nullptr;
+  PetscErrorMessage(code, &text, nullptr);
+  throw SolveError(std::string("PETSc: ") + what + " failed: " + (text ? text : "error " + std::to_string(code)));
+}
+
+void initialise_petsc() {
+  PetscBool done = PETSC_FALSE;
+  PetscInitialized(&done);
+  if (done) return;
+  parallel::ensure_initialised();  // MPI is ours: PETSc then leaves it alone at its end
+  // No signal handlers of PETSc's (the run's budget watchdog has its own), no report of
+  // options left unused, and errors returned to us rather than printed with a trace.
+  PetscOptionsSetValue(nullptr, "-no_signal_handler", nullptr);
+  PetscOptionsSetValue(nullptr, "-options_left", "0");
+  if (PetscInitializeNoArguments() != 0) throw SolveError("PETSc: initialisation failed");
+  PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+}
+
+const char* krylov_name(Settings::Krylov k) {
+  switch (k) {
+    case Settings::Krylov::CG: return "CG";
+    case Settings::Krylov::GMRES: return "GMRES";
+    case Settings::Krylov::FGMRES: return "FGMRES";
+  }
+  return "?";
+}
+
+const char* preconditioner_name(Settings::Preconditioner p) {
+  switch (p) {
+    case Settings::Preconditioner::Gamg: return "GAMG";
+    case Settings::Preconditioner::Ml: return "ML";
+    case Settings::Preconditioner::Boomer: return "BOOMER";
+    case Settings::Preconditioner::LdltSp: return "LDLT_SP";
+    case Settings::Preconditioner::Jacobi: return "JACOBI";
+    case Settings::Preconditioner::Sor: return "SOR";
+    case Settings::Preconditioner::None: return "SANS";
+  }
+  return "?";
+}
+
+/// LDLT_SP: a single-precision MUMPS factorisation of the whole matrix, applied as the
+/// preconditioner (code_aster's choice for contact and other hard systems). The matrix and
+/// the residuals are gathered on the host, rank 0, which is where MUMPS takes them.
+class SinglePrecisionFactor {
+ public:
+  ~SinglePrecisionFactor() { release(); }
+
+  void factorize(const SparseMatrix& a, MatrixKind kind) {
+    release();
+    id_ = SMUMPS_STRUC_C{};
+    id_.comm_fortran = parallel::fortran_comm_world();
+    id_.par = 1;
+    id_.sym = kind == MatrixKind::General ? 0 : 2;
+    id_.job = -1;
+    smumps_c(&id_);
+    initialised_ = true;
+    id_.icntl[0] = id_.icntl[1] = id_.icntl[2] = -1;
+    id_.icntl[3] = 0;
+    id_.icntl[6] = 7;
+    if (parallel::rank() == 0) {
+      irn_.clear(), jcn_.clear(), val_.clear();
+      for (int c = 0; c < a.outerSize(); ++c)
+        for (SparseMatrix::InnerIterator it(a, c); it; ++it) {
+          if (id_.sym != 0 && it.row() > c) continue;
+          irn_.push_back(it.row() + 1);
+          jcn_.push_back(c + 1);
+          val_.push_back(static_cast<float>(it.value()));
+        }
+      id_.n = static_cast<MUMPS_INT>(a.rows());
+      id_.nnz = static_cast<MUMPS_INT8>(val_.size());
+      id_.irn = irn_.data();
+      id_.jcn = jcn_.data();
+      id_.a = val_.data();
+    }
+    id_.job = 4;
+    smumps_c(&id_);
+    for (int retry = 0; retry < 3 && id_.infog[0] < 0 && id_.infog[0] != -10; ++retry) {
+      id_.icntl[13] = 2 * std::max(20, id_.icntl[13]);
+      id_.job = 2;
+      smumps_c(&id_);
+    }
+    if (id_.infog[0] < 0)
+      throw SolveError("the single-precision factorisation used as preconditioner failed (MUMPS INFOG(1) = " +
+                       std::to_string(id_.infog[0]) + ")");
+  }
+
+  /// y = A^-1 x in single precision; x and y are whole vectors on the host.
+  void apply(std::vector<float>& rhs) const {
+    id_.rhs = rhs.data();
+    id_.nrhs = 1;
+    id_.lrhs = static_cast<MUMPS_INT>(rhs.size());
+    id_.job = 3;
+    smumps_c(&id_);
+  }
+
+ private:
+  void release() {
+    if (!initialised_) return;
+    id_.job = -2;
+    smumps_c(&id_);
+    initialised_ = false;
+  }
+  mutable SMUMPS_STRUC_C id_{};
+  bool initialised_ = false;
+  std::vector<MUMPS_INT> irn_, jcn_;
+  std::vector<float> val_;
+};
+
+class PetscSolver final : public LinearSolver {
+ public:
+  explicit PetscSolver(const Settings& settings) : settings_(settings) { initialise_petsc(); }
+  ~PetscSolver() override { release(); }
+  PetscSolver(const PetscSolver&) = delete;
+  PetscSolver& operator=(const PetscSolver&) = delete;
+
+  void factorize(const SparseMatrix& a, MatrixKind kind) override;
+  Vector solve(const Vector& b) const override;
+  std::string name() const override {
+    return std::string("PETSc ") + krylov_name(settings_.krylov) + " + " + preconditioner_name(settings_.preconditioner);
+  }
+  bool iterative() const override { return true; }
+  void set_layout(SystemLayout layout) override { layout_ = std::move(layout); }
+  int iterations() const override { return iterations_; }
+
+ private:
+  void release() {
+    if (ksp_) KSPDestroy(&ksp_);
+    if (a_) MatDestroy(&a_);
+    if (scatter_) VecScatterDestroy(&scatter_);
+    if (gathered_) VecDestroy(&gathered_);
+    ksp_ = nullptr, a_ = nullptr, scatter_ = nullptr, gathered_ = nullptr;
+  }
+  void number_rows(int n_equations);
+  void build_matrix(const SparseMatrix& a, MatrixKind kind);
+  void attach_near_null_space();
+  bool multigrid() const {
+    return settings_.preconditioner == Settings::Preconditioner::Gamg ||
+           settings_.preconditioner == Settings::Preconditioner::Ml ||
+           settings_.preconditioner == Settings::Preconditioner::Boomer;
+  }
+  static PetscErrorCode monitor(KSP, PetscInt it, PetscReal rnorm, void* self);
+  static PetscErrorCode apply_single_precision(PC pc, Vec x, Vec y);
+
+  Settings settings_;
+  SystemLayout layout_;
+  /// PETSc's numbering: row_of_[eq] is equation eq's row, eq_of_[row] its equation or -1 for
+  /// a padding row (an identity row completing a node block). With multigrid and a layout,
+  /// the rows are node blocks of bs_ components (Dirichlet-fixed components padded), then
+  /// the equations outside any block; otherwise the system's own numbering.
+  std::vector<PetscInt> row_of_;
+  std::vector<int> eq_of_;
+  PetscInt bs_ = 1;
+  Mat a_ = nullptr;
+  KSP ksp_ = nullptr;
+  VecScatter scatter_ = nullptr;  ///< distributed vector -> whole vector on every rank
+  Vec gathered_ = nullptr;
+  PetscInt first_row_ = 0, local_rows_ = 0, n_ = 0;
+  double rhs_norm_ = 1.0;
+  mutable int iterations_ = 0;
+  std::unique_ptr<SinglePrecisionFactor> single_;
+};
+
+void PetscSolver::number_rows(int n_equations) {
+  const bool blocks = multigrid() && layout_.dim > 1 && static_cast<int>(layout_.block.size()) == n_equations;
+  bs_ = blocks ? layout_.dim : 1;
+  row_of_.resize(n_equations);
+  if (!blocks) {
+    for (int eq = 0; eq < n_equations; ++eq) row_of_[eq] = eq;
+    n_ = n_equations;
+  } else {
+    const PetscInt in_blocks = static_cast<PetscInt>(layout_.n_blocks()) * bs_;
+    PetscInt next = in_blocks;
+    for (int eq = 0; eq < n_equations; ++eq)
+      row_of_[eq] = layout_.block[eq] >= 0 ? layout_.block[eq] * bs_ + layout_.component[eq] : next++;
+    n_ = (next + bs_ - 1) / bs_ * bs_;
+  }
+  eq_of_.assign(n_, -1);
+  for (int eq = 0; eq < n_equations; ++eq) eq_of_[row_of_[eq]] = eq;
+}
+
+void PetscSolver::build_matrix(const SparseMatrix& a, MatrixKind kind) {
+  // Rows of this rank as compressed rows. The system matrices are symmetric with both
+  // triangles stored, so A's compressed columns are its compressed rows; a general
+  // matrix is transposed first.
+  SparseMatrix transposed;
+  const SparseMatrix* rows = &a;
+  if (kind == MatrixKind::General) {
+    transposed = a.transpose();
+    transposed.makeCompressed();
+    rows = &transposed;
+  }
+  number_rows(static_cast<int>(a.rows()));
+  const int size = parallel::size();
+  // Ownership by whole node blocks.
+  PetscInt local_blocks = PETSC_DECIDE, n_blocks = n_ / bs_;
+  check(PetscSplitOwnership(PETSC_COMM_WORLD, &local_blocks, &n_blocks), "PetscSplitOwnership");
+  local_rows_ = local_blocks * bs_;
+  check(MPI_Scan(&local_rows_, &first_row_, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD) == MPI_SUCCESS ? 0 : 1, "MPI_Scan");
+  first_row_ -= local_rows_;
+  const int* outer = rows->outerIndexPtr();
+  const int* inner = rows->innerIndexPtr();
+  const double* value = rows->valuePtr();
+  std::vector<PetscInt> ia(static_cast<size_t>(local_rows_) + 1, 0), ja;
+  std::vector<PetscScalar> va;
+  std::vector<std::pair<PetscInt, double>> row;
+  for (PetscInt r = 0; r < local_rows_; ++r) {
+    const int eq = eq_of_[first_row_ + r];
+    row.clear();
+    if (eq < 0) {
+      row.emplace_back(first_row_ + r, 1.0);  // padding: an identity row
+    } else {
+      for (int k = outer[eq]; k < outer[eq + 1]; ++k) row.emplace_back(row_of_[inner[k]], value[k]);
+      if (bs_ > 1) std::sort(row.begin(), row.end());
+    }
+    for (const auto& [col, v] : row) ja.push_back(col), va.push_back(v);
+    ia[r + 1] = static_cast<PetscInt>(ja.size());
+  }
+  check(MatCreate(PETSC_COMM_WORLD, &a_), "MatCreate");
+  check(MatSetSizes(a_, local_rows_, local_rows_, n_, n_), "MatSetSizes");
+  check(MatSetType(a_, size == 1 ? MATSEQAIJ : MATMPIAIJ), "MatSetType");
+  check(MatSetBlockSize(a_, bs_), "MatSetBlockSize");
+  if (size == 1)
+    check(MatSeqAIJSetPreallocationCSR(a_, ia.data(), ja.data(), va.data()), "MatSeqAIJSetPreallocationCSR");
+  else
+    check(MatMPIAIJSetPreallocationCSR(a_, ia.data(), ja.data(), va.data()), "MatMPIAIJSetPreallocationCSR");
+  if (kind != MatrixKind::General) check(MatSetOption(a_, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+  if (kind == MatrixKind::SymmetricPositiveDefinite) check(MatSetOption(a_, MAT_SPD, PETSC_TRUE), "MatSetOption");
+}
+
+void PetscSolver::attach_near_null_space() {
+  if (bs_ < 2) return;
+  // The rigid-body modes from the blocks' coordinates (PETSc orthonormalises them);
+  // padding blocks past the nodes sit at the origin.
+  Vec coords = nullptr;
+  check(VecCreate(PETSC_COMM_WORLD, &coords), "VecCreate");
+  check(VecSetSizes(coords, local_rows_, n_), "VecSetSizes");
+  check(VecSetBlockSize(coords, bs_), "VecSetBlockSize");
+  check(VecSetFromOptions(coords), "VecSetFromOptions");
+  PetscScalar* x = nullptr;
+  check(VecGetArray(coords, &x), "VecGetArray");
+  for (PetscInt r = 0; r < local_rows_; ++r) {
+    const PetscInt row = first_row_ + r;
+    x[r] = row / bs_ < layout_.n_blocks() ? layout_.coords[row] : 0.0;
+  }
+  check(VecRestoreArray(coords, &x), "VecRestoreArray");
+  MatNullSpace space = nullptr;
+  check(MatNullSpaceCreateRigidBody(coords, &space), "MatNullSpaceCreateRigidBody");
+  check(MatSetNearNullSpace(a_, space), "MatSetNearNullSpace");
+  MatNullSpaceDestroy(&space);
+  VecDestroy(&coords);
+}
+
+PetscErrorCode PetscSolver::monitor(KSP, PetscInt it, PetscReal rnorm, void* self) {
+  auto* s = static_cast<PetscSolver*>(self);
+  s->iterations_ = static_cast<int>(it);
+  if (s->settings_.history) {
+    char line[96];
+    std::snprintf(line, sizeof line, "    Krylov %5d   |r|/|b| = %.6e", static_cast<int>(it), rnorm / s->rhs_norm_);
+    s->settings_.history(line);
+  }
+  return 0;
+}
+
+PetscErrorCode PetscSolver::apply_single_precision(PC pc, Vec x, Vec y) {
+  void* context = nullptr;
+  PetscCall(PCShellGetContext(pc, &context));
+  auto* s = static_cast<PetscSolver*>(context);
+  // Gather x on every rank (the host uses it), solve on the host, scatter back.
+  PetscCall(VecScatterBegin(s->scatter_, x, s->gathered_, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(s->scatter_, x, s->gathered_, INSERT_VALUES, SCATTER_FORWARD));
+  const PetscScalar* whole = nullptr;
+  PetscCall(VecGetArrayRead(s->gathered_, &whole));
+  std::vector<float> rhs(parallel::rank() == 0 ? static_cast<size_t>(s->n_) : 0);
+  for (size_t k = 0; k < rhs.size(); ++k) rhs[k] = static_cast<float>(whole[k]);
+  PetscCall(VecRestoreArrayRead(s->gathered_, &whole));
+  s->single_->apply(rhs);
+  std::vector<double> out(static_cast<size_t>(s->n_));
+  for (size_t k = 0; k < rhs.size(); ++k) out[k] = rhs[k];
+  parallel::broadcast(out.data(), s->n_);
+  PetscScalar* mine = nullptr;
+  PetscCall(VecGetArray(y, &mine));
+  for (PetscInt r = 0; r < s->local_rows_; ++r) mine[r] = out[s->first_row_ + r];
+  PetscCall(VecRestoreArray(y, &mine));
+  return 0;
+}
+
+void PetscSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
+  LUNASTER_ASSERT(a.rows() == a.cols(), "PETSc: matrix is not square");
+  // Contact multipliers make a saddle point: zero diagonal, indefinite. Only a factorisation
+  // preconditions it; multigrid and point relaxations break down, and CG needs SPD.
+  const bool factorised_pc = settings_.preconditioner == Settings::Preconditioner::LdltSp;
+  if (kind != MatrixKind::SymmetricPositiveDefinite &&
+      (!factorised_pc || settings_.krylov == Settings::Krylov::CG))
+    throw iterative_failure(std::string("the iterative solver ") + name() +
+                                " cannot solve this system: it has contact multipliers (a saddle point, not "
+                                "positive definite)",
+                            {"a saddle-point system (contact multipliers) needs a single-precision factorisation as "
+                             "preconditioner with FGMRES or GMRES"});
+  release();
+  build_matrix(a, kind);
+  attach_near_null_space();
+  Vec local = nullptr;
+  check(MatCreateVecs(a_, &local, nullptr), "MatCreateVecs");
+  check(VecScatterCreateToAll(local, &scatter_, &gathered_), "VecScatterCreateToAll");
+  VecDestroy(&local);
+
+  check(KSPCreate(PETSC_COMM_WORLD, &ksp_), "KSPCreate");
+  check(KSPSetOperators(ksp_, a_, a_), "KSPSetOperators");
+  switch (settings_.krylov) {
+    case Settings::Krylov::CG: check(KSPSetType(ksp_, KSPCG), "KSPSetType"); break;
+    case Settings::Krylov::GMRES:
+      check(KSPSetType(ksp_, KSPGMRES), "KSPSetType");
+      check(KSPSetPCSide(ksp_, PC_RIGHT), "KSPSetPCSide");  // the residual tested is the true one
+      check(KSPGMRESSetRestart(ksp_, 30), "KSPGMRESSetRestart");
+      break;
+    case Settings::Krylov::FGMRES: check(KSPSetType(ksp_, KSPFGMRES), "KSPSetType"); break;
+  }
+  // RESI_RELA is code_aster's relative residual |b - A x| / |b|, unpreconditioned.
+  check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+  check(KSPSetTolerances(ksp_, settings_.relative_residual, 0.0, 1e100,
+                         settings_.max_iterations > 0 ? settings_.max_iterations : 10000),
+        "KSPSetTolerances");
+  check(KSPSetInitialGuessNonzero(ksp_, PETSC_FALSE), "KSPSetInitialGuessNonzero");
+  check(KSPMonitorSet(ksp_, &PetscSolver::monitor, this, nullptr), "KSPMonitorSet");
+  PC pc = nullptr;
+  check(KSPGetPC(ksp_, &pc), "KSPGetPC");
+  switch (settings_.preconditioner) {
+    case Settings::Preconditioner::Gamg:
+      check(PCSetType(pc, PCGAMG), "PCSetType");
+      // Smoothed aggregation on an elasticity matrix: a threshold that drops weak
+      // couplings keeps the coarse grids sparse (PETSc's manual, elasticity section).
+      check(PCGAMGSetThreshold(pc, std::vector<PetscReal>{0.01}.data(), 1), "PCGAMGSetThreshold");
+      break;
+    case Settings::Preconditioner::Ml: check(PCSetType(pc, PCML), "PCSetType"); break;
+    case Settings::Preconditioner::Boomer:
+      check(PCSetType(pc, PCHYPRE), "PCSetType");
+      check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
+      break;
+    case Settings::Preconditioner::LdltSp:
+      single_ = std::make_unique<SinglePrecisionFactor>();
+      single_->factorize(a, kind);
+      check(PCSetType(pc, PCSHELL), "PCSetType");
+      check(PCShellSetContext(pc, this), "PCShellSetContext");
+      check(PCShellSetApply(pc, &PetscSolver::apply_single_precision), "PCShellSetApply");
+      check(PCShellSetName(pc, "LDLT_SP"), "PCShellSetName");
+      break;
+    case Settings::Preconditioner::Jacobi: check(PCSetType(pc, PCJACOBI), "PCSetType"); break;
+    case Settings::Preconditioner::Sor: check(PCSetType(pc, PCSOR), "PCSetType"); break;
+    case Settings::Preconditioner::None: check(PCSetType(pc, PCNONE), "PCSetType"); break;
+  }
+  // Expert tuning, as PETSc users do it: options in the PETSC_OPTIONS environment variable
+  // (-ksp_view, -pc_gamg_threshold 0.02, ...) apply on top of the deck's choice.
+  check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
+  check(KSPSetUp(ksp_), "building the preconditioner");
+}
+
+Vector PetscSolver::solve(const Vector& b) const {
+  if (!ksp_) throw InternalError("PETSc: solve called before factorize");
+  Vec bv = nullptr, xv = nullptr;
+  check(MatCreateVecs(a_, &xv, &bv), "MatCreateVecs");
+  PetscScalar* x = nullptr;
+  check(VecGetArray(bv, &x), "VecGetArray");
+  for (PetscInt r = 0; r < local_rows_; ++r) {
+    const int eq = eq_of_[first_row_ + r];
+    x[r] = eq >= 0 ? b[eq] : 0.0;
+  }
+  check(VecRestoreArray(bv, &x), "VecRestoreArray");
+  const_cast<PetscSolver*>(this)->rhs_norm_ = std::max(b.norm(), 1e-300);
+  iterations_ = 0;
+  Vector out = Vector::Zero(b.size());
+  if (b.norm() > 0.0) {
+    check(KSPSolve(ksp_, bv, xv), "KSPSolve");
+    KSPConvergedReason reason;
+    PetscInt its = 0;
+    PetscReal rnorm = 0.0;
+    KSPGetConvergedReason(ksp_, &reason);
+    KSPGetIterationNumber(ksp_, &its);
+    KSPGetResidualNorm(ksp_, &rnorm);
+    iterations_ = static_cast<int>(its);
+    if (reason < 0) {
+      char detail[160];
+      std::snprintf(detail, sizeof detail, "relative residual %.3e after %d iterations, %.1e asked (%s)",
+                    rnorm / rhs_norm_, static_cast<int>(its), settings_.relative_residual, KSPConvergedReasons[reason]);
+      VecDestroy(&bv);
+      VecDestroy(&xv);
+      throw iterative_failure(std::string("the iterative solver ") + name() + " did not converge: " + detail,
+                              {"allow more iterations, a larger tolerance, another preconditioner, or use a direct "
+                               "solver"});
+    }
+    check(VecScatterBegin(scatter_, xv, gathered_, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+    check(VecScatterEnd(scatter_, xv, gathered_, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+    const PetscScalar* whole = nullptr;
+    check(VecGetArrayRead(gathered_, &whole), "VecGetArrayRead");
+    for (Eigen::Index eq = 0; eq < out.size(); ++eq) out[eq] = whole[row_of_[eq]];
+    VecRestoreArrayRead(gathered_, &whole);
+  }
+  VecDestroy(&bv);
+  VecDestroy(&xv);
+  return out;
+}
+
+}  // namespace
+}  // namespace lunaster::engine
+
+/// The module's one entry point (engine/solver/petsc_module.cpp).
+extern "C" lunaster::engine::LinearSolver* lunaster_petsc_solver(const lunaster::engine::IterativeSettings* settings) {
+  return new lunaster::engine::PetscSolver(*settings);
+}
