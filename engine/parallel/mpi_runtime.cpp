@@ -20,8 +20,9 @@ bool env_set(const char* name) { return std::getenv(name) != nullptr; }
 /// A default for one OpenMPI MCA parameter, kept if the user set it.
 void mca_default(const char* name, const char* value) { setenv(name, value, 0); }
 
-// Rank and size, read once at initialisation: rank() is then callable from any thread
-// (the budget's watchdog), which MPI_THREAD_FUNNELED does not allow for MPI calls.
+// Rank and size, read once by ensure_initialised(): rank() is then callable from any
+// thread (the budget's watchdog), which MPI_THREAD_FUNNELED does not allow for MPI calls.
+std::atomic<bool> known{false};
 std::atomic<int> the_rank{0};
 std::atomic<int> the_size{1};
 /// The end-of-run agreement's own communicator (a duplicate of MPI_COMM_WORLD, several ranks only).
@@ -41,8 +42,9 @@ bool initialised() {
   return flag != 0;
 }
 
-void ensure_initialised() {
-  if (initialised()) return;
+namespace {
+
+void start_mpi() {
   if (!launched_by_mpi()) {
     // A singleton: no orted daemon to start (0.35 s of a 0.4 s start-up on this
     // machine's OpenMPI 4.1), the point-to-point layer that needs no network
@@ -53,6 +55,15 @@ void ensure_initialised() {
   }
   int provided = 0;
   MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+  std::atexit(finalise);  // every way out of the process (return from main, std::exit) finalises
+}
+
+}  // namespace
+
+void ensure_initialised() {
+  if (!initialised()) start_mpi();
+  if (known) return;
+  // Also when a library initialised MPI itself: what this process is in the run is learnt once.
   int r = 0, s = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &r);
   MPI_Comm_size(MPI_COMM_WORLD, &s);
@@ -60,12 +71,22 @@ void ensure_initialised() {
   the_size = s;
   // Collective: every rank of an mpirun run initialises first thing in main, together.
   if (s > 1) MPI_Comm_dup(MPI_COMM_WORLD, &end_comm);
-  std::atexit(finalise);  // every way out of the process (return from main, std::exit) finalises
+  known = true;
 }
 
-int rank() { return the_rank.load(); }
+int rank() {
+  if (known || !initialised()) return the_rank.load();
+  int r = 0;  // MPI initialised by a library, ensure_initialised() not called yet
+  MPI_Comm_rank(MPI_COMM_WORLD, &r);
+  return r;
+}
 
-int size() { return the_size.load(); }
+int size() {
+  if (known || !initialised()) return the_size.load();
+  int s = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &s);
+  return s;
+}
 
 int fortran_comm_world() {
   ensure_initialised();
