@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -130,7 +131,7 @@ std::string deck_status(int exit_code, int n_nook) {
   return "ERROR";
 }
 
-Budget verify_budget(const fs::path& deck, const Budget& overrides) {
+Budget verify_budget(const fs::path& deck, const Budget& overrides, int ranks) {
   Budget header;
   try {
     if (deck.extension() == ".export") header = read_export(deck).budget;
@@ -140,7 +141,7 @@ Budget verify_budget(const fs::path& deck, const Budget& overrides) {
   }
   Budget budget = override_budget(header, overrides);
   if (!budget.seconds) budget.seconds = kVerifyDefaultSeconds;
-  if (!budget.megabytes) budget.megabytes = default_memory_budget_mb();
+  if (!budget.megabytes) budget.megabytes = std::floor(default_memory_budget_mb() / std::max(1, ranks));
   return budget;
 }
 
@@ -406,7 +407,7 @@ int verify(const VerifyOptions& options, std::ostream& out) {
   auto worker = [&] {
     for (std::size_t i = next++; i < decks.size(); i = next++)
       outcomes[i] = run_child(options.executable, decks[i], deck_out_dir(options.out_dir, decks[i]),
-                              verify_budget(decks[i], options.budget), extra, launcher);
+                              verify_budget(decks[i], options.budget, options.ranks), extra, launcher);
   };
   std::vector<std::thread> threads;
   for (int j = 0; j < jobs; ++j) threads.emplace_back(worker);

@@ -69,8 +69,9 @@ std::string deck_status(int exit_code, int n_nook);
 /// The budget a deck runs with under verify: `overrides` (command line), else its header
 /// (an .export's P time_limit / memory_limit),
 /// else 300 s and half of the machine's memory. A malformed header is left to the child
-/// to report as a deck error.
-Budget verify_budget(const std::filesystem::path& deck, const Budget& overrides);
+/// to report as a deck error. A memory limit is each process's: under --np, `ranks`
+/// processes share the default half of the machine.
+Budget verify_budget(const std::filesystem::path& deck, const Budget& overrides, int ranks = 1);
 /// Runs one deck as a child process (`exe run DECK --out DIR` plus the budget's
 /// --time-limit/--memory-limit) and captures its output. The child enforces its budget
 /// itself; if it is still running kVerifyKillGraceSeconds after its time limit, it is

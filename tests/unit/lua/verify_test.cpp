@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -111,6 +112,9 @@ TEST(Verify, BudgetStatusesAndDefaults) {
   EXPECT_EQ(overridden.megabytes.value_or(0), 512.0);
   // The child reports the malformed header; the parent still guards it with the defaults.
   EXPECT_EQ(verify_budget(dir / "broken.lua", none).seconds.value_or(0), 300.0);
+  // A memory limit is each process's: under --np 2 the two ranks share the default half of the machine.
+  EXPECT_EQ(verify_budget(dir / "plain.lua", none, 2).megabytes.value_or(0), std::floor(default_memory_budget_mb() / 2));
+  EXPECT_EQ(verify_budget(dir / "header.lua", none, 2).megabytes.value_or(0), 512.0);
 }
 
 TEST(Verify, ChildrenOverBudgetAreReportedAndAHungChildIsKilled) {
