@@ -187,28 +187,25 @@ def outputs(exe, source, scratch):
         f"P time_limit 60\nP memory_limit 512\nF comm ssnp121a.comm D 1\nF mmed {source}/testcases/ssnp121a.med D 20\n"
         "F rmed contact_result.rmed R 80\nF mess study.mess R 6\n")
     decks = [source / "testcases" / "ssnp121a.lua", source / "testcases" / "reactions_tables.lua",
-             source / "testcases" / "loads_and_groups.lua", case / "study.export"]
+             source / "testcases" / "loads_and_groups.lua", case / "study.export",
+             source / "testcases" / "errors" / "contact_step_no_subdivision.lua"]  # exit 3, converged steps saved
     serial_checks = {}
     for deck in decks:
         name = deck.stem
+        want = 3 if deck.parent.name == "errors" else 0
         extra = ["--vale-calc=report"] if deck.suffix == ".export" else []
         serial_out, rank0_out, rank1_out = scratch / f"{name}.serial", scratch / f"{name}.rank0", scratch / f"{name}.rank1"
         code_s, out_s, err_s, _ = run([exe, "run", deck, "--out", serial_out, *extra], scratch)
         logs = scratch / f"{name}.logs"
         code_m, out_m, err_m, _ = run(mpmd(exe, ["run", deck, "--out", rank0_out, *extra],
                                            ["run", deck, "--out", rank1_out, *extra], logs), scratch)
-        check(code_s == 0 and code_m == 0, f"{name}: exit 0 serially and under mpirun -np 2 ({code_s}, {code_m})")
+        check(code_s == want and code_m == want,
+              f"{name}: exit {want} serially and under mpirun -np 2 ({code_s}, {code_m})")
         files = output_files(serial_out)
         check(len(files) > 0 and output_files(rank0_out) == files,
               f"{name}: rank 0 writes the files of the serial run, no more, no less ({files})")
         check(not rank1_out.exists(), f"{name}: rank 1 writes nothing (its --out folder does not exist)")
         check(rank_output(logs, 1) == "", f"{name}: rank 1 prints nothing (stdout and stderr empty)")
-        check(err_m == "", f"{name}: nothing on the standard error of the run")
-        summary = [l for l in out_m.splitlines() if re.match(r"lunaster: \d+ check\(s\) OK", l)]
-        check(len(summary) == 1, f"{name}: the report's summary is printed once ({len(summary)})")
-        serial_checks[name] = len(test_lines(out_s))
-        check(len(test_lines(out_m)) == serial_checks[name] > 0,
-              f"{name}: the TEST_RESU lines printed once each ({len(test_lines(out_m))}, serially {serial_checks[name]})")
         meds = [f for f in files if f.endswith(".rmed")]
         for med in meds:
             problems, n_sets, n_values = same_med(serial_out / med, rank0_out / med)
@@ -216,6 +213,17 @@ def outputs(exe, source, scratch):
                 print("  " + p)
             check(not problems and n_values > 0,
                   f"{name}: {med} of mpirun equals the serial one ({n_sets} datasets/attributes, {n_values} floats to 1e-8)")
+        if want:
+            error = [l for l in err_m.splitlines() if re.search(re.escape(deck.name) + r":\d+: STAT_NON_LINE", l)]
+            check(len(error) == 1, f"{name}: the error once, with file:line ({len(error)})")
+            check(str(rank0_out / f"{name}_converged.rmed") in err_m, f"{name}: it names rank 0's converged-steps file")
+            continue
+        check(err_m == "", f"{name}: nothing on the standard error of the run")
+        summary = [l for l in out_m.splitlines() if re.match(r"lunaster: \d+ check\(s\) OK", l)]
+        check(len(summary) == 1, f"{name}: the report's summary is printed once ({len(summary)})")
+        serial_checks[name] = len(test_lines(out_s))
+        check(len(test_lines(out_m)) == serial_checks[name] > 0,
+              f"{name}: the TEST_RESU lines printed once each ({len(test_lines(out_m))}, serially {serial_checks[name]})")
         if deck.suffix == ".export":
             check((rank0_out / "study.mess").read_text() == out_m + err_m,
                   "the .export's message file (rank 0's) holds what the run printed")
