@@ -331,7 +331,15 @@ void BudgetGuard::hard_stop(int exit_code, const std::string& what) {
     std::fflush(stdout);
     funlockfile(stdout);
   }
-  engine::parallel::write_stderr(message);
+  const char* data = message.data();
+  std::size_t left = message.size();
+  const int fd = engine::parallel::standard_error_fd();  // a silenced rank's own, kept for this
+  while (left > 0) {
+    const ssize_t n = write(fd, data, left);
+    if (n <= 0) break;
+    data += n;
+    left -= static_cast<std::size_t>(n);
+  }
   engine::parallel::abort_run(exit_code);  // _exit in a one-rank run
 }
 

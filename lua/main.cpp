@@ -1,4 +1,7 @@
 /// The lunaster command line: run a deck, verify a suite, show help, dump the catalogue.
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -92,6 +95,19 @@ std::string comparison_summary(const std::vector<cmd::Session::Comparison>& comp
 /// (engine/parallel/mpi_runtime.hpp): ranks that run the same deck reach the same error
 /// within moments; longer means they are blocked in a collective call waiting for it.
 constexpr double kRankWaitSeconds = 10.0;
+
+/// Writes `text` to the file descriptor `fd`, whole.
+void write_all(int fd, const std::string& text) {
+  const char* data = text.data();
+  std::size_t left = text.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd, data, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    data += n;
+    left -= static_cast<std::size_t>(n);
+  }
+}
 
 /// Every line of `text` with `prefix` in front.
 std::string prefixed_lines(const std::string& prefix, const std::string& text) {
@@ -336,7 +352,7 @@ int end_of_run(int code, const std::string& errors) {
             " and the other ranks have not ended " + lua::budget_text(kRankWaitSeconds) +
             " s later (still computing, or waiting for this rank): the run is aborted\n";
     std::fflush(stdout);
-    parallel::write_stderr(text);
+    write_all(parallel::standard_error_fd(), text);  // a silenced rank's own standard error
     parallel::abort_run(code);
   }
   const auto texts = parallel::gather_texts(std::to_string(code) + "\n" + errors);

@@ -135,18 +135,9 @@ void silence_other_ranks() {
   close(null);
 }
 
-void write_stderr(const std::string& text) {
+int standard_error_fd() {
   const int saved = saved_stderr.load();
-  const int fd = saved >= 0 ? saved : STDERR_FILENO;
-  const char* data = text.data();
-  std::size_t left = text.size();
-  while (left > 0) {
-    const ssize_t n = write(fd, data, left);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    data += n;
-    left -= static_cast<std::size_t>(n);
-  }
+  return saved >= 0 ? saved : STDERR_FILENO;
 }
 
 std::optional<Spread> spread(int value, std::optional<double> wait_seconds) {

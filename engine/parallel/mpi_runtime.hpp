@@ -52,10 +52,11 @@ void finalise();
 /// library prints the same lines once per rank. Nothing on rank 0 or in a one-rank run.
 void silence_other_ranks();
 
-/// Writes `text` to this process's standard error as it was before silence_other_ranks():
-/// what a rank other than 0 says when it is the one that brings the run down. One
-/// write(2) per call; callable from any thread (no MPI call).
-void write_stderr(const std::string& text);
+/// The file descriptor of this process's standard error as it was before
+/// silence_other_ranks() (STDERR_FILENO if it was not redirected): where the front end
+/// writes what a rank other than 0 says when it is the one that brings the run down.
+/// Callable from any thread (no MPI call).
+int standard_error_fd();
 
 /// The lowest and the highest value given by the ranks.
 struct Spread {
