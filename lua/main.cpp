@@ -214,8 +214,8 @@ int verify_command(const std::vector<std::string>& args) {
       } catch (const std::exception&) {
       }
       if (used != args[i].size() || value < (option == "-j" ? 0 : 1))
-        return usage_error("verify: " + option + " expects a " + (option == "-j" ? "number" : "positive number of MPI ranks") +
-                           ", got '" + args[i] + "'");
+        return usage_error("verify: " + option + " expects a " +
+                           (option == "-j" ? "number" : "positive number of MPI ranks") + ", got '" + args[i] + "'");
       (option == "-j" ? options.jobs : options.ranks) = value;
     } else if (is_budget_option(args[i]) && has_value) {
       if (!budget_option("verify", args[i], args[i + 1], options.budget)) return static_cast<int>(ErrorKind::Deck);
