@@ -1,5 +1,7 @@
 #include "commands/session.hpp"
 
+#include "engine/parallel/mpi_runtime.hpp"
+
 namespace lunaster::cmd {
 
 std::filesystem::path Session::resolve_input(const std::string& relative) const {
@@ -9,7 +11,8 @@ std::filesystem::path Session::resolve_input(const std::string& relative) const 
 }
 
 std::filesystem::path Session::output_file(const std::string& name) const {
-  std::filesystem::create_directories(output_dir);
+  // Under mpirun rank 0 writes the files (engine/io/atomic_file.hpp) and makes their folder.
+  if (engine::parallel::writes_output()) std::filesystem::create_directories(output_dir);
   return output_dir / name;
 }
 

@@ -31,7 +31,7 @@ class Session {
   std::filesystem::path output_dir;  ///< where output files go (created on demand)
   /// Resolves a path given in a deck: relative paths are relative to the deck's folder.
   std::filesystem::path resolve_input(const std::string& relative) const;
-  /// Path of an output file in output_dir (the folder is created).
+  /// Path of an output file in output_dir (the folder is created, by rank 0 under mpirun).
   std::filesystem::path output_file(const std::string& name) const;
   /// The output file of logical unit `unit` with extension `ext`: the file an .export binds to
   /// the unit (its name, in output_dir), else <deck name>_<unit>.<ext>.

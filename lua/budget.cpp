@@ -16,6 +16,7 @@
 
 #include "catalog/args.hpp"
 #include "engine/core/error.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 #include "lua/bridge.hpp"
 
 namespace lunaster::lua {
@@ -317,6 +318,14 @@ void BudgetGuard::hard_stop(int exit_code, const std::string& what) {
   std::string message = deck_ + ": " + what;
   message += running.empty() ? " in the deck's Lua code" : " while running " + running;
   message += "; the run is stopped\n";
+  // Under mpirun the stop ends every rank (MPI_Abort): none is left waiting in a collective
+  // call for this one. Rank 0 speaks; the others, silenced, speak only when they are the ones
+  // stopping the run: past a time limit, which every rank reaches at about the same moment,
+  // they leave rank 0 a moment to stop the run first.
+  if (const int rank = engine::parallel::rank(); rank > 0) {
+    if (exit_code == static_cast<int>(ErrorKind::TimeLimit)) std::this_thread::sleep_for(kOtherRanksDelay);
+    message = "lunaster: rank " + std::to_string(rank) + ": " + message;
+  }
   // Keep what the deck printed so far, unless the main thread is inside stdout right now.
   if (ftrylockfile(stdout) == 0) {
     std::fflush(stdout);
@@ -324,13 +333,14 @@ void BudgetGuard::hard_stop(int exit_code, const std::string& what) {
   }
   const char* data = message.data();
   std::size_t left = message.size();
+  const int fd = engine::parallel::standard_error_fd();  // a silenced rank's own, kept for this
   while (left > 0) {
-    const ssize_t n = write(STDERR_FILENO, data, left);
+    const ssize_t n = write(fd, data, left);
     if (n <= 0) break;
     data += n;
     left -= static_cast<std::size_t>(n);
   }
-  _exit(exit_code);
+  engine::parallel::abort_run(exit_code);  // _exit in a one-rank run
 }
 
 }  // namespace lunaster::lua

@@ -51,7 +51,8 @@ std::size_t resident_bytes();
 /// deck line being run, at every instruction from then on (so a `while true do end` stops,
 /// and pcall cannot keep the deck going). If the process is still running kGrace later (a
 /// long C++ solve never returns to Lua), the watchdog prints which command was running and
-/// ends the process with exit status 5. Until the budget is spent, Lua runs without a hook.
+/// ends the process with exit status 5 (under mpirun: the whole run, every rank). Until the
+/// budget is spent, Lua runs without a hook.
 ///
 /// Memory: the Lua allocator refuses to let the Lua heap take the process beyond the
 /// budget (a clean "memory limit exceeded" error, then the hook as for time), and the
@@ -64,6 +65,8 @@ class BudgetGuard {
  public:
   static constexpr std::chrono::milliseconds kGrace{500};
   static constexpr std::chrono::milliseconds kSample{20};
+  /// Under mpirun, ranks other than 0 stop this much later than rank 0 past a time limit.
+  static constexpr std::chrono::milliseconds kOtherRanksDelay{1000};
 
   /// Starts the watchdog for `budget`; `deck` names the deck in messages.
   BudgetGuard(const Budget& budget, std::string deck);

@@ -1,9 +1,13 @@
 /// The lunaster command line: run a deck, verify a suite, show help, dump the catalogue.
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -26,9 +30,11 @@ constexpr const char* kUsage = R"(usage:
   lunaster run DECK [--out DIR] [-v|-q] [--time-limit S] [--memory-limit MB] [--vale-calc=check|report]
                                               run a deck: DECK.lua, a code_aster DECK.comm, or a DECK.export
                                               naming a .comm, its units and limits (output: ./out/<deck name>)
-  lunaster verify [PATHS...] [-j N] [--out DIR] [--junit FILE] [--json FILE] [--time-limit S] [--memory-limit MB]
-                  [--vale-calc=check|report]  run decks (.lua, .export, and .comm without an .export;
+  lunaster verify [PATHS...] [-j N] [--np N] [--out DIR] [--junit FILE] [--json FILE] [--time-limit S]
+                  [--memory-limit MB] [--vale-calc=check|report]
+                                              run decks (.lua, .export, and .comm without an .export;
                                               default: testcases/) and summarise TEST_RESU
+                                              (--np N: each deck as `mpirun -np N lunaster run ...`)
   lunaster convert CASE.comm [-o CASE.lua] [--check]
                                               translate a code_aster .comm file to a deck, line for line
                                               (--check: only list what lunaster would not take)
@@ -40,6 +46,8 @@ budgets: --time-limit (wall-clock seconds) and --memory-limit (resident MB) over
   run has no limit unless one is given, verify defaults to 300 s and half of the machine's memory per deck
 code_aster VALE_CALC: in a .comm they are code_aster's results, checked as CODE_ASTER comparisons;
   --vale-calc=report prints them as SAME/DIFF report lines instead (the VALE_REFE checks decide)
+MPI: `mpirun -np N lunaster run DECK` runs the deck on N ranks (MUMPS factorises across them); rank 0
+  alone prints and writes files, every rank returns the same exit status; verify is not run by mpirun
 exit status: 0 OK, 1 some TEST_RESU NOOK, 2 deck error, 3 solve error, 4 internal error,
   5 time limit exceeded, 6 memory limit exceeded (or out of memory)
 )";
@@ -81,6 +89,32 @@ std::string comparison_summary(const std::vector<cmd::Session::Comparison>& comp
   std::snprintf(text, sizeof text, "%.3e", largest->difference);
   return "lunaster: " + std::to_string(comparisons.size()) + " comparison(s) with code_aster's VALE_CALC: " +
          std::to_string(beyond) + " beyond tolerance, largest difference " + text + " (" + largest->what + ")";
+}
+
+/// How long a rank that stopped on an error waits for the others at the end of the run
+/// (engine/parallel/mpi_runtime.hpp): ranks that run the same deck reach the same error
+/// within moments; longer means they are blocked in a collective call waiting for it.
+constexpr double kRankWaitSeconds = 10.0;
+
+/// Writes `text` to the file descriptor `fd`, whole.
+void write_all(int fd, const std::string& text) {
+  const char* data = text.data();
+  std::size_t left = text.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd, data, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    data += n;
+    left -= static_cast<std::size_t>(n);
+  }
+}
+
+/// Every line of `text` with `prefix` in front.
+std::string prefixed_lines(const std::string& prefix, const std::string& text) {
+  std::string out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out += prefix + line + "\n";
+  return out;
 }
 
 int usage_error(const std::string& message) {
@@ -135,7 +169,7 @@ int run_command(const std::vector<std::string>& args) {
       return static_cast<int>(e.kind());
     }
     for (const auto& [unit, f] : study->results)
-      if (f.type == "mess") {
+      if (f.type == "mess" && engine::parallel::writes_output()) {  // under mpirun, rank 0's file
         fs::create_directories(out);
         mess.open(out / f.path.filename());
       }
@@ -162,15 +196,27 @@ int run_command(const std::vector<std::string>& args) {
 }
 
 int verify_command(const std::vector<std::string>& args) {
+  if (engine::parallel::launched_by_mpi()) {
+    std::cerr << "lunaster: verify runs each deck as a child process and is not to be started by mpirun (every "
+                 "rank would run the whole suite, and the children would inherit the launcher's environment): "
+                 "run `lunaster verify --np N ...` to run each deck on N MPI ranks\n";
+    return static_cast<int>(ErrorKind::Deck);
+  }
   lua::VerifyOptions options;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const bool has_value = i + 1 < args.size();
-    if (args[i] == "-j" && has_value) {
+    if ((args[i] == "-j" || args[i] == "--np") && has_value) {
+      const std::string option = args[i];
+      std::size_t used = 0;
+      int value = 0;
       try {
-        options.jobs = std::stoi(args[++i]);
+        value = std::stoi(args[++i], &used);
       } catch (const std::exception&) {
-        return usage_error("verify: -j expects a number, got '" + args[i] + "'");
       }
+      if (used != args[i].size() || value < (option == "-j" ? 0 : 1))
+        return usage_error("verify: " + option + " expects a " +
+                           (option == "-j" ? "number" : "positive number of MPI ranks") + ", got '" + args[i] + "'");
+      (option == "-j" ? options.jobs : options.ranks) = value;
     } else if (is_budget_option(args[i]) && has_value) {
       if (!budget_option("verify", args[i], args[i + 1], options.budget)) return static_cast<int>(ErrorKind::Deck);
       ++i;
@@ -268,19 +314,13 @@ int convert_command(const std::vector<std::string>& args) {
   return conversion.refused.empty() ? 0 : static_cast<int>(ErrorKind::Deck);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  std::vector<std::string> args(argv + 1, argv + argc);
+int run_verb(const std::vector<std::string>& args) {
   if (args.empty() || args[0] == "--help" || args[0] == "-h") {
     std::cout << kUsage;
     return args.empty() ? static_cast<int>(ErrorKind::Deck) : 0;
   }
   const std::string verb = args[0];
   const std::vector<std::string> rest(args.begin() + 1, args.end());
-  // Under mpirun every rank learns its number before the deck runs; a single process
-  // initialises MPI only if a solver needs it (engine/parallel/mpi_runtime.hpp).
-  if (lunaster::engine::parallel::launched_by_mpi()) lunaster::engine::parallel::ensure_initialised();
   try {
     if (verb == "run") return run_command(rest);
     if (verb == "verify") return verify_command(rest);
@@ -292,4 +332,64 @@ int main(int argc, char** argv) {
     return static_cast<int>(ErrorKind::Internal);
   }
   return usage_error("unknown verb '" + verb + "'");
+}
+
+/// The end of a run of several ranks (mpirun -np N): every rank returns the same exit
+/// status, the worst of the ranks', and rank 0 names the ranks that ended otherwise.
+/// A rank that stopped on an error may be the only one to: the others may be blocked in a
+/// collective call (MUMPS) waiting for it. If they have not all ended kRankWaitSeconds
+/// later, it aborts the run with its status rather than leaving them hanging.
+int end_of_run(int code, const std::string& errors) {
+  namespace parallel = engine::parallel;
+  const int me = parallel::rank();
+  const bool failed = code >= static_cast<int>(ErrorKind::Deck);
+  const auto spread = parallel::spread(code, failed ? std::optional<double>(kRankWaitSeconds) : std::nullopt);
+  if (!spread) {
+    std::string text;
+    if (me != 0)  // rank 0 has printed its own error already; this rank's would be lost
+      text = prefixed_lines("lunaster: rank " + std::to_string(me) + ": ", errors);
+    text += "lunaster: rank " + std::to_string(me) + " stopped with exit status " + std::to_string(code) +
+            " and the other ranks have not ended " + lua::budget_text(kRankWaitSeconds) +
+            " s later (still computing, or waiting for this rank): the run is aborted\n";
+    std::fflush(stdout);
+    write_all(parallel::standard_error_fd(), text);  // a silenced rank's own standard error
+    parallel::abort_run(code);
+  }
+  const auto texts = parallel::gather_texts(std::to_string(code) + "\n" + errors);
+  if (spread->lowest != spread->highest && me == 0) {
+    std::string report;
+    for (std::size_t r = 1; r < texts.size(); ++r) {
+      const auto newline = texts[r].find('\n');
+      const int rank_code = std::stoi(texts[r].substr(0, newline));
+      if (rank_code == code) continue;
+      report += "lunaster: rank " + std::to_string(r) + " ended with exit status " + std::to_string(rank_code) +
+                " (rank 0: " + std::to_string(code) + ")\n";
+      report += prefixed_lines("lunaster: rank " + std::to_string(r) + ": ", texts[r].substr(newline + 1));
+    }
+    std::cerr << report << std::flush;
+  }
+  return spread->highest;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  namespace parallel = lunaster::engine::parallel;
+  // Under mpirun every rank learns its number before anything runs (a single process
+  // initialises MPI only if a solver needs it: engine/parallel/mpi_runtime.hpp); only rank 0
+  // prints, and a rank's errors are kept for the end of the run.
+  const bool several_ranks = parallel::launched_by_mpi();
+  std::stringbuf rank_errors;
+  std::streambuf* const standard_error = std::cerr.rdbuf();
+  if (several_ranks) {
+    parallel::ensure_initialised();
+    parallel::silence_other_ranks();
+    if (!parallel::writes_output()) std::cerr.rdbuf(&rank_errors);
+  }
+  const int code = run_verb(std::vector<std::string>(argv + 1, argv + argc));
+  if (!several_ranks) return code;
+  std::cout.flush();
+  const int agreed = end_of_run(code, rank_errors.str());
+  std::cerr.rdbuf(standard_error);  // rank_errors ends with main
+  return agreed;
 }

@@ -10,11 +10,14 @@
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -128,7 +131,7 @@ std::string deck_status(int exit_code, int n_nook) {
   return "ERROR";
 }
 
-Budget verify_budget(const fs::path& deck, const Budget& overrides) {
+Budget verify_budget(const fs::path& deck, const Budget& overrides, int ranks) {
   Budget header;
   try {
     if (deck.extension() == ".export") header = read_export(deck).budget;
@@ -138,12 +141,23 @@ Budget verify_budget(const fs::path& deck, const Budget& overrides) {
   }
   Budget budget = override_budget(header, overrides);
   if (!budget.seconds) budget.seconds = kVerifyDefaultSeconds;
-  if (!budget.megabytes) budget.megabytes = default_memory_budget_mb();
+  if (!budget.megabytes) budget.megabytes = std::floor(default_memory_budget_mb() / std::max(1, ranks));
   return budget;
 }
 
+fs::path find_on_path(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  std::istringstream folders(path ? path : "");
+  for (std::string folder; std::getline(folders, folder, ':');) {
+    const fs::path candidate = fs::path(folder.empty() ? "." : folder) / name;
+    std::error_code ec;
+    if (fs::is_regular_file(candidate, ec) && access(candidate.c_str(), X_OK) == 0) return candidate;
+  }
+  return {};
+}
+
 DeckOutcome run_child(const fs::path& executable, const fs::path& deck, const fs::path& out_dir, const Budget& budget,
-                      const std::vector<std::string>& extra_args) {
+                      const std::vector<std::string>& extra_args, const std::vector<std::string>& launcher) {
   DeckOutcome outcome;
   outcome.deck = deck;
   outcome.time_limit = budget.seconds.value_or(0.0);
@@ -159,7 +173,8 @@ DeckOutcome run_child(const fs::path& executable, const fs::path& deck, const fs
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, fds[1], 1);
   posix_spawn_file_actions_adddup2(&actions, fds[1], 2);
-  std::vector<std::string> words = {executable.string(), "run", deck.string(), "--out", out_dir.string()};
+  std::vector<std::string> words = launcher;
+  words.insert(words.end(), {executable.string(), "run", deck.string(), "--out", out_dir.string()});
   if (budget.seconds) words.insert(words.end(), {"--time-limit", budget_text(*budget.seconds)});
   if (budget.megabytes) words.insert(words.end(), {"--memory-limit", budget_text(*budget.megabytes)});
   words.insert(words.end(), extra_args.begin(), extra_args.end());
@@ -167,17 +182,23 @@ DeckOutcome run_child(const fs::path& executable, const fs::path& deck, const fs
   for (auto& word : words) argv.push_back(word.data());
   argv.push_back(nullptr);
   pid_t pid = 0;
-  int rc = posix_spawn(&pid, executable.c_str(), &actions, nullptr, argv.data(), environ);
+  const std::string program = words.front();
+  int rc = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   close(fds[1]);
   bool killed = false;
   if (rc == 0) {
     // Wall-clock watchdog: the child stops itself at its limit; past the grace it is killed.
+    // mpirun is first asked to end its run (SIGTERM): killed outright, it would leave its
+    // ranks running.
     using clock = std::chrono::steady_clock;
+    const auto seconds = [](double s) {
+      return std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(s));
+    };
+    const double grace = kVerifyKillGraceSeconds + (launcher.empty() ? 0.0 : kVerifyMpiKillGraceSeconds);
     std::optional<clock::time_point> kill_at;
-    if (budget.seconds)
-      kill_at = start + std::chrono::duration_cast<clock::duration>(
-                            std::chrono::duration<double>(*budget.seconds + kVerifyKillGraceSeconds));
+    if (budget.seconds) kill_at = start + seconds(*budget.seconds + grace);
+    bool terminated = false;
     char buffer[4096];
     pollfd reader{fds[0], POLLIN, 0};
     for (;;) {
@@ -188,7 +209,13 @@ DeckOutcome run_child(const fs::path& executable, const fs::path& deck, const fs
       const int ready = poll(&reader, 1, timeout_ms);
       if (ready < 0 && errno == EINTR) continue;
       if (ready == 0) {
-        kill(pid, SIGKILL);  // the child only: it starts no processes of its own
+        if (!launcher.empty() && !terminated) {
+          kill(pid, SIGTERM);  // mpirun ends its ranks
+          terminated = true;
+          kill_at = clock::now() + seconds(kVerifyMpiTermSeconds);
+          continue;
+        }
+        kill(pid, SIGKILL);  // the child only: it starts no processes of its own (or mpirun ignored SIGTERM)
         killed = true;
         continue;
       }
@@ -197,17 +224,18 @@ DeckOutcome run_child(const fs::path& executable, const fs::path& deck, const fs
       else if (n < 0 && errno == EINTR) continue;
       else break;
     }
+    killed = killed || terminated;
     int wstatus = 0;
     while (waitpid(pid, &wstatus, 0) < 0 && errno == EINTR) {
     }
     outcome.exit_code = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : -1;
     if (killed)
       outcome.output += "\nlunaster verify: " + deck.string() + ": time limit of " + budget_text(*budget.seconds) +
-                        " s exceeded; killed after " + budget_text(*budget.seconds + kVerifyKillGraceSeconds) + " s\n";
+                        " s exceeded; killed after " + budget_text(*budget.seconds + grace) + " s\n";
     else if (WIFSIGNALED(wstatus))
       outcome.output += "\nkilled by signal " + std::to_string(WTERMSIG(wstatus)) + "\n";
   } else {
-    outcome.output = "cannot start " + executable.string();
+    outcome.output = "cannot start " + program;
   }
   close(fds[0]);
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -357,9 +385,21 @@ int verify(const VerifyOptions& options, std::ostream& out) {
       out << "verify: no such deck or folder: " << p.string() << "\n";
       return 2;
     }
+  std::vector<std::string> launcher;
+  if (options.ranks > 0) {
+    const fs::path mpirun = find_on_path("mpirun");
+    if (mpirun.empty()) {
+      out << "verify: --np " << options.ranks
+          << " runs each deck under mpirun, and there is no mpirun on the PATH (Debian: apt-get install openmpi-bin)\n";
+      return 2;
+    }
+    launcher = {mpirun.string(), "-np", std::to_string(options.ranks)};
+  }
   const auto decks = collect_decks(paths);
   std::vector<DeckOutcome> outcomes(decks.size());
-  int jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  // A deck under --np N keeps N processes busy (MPI ranks wait for each other by polling).
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  int jobs = options.jobs > 0 ? options.jobs : std::max(1, cores / std::max(1, options.ranks));
   jobs = std::min<int>(jobs, std::max<std::size_t>(decks.size(), 1));
   std::atomic<std::size_t> next{0};
   std::vector<std::string> extra;
@@ -367,7 +407,7 @@ int verify(const VerifyOptions& options, std::ostream& out) {
   auto worker = [&] {
     for (std::size_t i = next++; i < decks.size(); i = next++)
       outcomes[i] = run_child(options.executable, decks[i], deck_out_dir(options.out_dir, decks[i]),
-                              verify_budget(decks[i], options.budget), extra);
+                              verify_budget(decks[i], options.budget, options.ranks), extra, launcher);
   };
   std::vector<std::thread> threads;
   for (int j = 0; j < jobs; ++j) threads.emplace_back(worker);

@@ -20,12 +20,18 @@ struct VerifyOptions {
   std::filesystem::path executable;          ///< the lunaster binary run as `exe run DECK --out DIR`
   Budget budget;                             ///< --time-limit / --memory-limit: override every deck header
   bool vale_calc_report = false;             ///< --vale-calc=report: a .comm's VALE_CALC are report lines
+  int ranks = 0;                             ///< --np N: each deck runs as `mpirun -np N exe run ...` (0: no mpirun)
 };
 
 /// Default budget of a deck under `lunaster verify` (when neither the command line nor the deck header sets one).
 constexpr double kVerifyDefaultSeconds = 300.0;
 /// The parent stops a child this long after its time limit if it has not stopped itself.
 constexpr double kVerifyKillGraceSeconds = 1.0;
+/// Under --np, the extra time mpirun gets (its start-up, the ranks' own stop, and the
+/// tearing down of the run); it is then asked to end the run (SIGTERM), and killed
+/// kVerifyMpiTermSeconds later if it has not.
+constexpr double kVerifyMpiKillGraceSeconds = 4.0;
+constexpr double kVerifyMpiTermSeconds = 2.0;
 
 /// One comparison of a .comm's VALE_CALC (code_aster's value) with lunaster's, as the deck printed it.
 struct CodeAsterComparison {
@@ -63,20 +69,28 @@ std::string deck_status(int exit_code, int n_nook);
 /// The budget a deck runs with under verify: `overrides` (command line), else its header
 /// (an .export's P time_limit / memory_limit),
 /// else 300 s and half of the machine's memory. A malformed header is left to the child
-/// to report as a deck error.
-Budget verify_budget(const std::filesystem::path& deck, const Budget& overrides);
+/// to report as a deck error. A memory limit is each process's: under --np, `ranks`
+/// processes share the default half of the machine.
+Budget verify_budget(const std::filesystem::path& deck, const Budget& overrides, int ranks = 1);
 /// Runs one deck as a child process (`exe run DECK --out DIR` plus the budget's
 /// --time-limit/--memory-limit) and captures its output. The child enforces its budget
 /// itself; if it is still running kVerifyKillGraceSeconds after its time limit, it is
-/// killed (SIGKILL, that child only) and reported as TIMEOUT.
+/// killed (SIGKILL, that child only) and reported as TIMEOUT. With a `launcher` (mpirun
+/// and its options, launcher[0] a path), the child is `launcher... exe run ...`: it gets
+/// kVerifyMpiKillGraceSeconds more, then SIGTERM (mpirun ends its ranks), then SIGKILL.
 DeckOutcome run_child(const std::filesystem::path& executable, const std::filesystem::path& deck,
                       const std::filesystem::path& out_dir, const Budget& budget = {},
-                      const std::vector<std::string>& extra_args = {});
+                      const std::vector<std::string>& extra_args = {},
+                      const std::vector<std::string>& launcher = {});
+/// The executable `name` in a folder of the PATH, or empty.
+std::filesystem::path find_on_path(const std::string& name);
 /// JUnit XML for the outcomes (one testcase per deck).
 std::string junit_xml(const std::vector<DeckOutcome>& outcomes);
 /// JSON report for the outcomes.
 std::string json_report(const std::vector<DeckOutcome>& outcomes);
 /// Runs everything, prints the table and "N passed, M failed"; returns 0 if every deck is OK.
+/// With `ranks`, each deck runs under the mpirun of the PATH (2 with a message if there is
+/// none), and jobs defaults to the number of cores divided by `ranks`.
 int verify(const VerifyOptions& options, std::ostream& out);
 
 }  // namespace lunaster::lua

@@ -7,12 +7,17 @@
 #include <system_error>
 
 #include "engine/core/error.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::engine {
 
 namespace fs = std::filesystem;
 
 void replace_file_atomically(const fs::path& path, const std::function<void(const fs::path& temp)>& create) {
+  // Every output file goes through here: under mpirun, rank 0 writes it and the other ranks,
+  // which computed the same content, write nothing. A failure on rank 0 is its own error;
+  // the end of the run gives every rank the worst exit status (lua/main.cpp).
+  if (!parallel::writes_output()) return;
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
   std::error_code ec;
   if (!fs::is_directory(folder, ec))

@@ -3,6 +3,8 @@
 /// the target, which is renamed over the target only once complete. A run that fails
 /// or is killed part-way leaves either the previous file or the new one, never a
 /// truncated mix, and no temporary behind (on failure it is removed).
+/// In a run of several MPI ranks only rank 0 writes: on the others both functions return
+/// without calling the writer.
 #include <filesystem>
 #include <functional>
 #include <ostream>

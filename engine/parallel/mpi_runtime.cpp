@@ -1,9 +1,15 @@
 #include "engine/parallel/mpi_runtime.hpp"
 
+#include <fcntl.h>
 #include <mpi.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
+#include <thread>
 
 namespace lunaster::engine::parallel {
 namespace {
@@ -12,6 +18,16 @@ bool env_set(const char* name) { return std::getenv(name) != nullptr; }
 
 /// A default for one OpenMPI MCA parameter, kept if the user set it.
 void mca_default(const char* name, const char* value) { setenv(name, value, 0); }
+
+// Rank and size, read once by ensure_initialised(): rank() is then callable from any
+// thread (the budget's watchdog), which MPI_THREAD_FUNNELED does not allow for MPI calls.
+std::atomic<bool> known{false};
+std::atomic<int> the_rank{0};
+std::atomic<int> the_size{1};
+/// The end-of-run agreement's own communicator (a duplicate of MPI_COMM_WORLD, several ranks only).
+MPI_Comm end_comm = MPI_COMM_NULL;
+/// Standard error as it was before silence_other_ranks(), -1 if it was not redirected.
+std::atomic<int> saved_stderr{-1};
 
 }  // namespace
 
@@ -25,8 +41,9 @@ bool initialised() {
   return flag != 0;
 }
 
-void ensure_initialised() {
-  if (initialised()) return;
+namespace {
+
+void start_mpi() {
   if (!launched_by_mpi()) {
     // A singleton: no orted daemon to start (0.35 s of a 0.4 s start-up on this
     // machine's OpenMPI 4.1), the point-to-point layer that needs no network
@@ -40,15 +57,31 @@ void ensure_initialised() {
   std::atexit(finalise);  // every way out of the process (return from main, std::exit) finalises
 }
 
+}  // namespace
+
+void ensure_initialised() {
+  if (!initialised()) start_mpi();
+  if (known) return;
+  // Also when a library initialised MPI itself: what this process is in the run is learnt once.
+  int r = 0, s = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &r);
+  MPI_Comm_size(MPI_COMM_WORLD, &s);
+  the_rank = r;
+  the_size = s;
+  // Collective: every rank of an mpirun run initialises first thing in main, together.
+  if (s > 1) MPI_Comm_dup(MPI_COMM_WORLD, &end_comm);
+  known = true;
+}
+
 int rank() {
-  if (!initialised()) return 0;
-  int r = 0;
+  if (known || !initialised()) return the_rank.load();
+  int r = 0;  // MPI initialised by a library, ensure_initialised() not called yet
   MPI_Comm_rank(MPI_COMM_WORLD, &r);
   return r;
 }
 
 int size() {
-  if (!initialised()) return 1;
+  if (known || !initialised()) return the_size.load();
   int s = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &s);
   return s;
@@ -83,7 +116,85 @@ void broadcast(double* data, long long n) {
 void finalise() {
   int finalised = 0;
   MPI_Finalized(&finalised);
-  if (initialised() && !finalised) MPI_Finalize();
+  if (initialised() && !finalised) {
+    if (end_comm != MPI_COMM_NULL) MPI_Comm_free(&end_comm);
+    MPI_Finalize();
+  }
+}
+
+void silence_other_ranks() {
+  if (rank() == 0 || saved_stderr.load() >= 0) return;
+  std::fflush(stdout);
+  std::fflush(stderr);
+  saved_stderr = fcntl(STDERR_FILENO, F_DUPFD_CLOEXEC, 3);
+  const int null = open("/dev/null", O_WRONLY | O_CLOEXEC);
+  if (null < 0) return;
+  dup2(null, STDOUT_FILENO);
+  dup2(null, STDERR_FILENO);
+  close(null);
+}
+
+int standard_error_fd() {
+  const int saved = saved_stderr.load();
+  return saved >= 0 ? saved : STDERR_FILENO;
+}
+
+std::optional<Spread> spread(int value, std::optional<double> wait_seconds) {
+  if (size() == 1 || end_comm == MPI_COMM_NULL) return Spread{value, value};
+  int in[2] = {value, -value}, out[2] = {value, -value};
+  MPI_Request request;
+  MPI_Iallreduce(in, out, 2, MPI_INT, MPI_MAX, end_comm, &request);
+  if (!wait_seconds) {
+    MPI_Wait(&request, MPI_STATUS_IGNORE);
+  } else {
+    using clock = std::chrono::steady_clock;
+    const auto deadline =
+        clock::now() + std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(*wait_seconds));
+    for (int done = 0;;) {
+      MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+      if (done) break;
+      if (clock::now() >= deadline) return std::nullopt;  // the request is left pending: the run is aborted
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+  }
+  return Spread{-out[1], out[0]};
+}
+
+std::vector<std::string> gather_texts(const std::string& text) {
+  if (size() == 1 || end_comm == MPI_COMM_NULL) return {text};
+  const int n = size();
+  const int length = static_cast<int>(text.size());
+  std::vector<int> lengths(rank() == 0 ? n : 0), offsets(rank() == 0 ? n : 0);
+  MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, end_comm);
+  std::string all;
+  if (rank() == 0) {
+    long long total = 0;
+    for (int r = 0; r < n; ++r) {
+      offsets[r] = static_cast<int>(total);
+      total += lengths[r];
+    }
+    all.resize(static_cast<std::size_t>(total));
+  }
+  MPI_Gatherv(text.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, 0, end_comm);
+  std::vector<std::string> texts;
+  if (rank() == 0)
+    for (int r = 0; r < n; ++r) texts.push_back(all.substr(static_cast<std::size_t>(offsets[r]), lengths[r]));
+  return texts;
+}
+
+void abort_run(int exit_code) {
+  if (initialised() && size() > 1) {
+    // Called by the budget's watchdog thread too: MPI_THREAD_FUNNELED does not provide for
+    // that, but OpenMPI's MPI_Abort only asks the launcher (PMIx, thread-safe) to end the run,
+    // and ends it within moments where a plain exit takes mpirun a second or two to notice.
+    // Should it ever not return nor end the process, this rank ends anyway.
+    std::thread([exit_code] {
+      std::this_thread::sleep_for(std::chrono::seconds(5));
+      _exit(exit_code);
+    }).detach();
+    MPI_Abort(MPI_COMM_WORLD, exit_code);
+  }
+  _exit(exit_code);
 }
 
 }  // namespace lunaster::engine::parallel

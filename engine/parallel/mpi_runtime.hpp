@@ -1,4 +1,8 @@
 #pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
 /// The MPI runtime of one lunaster process.
 ///
 /// A run started without `mpirun` is one process and initialises MPI only when a
@@ -40,5 +44,39 @@ void broadcast(double* data, long long n);
 
 /// Finalises MPI if it was initialised (called once, at the end of main).
 void finalise();
+
+// ---- a run of several ranks: one voice, one exit status ----
+
+/// On a rank other than 0 of a run of several ranks: the process's standard output and
+/// error (file descriptors 1 and 2) go to /dev/null, so that neither the front end nor a
+/// library prints the same lines once per rank. Nothing on rank 0 or in a one-rank run.
+void silence_other_ranks();
+
+/// The file descriptor of this process's standard error as it was before
+/// silence_other_ranks() (STDERR_FILENO if it was not redirected): where the front end
+/// writes what a rank other than 0 says when it is the one that brings the run down.
+/// Callable from any thread (no MPI call).
+int standard_error_fd();
+
+/// The lowest and the highest value given by the ranks.
+struct Spread {
+  int lowest = 0;
+  int highest = 0;
+};
+
+/// Every rank's `value` reduced over the ranks, on a communicator of its own (never
+/// matched with a solver's messages). Waits `wait_seconds` at most if given (nullopt if
+/// some rank did not take part in time: it is still computing, or blocked in a collective
+/// call waiting for this rank), else until every rank takes part.
+std::optional<Spread> spread(int value, std::optional<double> wait_seconds);
+
+/// Every rank's `text` on rank 0, in rank order (empty elsewhere). Only after a spread()
+/// that every rank completed.
+std::vector<std::string> gather_texts(const std::string& text);
+
+/// Ends every rank of the run with `exit_code` (MPI_Abort): a rank cannot leave the
+/// others waiting in a collective call for it. In a one-rank run, ends the process
+/// (_exit). Flushes nothing: callable from a watchdog thread.
+[[noreturn]] void abort_run(int exit_code);
 
 }  // namespace lunaster::engine::parallel

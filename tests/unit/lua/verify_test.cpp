@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -110,6 +112,9 @@ TEST(Verify, BudgetStatusesAndDefaults) {
   EXPECT_EQ(overridden.megabytes.value_or(0), 512.0);
   // The child reports the malformed header; the parent still guards it with the defaults.
   EXPECT_EQ(verify_budget(dir / "broken.lua", none).seconds.value_or(0), 300.0);
+  // A memory limit is each process's: under --np 2 the two ranks share the default half of the machine.
+  EXPECT_EQ(verify_budget(dir / "plain.lua", none, 2).megabytes.value_or(0), std::floor(default_memory_budget_mb() / 2));
+  EXPECT_EQ(verify_budget(dir / "header.lua", none, 2).megabytes.value_or(0), 512.0);
 }
 
 TEST(Verify, ChildrenOverBudgetAreReportedAndAHungChildIsKilled) {
@@ -162,4 +167,49 @@ TEST(Verify, ChildrenOverBudgetAreReportedAndAHungChildIsKilled) {
   EXPECT_NE(json.str().find("\"status\": \"TIMEOUT\", \"exit_code\": -1"), std::string::npos) << json.str();
   EXPECT_NE(json.str().find("\"status\": \"OUT_OF_MEMORY\", \"exit_code\": 6"), std::string::npos) << json.str();
   EXPECT_NE(json.str().find("\"time_limit\": 0.5, \"memory_limit_mb\": "), std::string::npos) << json.str();
+}
+
+TEST(Verify, NpRunsEachDeckUnderTheMpirunOfThePath) {
+  fs::path dir = fs::path(LUNASTER_BINARY_DIR) / "unit-verify-np";
+  fs::remove_all(dir);
+  for (const char* sub : {"suite", "bin", "not-executable", "empty"}) fs::create_directories(dir / sub);
+  // A stand-in mpirun prints its arguments and runs the command after "-np N".
+  std::ofstream(dir / "bin" / "mpirun") << "#!/bin/sh\necho \"launcher: $*\"\nshift 2\nexec \"$@\"\n";
+  fs::permissions(dir / "bin" / "mpirun", fs::perms::owner_all);
+  std::ofstream(dir / "not-executable" / "mpirun") << "not a program\n";
+  fs::path exe = dir / "fake_lunaster.sh";
+  std::ofstream(exe) << "#!/bin/sh\necho \" OK  x\"\n";
+  fs::permissions(exe, fs::perms::owner_all);
+  std::ofstream(dir / "suite" / "deck.lua") << "-- a deck\n";
+  const std::string saved_path = std::getenv("PATH") ? std::getenv("PATH") : "";
+  struct RestorePath {
+    std::string value;
+    ~RestorePath() { setenv("PATH", value.c_str(), 1); }
+  } restore{saved_path};
+
+  setenv("PATH", ((dir / "not-executable").string() + ":" + (dir / "bin").string()).c_str(), 1);
+  EXPECT_EQ(find_on_path("mpirun"), dir / "bin" / "mpirun");  // a file that is not executable is skipped
+  VerifyOptions options;
+  options.paths = {dir / "suite"};
+  options.executable = exe;
+  options.out_dir = dir / "out";
+  options.ranks = 2;
+  options.json_file = (dir / "report.json").string();
+  std::ostringstream out;
+  EXPECT_EQ(verify(options, out), 0) << out.str();
+  EXPECT_NE(out.str().find("deck.lua  OK             1/0"), std::string::npos) << out.str();
+  std::stringstream json;
+  json << std::ifstream(dir / "report.json").rdbuf();
+  EXPECT_NE(json.str().find("launcher: -np 2 " + exe.string() + " run " + (dir / "suite" / "deck.lua").string() +
+                            " --out " + (dir / "out" / "deck").string() + " --time-limit 300 --memory-limit "),
+            std::string::npos)
+      << json.str();
+
+  setenv("PATH", (dir / "empty").string().c_str(), 1);
+  EXPECT_TRUE(find_on_path("mpirun").empty());
+  std::ostringstream missing;
+  EXPECT_EQ(verify(options, missing), 2);
+  EXPECT_NE(missing.str().find("verify: --np 2 runs each deck under mpirun, and there is no mpirun on the PATH"),
+            std::string::npos)
+      << missing.str();
 }

@@ -1,0 +1,374 @@
+#!/usr/bin/env python3
+"""lunaster under mpirun, through the real CLI (CTest label: mpi).
+
+usage: mpi_runs.py CASE LUNASTER MESHGEN SOURCE_DIR SCRATCH_DIR
+  verify_suite  the decks `make verify` runs (testcases/), by `lunaster verify` serially and with
+                --np 2, both with --json: every TEST_RESU value equal to 1e-8 (compare_checks.py),
+                the same decks, checks and statuses; the comparison itself is shown to fail on a
+                perturbed value, a missing check and a changed status
+  outputs       `mpirun -np 2 lunaster run` of decks that write MED results (MUMPS), tables and
+                IMPR_MESURE, and of an .export with a message file: the files of the serial run,
+                MED fields equal to 1e-8 (h5py), the report printed once; rank 1 prints nothing and
+                writes nothing (run as MPMD: rank 1 gets an --out folder of its own, which must not
+                appear)
+  errors        must-fail decks under mpirun -np 2 (a deck error, a singular MUMPS factorisation):
+                the error once with file:line, the exit status of the deck; `lunaster verify` under
+                mpirun refuses; verify --np without mpirun on the PATH says so; budgets under
+                verify --np 2 (TIMEOUT, OUT_OF_MEMORY); a launcher that outlives the time limit
+                is asked to end (SIGTERM) and the deck reported TIMEOUT
+  rank_failure  a rank that fails alone brings the run down: a budget stop inside the collective
+                MUMPS factorisation (time limit on every rank; memory limit on rank 0 only, then
+                on rank 1 only); a rank that stops on a deck error while the other waits for it in
+                MUMPS (the end-of-run wait, then MPI_Abort with the rank's status); ranks that end
+                with different statuses (the worst wins, rank 0 shows the other rank's error).
+                Rank-local failures are made by MPMD runs (each rank its own deck or limit).
+mpirun settings for a root user on a small machine are set here (never in lunaster), each one
+kept if the environment gives it.
+"""
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+import compare_checks  # noqa: E402
+
+failures = []
+ENV = dict(os.environ)
+for key, value in {
+    "OMPI_ALLOW_RUN_AS_ROOT": "1",  # CI runs as root
+    "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
+    "OMPI_MCA_rmaps_base_oversubscribe": "1",  # more ranks than cores (verify -j 2 --np 2 on 2 cores)
+    "OMPI_MCA_mpi_yield_when_idle": "1",  # waiting ranks yield the core (oversubscribed)
+    "OMPI_MCA_pml": "ob1",  # one machine: shared memory, no UCX probing (0.2 s a start)
+    "OMPI_MCA_btl": "self,vader",
+    "OMPI_MCA_btl_vader_single_copy_mechanism": "none",  # containers may forbid cross-memory attach
+}.items():
+    ENV.setdefault(key, value)
+# The end-of-run wait of a rank that stopped on an error (lua/main.cpp kRankWaitSeconds).
+RANK_WAIT_SECONDS = 10.0
+
+
+def check(condition, what):
+    print(("ok    " if condition else "FAIL  ") + what)
+    if not condition:
+        failures.append(what)
+
+
+def run(args, cwd, env=None, timeout=300):
+    start = time.monotonic()
+    proc = subprocess.run([str(a) for a in args], cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                          timeout=timeout, env=env or ENV)
+    seconds = time.monotonic() - start
+    print(f"$ {' '.join(str(a) for a in args)}  -> exit {proc.returncode} in {seconds:.2f} s")
+    return proc.returncode, proc.stdout, proc.stderr, seconds
+
+
+def mpirun():
+    path = shutil.which("mpirun", path=ENV.get("PATH"))
+    if not path:
+        sys.exit("mpirun is not on the PATH (Debian: openmpi-bin)")
+    return path
+
+
+def mpmd(exe, rank0_args, rank1_args, logs):
+    """mpirun with one rank per argument list (MPMD), each rank's output kept under `logs`."""
+    return [mpirun(), "--output-filename", logs, "-np", 1, exe, *rank0_args, ":", "-np", 1, exe, *rank1_args]
+
+
+def rank_output(logs, rank):
+    folder = Path(logs) / "1" / f"rank.{rank}"
+    return "".join((folder / s).read_text() if (folder / s).exists() else "" for s in ("stdout", "stderr"))
+
+
+def test_lines(text):
+    return [l for l in text.splitlines() if compare_checks.CHECK.match(l)]
+
+
+# ---------------------------------------------------------------------------------------------
+def verify_suite(exe, source, scratch):
+    scratch.mkdir(parents=True)
+    serial, parallel = scratch / "serial.json", scratch / "np2.json"
+    common = ["verify", "testcases", "-j", "2", "--vale-calc=report"]
+    code_s, out_s, err_s, t_s = run([exe, *common, "--out", scratch / "serial", "--json", serial], source)
+    code_p, out_p, err_p, t_p = run([exe, *common, "--np", "2", "--out", scratch / "np2", "--json", parallel], source)
+    print(f"serial verify {t_s:.1f} s, verify --np 2 {t_p:.1f} s")
+    for out in (out_s, out_p):
+        print("  " + "\n  ".join(out.strip().splitlines()[-2:]))
+    check(code_s == code_p, f"the same verify exit status serially and with --np 2 ({code_s}, {code_p})")
+    a, b = compare_checks.decks(serial), compare_checks.decks(parallel)
+    check(len(a) > 50, f"the suite is the whole of testcases/ ({len(a)} decks)")
+    problems, stats = compare_checks.compare(a, b, 1e-8, 1e-8)
+    for p in problems[:40]:
+        print("  DIFFERENT  " + p)
+    print(f"  {stats['decks']} decks, {stats['checks']} values, largest relative difference {stats['largest_rel']:.2e} "
+          f"({stats['largest_where']})")
+    check(not problems, f"every TEST_RESU value of --np 2 equals the serial one to 1e-8 ({len(problems)} difference(s))")
+    check(stats["checks"] > 2000, f"the checks of every deck were compared ({stats['checks']})")
+    n_mpi_solves = sum("using MUMPS" in d["output"] or "METHODE='MUMPS'" in d["output"] for d in b.values())
+    check(n_mpi_solves > 20, f"decks that factorise with MUMPS across the ranks are part of it ({n_mpi_solves})")
+
+    # The comparison can fail: a value off by 1e-7, a check gone, a status changed.
+    name = next(n for n in sorted(b) if test_lines(b[n]["output"]))
+    line = test_lines(b[name]["output"])[0]
+    calc = float(re.search(r"calc=(\S+)", line).group(1))
+    perturbed = line.replace(re.search(r"calc=(\S+)", line).group(0), f"calc={calc * (1 + 1e-7) + 1e-7:.9e}")
+    for what, edit, says in (
+            ("a value off by 1e-7", lambda o: o.replace(line, perturbed, 1), "calc="),
+            ("a check missing", lambda o: o.replace(line + "\n", "", 1), "check(s) against"),
+            ("a status changed", lambda o: o.replace(line, ("NOOK" if line.startswith(" OK") else " OK ") + line[4:], 1),
+             "' against '")):
+        changed = json.loads(json.dumps(b))
+        changed[name]["output"] = edit(changed[name]["output"])
+        found, _ = compare_checks.compare(a, changed, 1e-8, 1e-8)
+        check(len(found) >= 1 and says in found[0], f"the comparison finds {what} in {name} ({found[:1]})")
+    changed = dict(b)
+    del changed[name]
+    found, _ = compare_checks.compare(a, changed, 1e-8, 1e-8)
+    check(len(found) == 1, "the comparison finds a deck missing")
+
+
+# ---------------------------------------------------------------------------------------------
+def med_datasets(path):
+    import h5py
+    import numpy
+
+    out = {}
+
+    def visit(name, obj):
+        if isinstance(obj, h5py.Dataset):
+            out[name] = numpy.array(obj[()])
+        for key, value in obj.attrs.items():
+            out[f"{name}@{key}"] = numpy.array(value)
+
+    with h5py.File(path, "r") as f:
+        f.visititems(visit)
+    return out
+
+
+def same_med(a, b):
+    """Differences between two MED files: the same datasets and attributes, floats to 1e-8."""
+    import numpy
+
+    da, db = med_datasets(a), med_datasets(b)
+    problems = [f"{k}: only in {a.name} of the serial run" for k in sorted(set(da) - set(db))]
+    problems += [f"{k}: only in the mpirun file" for k in sorted(set(db) - set(da))]
+    n_values = 0
+    for key in sorted(set(da) & set(db)):
+        x, y = da[key], db[key]
+        if x.shape != y.shape or x.dtype != y.dtype:
+            problems.append(f"{key}: {x.dtype}{x.shape} against {y.dtype}{y.shape}")
+        elif numpy.issubdtype(x.dtype, numpy.floating):
+            n_values += x.size
+            bad = numpy.abs(x - y) > numpy.maximum(1e-8 * numpy.maximum(numpy.abs(x), numpy.abs(y)), 1e-8)
+            if bad.any():
+                i = int(numpy.argmax(bad.ravel()))
+                problems.append(f"{key}: {int(bad.sum())} value(s) differ, first {x.ravel()[i]!r} against {y.ravel()[i]!r}")
+        elif not numpy.array_equal(x, y):
+            problems.append(f"{key}: differs")
+    return problems, len(da), n_values
+
+
+def output_files(folder):
+    return sorted(str(p.relative_to(folder)) for p in Path(folder).rglob("*") if p.is_file())
+
+
+def outputs(exe, source, scratch):
+    scratch.mkdir(parents=True)
+    case = scratch / "case"
+    case.mkdir()
+    shutil.copy(source / "testcases" / "comm" / "ssnp121a.comm", case)
+    (case / "study.export").write_text(
+        f"P time_limit 60\nP memory_limit 512\nF comm ssnp121a.comm D 1\nF mmed {source}/testcases/ssnp121a.med D 20\n"
+        "F rmed contact_result.rmed R 80\nF mess study.mess R 6\n")
+    decks = [source / "testcases" / "ssnp121a.lua", source / "testcases" / "reactions_tables.lua",
+             source / "testcases" / "loads_and_groups.lua", case / "study.export",
+             source / "testcases" / "errors" / "contact_step_no_subdivision.lua"]  # exit 3, converged steps saved
+    serial_checks = {}
+    for deck in decks:
+        name = deck.stem
+        want = 3 if deck.parent.name == "errors" else 0
+        extra = ["--vale-calc=report"] if deck.suffix == ".export" else []
+        serial_out, rank0_out, rank1_out = scratch / f"{name}.serial", scratch / f"{name}.rank0", scratch / f"{name}.rank1"
+        code_s, out_s, err_s, _ = run([exe, "run", deck, "--out", serial_out, *extra], scratch)
+        logs = scratch / f"{name}.logs"
+        code_m, out_m, err_m, _ = run(mpmd(exe, ["run", deck, "--out", rank0_out, *extra],
+                                           ["run", deck, "--out", rank1_out, *extra], logs), scratch)
+        check(code_s == want and code_m == want,
+              f"{name}: exit {want} serially and under mpirun -np 2 ({code_s}, {code_m})")
+        files = output_files(serial_out)
+        check(len(files) > 0 and output_files(rank0_out) == files,
+              f"{name}: rank 0 writes the files of the serial run, no more, no less ({files})")
+        check(not rank1_out.exists(), f"{name}: rank 1 writes nothing (its --out folder does not exist)")
+        check(rank_output(logs, 1) == "", f"{name}: rank 1 prints nothing (stdout and stderr empty)")
+        meds = [f for f in files if f.endswith(".rmed")]
+        for med in meds:
+            problems, n_sets, n_values = same_med(serial_out / med, rank0_out / med)
+            for p in problems[:10]:
+                print("  " + p)
+            check(not problems and n_values > 0,
+                  f"{name}: {med} of mpirun equals the serial one ({n_sets} datasets/attributes, {n_values} floats to 1e-8)")
+        if want:
+            error = [l for l in err_m.splitlines() if re.search(re.escape(deck.name) + r":\d+: STAT_NON_LINE", l)]
+            check(len(error) == 1, f"{name}: the error once, with file:line ({len(error)})")
+            check(str(rank0_out / f"{name}_converged.rmed") in err_m, f"{name}: it names rank 0's converged-steps file")
+            continue
+        check(err_m == "", f"{name}: nothing on the standard error of the run")
+        summary = [l for l in out_m.splitlines() if re.match(r"lunaster: \d+ check\(s\) OK", l)]
+        check(len(summary) == 1, f"{name}: the report's summary is printed once ({len(summary)})")
+        serial_checks[name] = len(test_lines(out_s))
+        check(len(test_lines(out_m)) == serial_checks[name] > 0,
+              f"{name}: the TEST_RESU lines printed once each ({len(test_lines(out_m))}, serially {serial_checks[name]})")
+        if deck.suffix == ".export":
+            check((rank0_out / "study.mess").read_text() == out_m + err_m,
+                  "the .export's message file (rank 0's) holds what the run printed")
+    check(any(f.endswith(".rmed") for d in decks for f in output_files(scratch / f"{d.stem}.serial")),
+          "MED files were compared")
+
+    # A plain `mpirun -np 2` (one --out for both ranks): exactly one MED file, no temporary left.
+    code, out, err, _ = run([mpirun(), "-np", 2, exe, "run", source / "testcases" / "ssnp121a.lua", "--out", "plain"],
+                            scratch)
+    check(code == 0 and output_files(scratch / "plain") == ["ssnp121a_80.rmed"],
+          f"mpirun -np 2: exactly one MED file in the output folder ({output_files(scratch / 'plain')})")
+    check(out.count("check(s) OK") == 1 and len(test_lines(out)) == serial_checks["ssnp121a"],
+          f"mpirun -np 2: the TEST_RESU lines and the summary once ({len(test_lines(out))} lines)")
+
+
+# ---------------------------------------------------------------------------------------------
+def expectations(deck):
+    text = Path(deck).read_text()
+    patterns = re.findall(r"^-- EXPECT_ERROR: *(.*)$", text, re.M)
+    status = re.search(r"^-- EXPECT_STATUS: *(\d+)", text, re.M)
+    return patterns, int(status.group(1)) if status else None
+
+
+def errors(exe, source, scratch):
+    scratch.mkdir(parents=True)
+    for deck, want in (("misspelt_keyword.lua", 2), ("singular_free_body_mumps.lua", 3)):
+        path = source / "testcases" / "errors" / deck
+        patterns, status = expectations(path)
+        check(status == want, f"{deck}: the deck expects exit status {want}")
+        logs = scratch / f"{path.stem}.logs"
+        code, out, err, _ = run([mpirun(), "--output-filename", logs, "-np", 2, exe, "run", path, "--out", "o"], scratch)
+        text = out + err
+        check(code == want, f"{deck}: mpirun -np 2 exits {want}, as the serial run ({code})")
+        for p in patterns:
+            check(re.search(p, text) is not None, f"{deck}: output matches {p}")
+        first = patterns[0]  # the line naming file:line: command
+        check(len(re.findall(first, text)) == 1, f"{deck}: the error is printed once ({len(re.findall(first, text))})")
+        check(re.search(re.escape(deck) + r":\d+: ", text) is not None, f"{deck}: the error names file:line")
+        check(rank_output(logs, 1) == "", f"{deck}: rank 1 prints nothing")
+
+    code, out, err, _ = run([mpirun(), "-np", 2, exe, "verify", source / "testcases" / "patch_2d.lua"], scratch)
+    check(code == 2 and (out + err).count("lunaster verify --np N") == 1,
+          f"verify under mpirun refuses once, pointing at --np (exit {code})")
+    env = dict(ENV, PATH=str(scratch / "empty-path"))
+    code, out, err, _ = run([exe, "verify", source / "testcases" / "patch_2d.lua", "--np", "2"], scratch, env=env)
+    check(code == 2 and "no mpirun on the PATH" in out + err, f"verify --np 2 without mpirun says so (exit {code})")
+    code, out, err, _ = run([exe, "verify", source / "testcases" / "patch_2d.lua", "--np", "0"], scratch)
+    check(code == 2 and "--np expects a positive number" in out + err, f"verify --np 0 is refused (exit {code})")
+
+    # Budgets under verify --np 2: the ranks stop themselves, mpirun passes their status on.
+    report = scratch / "budgets.json"
+    code, out, err, seconds = run([exe, "verify", HERE.parent / "budget" / "loop_forever.lua",
+                                   HERE.parent / "budget" / "grow_forever.lua", "--np", "2", "-j", "2", "--out", "b",
+                                   "--json", report], scratch)
+    statuses = {Path(d["deck"]).name: d for d in json.loads(report.read_text())["decks"]}
+    check(code == 1 and statuses["loop_forever.lua"]["status"] == "TIMEOUT"
+          and statuses["grow_forever.lua"]["status"] == "OUT_OF_MEMORY",
+          f"verify --np 2: TIMEOUT and OUT_OF_MEMORY as serially (exit {code}, {seconds:.1f} s)")
+    check(statuses["loop_forever.lua"]["output"].count("loop_forever.lua:7: time limit of 1 s exceeded") == 1,
+          "verify --np 2: the deck line of the time limit, once")
+
+    # A launcher that does not end by itself past the time limit: verify asks it to (SIGTERM;
+    # a real mpirun then ends its ranks) and reports TIMEOUT. The stand-in only waits.
+    fake = scratch / "fake-launcher"
+    fake.mkdir()
+    (fake / "mpirun").write_text("#!/bin/bash\ntrap 'echo \"launcher: SIGTERM\"; kill $child; exit 143' TERM\n"
+                                 "sleep 60 & child=$!\nwait\n")
+    (fake / "mpirun").chmod(0o755)
+    env = dict(ENV, PATH=f"{fake}:{ENV.get('PATH', '')}")
+    code, out, err, seconds = run([exe, "verify", source / "testcases" / "patch_2d.lua", "--np", "2", "--time-limit",
+                                   "1", "--out", "f"], scratch, env=env)
+    check(code == 1 and "launcher: SIGTERM" in out and re.search(r"patch_2d\.lua +TIMEOUT", out) is not None
+          and 5.5 < seconds < 9.0, f"verify --np: a launcher still running 5 s past the limit gets SIGTERM ({seconds:.1f} s)")
+
+
+# ---------------------------------------------------------------------------------------------
+def rank_failure(exe, meshgen, source, scratch):
+    scratch.mkdir(parents=True)
+    deck = scratch / "refined.lua"  # about 4 s and 350 MB serially; MUMPS (collective) for its contact system
+    shutil.copy(source / "tests" / "bench" / "ssnp121i_refined.lua", deck)
+    subprocess.run([meshgen, "--v1", "hexa8:5x5x1", "--v2", "hexa20:4x4x1", "--refine", "4", "-o", scratch / "refined.med"],
+                   check=True, stdout=subprocess.DEVNULL)
+    stop = r"refined\.lua: time limit of 1 s exceeded while running \S*refined\.lua:\d+: STAT_NON_LINE; the run is stopped"
+    code, out, err, seconds = run([mpirun(), "-np", 2, exe, "run", deck, "-q", "--out", "o", "--time-limit", "1"], scratch)
+    check(code == 5 and seconds < 5.0, f"--time-limit 1 on both ranks stops the run inside the solve: exit 5 ({seconds:.1f} s)")
+    check(len(re.findall(stop, out + err)) == 1 and "rank 1" not in out + err,
+          "the time-limit message once, rank 0's")
+
+    memory = r"memory limit of 150 MB exceeded \(resident memory \d+ MB\) while running"
+    for failing in (0, 1):
+        args = [["run", deck, "-q", "--out", "o"], ["run", deck, "-q", "--out", "o"]]
+        args[failing] += ["--memory-limit", "150"]
+        code, out, err, seconds = run(mpmd(exe, args[0], args[1], scratch / f"memory{failing}.logs"), scratch)
+        check(code == 6 and seconds < 10.0,
+              f"--memory-limit 150 on rank {failing} only: that rank stops, and the run with it: exit 6 ({seconds:.1f} s)")
+        check(re.search(memory, out + err) is not None and ((f"lunaster: rank {failing}:" in out + err) == (failing > 0)),
+              f"the memory message is printed (by rank {failing}{', which says so' if failing else ''})")
+
+    # A deck error on one rank while the other waits for it in MUMPS: the failing rank waits
+    # RANK_WAIT_SECONDS for the others at the end of its run, then aborts the run with its status.
+    error_deck = source / "testcases" / "errors" / "misspelt_keyword.lua"
+    good_deck = source / "testcases" / "ssnp121a.lua"
+    for failing in (0, 1):
+        args = [["run", good_deck, "--out", "o"], ["run", good_deck, "--out", "o"]]
+        args[failing][1] = error_deck
+        code, out, err, seconds = run(mpmd(exe, args[0], args[1], scratch / f"alone{failing}.logs"), scratch, timeout=120)
+        text = out + err
+        check(code == 2 and RANK_WAIT_SECONDS - 1 < seconds < RANK_WAIT_SECONDS + 15,
+              f"a deck error on rank {failing} alone ends the run: exit 2 after the wait ({seconds:.1f} s)")
+        check("misspelt_keyword.lua:6: DEFI_MATERIAU: ELAS.NUU" in text, "the error is shown")
+        check(f"rank {failing} stopped with exit status 2 and the other ranks have not ended" in text,
+              "the abort says which rank stopped the run and why")
+        if failing:
+            check("lunaster: rank 1: " in text, "rank 1, silent until then, shows its error as it aborts the run")
+
+    # Rank 1 fails alone and rank 0 ends its deck (no collective call on its way): every rank
+    # returns the worst status, and rank 0 shows rank 1's error.
+    code, out, err, seconds = run(mpmd(exe, ["run", source / "testcases" / "patch_2d.lua", "--out", "o", "-q"],
+                                       ["run", error_deck, "--out", "o"], scratch / "worst.logs"), scratch)
+    text = out + err
+    check(code == 2 and seconds < RANK_WAIT_SECONDS, f"rank 0 OK, rank 1 deck error: the run exits 2 ({seconds:.1f} s)")
+    check("lunaster: rank 1 ended with exit status 2 (rank 0: 0)" in text and
+          "lunaster: rank 1: " + str(error_deck) + ":6: DEFI_MATERIAU: ELAS.NUU" in text,
+          "rank 0 names the rank that ended otherwise, with its error")
+
+
+def main():
+    case = sys.argv[1]
+    exe, meshgen, source, scratch = (Path(a).resolve() for a in sys.argv[2:6])
+    shutil.rmtree(scratch, ignore_errors=True)
+    start = time.monotonic()
+    if case == "verify_suite":
+        verify_suite(exe, source, scratch)
+    elif case == "outputs":
+        outputs(exe, source, scratch)
+    elif case == "errors":
+        errors(exe, source, scratch)
+    elif case == "rank_failure":
+        rank_failure(exe, meshgen, source, scratch)
+    else:
+        sys.exit(f"unknown case {case}")
+    print(f"{len(failures)} failure(s) in {time.monotonic() - start:.1f} s")
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()
