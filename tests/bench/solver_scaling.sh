@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# Direct against iterative solvers on a 3D elastic block: the unit cube of N^3 HEXA8 (3 (N+1)^3
+# unknowns), clamped at the bottom, pressed by a uniform pressure on the top (NU = 0: a uniaxial
+# state, DZ = -p/E at the top, checked to 1e-6). Each run is a whole `lunaster run` (mesh reading,
+# assembly, solve, start-up included) timed by /usr/bin/time: wall seconds and peak memory.
+# Usage: tests/bench/solver_scaling.sh [-n RANKS] [BUILD_DIR] SOLVER:N...
+#   SOLVER: MUMPS | CHOLMOD | GAMG (PETSc CG + GAMG) | BOOMER (PETSc CG + BoomerAMG) | LDLT_SP
+#   -n RANKS: run under `mpirun -np RANKS` (each rank its share of the PETSc matrix / MUMPS work).
+# Example: tests/bench/solver_scaling.sh build MUMPS:30 GAMG:30 GAMG:99
+set -euo pipefail
+ranks=1
+if [ "${1:-}" = "-n" ]; then ranks=$2; shift 2; fi
+build=${1:-build}; shift || true
+root=$(cd "$(dirname "$0")/../.." && pwd)
+work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
+launch=()
+if [ "$ranks" -gt 1 ]; then
+  export OMPI_ALLOW_RUN_AS_ROOT=${OMPI_ALLOW_RUN_AS_ROOT:-1} OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=${OMPI_ALLOW_RUN_AS_ROOT_CONFIRM:-1}
+  export OMPI_MCA_pml=${OMPI_MCA_pml:-ob1} OMPI_MCA_btl=${OMPI_MCA_btl:-self,vader}
+  launch=(mpirun -np "$ranks")
+fi
+printf "%-8s %5s %6s %10s %9s %9s %10s %10s\n" solver ranks N unknowns wall_s peak_MB us/unknown B/unknown
+for run in "$@"; do
+  solver=${run%%:*}; n=${run##*:}
+  mesh="$work/block_$n.med"
+  [ -f "$mesh" ] || "$root/$build/lunaster-meshgen" --block "hexa8:$n" -o "$mesh" >/dev/null
+  case $solver in
+    MUMPS|CHOLMOD) solveur="_F{ METHODE = '$solver' }" ;;
+    GAMG|BOOMER|ML) solveur="_F{ METHODE = 'PETSC', ALGORITHME = 'CG', PRE_COND = '$solver', RESI_RELA = 1.0e-8 }" ;;
+    LDLT_SP) solveur="_F{ METHODE = 'PETSC', ALGORITHME = 'FGMRES', PRE_COND = 'LDLT_SP', RESI_RELA = 1.0e-8 }" ;;
+    *) echo "unknown solver $solver" >&2; exit 2 ;;
+  esac
+  deck="$work/block_${solver}_$n.lua"
+  cat > "$deck" <<LUA
+DEBUT()
+MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'block_$n.med' }
+MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = '3D' } }
+MAT = DEFI_MATERIAU{ ELAS = _F{ E = 2.0e11, NU = 0.0 } }
+CM = AFFE_MATERIAU{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', MATER = MAT } }
+CH = AFFE_CHAR_MECA{ MODELE = MO, DDL_IMPO = _F{ GROUP_MA = 'BOTTOM', DX = 0.0, DY = 0.0, DZ = 0.0 },
+                     PRES_REP = _F{ GROUP_MA = 'TOP', PRES = 1.0e8 } }
+L = DEFI_LIST_REEL{ DEBUT = 0.0, INTERVALLE = _F{ JUSQU_A = 1.0, NOMBRE = 1 } }
+R = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CM, EXCIT = _F{ CHARGE = CH }, SOLVEUR = $solveur,
+                   COMPORTEMENT = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L } }
+TEST_RESU{ RESU = _F{ RESULTAT = R, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', NOM_CMP = 'DZ', GROUP_NO = 'C111',
+                      REFERENCE = 'ANALYTIQUE', VALE_REFE = -5.0e-4, PRECISION = 1.0e-6 } }
+FIN()
+LUA
+  unknowns=$(( 3 * (n + 1) * (n + 1) * (n + 1) ))
+  if ! /usr/bin/time -f "%e %M" -o "$work/time" "${launch[@]}" "$root/$build/lunaster" run "$deck" --out "$work/out" -q \
+       > "$work/log" 2>&1; then
+    echo "$solver N=$n failed:"; tail -5 "$work/log"; continue
+  fi
+  read -r wall kb < "$work/time"
+  # /usr/bin/time's peak is that of mpirun's largest child under mpirun: per rank.
+  awk -v s="$solver" -v r="$ranks" -v n="$n" -v u="$unknowns" -v w="$wall" -v kb="$kb" \
+    'BEGIN { printf "%-8s %5d %6d %10d %9.2f %9d %10.2f %10.0f\n", s, r, n, u, w, kb / 1024, 1e6 * w / u, 1024 * kb / u }'
+done
