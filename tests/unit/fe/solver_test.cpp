@@ -91,6 +91,103 @@ TEST(Solvers, SaddlePointSystemIndefiniteBackends) {
   EXPECT_THROW(cholmod->factorize(a, MatrixKind::SymmetricIndefinite), InternalError);
 }
 
+/// PETSc settings with a tolerance tight enough to compare with a direct solve.
+IterativeSettings petsc(IterativeSettings::Krylov krylov, IterativeSettings::Preconditioner pc, int max_iterations = 0) {
+  IterativeSettings s;
+  s.krylov = krylov;
+  s.preconditioner = pc;
+  s.relative_residual = 1e-13;
+  s.max_iterations = max_iterations;
+  return s;
+}
+
+TEST(Solvers, PetscKrylovEveryPreconditionerOnSpd) {
+  using S = IterativeSettings;
+  const SparseMatrix a = spd_matrix(60);
+  for (S::Preconditioner pc : {S::Preconditioner::Gamg, S::Preconditioner::Ml, S::Preconditioner::Boomer,
+                               S::Preconditioner::LdltSp, S::Preconditioner::Jacobi, S::Preconditioner::None}) {
+    auto s = make_linear_solver(SolverKind::Petsc, petsc(S::Krylov::CG, pc));
+    EXPECT_TRUE(s->iterative());
+    s->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+    check_solution(a, s->solve(rhs(60)), s->name());
+    EXPECT_GT(s->iterations(), 0) << s->name();
+  }
+  // SOR is not symmetric: GMRES.
+  auto sor = make_linear_solver(SolverKind::Petsc, petsc(S::Krylov::GMRES, S::Preconditioner::Sor));
+  sor->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+  check_solution(a, sor->solve(rhs(60)), sor->name());
+}
+
+TEST(Solvers, PetscSaddlePointNeedsAFactorisationAsPreconditioner) {
+  using S = IterativeSettings;
+  const SparseMatrix a = saddle_matrix(30);
+  auto ok = make_linear_solver(SolverKind::Petsc, petsc(S::Krylov::FGMRES, S::Preconditioner::LdltSp));
+  ok->factorize(a, MatrixKind::SymmetricIndefinite);
+  check_solution(a, ok->solve(rhs(32)), ok->name());
+  // Single precision preconditions: a few iterations, not one.
+  EXPECT_GE(ok->iterations(), 1);
+  EXPECT_LE(ok->iterations(), 6);
+  for (auto [krylov, pc] : {std::pair{S::Krylov::CG, S::Preconditioner::LdltSp},
+                            std::pair{S::Krylov::FGMRES, S::Preconditioner::Gamg}}) {
+    auto s = make_linear_solver(SolverKind::Petsc, petsc(krylov, pc));
+    try {
+      s->factorize(a, MatrixKind::SymmetricIndefinite);
+      ADD_FAILURE() << s->name() << " accepted a saddle point";
+    } catch (const SolveError& e) {
+      EXPECT_EQ(e.failure().what, Failure::What::IterativeSolve) << e.message();
+      EXPECT_NE(e.message().find("saddle point"), std::string::npos) << e.message();
+    }
+  }
+}
+
+TEST(Solvers, PetscSolveThatMissesItsToleranceFails) {
+  using S = IterativeSettings;
+  const SparseMatrix a = spd_matrix(200);
+  auto s = make_linear_solver(SolverKind::Petsc, petsc(S::Krylov::GMRES, S::Preconditioner::None, 2));
+  s->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+  try {
+    s->solve(rhs(200));
+    ADD_FAILURE() << "two GMRES iterations reached 1e-13";
+  } catch (const SolveError& e) {
+    EXPECT_EQ(e.failure().what, Failure::What::IterativeSolve);
+    EXPECT_NE(e.message().find("did not converge"), std::string::npos) << e.message();
+    EXPECT_NE(e.message().find("after 2 iterations"), std::string::npos) << e.message();
+  }
+}
+
+TEST(Solvers, PetscMultigridOnNodeBlocks) {
+  // A 2D elasticity-like system with node blocks (2 components), one component of node 0
+  // removed (a Dirichlet condition) and one multiplier-free condensed equation at the end:
+  // the layout makes PETSc rebuild 2-blocks with padding rows; the answer is unchanged.
+  const int nodes = 30;
+  const SparseMatrix base = spd_matrix(2 * nodes);
+  std::vector<int> keep;
+  for (int eq = 1; eq < 2 * nodes; ++eq) keep.push_back(eq);  // equation 0 (node 0, x) fixed
+  std::vector<int> index(2 * nodes, -1);
+  for (size_t k = 0; k < keep.size(); ++k) index[keep[k]] = static_cast<int>(k);
+  std::vector<Triplet> t;
+  for (int c = 0; c < base.outerSize(); ++c)
+    for (SparseMatrix::InnerIterator it(base, c); it; ++it)
+      if (index[it.row()] >= 0 && index[c] >= 0) t.emplace_back(index[it.row()], index[c], it.value());
+  const int n = static_cast<int>(keep.size()) + 1;
+  t.emplace_back(n - 1, n - 1, 1.0);  // a decoupled (condensed) equation
+  SparseMatrix a(n, n);
+  a.setFromTriplets(t.begin(), t.end());
+  SystemLayout layout;
+  layout.dim = 2;
+  for (int b = 0; b < nodes; ++b) layout.coords.insert(layout.coords.end(), {0.1 * b, 0.05 * (b % 3)});
+  for (int eq : keep) layout.block.push_back(eq / 2), layout.component.push_back(eq % 2);
+  layout.block.push_back(-1);
+  layout.component.push_back(0);
+  using S = IterativeSettings;
+  for (S::Preconditioner pc : {S::Preconditioner::Gamg, S::Preconditioner::Boomer, S::Preconditioner::Ml}) {
+    auto s = make_linear_solver(SolverKind::Petsc, petsc(S::Krylov::CG, pc));
+    s->set_layout(layout);
+    s->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+    check_solution(a, s->solve(rhs(n)), s->name() + " on node blocks");
+  }
+}
+
 /// SPD matrix whose equation `dead` has neither stiffness nor coupling.
 SparseMatrix singular_zero_column(int n, int dead) {
   std::vector<Triplet> t;
