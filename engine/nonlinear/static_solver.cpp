@@ -14,6 +14,7 @@
 #include "engine/core/error.hpp"
 #include "engine/nonlinear/nodal_forces.hpp"
 #include "engine/nonlinear/rigid_body.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 #include "engine/solver/krylov.hpp"
 
 namespace lunaster::engine {
@@ -252,13 +253,18 @@ SolverKind StaticSolver::backend_for(MatrixKind kind) {
   if (options_.solver != SolverKind::Cholmod || kind == MatrixKind::SymmetricPositiveDefinite) return options_.solver;
   // Contact with multipliers gives a symmetric indefinite system: MUMPS (LDLT with
   // pivoting) beat UMFPACK (LU) on it: SSNP121 A refined 16 times, 3.2 s vs 3.6 s and
-  // 376 MB vs 608 MB.
+  // 376 MB vs 608 MB. MUMPS is an MPI library, though, and a process alone pays about 40 ms
+  // to start MPI: below about 1e4 unknowns UMFPACK is the faster whole run (SSNP121 A refined
+  // 2 times, 0.08 s against 0.11 s; 4 times, 0.19 s against 0.22 s; 8 times, 0.95 s against
+  // 0.66 s). Under mpirun MUMPS factorises across the ranks whatever the size.
+  constexpr int kSmallIndefinite = 10000;
+  const bool small = stats_.n_free < kSmallIndefinite && !parallel::launched_by_mpi();
   if (!backend_note_logged_)
     log_.info(std::string("CHOLMOD cannot factorise ") +
               (kind == MatrixKind::SymmetricIndefinite ? "an indefinite" : "a non-symmetric") +
-              " system; using MUMPS");
+              (small ? " system; using UMFPACK (MUMPS from 10000 unknowns)" : " system; using MUMPS"));
   backend_note_logged_ = true;
-  return SolverKind::Mumps;
+  return small ? SolverKind::Umfpack : SolverKind::Mumps;
 }
 
 /// The system of one Newton iteration, K_ff + contact terms restricted to the free
