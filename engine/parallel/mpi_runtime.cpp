@@ -92,20 +92,6 @@ int fortran_comm_world() {
   return static_cast<int>(MPI_Comm_c2f(MPI_COMM_WORLD));
 }
 
-double sum(double value) {
-  if (size() == 1) return value;
-  double out = 0.0;
-  MPI_Allreduce(&value, &out, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
-  return out;
-}
-
-int max(int value) {
-  if (size() == 1) return value;
-  int out = 0;
-  MPI_Allreduce(&value, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  return out;
-}
-
 void broadcast(double* data, long long n) {
   if (size() == 1) return;
   constexpr long long kChunk = 1LL << 30;  // MPI counts are int

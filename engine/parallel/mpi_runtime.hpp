@@ -34,11 +34,6 @@ inline bool writes_output() { return rank() == 0; }
 /// The communicator of the whole run as a Fortran handle (what MUMPS takes).
 int fortran_comm_world();
 
-/// Sum of a value over the ranks (identity on one rank).
-double sum(double value);
-/// Largest value over the ranks (identity on one rank).
-int max(int value);
-
 /// Rank 0's values of `data` on every rank (nothing on one rank).
 void broadcast(double* data, long long n);
 

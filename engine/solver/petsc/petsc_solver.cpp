@@ -202,7 +202,7 @@ class PetscSolver final : public LinearSolver {
   VecScatter scatter_ = nullptr;  ///< distributed vector -> whole vector on every rank
   Vec gathered_ = nullptr;
   PetscInt first_row_ = 0, local_rows_ = 0, n_ = 0;
-  double rhs_norm_ = 1.0;
+  mutable double rhs_norm_ = 1.0;  ///< |b| of the solve in progress (the history's scale)
   mutable int iterations_ = 0;
   std::unique_ptr<SinglePrecisionFactor> single_;
 };
@@ -445,7 +445,7 @@ Vector PetscSolver::solve(const Vector& b) const {
     x[r] = eq >= 0 ? b[eq] : 0.0;
   }
   check(VecRestoreArray(bv, &x), "VecRestoreArray");
-  const_cast<PetscSolver*>(this)->rhs_norm_ = std::max(b.norm(), 1e-300);
+  rhs_norm_ = std::max(b.norm(), 1e-300);
   iterations_ = 0;
   Vector out = Vector::Zero(b.size());
   if (b.norm() > 0.0) {
