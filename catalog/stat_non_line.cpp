@@ -63,7 +63,8 @@ std::vector<Keyword> keywords(bool meca_non_line) {
              {text("METHODE",
                    "Linear solver. AUTO, CHOLMOD, LDLT and MULT_FRONT factorise with CHOLMOD (sparse Cholesky) "
                    "when the system is symmetric positive definite and with MUMPS otherwise (contact "
-                   "multipliers, mid-side ties, continuous penalty; the log says so once); AUTO also gives 3D "
+                   "multipliers, mid-side ties, continuous penalty; the log says so once), or UMFPACK below "
+                   "10,000 unknowns in a run without mpirun (no MPI start-up); AUTO also gives 3D "
                    "systems of more than 100,000 unknowns to MUMPS, whose orderings fill less there; MUMPS and "
                    "UMFPACK are used as asked; PETSC solves iteratively (a Krylov method and a preconditioner)")
                   .into_values({"AUTO", "MUMPS", "LDLT", "MULT_FRONT", "CHOLMOD", "UMFPACK", "PETSC"})
