@@ -118,7 +118,8 @@ void run_two_workers(Work&& work) {
 /// a sharing a cell with b in increasing equation order, the rows of a's DIM components.
 /// The DIM columns of a node have the same rows. Displacement DOFs of a node are
 /// consecutive equations (DofMap numbers them node by node).
-void stiffness_pattern(const Mesh& mesh, const DofMap& dofs, const std::vector<int>& cells, SparseMatrix& k) {
+void stiffness_pattern(const Mesh& mesh, const DofMap& dofs, const std::vector<int>& cells,
+                       const std::vector<char>* owned, SparseMatrix& k) {
   const int n_nodes = mesh.n_nodes(), dim = dofs.dim(), n = dofs.n_dofs();
   // Cells of each node (CSR).
   std::vector<int> cell_start(static_cast<size_t>(n_nodes) + 1, 0), node_cells;
@@ -138,6 +139,10 @@ void stiffness_pattern(const Mesh& mesh, const DofMap& dofs, const std::vector<i
   auto by_equation = [&dofs](int x, int y) { return dofs.dof(x, 0) < dofs.dof(y, 0); };
   for (int v = 0; v < n_nodes; ++v) {
     const size_t first = adj.size();
+    if (owned && !(*owned)[v]) {  // another rank's columns: left empty
+      adj_start[v + 1] = static_cast<int>(adj.size());
+      continue;
+    }
     for (int p = cell_start[v]; p < cell_start[v + 1]; ++p) {
       const int c = node_cells[p];
       for (int a = 0, nn = mesh.cell_n_nodes(c); a < nn; ++a) {
@@ -198,7 +203,7 @@ void stiffness_columns(const FeModel& model, const DofMap& dofs, const std::vect
         element_stiffness<NN, DIM>(model, cell, ke);
         for (int b = 0; b < NN; ++b) {
           const int j0 = eq[DIM * b];
-          if (j0 < col_begin || j0 >= col_end) continue;
+          if (j0 < col_begin || j0 >= col_end || outer[j0] == outer[j0 + 1]) continue;  // not ours, or another rank's
           const int* col = inner + outer[j0];
           const int* col_end_ptr = inner + outer[j0 + 1];
           for (int a = 0; a < NN; ++a) {
@@ -221,11 +226,21 @@ void stiffness_columns(const FeModel& model, const DofMap& dofs, const std::vect
 
 }  // namespace
 
-SparseMatrix assemble_stiffness_matrix(const FeModel& model, const DofMap& dofs) {
+SparseMatrix assemble_stiffness_matrix(const FeModel& model, const DofMap& dofs, const std::vector<char>* owned_nodes) {
   LUNASTER_ASSERT(model.mesh != nullptr, "assemble_stiffness_matrix: model without mesh");
-  const std::vector<int> cells = model.volume_cells();
+  std::vector<int> cells = model.volume_cells();
+  if (owned_nodes) {  // the cells of the owned nodes
+    const Mesh& mesh = *model.mesh;
+    cells.erase(std::remove_if(cells.begin(), cells.end(),
+                               [&](int c) {
+                                 for (int a = 0, nn = mesh.cell_n_nodes(c); a < nn; ++a)
+                                   if ((*owned_nodes)[mesh.cell(c)[a]]) return false;
+                                 return true;
+                               }),
+                cells.end());
+  }
   SparseMatrix k;
-  stiffness_pattern(*model.mesh, dofs, cells, k);
+  stiffness_pattern(*model.mesh, dofs, cells, owned_nodes, k);
   // Two column ranges of about half the entries each. Each worker computes the element
   // matrices of the cells that touch its columns (those straddling the split twice) and
   // writes its columns only: no two threads write one entry, and each entry sums its

@@ -19,7 +19,13 @@ void assemble_stiffness(const FeModel& model, const DofMap& dofs, std::vector<Tr
 /// not displacements get empty columns) and the element matrices are added in place, so no
 /// triplet list is ever stored. Each entry sums its cells in the same order as the
 /// triplets' setFromTriplets does: pattern and values are those of that matrix.
-SparseMatrix assemble_stiffness_matrix(const FeModel& model, const DofMap& dofs);
+///
+/// With `owned_nodes` (a rank's share of the model under MPI, per mesh node): only the
+/// columns of the owned nodes are filled, each complete (every cell of the node, also those
+/// the rank shares with another); the other columns are empty. K being symmetric, the
+/// owned columns are also the owned rows, and the ranks' matrices sum to K.
+SparseMatrix assemble_stiffness_matrix(const FeModel& model, const DofMap& dofs,
+                                       const std::vector<char>* owned_nodes = nullptr);
 
 /// f_int = K u for linear elasticity, assembled cell by cell (no global matrix needed).
 void assemble_internal_forces(const FeModel& model, const DofMap& dofs, const Vector& u, Vector& f_int);

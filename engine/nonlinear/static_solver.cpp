@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "engine/assembly/assembly.hpp"
+#include "engine/assembly/partition.hpp"
 #include "engine/core/error.hpp"
 #include "engine/nonlinear/nodal_forces.hpp"
 #include "engine/nonlinear/rigid_body.hpp"
@@ -139,16 +140,35 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   system_.reset();
   for (auto& s : solvers_) s.reset();
   stats_.n_dofs = n;
+  distributed_ = shares_model();
   {
     Stopwatch watch(stats_.assemble_seconds);
     const std::vector<int> constrained = constrained_equations(dofs_, loads_, *model_.mesh);
     elastic_.ff = SparseMatrix();  // the previous run's matrices go before these are built
     elastic_.c = SparseMatrix();
-    SparseMatrix k = assemble_stiffness_matrix(model_, dofs_);
+    if (distributed_) {
+      const Mesh& mesh = *model_.mesh;
+      const std::vector<int> cells = model_.volume_cells();
+      const CellPartition part = partition_cells(mesh, cells, model_.dim);
+      node_owner_ = part.node_owner;
+      owned_nodes_.assign(mesh.n_nodes(), 0);
+      std::vector<int> nodes_of(part.parts, 0), cells_of(part.parts, 0);
+      for (int v = 0; v < mesh.n_nodes(); ++v)
+        if (node_owner_[v] >= 0) ++nodes_of[node_owner_[v]], owned_nodes_[v] = node_owner_[v] == parallel::rank();
+      for (int p : part.cell_part) ++cells_of[p];
+      std::string counts;
+      for (int r = 0; r < part.parts; ++r)
+        counts += (r ? ", " : "") + std::to_string(cells_of[r]) + " / " + std::to_string(nodes_of[r]);
+      log_.info("model shared among " + std::to_string(part.parts) + " ranks (PT-Scotch): cells / nodes per rank " +
+                counts + "; " + std::to_string(part.interface_nodes) +
+                " nodes on interfaces; each rank assembles the stiffness of its own nodes");
+    }
+    SparseMatrix k = assemble_stiffness_matrix(model_, dofs_, distributed_ ? &owned_nodes_ : nullptr);
     split_matrix(k, constrained, elastic_);
   }
   k_scale_ = std::max(elastic_.ff.nonZeros() ? elastic_.ff.coeffs().cwiseAbs().maxCoeff() : 0.0,
                       elastic_.c.nonZeros() ? elastic_.c.coeffs().cwiseAbs().maxCoeff() : 0.0);
+  if (distributed_) k_scale_ = parallel::max_over_ranks(k_scale_);
 
   Vector u = Vector::Zero(n);
   steps_.clear();
@@ -233,7 +253,33 @@ SystemLayout StaticSolver::system_layout(const Constraints& cons, const std::vec
     layout.block[k] = block_of_node[node];
     layout.component[k] = c;
   }
+  if (distributed_) {
+    layout.owner.assign(cons.n_free, -1);
+    for (int eq = 0; eq < dofs_.n_dofs(); ++eq)
+      if (cons.free_index[eq] >= 0) layout.owner[cons.free_index[eq]] = node_owner_[dofs_.node_of(eq)];
+  }
   return layout;
+}
+
+bool StaticSolver::shares_model() const {
+  // Only when the deck names such a backend: METHODE='AUTO' keeps its choice (CHOLMOD on
+  // every rank for an SPD system), so a deck gives the same values under mpirun.
+  if (parallel::size() < 2 || contact_ || options_.auto_solver) return false;
+  return options_.solver == SolverKind::Mumps || options_.solver == SolverKind::Petsc;
+}
+
+Vector StaticSolver::stiffness_times(const Vector& u) const {
+  Vector ku = elastic_.times(u);
+  if (distributed_) parallel::sum_over_ranks(ku.data(), ku.size());
+  return ku;
+}
+
+SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err, double t) const {
+  if (!distributed_) return diagnose_singular_system(model_, dofs_, cons.free_index, elastic_.ff, err, t);
+  SplitMatrix whole;
+  SparseMatrix k = assemble_stiffness_matrix(model_, dofs_);
+  split_matrix(k, elastic_.constrained, whole);
+  return diagnose_singular_system(model_, dofs_, cons.free_index, whole.ff, err, t);
 }
 
 SolverKind StaticSolver::backend_for(MatrixKind kind) {
@@ -522,7 +568,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       Vector residual;
       {
         Stopwatch watch(stats_.assemble_seconds);
-        residual = elastic_.times(u) - f_ext;
+        residual = stiffness_times(u) - f_ext;
       }
       if (contact_) {
         Stopwatch watch(stats_.contact_seconds);
@@ -570,7 +616,9 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       // no second factorisation is spent on the check.
       // The check is itself a Cholesky factorisation: an iterative backend, chosen because
       // factorising does not fit, skips it (a singular system then fails to converge).
-      if (!rigid_checked_ && backend != SolverKind::Cholmod && backend != SolverKind::Petsc &&
+      // A shared model skips it too: it would need the whole stiffness on one rank (MUMPS's
+      // null-pivot detection and the solve's residual still catch a singular system).
+      if (!rigid_checked_ && backend != SolverKind::Cholmod && backend != SolverKind::Petsc && !distributed_ &&
           (!contact_ || contact_->n_active() == 0)) {
         Stopwatch watch(stats_.assemble_seconds);
         if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, elastic_.ff, t)) throw *rigid;
@@ -590,6 +638,12 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         update_system(cons, k_contact, condensed, eliminated_eqs);
       }
       const SparseMatrix& a = *system_->matrix;
+      // A x for the accuracy of a solve: this rank's columns of a, summed over the ranks.
+      const MatrixProduct system_product = [&a, this](const Vector& x) -> Vector {
+        Vector y = a * x;
+        if (distributed_) parallel::sum_over_ranks(y.data(), y.size());
+        return y;
+      };
       // Condensed unknowns: decoupled rows (unit diagonal, zero right-hand side), set by recover().
       for (int eq : condensed)
         if (cons.free_index[eq] >= 0) r_free[cons.free_index[eq]] = 0.0;
@@ -644,11 +698,12 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         try {
           Stopwatch watch(stats_.factorize_seconds);
           state.factorised = false;
-          if (iterative) solver->set_layout(system_layout(cons, condensed, eliminated_eqs));
+          LUNASTER_ASSERT(!distributed_ || solver->takes_distributed(), "a shared model needs a backend that takes it");
+          if (iterative || distributed_) solver->set_layout(system_layout(cons, condensed, eliminated_eqs));
           solver->factorize(a, kind);
         } catch (const SolveError& err) {
           if (err.out_of_memory() || err.failure().what == Failure::What::IterativeSolve) throw;
-          throw diagnose_singular_system(model_, dofs_, cons.free_index, elastic_.ff, err, t);
+          throw diagnose(cons, err, t);
         }
         ++stats_.factorisations;
         state.factorised = true;
@@ -667,13 +722,13 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         // there: no refinement on top.
         Stopwatch watch(stats_.solve_seconds);
         du = solver->solve(-r_free);
-        accuracy.raw_residual = accuracy.residual = relative_residual(a, du, -r_free);
+        accuracy.raw_residual = accuracy.residual = relative_residual(system_product, du, -r_free);
         stats_.krylov_iterations += solver->iterations();
         log_.info("  linear solve: " + solver->name() + ", " + std::to_string(solver->iterations()) +
                   " iteration(s), relative residual " + sci(accuracy.residual));
       } else if (!solved) {
         Stopwatch watch(stats_.solve_seconds);
-        accuracy = solve_with_refinement(*solver, a, -r_free, du);
+        accuracy = solve_with_refinement(*solver, system_product, -r_free, du);
       }
       ++stats_.newton_iterations;
       stats_.refinement_steps += accuracy.steps;
@@ -686,8 +741,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       const double accepted =
           iterative ? std::max(kSolveTolerance, 1.01 * options_.iterative.relative_residual) : kSolveTolerance;
       if (!(solve_error <= accepted))
-        throw diagnose_singular_system(
-            model_, dofs_, cons.free_index, elastic_.ff,
+        throw diagnose(
+            cons,
             SolveError("the linear solver returned no accurate solution (relative residual of the solve " +
                        sci(raw_error) + ", " + sci(solve_error) + " after iterative refinement; accepted below " +
                        sci(accepted) + ")"),

@@ -127,6 +127,13 @@ class StaticSolver {
                              const std::vector<int>& eliminated) const;
   /// Backend for a system of this kind: Cholmod gives way to Mumps (said once per run).
   SolverKind backend_for(MatrixKind kind);
+  /// Whether this run shares the model among the ranks of an MPI run (see distributed_).
+  bool shares_model() const;
+  /// K u over the whole numbering (summed over the ranks when the model is shared).
+  Vector stiffness_times(const Vector& u) const;
+  /// A solve failure explained by the elastic stiffness (rigid-body modes, a null pivot);
+  /// with a shared model the whole stiffness is assembled for it first.
+  SolveError diagnose(const Constraints& cons, const SolveError& err, double t) const;
 
   /// The elastic stiffness K split by the Dirichlet conditions of the run (one set for every
   /// instant, only the imposed values follow the load functions): K_ff (numbered as
@@ -134,6 +141,14 @@ class StaticSolver {
   /// constrained columns. Nothing else of K is kept: they give K u, the system's refill and
   /// the eliminations' columns.
   SplitMatrix elastic_;
+  /// The model shared among the ranks of an MPI run (several ranks, no contact, a backend
+  /// that takes a distributed system: MUMPS or PETSc). The volume cells are partitioned
+  /// (PT-Scotch); each rank assembles the complete columns of the nodes it owns
+  /// (owned_nodes_), so elastic_ holds only those, and products with it are summed over
+  /// the ranks. Everything else (mesh, vectors, results) is whole on every rank.
+  bool distributed_ = false;
+  std::vector<int> node_owner_;
+  std::vector<char> owned_nodes_;
   /// One solver per backend for the whole run (each keeps its analysis while the pattern holds).
   std::unique_ptr<LinearSolver> solvers_[kSolverKinds];
   std::unique_ptr<SystemCache> system_;

@@ -99,6 +99,33 @@ void broadcast(double* data, long long n) {
     MPI_Bcast(data + start, static_cast<int>(std::min(kChunk, n - start)), MPI_DOUBLE, 0, MPI_COMM_WORLD);
 }
 
+void sum_over_ranks(double* data, long long n) {
+  if (size() == 1) return;
+  constexpr long long kChunk = 1LL << 30;
+  for (long long start = 0; start < n; start += kChunk)
+    MPI_Allreduce(MPI_IN_PLACE, data + start, static_cast<int>(std::min(kChunk, n - start)), MPI_DOUBLE, MPI_SUM,
+                  MPI_COMM_WORLD);
+}
+
+double max_over_ranks(double value) {
+  if (size() == 1) return value;
+  double out = value;
+  MPI_Allreduce(&value, &out, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  return out;
+}
+
+std::vector<int> gather_all(const std::vector<int>& mine) {
+  if (size() == 1) return mine;
+  const int ranks = size();
+  std::vector<int> counts(ranks), offsets(ranks + 1, 0);
+  const int count = static_cast<int>(mine.size());
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  for (int r = 0; r < ranks; ++r) offsets[r + 1] = offsets[r] + counts[r];
+  std::vector<int> all(offsets[ranks]);
+  MPI_Allgatherv(mine.data(), count, MPI_INT, all.data(), counts.data(), offsets.data(), MPI_INT, MPI_COMM_WORLD);
+  return all;
+}
+
 void finalise() {
   int finalised = 0;
   MPI_Finalized(&finalised);

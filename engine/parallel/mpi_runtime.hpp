@@ -36,6 +36,12 @@ int fortran_comm_world();
 
 /// Rank 0's values of `data` on every rank (nothing on one rank).
 void broadcast(double* data, long long n);
+/// Every rank's `data` summed element by element, the sum on every rank (nothing on one rank).
+void sum_over_ranks(double* data, long long n);
+/// The largest of the ranks' `value`s, on every rank.
+double max_over_ranks(double value);
+/// Every rank's `mine` concatenated in rank order, on every rank.
+std::vector<int> gather_all(const std::vector<int>& mine);
 
 /// Finalises MPI if it was initialised (called once, at the end of main).
 void finalise();

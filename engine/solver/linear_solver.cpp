@@ -23,17 +23,27 @@ std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind, const Iterativ
 }
 
 double relative_residual(const SparseMatrix& a, const Vector& x, const Vector& b) {
+  return relative_residual([&a](const Vector& v) -> Vector { return a * v; }, x, b);
+}
+
+double relative_residual(const MatrixProduct& a, const Vector& x, const Vector& b) {
   if (!x.allFinite()) return std::numeric_limits<double>::infinity();
-  return (a * x - b).norm() / std::max(b.norm(), std::numeric_limits<double>::min());
+  return (a(x) - b).norm() / std::max(b.norm(), std::numeric_limits<double>::min());
 }
 
 RefinedSolve solve_with_refinement(const LinearSolver& solver, const SparseMatrix& a, const Vector& b, Vector& x,
+                                   int max_steps, double refine_above) {
+  return solve_with_refinement(solver, [&a](const Vector& v) -> Vector { return a * v; }, b, x, max_steps,
+                               refine_above);
+}
+
+RefinedSolve solve_with_refinement(const LinearSolver& solver, const MatrixProduct& a, const Vector& b, Vector& x,
                                    int max_steps, double refine_above) {
   RefinedSolve out;
   x = solver.solve(b);
   out.raw_residual = out.residual = relative_residual(a, x, b);
   while (out.steps < max_steps && std::isfinite(out.residual) && out.residual > refine_above) {
-    Vector refined = x - solver.solve(a * x - b);
+    Vector refined = x - solver.solve(a(x) - b);
     ++out.steps;
     const double next = relative_residual(a, refined, b);
     if (!(next < out.residual)) break;  // no gain: the factorisation is as good as it gets

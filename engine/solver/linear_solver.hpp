@@ -47,7 +47,13 @@ struct SystemLayout {
   std::vector<int> block;       ///< per equation: its node block, -1 outside any (multipliers, condensed)
   std::vector<int> component;   ///< per equation in a block: its component, 0..dim-1
   std::vector<double> coords;   ///< dim per block: the node's coordinates
+  /// A model shared among the ranks of an MPI run: per equation, the rank whose matrix
+  /// holds its column complete (and its row: the systems are symmetric). Each rank's matrix
+  /// then holds only its own columns, and the system is the sum of the ranks' matrices.
+  /// Empty: every rank holds the whole system.
+  std::vector<int> owner;
   int n_blocks() const { return dim > 0 ? static_cast<int>(coords.size()) / dim : 0; }
+  bool distributed() const { return !owner.empty(); }
 };
 
 /// Direct solver: factorise once, solve for many right-hand sides.
@@ -67,9 +73,12 @@ class LinearSolver {
   /// its own tolerance (and throws SolveError when it does not get there).
   virtual bool iterative() const { return false; }
   /// Where the equations of the next matrices live (SystemLayout): algebraic multigrid
-  /// aggregates node blocks and builds its coarse spaces from the rigid-body modes.
-  /// Direct backends ignore it.
+  /// aggregates node blocks and builds its coarse spaces from the rigid-body modes, and a
+  /// distributed layout says which columns each rank's matrix holds. Only the backends
+  /// for which `takes_distributed()` is true accept a distributed layout.
   virtual void set_layout(SystemLayout /*layout*/) {}
+  /// Whether the backend can factorise a system given as its ranks' columns (MUMPS, PETSc).
+  virtual bool takes_distributed() const { return false; }
   /// Krylov iterations of the last solve (0 for a direct backend).
   virtual int iterations() const { return 0; }
 };
@@ -77,8 +86,13 @@ class LinearSolver {
 /// Builds a backend. Never returns null. `iterative` is read by SolverKind::Petsc only.
 std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind, const IterativeSettings& iterative = {});
 
+/// y = A x for an operator A known only through its product (e.g. a matrix shared among
+/// MPI ranks, the product then summed over them).
+using MatrixProduct = std::function<Vector(const Vector&)>;
+
 /// |A x - b| / |b| (2-norms); +inf if x is not finite.
 double relative_residual(const SparseMatrix& a, const Vector& x, const Vector& b);
+double relative_residual(const MatrixProduct& a, const Vector& x, const Vector& b);
 
 /// Accuracy of one refined solve: relative residual straight from the factorisation
 /// and after refinement, and the extra solves spent.
@@ -94,6 +108,8 @@ struct RefinedSolve {
 /// but regular system (a stiff penalty, badly scaled multipliers) is then solved to
 /// working accuracy; a singular one keeps its large residual for the caller to judge.
 RefinedSolve solve_with_refinement(const LinearSolver& solver, const SparseMatrix& a, const Vector& b, Vector& x,
+                                   int max_steps = 3, double refine_above = 1e-10);
+RefinedSolve solve_with_refinement(const LinearSolver& solver, const MatrixProduct& a, const Vector& b, Vector& x,
                                    int max_steps = 3, double refine_above = 1e-10);
 
 }  // namespace lunaster::engine

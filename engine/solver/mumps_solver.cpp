@@ -1,8 +1,10 @@
-/// MUMPS (Debian's MPI build) through the C interface. Centralised assembled input
-/// in coordinate form (1-based) on the host, rank 0; for symmetric kinds only the
-/// upper triangle is passed. One process is a one-rank run (MPI initialised on the
-/// first factorisation); under mpirun every rank takes part in the factorisation
-/// and the solution is broadcast from the host. Null-pivot detection (ICNTL(24) = 1) reports singular matrices and
+/// MUMPS (Debian's MPI build) through the C interface. Assembled input in coordinate
+/// form (1-based); for symmetric kinds only the upper triangle is passed. One process is a
+/// one-rank run (MPI initialised on the first factorisation); under mpirun every rank takes
+/// part in the factorisation and the solution is broadcast from the host. The matrix is
+/// centralised on the host, rank 0, unless the layout is distributed (each rank's matrix
+/// holds its own columns): then each rank passes the entries of its columns (ICNTL(18) = 3),
+/// and no rank ever holds the whole matrix. Null-pivot detection (ICNTL(24) = 1) reports singular matrices and
 /// the first null pivot's equation.
 #include <algorithm>
 #include <dmumps_c.h>
@@ -28,6 +30,8 @@ class MumpsSolver final : public LinearSolver {
   Vector solve(const Vector& b) const override;
   std::string name() const override { return "MUMPS"; }
   int failed_column() const override { return failed_; }
+  void set_layout(SystemLayout layout) override { distributed_ = layout.distributed(); }
+  bool takes_distributed() const override { return true; }
 
  private:
   void release() {
@@ -61,6 +65,7 @@ class MumpsSolver final : public LinearSolver {
   std::vector<MUMPS_INT> irn_, jcn_;
   std::vector<double> val_;
   int failed_ = -1;
+  bool distributed_ = false;  ///< the matrices given are this rank's columns (ICNTL(18) = 3)
 };
 
 void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
@@ -81,15 +86,31 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     }
   // The Newton and contact loops of a step factorise matrices of one pattern again and
   // again: keep MUMPS's analysis (ordering, symbolic factorisation) while it holds.
-  const bool same_pattern = analysed_ && sym == id_.sym && static_cast<MUMPS_INT>(a.rows()) == id_.n &&
-                            irn == irn_ && jcn == jcn_;
+  bool same_pattern = analysed_ && sym == id_.sym && static_cast<MUMPS_INT>(a.rows()) == id_.n &&
+                      distributed_ == (id_.icntl[17] == 3) && irn == irn_ && jcn == jcn_;
+  // Every rank takes the same branch (each sees only its part of the pattern).
+  if (distributed_) same_pattern = parallel::max_over_ranks(same_pattern ? 0.0 : 1.0) == 0.0;
   irn_.swap(irn);
   jcn_.swap(jcn);
   val_.swap(val);
+  // Where the entries go: the host's centralised arrays, or each rank's own (distributed).
+  auto hand_over = [this] {
+    if (distributed_) {
+      id_.nnz_loc = static_cast<MUMPS_INT8>(val_.size());
+      id_.nz_loc = static_cast<MUMPS_INT>(val_.size());
+      id_.irn_loc = irn_.data();
+      id_.jcn_loc = jcn_.data();
+      id_.a_loc = val_.data();
+    } else {
+      id_.nnz = static_cast<MUMPS_INT8>(val_.size());
+      id_.nz = static_cast<MUMPS_INT>(val_.size());
+      id_.irn = irn_.data();
+      id_.jcn = jcn_.data();
+      id_.a = val_.data();
+    }
+  };
   if (same_pattern) {
-    id_.a = val_.data();
-    id_.irn = irn_.data();
-    id_.jcn = jcn_.data();
+    hand_over();
     id_.job = 2;  // factorisation with the analysis kept
     dmumps_c(&id_);
   } else {
@@ -112,14 +133,13 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     // analysis cost more than it saved: SSNP121 2D contact, k = 16, 1.7 s against 2.0 s; k = 32,
     // 7.5 s against 8.7 s. On 3D rows (81 and more) nested dissection wins: the 3D HEXA8/HEXA20
     // contact case took 2.0 s against 3.2 s with AMD. tests/bench/README.md has the runs.
-    const double entries_per_row = 2.0 * static_cast<double>(val_.size()) / std::max<double>(1.0, static_cast<double>(a.rows()));
+    double entries = static_cast<double>(val_.size());
+    if (distributed_) parallel::sum_over_ranks(&entries, 1);
+    const double entries_per_row = 2.0 * entries / std::max<double>(1.0, static_cast<double>(a.rows()));
     id_.icntl[6] = sym != 0 && entries_per_row < 40.0 ? 0 : 7;
+    id_.icntl[17] = distributed_ ? 3 : 0;  // ICNTL(18): distributed assembled entries, pattern and values
     id_.n = static_cast<MUMPS_INT>(a.rows());
-    id_.nnz = static_cast<MUMPS_INT8>(val_.size());
-    id_.nz = static_cast<MUMPS_INT>(val_.size());
-    id_.irn = irn_.data();
-    id_.jcn = jcn_.data();
-    id_.a = val_.data();
+    hand_over();
     id_.job = 4;  // analysis + factorisation
     dmumps_c(&id_);
   }

@@ -113,6 +113,12 @@ def verify_suite(exe, source, scratch):
     check(stats["checks"] > 2000, f"the checks of every deck were compared ({stats['checks']})")
     n_mpi_solves = sum("using MUMPS" in d["output"] or "METHODE='MUMPS'" in d["output"] for d in b.values())
     check(n_mpi_solves > 20, f"decks that factorise with MUMPS across the ranks are part of it ({n_mpi_solves})")
+    # METHODE='MUMPS' or 'PETSC' without contact: the model is shared among the ranks, each
+    # assembling its own nodes' stiffness (its values are among those compared above).
+    shared = "testcases/distributed_solvers.lua"
+    n_shared = b[shared]["output"].count("model shared among 2 ranks (PT-Scotch)")
+    check(n_shared == 9, f"{shared}: each of its 9 solves shares the model among the 2 ranks ({n_shared})")
+    check("model shared" not in a[shared]["output"], f"{shared}: a serial run shares nothing")
 
     # The comparison can fail: a value off by 1e-7, a check gone, a status changed.
     name = next(n for n in sorted(b) if test_lines(b[n]["output"]))
@@ -189,6 +195,7 @@ def outputs(exe, source, scratch):
         "F rmed contact_result.rmed R 80\nF mess study.mess R 6\n")
     decks = [source / "testcases" / "ssnp121a.lua", source / "testcases" / "reactions_tables.lua",
              source / "testcases" / "loads_and_groups.lua", case / "study.export",
+             source / "testcases" / "distributed_solvers.lua",  # the model shared among the ranks
              source / "testcases" / "errors" / "contact_step_no_subdivision.lua"]  # exit 3, converged steps saved
     serial_checks = {}
     for deck in decks:

@@ -4,7 +4,9 @@
 /// (hypre, ML, SuperLU, ScaLAPACK...) would otherwise add 50 ms to every start-up.
 ///
 /// One process: a sequential AIJ matrix. Under mpirun: each rank owns a block of rows
-/// of an MPI AIJ matrix (PETSc's default split), the solution is gathered on every rank.
+/// of an MPI AIJ matrix, the solution is gathered on every rank. With a distributed layout
+/// (the model shared among the ranks), a rank owns the rows of its own equations, which its
+/// matrix holds complete; otherwise PETSc's default split of whole node blocks.
 #include <mpi.h>
 #include <petscksp.h>
 #include <petscpc.h>
@@ -88,7 +90,9 @@ class SinglePrecisionFactor {
  public:
   ~SinglePrecisionFactor() { release(); }
 
-  void factorize(const SparseMatrix& a, MatrixKind kind) {
+  /// `distributed`: each rank's `a` holds its own columns (SystemLayout::owner), passed
+  /// from every rank; otherwise the host's whole matrix.
+  void factorize(const SparseMatrix& a, MatrixKind kind, bool distributed) {
     release();
     id_ = SMUMPS_STRUC_C{};
     id_.comm_fortran = parallel::fortran_comm_world();
@@ -100,7 +104,8 @@ class SinglePrecisionFactor {
     id_.icntl[0] = id_.icntl[1] = id_.icntl[2] = -1;
     id_.icntl[3] = 0;
     id_.icntl[6] = 7;
-    if (parallel::rank() == 0) {
+    id_.icntl[17] = distributed ? 3 : 0;  // ICNTL(18): each rank's entries
+    if (distributed || parallel::rank() == 0) {
       irn_.clear(), jcn_.clear(), val_.clear();
       for (int c = 0; c < a.outerSize(); ++c)
         for (SparseMatrix::InnerIterator it(a, c); it; ++it) {
@@ -110,10 +115,17 @@ class SinglePrecisionFactor {
           val_.push_back(static_cast<float>(it.value()));
         }
       id_.n = static_cast<MUMPS_INT>(a.rows());
-      id_.nnz = static_cast<MUMPS_INT8>(val_.size());
-      id_.irn = irn_.data();
-      id_.jcn = jcn_.data();
-      id_.a = val_.data();
+      if (distributed) {
+        id_.nnz_loc = static_cast<MUMPS_INT8>(val_.size());
+        id_.irn_loc = irn_.data();
+        id_.jcn_loc = jcn_.data();
+        id_.a_loc = val_.data();
+      } else {
+        id_.nnz = static_cast<MUMPS_INT8>(val_.size());
+        id_.irn = irn_.data();
+        id_.jcn = jcn_.data();
+        id_.a = val_.data();
+      }
     }
     id_.job = 4;
     smumps_c(&id_);
@@ -163,6 +175,7 @@ class PetscSolver final : public LinearSolver {
   }
   bool iterative() const override { return true; }
   void set_layout(SystemLayout layout) override { layout_ = std::move(layout); }
+  bool takes_distributed() const override { return true; }
   int iterations() const override { return iterations_; }
 
  private:
@@ -192,6 +205,9 @@ class PetscSolver final : public LinearSolver {
   /// the equations outside any block; otherwise the system's own numbering.
   std::vector<PetscInt> row_of_;
   std::vector<int> eq_of_;
+  /// Per group of bs_ rows (a node block, or bs_ equations outside the blocks): its node
+  /// block, -1 if none (the rigid-body modes' coordinates).
+  std::vector<int> block_of_group_;
   /// The matrix's compressed rows in PETSc's numbering (this rank's rows); with one process
   /// PETSc's matrix is built on them without a copy.
   std::vector<PetscInt> ia_, ja_;
@@ -209,18 +225,59 @@ class PetscSolver final : public LinearSolver {
 
 void PetscSolver::number_rows(int n_equations) {
   const bool blocks = multigrid() && layout_.dim > 1 && static_cast<int>(layout_.block.size()) == n_equations;
+  const bool owned = layout_.distributed() && static_cast<int>(layout_.owner.size()) == n_equations;
   bs_ = blocks ? layout_.dim : 1;
-  row_of_.resize(n_equations);
+  // Groups of bs_ rows in the system's order: the node blocks, then the equations outside
+  // them packed bs_ to a group (the last one padded); without blocks, one equation each.
+  std::vector<PetscInt> group_row(n_equations);  // row in the groups' order
+  PetscInt groups = 0;
   if (!blocks) {
-    for (int eq = 0; eq < n_equations; ++eq) row_of_[eq] = eq;
-    n_ = n_equations;
+    for (int eq = 0; eq < n_equations; ++eq) group_row[eq] = eq;
+    groups = n_equations;
   } else {
     const PetscInt in_blocks = static_cast<PetscInt>(layout_.n_blocks()) * bs_;
     PetscInt next = in_blocks;
     for (int eq = 0; eq < n_equations; ++eq)
-      row_of_[eq] = layout_.block[eq] >= 0 ? layout_.block[eq] * bs_ + layout_.component[eq] : next++;
-    n_ = (next + bs_ - 1) / bs_ * bs_;
+      group_row[eq] = layout_.block[eq] >= 0 ? layout_.block[eq] * bs_ + layout_.component[eq] : next++;
+    groups = (next + bs_ - 1) / bs_;
   }
+  n_ = groups * bs_;
+  // Owner of each group: the rank of its equations (a distributed layout), otherwise
+  // PETSc's split of the groups in order.
+  std::vector<int> owner_of(groups, -1);
+  const int ranks = parallel::size(), rank = parallel::rank();
+  if (owned) {
+    for (int eq = 0; eq < n_equations; ++eq) {
+      int& o = owner_of[group_row[eq] / bs_];
+      LUNASTER_ASSERT(o < 0 || o == layout_.owner[eq], "PETSc: a node block shared by two ranks");
+      o = layout_.owner[eq];
+    }
+    for (int& o : owner_of)
+      if (o < 0) o = ranks - 1;  // padding only
+  } else {
+    PetscInt local_groups = PETSC_DECIDE, all = groups;
+    check(PetscSplitOwnership(PETSC_COMM_WORLD, &local_groups, &all), "PetscSplitOwnership");
+    std::vector<int> counts = parallel::gather_all({static_cast<int>(local_groups)});
+    for (PetscInt g = 0, r = 0, left = counts[0]; g < groups; ++g) {
+      while (left == 0) left = counts[++r];
+      owner_of[g] = static_cast<int>(r), --left;
+    }
+  }
+  // The groups by owner (stable): each rank's rows are one range.
+  std::vector<PetscInt> first_of(ranks + 1, 0), position(groups);
+  for (int o : owner_of) ++first_of[o + 1];
+  for (int r = 0; r < ranks; ++r) first_of[r + 1] += first_of[r];
+  {
+    std::vector<PetscInt> fill(first_of.begin(), first_of.end() - 1);
+    for (PetscInt g = 0; g < groups; ++g) position[g] = fill[owner_of[g]]++;
+  }
+  first_row_ = first_of[rank] * bs_;
+  local_rows_ = (first_of[rank + 1] - first_of[rank]) * bs_;
+  block_of_group_.assign(groups, -1);
+  if (blocks)
+    for (PetscInt g = 0; g < std::min<PetscInt>(groups, layout_.n_blocks()); ++g) block_of_group_[position[g]] = static_cast<int>(g);
+  row_of_.resize(n_equations);
+  for (int eq = 0; eq < n_equations; ++eq) row_of_[eq] = position[group_row[eq] / bs_] * bs_ + group_row[eq] % bs_;
   eq_of_.assign(n_, -1);
   for (int eq = 0; eq < n_equations; ++eq) eq_of_[row_of_[eq]] = eq;
 }
@@ -231,6 +288,7 @@ void PetscSolver::build_matrix(const SparseMatrix& a, MatrixKind kind) {
   // matrix is transposed first.
   SparseMatrix transposed;
   const SparseMatrix* rows = &a;
+  LUNASTER_ASSERT(kind != MatrixKind::General || !layout_.distributed(), "PETSc: a distributed system must be symmetric");
   if (kind == MatrixKind::General) {
     transposed = a.transpose();
     transposed.makeCompressed();
@@ -238,12 +296,6 @@ void PetscSolver::build_matrix(const SparseMatrix& a, MatrixKind kind) {
   }
   number_rows(static_cast<int>(a.rows()));
   const int size = parallel::size();
-  // Ownership by whole node blocks.
-  PetscInt local_blocks = PETSC_DECIDE, n_blocks = n_ / bs_;
-  check(PetscSplitOwnership(PETSC_COMM_WORLD, &local_blocks, &n_blocks), "PetscSplitOwnership");
-  local_rows_ = local_blocks * bs_;
-  check(MPI_Scan(&local_rows_, &first_row_, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD) == MPI_SUCCESS ? 0 : 1, "MPI_Scan");
-  first_row_ -= local_rows_;
   const int* outer = rows->outerIndexPtr();
   const int* inner = rows->innerIndexPtr();
   const double* value = rows->valuePtr();
@@ -307,7 +359,8 @@ void PetscSolver::attach_near_null_space() {
   check(VecGetArray(coords, &x), "VecGetArray");
   for (PetscInt r = 0; r < local_rows_; ++r) {
     const PetscInt row = first_row_ + r;
-    x[r] = row / bs_ < layout_.n_blocks() ? layout_.coords[row] : 0.0;
+    const int block = block_of_group_[row / bs_];
+    x[r] = block >= 0 ? layout_.coords[static_cast<size_t>(block) * bs_ + row % bs_] : 0.0;
   }
   check(VecRestoreArray(coords, &x), "VecRestoreArray");
   MatNullSpace space = nullptr;
@@ -337,12 +390,14 @@ PetscErrorCode PetscSolver::apply_single_precision(PC pc, Vec x, Vec y) {
   PetscCall(VecScatterEnd(s->scatter_, x, s->gathered_, INSERT_VALUES, SCATTER_FORWARD));
   const PetscScalar* whole = nullptr;
   PetscCall(VecGetArrayRead(s->gathered_, &whole));
-  std::vector<float> rhs(parallel::rank() == 0 ? static_cast<size_t>(s->n_) : 0);
-  for (size_t k = 0; k < rhs.size(); ++k) rhs[k] = static_cast<float>(whole[k]);
+  // The factor is in the system's numbering (equations), the vectors in PETSc's (rows).
+  const size_t n_eq = s->row_of_.size();
+  std::vector<float> rhs(parallel::rank() == 0 ? n_eq : 0);
+  for (size_t eq = 0; eq < rhs.size(); ++eq) rhs[eq] = static_cast<float>(whole[s->row_of_[eq]]);
   PetscCall(VecRestoreArrayRead(s->gathered_, &whole));
   s->single_->apply(rhs);
-  std::vector<double> out(static_cast<size_t>(s->n_));
-  for (size_t k = 0; k < rhs.size(); ++k) out[k] = rhs[k];
+  std::vector<double> out(static_cast<size_t>(s->n_), 0.0);
+  for (size_t eq = 0; eq < rhs.size(); ++eq) out[s->row_of_[eq]] = rhs[eq];
   parallel::broadcast(out.data(), s->n_);
   PetscScalar* mine = nullptr;
   PetscCall(VecGetArray(y, &mine));
@@ -418,7 +473,7 @@ void PetscSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
       break;
     case Settings::Preconditioner::LdltSp:
       single_ = std::make_unique<SinglePrecisionFactor>();
-      single_->factorize(a, kind);
+      single_->factorize(a, kind, layout_.distributed());
       check(PCSetType(pc, PCSHELL), "PCSetType");
       check(PCShellSetContext(pc, this), "PCShellSetContext");
       check(PCShellSetApply(pc, &PetscSolver::apply_single_precision), "PCShellSetApply");

@@ -77,6 +77,50 @@ TEST(CompressedAssembly, MixedCellsShuffledNodesAndMultipliers) {
   }
 }
 
+TEST(CompressedAssembly, OwnedNodesGetTheirWholeColumnsAndTheSharesSumToK) {
+  // A model shared among MPI ranks: each rank's matrix holds the columns of its own nodes,
+  // complete (cells shared with another rank included), bit for bit those of K.
+  for (CellType type : test::volume_types()) {
+    BlockBuilder block(type, cell_dim(type) == 2 ? 6 : 3, 0.25);
+    block.fill();
+    const int dim = block.dim();
+    const FeModel model = test::make_model(block.mesh(), dim,
+                                           dim == 2 ? Modelisation::PlaneStrain : Modelisation::Solid3D, kMat);
+    const DofMap dofs(block.mesh(), model.volume_cells(), dim);
+    const SparseMatrix k = assemble_stiffness_matrix(model, dofs);
+    constexpr int kParts = 3;
+    std::mt19937 random(7);
+    std::vector<int> owner(block.mesh().n_nodes());
+    for (int& o : owner) o = static_cast<int>(random() % kParts);
+    SparseMatrix sum(k.rows(), k.cols());
+    for (int part = 0; part < kParts; ++part) {
+      std::vector<char> owned(owner.size());
+      for (size_t v = 0; v < owner.size(); ++v) owned[v] = owner[v] == part;
+      const SparseMatrix share = assemble_stiffness_matrix(model, dofs, &owned);
+      long wrong = 0;
+      for (int eq = 0; eq < k.cols(); ++eq) {
+        const bool mine = owned[dofs.node_of(eq)];
+        const int n_share = share.outerIndexPtr()[eq + 1] - share.outerIndexPtr()[eq];
+        const int n_k = k.outerIndexPtr()[eq + 1] - k.outerIndexPtr()[eq];
+        if (!mine) {
+          wrong += n_share != 0;
+          continue;
+        }
+        if (n_share != n_k) {
+          ++wrong;
+          continue;
+        }
+        for (int p = 0; p < n_k; ++p)
+          wrong += share.innerIndexPtr()[share.outerIndexPtr()[eq] + p] != k.innerIndexPtr()[k.outerIndexPtr()[eq] + p] ||
+                   share.valuePtr()[share.outerIndexPtr()[eq] + p] != k.valuePtr()[k.outerIndexPtr()[eq] + p];
+      }
+      EXPECT_EQ(wrong, 0) << type_name(type) << ", part " << part << ": columns that are not K's (or not empty)";
+      sum += share;
+    }
+    EXPECT_EQ((SparseMatrix(sum - k)).norm(), 0.0) << type_name(type) << ": the shares do not sum to K";
+  }
+}
+
 TEST(CompressedAssembly, TangledCellRaisesTheErrorOfTheFirstBadCell) {
   // Two tangled cells, one in each worker's columns: the error names the first in cell
   // order, as a single pass would.

@@ -1,0 +1,25 @@
+#pragma once
+/// A model's volume cells shared among the ranks of an MPI run: which rank assembles
+/// which cells, and which rank owns the equations of each node.
+#include <vector>
+
+#include "engine/mesh/mesh.hpp"
+
+namespace lunaster::engine {
+
+struct CellPartition {
+  int parts = 1;
+  std::vector<int> cell_part;   ///< per cell of the partitioned list (same order): its rank
+  std::vector<int> node_owner;  ///< per mesh node: the rank owning its equations; -1 outside the cells
+  int interface_nodes = 0;      ///< nodes whose cells lie on more than one rank
+};
+
+/// Partitions `cells` over the ranks of the run (parallel::size() parts) with PT-Scotch, on
+/// their dual graph: two cells are adjacent when they share `dim` nodes or more (a face, in
+/// 3D also an edge of quadratic cells). Every rank computes its share of the graph and gets
+/// the whole result. A node belongs to the rank holding most of its cells, on a tie the one
+/// owning fewer nodes so far. The same cells give the same parts in every run. Collective: every rank calls it with the same mesh and cells. With one
+/// rank, every cell and node is rank 0's.
+CellPartition partition_cells(const Mesh& mesh, const std::vector<int>& cells, int dim);
+
+}  // namespace lunaster::engine

@@ -1,0 +1,82 @@
+-- SOLVEUR METHODE='MUMPS' and 'PETSC' on models without contact: serially one process solves; under
+-- `mpirun -np N` the model is shared among the ranks (PT-Scotch partition of the cells, each rank
+-- assembling the stiffness of its own nodes, MUMPS given each rank's entries, PETSc each rank's
+-- rows), and the values must equal the serial ones (tests/mpi compares them, rank by rank output).
+--   1. SSNP121 I's geometry glued (meshes/glued3d_*.med: two unit cubes stacked, HEXA8 and HEXA20),
+--      ENCAST clamped, SURCHA moved by DZ = -0.1, E = 2e6, NU = 0: SIZZ = -1e5 Pa everywhere and
+--      DZ = -0.05 m on the interface, to 1e-8 with MUMPS and with PETSc (CG + BOOMER, CG + GAMG,
+--      FGMRES + LDLT_SP) at RESI_RELA = 1e-12.
+--   2. The thick-walled cylinder of axis_thick_cylinder.lua (AXIS QUAD8, Lame solution) with MUMPS:
+--      u_r at the inner and outer radius to 1e-4 (the mesh's own error, as in that deck).
+-- Reference: analytical. VALE_CALC: lunaster's own values from a real run (non-regression).
+-- Runtime label: fast, 3D, solver.
+DEBUT()
+MAT = DEFI_MATERIAU{ ELAS = _F{ E = 2.0e6, NU = 0.0 } }
+L_INST = DEFI_LIST_REEL{ DEBUT = 0.0, INTERVALLE = _F{ JUSQU_A = 1.0, NOMBRE = 1 } }
+-- VALE_CALC: lunaster's own values from a real serial run (non-regression, relative 1e-6), in the
+-- order of the checks below.
+local calc = {
+  ['hexa8 MUMPS'] = { -1.000000000000e+05, -1.000000000000e+05, -5.000000000000e-02, -5.000000000000e-02 },
+  ['hexa8 CG_BOOMER'] = { -1.000000000000e+05, -9.999999999996e+04, -5.000000000001e-02, -4.999999999999e-02 },
+  ['hexa8 CG_GAMG'] = { -1.000000000000e+05, -1.000000000000e+05, -5.000000000000e-02, -5.000000000000e-02 },
+  ['hexa8 FGMRES_LDLT_SP'] = { -1.000000000000e+05, -9.999999999996e+04, -5.000000000000e-02, -4.999999999999e-02 },
+  ['hexa20 MUMPS'] = { -1.000000000000e+05, -1.000000000000e+05, -5.000000000000e-02, -5.000000000000e-02 },
+  ['hexa20 CG_BOOMER'] = { -1.000000000003e+05, -9.999999999947e+04, -5.000000000003e-02, -4.999999999997e-02 },
+  ['hexa20 CG_GAMG'] = { -1.000000000007e+05, -9.999999999933e+04, -5.000000000010e-02, -4.999999999993e-02 },
+  ['hexa20 FGMRES_LDLT_SP'] = { -1.000000000003e+05, -9.999999999977e+04, -4.999999999998e-02, -4.999999999991e-02 },
+  ['axis quad8 MUMPS'] = { 9.533333331379e-04, 6.066666665685e-04 },
+}
+local solvers = {
+  MUMPS = _F{ METHODE = 'MUMPS' },
+  CG_BOOMER = _F{ METHODE = 'PETSC', ALGORITHME = 'CG', PRE_COND = 'BOOMER', RESI_RELA = 1.0e-12 },
+  CG_GAMG = _F{ METHODE = 'PETSC', ALGORITHME = 'CG', PRE_COND = 'GAMG', RESI_RELA = 1.0e-12 },
+  FGMRES_LDLT_SP = _F{ METHODE = 'PETSC', ALGORITHME = 'FGMRES', PRE_COND = 'LDLT_SP', RESI_RELA = 1.0e-12 },
+}
+for _, cell in ipairs({ 'hexa8', 'hexa20' }) do
+  local MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'meshes/glued3d_' .. cell .. '.med' }
+  local MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = '3D' } }
+  local CM = AFFE_MATERIAU{ MAILLAGE = MA, AFFE = _F{ GROUP_MA = { 'V1', 'V2' }, MATER = MAT } }
+  local CH = AFFE_CHAR_MECA{ MODELE = MO,
+                             DDL_IMPO = { _F{ GROUP_NO = 'ENCAST', DX = 0.0, DY = 0.0, DZ = 0.0 },
+                                          _F{ GROUP_NO = 'SURCHA', DX = 0.0, DY = 0.0, DZ = -0.1 } } }
+  for _, name in ipairs({ 'MUMPS', 'CG_BOOMER', 'CG_GAMG', 'FGMRES_LDLT_SP' }) do
+    local R = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CM, EXCIT = _F{ CHARGE = CH }, SOLVEUR = solvers[name],
+                             COMPORTEMENT = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L_INST } }
+    R = CALC_CHAMP{ reuse = R, RESULTAT = R, CONTRAINTE = { 'SIGM_NOEU' } }
+    local label, k = cell .. ' ' .. name, 0
+    local function t(cham, cmp, kind, refe, group)
+      k = k + 1
+      return _F{ RESULTAT = R, NUME_ORDRE = 1, NOM_CHAM = cham, NOM_CMP = cmp, TYPE_TEST = kind, GROUP_NO = group,
+                 REFERENCE = 'ANALYTIQUE', VALE_REFE = refe, PRECISION = 1.0e-8, LEGENDE = label,
+                 VALE_CALC = calc[label][k] }
+    end
+    TEST_RESU{ RESU = {
+      t('SIGM_NOEU', 'SIZZ', 'MIN', -1.0e5), t('SIGM_NOEU', 'SIZZ', 'MAX', -1.0e5),
+      t('DEPL', 'DZ', 'MIN', -0.05, 'SURESC'), t('DEPL', 'DZ', 'MAX', -0.05, 'SURESC'),
+    } }
+  end
+end
+
+-- 2. Thick-walled cylinder, AXIS QUAD8, MUMPS.
+local E, NU, P, A, B = 2.0e11, 0.3, 1.0e8, 1.0, 2.0
+local LAMBDA, MU = E * NU / ((1 + NU) * (1 - 2 * NU)), E / (2 * (1 + NU))
+local K = P * A * A / (B * B - A * A)
+local function ur(r) return K / (2 * (LAMBDA + MU)) * r + K * B * B / (2 * MU) / r end
+local STEEL = DEFI_MATERIAU{ ELAS = _F{ E = E, NU = NU } }
+local MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'meshes/axis_cylinder_quad8.med' }
+MA = MODI_MAILLAGE{ reuse = MA, MAILLAGE = MA, ORIE_PEAU_2D = _F{ GROUP_MA = 'LEFT' } }
+local CM = AFFE_MATERIAU{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', MATER = STEEL } }
+local MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'AXIS' } }
+local CH = AFFE_CHAR_MECA{ MODELE = MO, DDL_IMPO = _F{ GROUP_NO = { 'BOTTOM', 'TOP' }, DY = 0.0 },
+                           PRES_REP = _F{ GROUP_MA = 'LEFT', PRES = P } }
+local R = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CM, EXCIT = _F{ CHARGE = CH }, SOLVEUR = _F{ METHODE = 'MUMPS' },
+                         COMPORTEMENT = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L_INST } }
+-- Under mpirun, rank 0 writes it: the same file as a serial run's (tests/mpi compares them).
+IMPR_RESU{ FORMAT = 'MED', RESU = _F{ RESULTAT = R } }
+TEST_RESU{ RESU = {
+  _F{ RESULTAT = R, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', NOM_CMP = 'DX', GROUP_NO = 'C00', REFERENCE = 'ANALYTIQUE',
+      VALE_REFE = ur(A), PRECISION = 1.0e-4, LEGENDE = 'axis quad8 MUMPS', VALE_CALC = calc['axis quad8 MUMPS'][1] },
+  _F{ RESULTAT = R, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', NOM_CMP = 'DX', GROUP_NO = 'C10', REFERENCE = 'ANALYTIQUE',
+      VALE_REFE = ur(B), PRECISION = 1.0e-4, LEGENDE = 'axis quad8 MUMPS', VALE_CALC = calc['axis quad8 MUMPS'][2] },
+} }
+FIN()
