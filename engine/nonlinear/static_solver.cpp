@@ -141,6 +141,8 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   for (auto& s : solvers_) s.reset();
   stats_.n_dofs = n;
   distributed_ = shares_model();
+  elastic_in_solver_ = false;
+  elastic_holder_ = nullptr;
   {
     Stopwatch watch(stats_.assemble_seconds);
     const std::vector<int> constrained = constrained_equations(dofs_, loads_, *model_.mesh);
@@ -269,13 +271,25 @@ bool StaticSolver::shares_model() const {
 }
 
 Vector StaticSolver::stiffness_times(const Vector& u) const {
+  // With K_ff in the backend, elastic_.times() gives the constrained columns' part only.
   Vector ku = elastic_.times(u);
   if (distributed_) parallel::sum_over_ranks(ku.data(), ku.size());
+  if (elastic_in_solver_) {
+    const int nf = static_cast<int>(elastic_.equation.size());
+    Vector u_free(nf), k_u_free;
+    for (int j = 0; j < nf; ++j) u_free[j] = u[elastic_.equation[j]];
+    const bool done = elastic_holder_->multiply(u_free, k_u_free);
+    LUNASTER_ASSERT(done, "the backend holding K_ff gave no product");
+    for (int j = 0; j < nf; ++j) ku[elastic_.equation[j]] += k_u_free[j];
+  }
   return ku;
 }
 
 SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err, double t) const {
-  if (!distributed_) return diagnose_singular_system(model_, dofs_, cons.free_index, elastic_.ff, err, t);
+  // elastic_.ff is the whole K_ff unless the model is shared or K_ff went to the backend
+  // (also when the backend failed after taking it).
+  const bool whole_here = !distributed_ && !elastic_in_solver_ && (elastic_.ff.nonZeros() > 0 || elastic_.equation.empty());
+  if (whole_here) return diagnose_singular_system(model_, dofs_, cons.free_index, elastic_.ff, err, t);
   SplitMatrix whole;
   SparseMatrix k = assemble_stiffness_matrix(model_, dofs_);
   split_matrix(k, elastic_.constrained, whole);
@@ -638,9 +652,12 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         update_system(cons, k_contact, condensed, eliminated_eqs);
       }
       const SparseMatrix& a = *system_->matrix;
-      // A x for the accuracy of a solve: this rank's columns of a, summed over the ranks.
+      // A x for the accuracy of a solve: this rank's columns of a, summed over the ranks; the
+      // backend's product once K_ff is in its hands.
       const MatrixProduct system_product = [&a, this](const Vector& x) -> Vector {
-        Vector y = a * x;
+        Vector y;
+        if (elastic_in_solver_ && elastic_holder_->multiply(x, y)) return y;
+        y = a * x;
         if (distributed_) parallel::sum_over_ranks(y.data(), y.size());
         return y;
       };
@@ -700,7 +717,14 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           state.factorised = false;
           LUNASTER_ASSERT(!distributed_ || solver->takes_distributed(), "a shared model needs a backend that takes it");
           if (iterative || distributed_) solver->set_layout(system_layout(cons, condensed, eliminated_eqs));
-          solver->factorize(a, kind);
+          LUNASTER_ASSERT(!elastic_in_solver_, "K_ff was handed to a backend: it cannot be factorised again");
+          if (!contact_ && iterative) {
+            // The system is K_ff itself and the backend keeps its own copy: one copy is enough.
+            elastic_in_solver_ = solver->factorize_taking(elastic_.ff, kind);
+            if (elastic_in_solver_) elastic_holder_ = solver.get();
+          } else {
+            solver->factorize(a, kind);
+          }
         } catch (const SolveError& err) {
           if (err.out_of_memory() || err.failure().what == Failure::What::IterativeSolve) throw;
           throw diagnose(cons, err, t);

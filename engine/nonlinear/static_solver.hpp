@@ -147,6 +147,11 @@ class StaticSolver {
   /// (owned_nodes_), so elastic_ holds only those, and products with it are summed over
   /// the ranks. Everything else (mesh, vectors, results) is whole on every rank.
   bool distributed_ = false;
+  /// K_ff's storage was handed to the backend (an iterative one keeps its own copy): K_ff u
+  /// comes from the backend's product, elastic_.ff keeps its size only. Without contact the
+  /// system is K_ff itself and is never factorised again in the run.
+  bool elastic_in_solver_ = false;
+  const LinearSolver* elastic_holder_ = nullptr;
   std::vector<int> node_owner_;
   std::vector<char> owned_nodes_;
   /// One solver per backend for the whole run (each keeps its analysis while the pattern holds).

@@ -79,6 +79,16 @@ class LinearSolver {
   virtual void set_layout(SystemLayout /*layout*/) {}
   /// Whether the backend can factorise a system given as its ranks' columns (MUMPS, PETSc).
   virtual bool takes_distributed() const { return false; }
+  /// factorize(), for a caller that needs the matrix only through multiply() afterwards: a
+  /// backend that keeps a copy of its own may release A's storage (A keeps its size, with
+  /// no entries) and returns true. The default keeps A and returns false.
+  virtual bool factorize_taking(SparseMatrix& a, MatrixKind kind) {
+    factorize(a, kind);
+    return false;
+  }
+  /// y = A x with the matrix last factorised, x and y whole on every rank; false when the
+  /// backend keeps no copy of it (then y is untouched).
+  virtual bool multiply(const Vector& /*x*/, Vector& /*y*/) const { return false; }
   /// Krylov iterations of the last solve (0 for a direct backend).
   virtual int iterations() const { return 0; }
 };

@@ -2,7 +2,8 @@
 # Direct against iterative solvers on a 3D elastic block: the unit cube of N^3 HEXA8 (3 (N+1)^3
 # unknowns), clamped at the bottom, pressed by a uniform pressure on the top (NU = 0: a uniaxial
 # state, DZ = -p/E at the top, checked to 1e-6). Each run is a whole `lunaster run` (mesh reading,
-# assembly, solve, start-up included) timed by /usr/bin/time: wall seconds and peak memory.
+# assembly, solve, start-up included) timed by /usr/bin/time: wall seconds, and the peak memory of
+# each rank (each rank under its own /usr/bin/time): the largest and their sum.
 # Usage: tests/bench/solver_scaling.sh [-n RANKS] [BUILD_DIR] SOLVER:N...
 #   SOLVER: MUMPS | CHOLMOD | GAMG (PETSc CG + GAMG) | BOOMER (PETSc CG + BoomerAMG) | LDLT_SP
 #   -n RANKS: run under `mpirun -np RANKS` (each rank its share of the PETSc matrix / MUMPS work).
@@ -19,7 +20,7 @@ if [ "$ranks" -gt 1 ]; then
   export OMPI_MCA_pml=${OMPI_MCA_pml:-ob1} OMPI_MCA_btl=${OMPI_MCA_btl:-self,vader}
   launch=(mpirun -np "$ranks")
 fi
-printf "%-8s %5s %6s %10s %9s %9s %10s %10s\n" solver ranks N unknowns wall_s peak_MB us/unknown B/unknown
+printf "%-8s %5s %6s %10s %9s %9s %9s %10s %10s\n" solver ranks N unknowns wall_s peak_MB total_MB us/unknown B/unknown
 for run in "$@"; do
   solver=${run%%:*}; n=${run##*:}
   mesh="$work/block_$n.med"
@@ -47,12 +48,18 @@ TEST_RESU{ RESU = _F{ RESULTAT = R, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', NOM_CMP =
 FIN()
 LUA
   unknowns=$(( 3 * (n + 1) * (n + 1) * (n + 1) ))
-  if ! /usr/bin/time -f "%e %M" -o "$work/time" "${launch[@]}" "$root/$build/lunaster" run "$deck" --out "$work/out" -q \
-       > "$work/log" 2>&1; then
+  # Each rank's peak memory from its own /usr/bin/time (OpenMPI numbers the ranks in
+  # OMPI_COMM_WORLD_RANK); the wall time is the whole run's.
+  rm -f "$work"/peak.*
+  ranked=(sh -c '/usr/bin/time -f "%M" -o "$0/peak.${OMPI_COMM_WORLD_RANK:-0}" "$@"' "$work")
+  if ! /usr/bin/time -f "%e" -o "$work/time" "${launch[@]}" "${ranked[@]}" "$root/$build/lunaster" run "$deck" \
+       --out "$work/out" -q > "$work/log" 2>&1; then
     echo "$solver N=$n failed:"; tail -5 "$work/log"; continue
   fi
-  read -r wall kb < "$work/time"
-  # /usr/bin/time's peak is that of mpirun's largest child under mpirun: per rank.
-  awk -v s="$solver" -v r="$ranks" -v n="$n" -v u="$unknowns" -v w="$wall" -v kb="$kb" \
-    'BEGIN { printf "%-8s %5d %6d %10d %9.2f %9d %10.2f %10.0f\n", s, r, n, u, w, kb / 1024, 1e6 * w / u, 1024 * kb / u }'
+  read -r wall < "$work/time"
+  # peak_MB: the largest rank's; total_MB: all ranks' together; B/unknown from the total.
+  cat "$work"/peak.* | awk -v s="$solver" -v r="$ranks" -v n="$n" -v u="$unknowns" -v w="$wall" \
+    '{ kb = $NF + 0; total += kb; if (kb > peak) peak = kb }
+     END { printf "%-8s %5d %6d %10d %9.2f %9d %9d %10.2f %10.0f\n", s, r, n, u, w, peak / 1024, total / 1024,
+           1e6 * w / u, 1024 * total / u }'
 done

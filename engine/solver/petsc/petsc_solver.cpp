@@ -168,7 +168,12 @@ class PetscSolver final : public LinearSolver {
   PetscSolver(const PetscSolver&) = delete;
   PetscSolver& operator=(const PetscSolver&) = delete;
 
-  void factorize(const SparseMatrix& a, MatrixKind kind) override;
+  void factorize(const SparseMatrix& a, MatrixKind kind) override { set_up(a, kind, nullptr); }
+  bool factorize_taking(SparseMatrix& a, MatrixKind kind) override {
+    set_up(a, kind, &a);
+    return true;
+  }
+  bool multiply(const Vector& x, Vector& y) const override;
   Vector solve(const Vector& b) const override;
   std::string name() const override {
     return std::string("PETSc ") + krylov_name(settings_.krylov) + " + " + preconditioner_name(settings_.preconditioner);
@@ -186,6 +191,12 @@ class PetscSolver final : public LinearSolver {
     if (gathered_) VecDestroy(&gathered_);
     ksp_ = nullptr, a_ = nullptr, scatter_ = nullptr, gathered_ = nullptr;
   }
+  /// factorize(); `taken` (the same matrix as `a`): its storage is released once PETSc has
+  /// the matrix, before the preconditioner is built (the largest memory of the set-up).
+  void set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* taken);
+  /// A whole vector in the system's numbering into a PETSc vector (this rank's rows), and back.
+  void to_petsc(const Vector& x, Vec v) const;
+  void from_petsc(Vec v, Vector& x) const;
   void number_rows(int n_equations);
   void build_matrix(const SparseMatrix& a, MatrixKind kind);
   void attach_near_null_space();
@@ -406,8 +417,9 @@ PetscErrorCode PetscSolver::apply_single_precision(PC pc, Vec x, Vec y) {
   return 0;
 }
 
-void PetscSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
+void PetscSolver::set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* taken) {
   LUNASTER_ASSERT(a.rows() == a.cols(), "PETSc: matrix is not square");
+  LUNASTER_ASSERT(!taken || taken == &a, "PETSc: the matrix taken is the one factorised");
   // Contact multipliers make a saddle point: zero diagonal, indefinite. Only a factorisation
   // preconditions it; multigrid and point relaxations break down, and CG needs SPD.
   const bool factorised_pc = settings_.preconditioner == Settings::Preconditioner::LdltSp;
@@ -483,23 +495,54 @@ void PetscSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     case Settings::Preconditioner::Sor: check(PCSetType(pc, PCSOR), "PCSetType"); break;
     case Settings::Preconditioner::None: check(PCSetType(pc, PCNONE), "PCSetType"); break;
   }
+  if (taken) {  // PETSc and the preconditioner hold what they need of it now
+    SparseMatrix empty(a.rows(), a.cols());
+    taken->swap(empty);
+  }
   // Expert tuning, as PETSc users do it: options in the PETSC_OPTIONS environment variable
   // (-ksp_view, -pc_gamg_threshold 0.02, ...) apply on top of the deck's choice.
   check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
   check(KSPSetUp(ksp_), "building the preconditioner");
 }
 
+void PetscSolver::to_petsc(const Vector& x, Vec v) const {
+  PetscScalar* mine = nullptr;
+  check(VecGetArray(v, &mine), "VecGetArray");
+  for (PetscInt r = 0; r < local_rows_; ++r) {
+    const int eq = eq_of_[first_row_ + r];
+    mine[r] = eq >= 0 ? x[eq] : 0.0;
+  }
+  check(VecRestoreArray(v, &mine), "VecRestoreArray");
+}
+
+void PetscSolver::from_petsc(Vec v, Vector& x) const {
+  check(VecScatterBegin(scatter_, v, gathered_, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+  check(VecScatterEnd(scatter_, v, gathered_, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+  const PetscScalar* whole = nullptr;
+  check(VecGetArrayRead(gathered_, &whole), "VecGetArrayRead");
+  for (Eigen::Index eq = 0; eq < x.size(); ++eq) x[eq] = whole[row_of_[eq]];
+  VecRestoreArrayRead(gathered_, &whole);
+}
+
+bool PetscSolver::multiply(const Vector& x, Vector& y) const {
+  if (!a_) return false;
+  LUNASTER_ASSERT(x.size() == static_cast<Eigen::Index>(row_of_.size()), "PETSc: product with a vector of another size");
+  Vec xv = nullptr, yv = nullptr;
+  check(MatCreateVecs(a_, &xv, &yv), "MatCreateVecs");
+  to_petsc(x, xv);
+  check(MatMult(a_, xv, yv), "MatMult");
+  y.resize(x.size());
+  from_petsc(yv, y);
+  VecDestroy(&xv);
+  VecDestroy(&yv);
+  return true;
+}
+
 Vector PetscSolver::solve(const Vector& b) const {
   if (!ksp_) throw InternalError("PETSc: solve called before factorize");
   Vec bv = nullptr, xv = nullptr;
   check(MatCreateVecs(a_, &xv, &bv), "MatCreateVecs");
-  PetscScalar* x = nullptr;
-  check(VecGetArray(bv, &x), "VecGetArray");
-  for (PetscInt r = 0; r < local_rows_; ++r) {
-    const int eq = eq_of_[first_row_ + r];
-    x[r] = eq >= 0 ? b[eq] : 0.0;
-  }
-  check(VecRestoreArray(bv, &x), "VecRestoreArray");
+  to_petsc(b, bv);
   rhs_norm_ = std::max(b.norm(), 1e-300);
   iterations_ = 0;
   Vector out = Vector::Zero(b.size());
@@ -522,12 +565,7 @@ Vector PetscSolver::solve(const Vector& b) const {
                               {"allow more iterations, a larger tolerance, another preconditioner, or use a direct "
                                "solver"});
     }
-    check(VecScatterBegin(scatter_, xv, gathered_, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
-    check(VecScatterEnd(scatter_, xv, gathered_, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
-    const PetscScalar* whole = nullptr;
-    check(VecGetArrayRead(gathered_, &whole), "VecGetArrayRead");
-    for (Eigen::Index eq = 0; eq < out.size(); ++eq) out[eq] = whole[row_of_[eq]];
-    VecRestoreArrayRead(gathered_, &whole);
+    from_petsc(xv, out);
   }
   VecDestroy(&bv);
   VecDestroy(&xv);

@@ -118,6 +118,34 @@ TEST(Solvers, PetscKrylovEveryPreconditionerOnSpd) {
   check_solution(a, sor->solve(rhs(60)), sor->name());
 }
 
+TEST(Solvers, PetscTakesTheMatrixAndMultipliesByItsCopy) {
+  // A caller that needs the matrix only through products hands it over: PETSc keeps its
+  // copy, the caller's storage is released (its size kept), and the product is A x.
+  using S = IterativeSettings;
+  const SparseMatrix a = spd_matrix(50);
+  for (S::Preconditioner pc : {S::Preconditioner::Boomer, S::Preconditioner::LdltSp}) {
+    SparseMatrix taken = a;
+    auto s = make_linear_solver(SolverKind::Petsc, petsc(S::Krylov::CG, pc));
+    Vector y;
+    EXPECT_FALSE(s->multiply(rhs(50), y)) << "no product before a matrix is given";
+    EXPECT_TRUE(s->factorize_taking(taken, MatrixKind::SymmetricPositiveDefinite));
+    EXPECT_EQ(taken.nonZeros(), 0);
+    EXPECT_EQ(taken.rows(), 50);
+    EXPECT_EQ(taken.cols(), 50);
+    check_solution(a, s->solve(rhs(50)), s->name() + " after taking the matrix");
+    ASSERT_TRUE(s->multiply(rhs(50), y));
+    const Vector ref = a * rhs(50);
+    for (int i = 0; i < 50; ++i) expect_close(y(i), ref(i), 1e-14, 1e-14, s->name() + " product");
+  }
+  // A direct backend keeps the caller's matrix and has no product of its own.
+  SparseMatrix kept = a;
+  auto direct = make_linear_solver(SolverKind::Cholmod);
+  EXPECT_FALSE(direct->factorize_taking(kept, MatrixKind::SymmetricPositiveDefinite));
+  EXPECT_EQ(kept.nonZeros(), a.nonZeros());
+  Vector y;
+  EXPECT_FALSE(direct->multiply(rhs(50), y));
+}
+
 TEST(Solvers, PetscSaddlePointNeedsAFactorisationAsPreconditioner) {
   using S = IterativeSettings;
   const SparseMatrix a = saddle_matrix(30);
