@@ -8,6 +8,10 @@
 --      FGMRES + LDLT_SP) at RESI_RELA = 1e-12.
 --   2. The thick-walled cylinder of axis_thick_cylinder.lua (AXIS QUAD8, Lame solution) with MUMPS:
 --      u_r at the inner and outer radius to 1e-4 (the mesh's own error, as in that deck).
+--   3. Contact with MUMPS (under mpirun every rank pairs the whole surfaces and keeps the contact
+--      terms of its own columns): SSNP121 A (ssnp121a.lua: CONTINUE, contact multipliers, a saddle
+--      point) at code_aster's 1 %, and SSNP121 I with mortar contact (ssnp121i_mortar.lua: the
+--      active slave displacements eliminated) at 1e-8.
 -- Reference: analytical. VALE_CALC: lunaster's own values from a real run (non-regression).
 -- Runtime label: fast, 3D, solver.
 DEBUT()
@@ -24,6 +28,7 @@ local calc = {
   ['hexa20 CG_BOOMER'] = { -1.000000000003e+05, -9.999999999947e+04, -5.000000000003e-02, -4.999999999997e-02 },
   ['hexa20 CG_GAMG'] = { -1.000000000007e+05, -9.999999999933e+04, -5.000000000010e-02, -4.999999999993e-02 },
   ['hexa20 FGMRES_LDLT_SP'] = { -1.000000000003e+05, -9.999999999977e+04, -4.999999999998e-02, -4.999999999991e-02 },
+  ['ssnp121i mortar MUMPS'] = { -1.000000000000e+05, -9.999999999999e+04, -5.000000000000e-02, -5.000000000000e-02 },
   ['axis quad8 MUMPS'] = { 9.533333331379e-04, 6.066666665685e-04 },
 }
 local solvers = {
@@ -79,4 +84,59 @@ TEST_RESU{ RESU = {
   _F{ RESULTAT = R, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', NOM_CMP = 'DX', GROUP_NO = 'C10', REFERENCE = 'ANALYTIQUE',
       VALE_REFE = ur(B), PRECISION = 1.0e-4, LEGENDE = 'axis quad8 MUMPS', VALE_CALC = calc['axis quad8 MUMPS'][2] },
 } }
+
+-- 3. Contact, MUMPS. SSNP121 A: CONTINUE with multipliers (VALE_CALC: ssnp121a.lua's, same scene).
+local RAMPE = DEFI_FONCTION{ NOM_PARA = 'INST', VALE = { 0.0, 0.0, 1.0, 1.0 } }
+do
+  local MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'ssnp121a.med' }
+  local MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN' } }
+  local CM = AFFE_MATERIAU{ MAILLAGE = MA, AFFE = _F{ GROUP_MA = { 'PLAQUE1', 'PLAQUE2' }, MATER = MAT } }
+  local CH = AFFE_CHAR_MECA{ MODELE = MO, DDL_IMPO = { _F{ GROUP_NO = 'CD', DX = 0.0, DY = -0.1 },
+                                                       _F{ GROUP_NO = 'GH', DX = 0.0, DY = 0.0 } } }
+  local CONT = DEFI_CONTACT{ MODELE = MO, FORMULATION = 'CONTINUE', ALGO_RESO_CONT = 'POINT_FIXE',
+                             ALGO_RESO_GEOM = 'POINT_FIXE', REAC_GEOM = 'CONTROLE', NB_ITER_GEOM = 2,
+                             ZONE = _F{ GROUP_MA_ESCL = 'AB', GROUP_MA_MAIT = 'EF', INTEGRATION = 'SIMPSON',
+                                        ORDRE_INT = 4, COEF_CONT = 1000.0, CONTACT_INIT = 'NON' } }
+  local R = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CM, CONTACT = CONT, EXCIT = _F{ CHARGE = CH, FONC_MULT = RAMPE },
+                           COMPORTEMENT = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L_INST },
+                           CONVERGENCE = _F{ RESI_GLOB_MAXI = 2e-8, ITER_GLOB_MAXI = 30 },
+                           SOLVEUR = _F{ METHODE = 'MUMPS' } }
+  local calc_a = {
+    A = { DY = -4.999669690478e-02, LAGS_C = -1.000795227287e+05 },
+    O = { DY = -4.997830886910e-02, LAGS_C = -1.003593668221e+05 },
+    B = { DY = -4.999669690478e-02, LAGS_C = -1.000795227287e+05 },
+  }
+  local checks = {}
+  for _, point in ipairs({ 'A', 'O', 'B' }) do
+    for _, cmp in ipairs({ 'DY', 'LAGS_C' }) do
+      checks[#checks + 1] = _F{ RESULTAT = R, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', GROUP_NO = point, NOM_CMP = cmp,
+                                VALE_CALC = calc_a[point][cmp], REFERENCE = 'ANALYTIQUE',
+                                VALE_REFE = cmp == 'DY' and -0.05 or -1.0e5, PRECISION = 1.0e-2,
+                                LEGENDE = 'ssnp121a MUMPS' }
+    end
+  end
+  TEST_RESU{ RESU = checks }
+end
+
+-- SSNP121 I, mortar: exact to round-off.
+do
+  local MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'ssnp121i.med' }
+  local MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = '3D' } }
+  local CM = AFFE_MATERIAU{ MAILLAGE = MA, AFFE = _F{ GROUP_MA = { 'V1', 'V2' }, MATER = MAT } }
+  local CH = AFFE_CHAR_MECA{ MODELE = MO, DDL_IMPO = { _F{ GROUP_NO = 'ENCAST', DX = 0.0, DY = 0.0, DZ = 0.0 },
+                                                       _F{ GROUP_NO = 'SURCHA', DX = 0.0, DY = 0.0, DZ = -0.1 } } }
+  local CONT = DEFI_CONT{ MODELE = MO, ZONE = _F{ APPARIEMENT = 'MORTAR', GROUP_MA_ESCL = 'SURESC',
+                                                 GROUP_MA_MAIT = 'SURMAI', ALGO_CONT = 'LAGRANGIEN',
+                                                 CONTACT_INIT = 'INTERPENETRE' } }
+  local R = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CM, CONTACT = CONT, EXCIT = _F{ CHARGE = CH, FONC_MULT = RAMPE },
+                           COMPORTEMENT = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L_INST },
+                           SOLVEUR = _F{ METHODE = 'MUMPS' } }
+  local function t(cmp, kind, refe, k)
+    return _F{ RESULTAT = R, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', NOM_CMP = cmp, TYPE_TEST = kind, GROUP_NO = 'SURESC',
+               REFERENCE = 'ANALYTIQUE', VALE_REFE = refe, PRECISION = 1.0e-8, LEGENDE = 'ssnp121i mortar MUMPS',
+               VALE_CALC = calc['ssnp121i mortar MUMPS'][k] }
+  end
+  TEST_RESU{ RESU = { t('LAGS_C', 'MIN', -1.0e5, 1), t('LAGS_C', 'MAX', -1.0e5, 2), t('DZ', 'MIN', -0.05, 3),
+                      t('DZ', 'MAX', -0.05, 4) } }
+end
 FIN()

@@ -141,6 +141,8 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   for (auto& s : solvers_) s.reset();
   stats_.n_dofs = n;
   distributed_ = shares_model();
+  ghost_ = SparseMatrix();
+  ghost_nodes_.clear();
   elastic_in_solver_ = false;
   elastic_holder_ = nullptr;
   {
@@ -163,7 +165,8 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
         counts += (r ? ", " : "") + std::to_string(cells_of[r]) + " / " + std::to_string(nodes_of[r]);
       log_.info("model shared among " + std::to_string(part.parts) + " ranks (PT-Scotch): cells / nodes per rank " +
                 counts + "; " + std::to_string(part.interface_nodes) +
-                " nodes on interfaces; each rank assembles the stiffness of its own nodes");
+                " nodes on interfaces; each rank assembles the stiffness of its own nodes" +
+                (contact_ ? std::string(" and keeps their contact terms") : std::string()));
     }
     SparseMatrix k = assemble_stiffness_matrix(model_, dofs_, distributed_ ? &owned_nodes_ : nullptr);
     split_matrix(k, constrained, elastic_);
@@ -266,7 +269,7 @@ SystemLayout StaticSolver::system_layout(const Constraints& cons, const std::vec
 bool StaticSolver::shares_model() const {
   // Only when the deck names such a backend: METHODE='AUTO' keeps its choice (CHOLMOD on
   // every rank for an SPD system), so a deck gives the same values under mpirun.
-  if (parallel::size() < 2 || contact_ || options_.auto_solver) return false;
+  if (parallel::size() < 2 || options_.auto_solver) return false;
   return options_.solver == SolverKind::Mumps || options_.solver == SolverKind::Petsc;
 }
 
@@ -353,12 +356,32 @@ std::vector<int> StaticSolver::eliminate(const Constraints& cons, const std::vec
   }
   // Columns of K at the eliminated equations: elastic part and contact triplets.
   std::vector<std::vector<std::pair<int, double>>> column(relations.size());
-  for (size_t i = 0; i < relations.size(); ++i) {
-    const int e = relations[i].eq;
-    // Its constrained rows are left out: their residual is not solved for and no term
-    // of K' lies on them.
-    for (SparseMatrix::InnerIterator it(elastic_.ff, cons.free_index[e]); it; ++it)
-      column[i].emplace_back(elastic_.equation[it.row()], it.value());
+  if (distributed_) {
+    // This rank holds only its own nodes' columns: every rank computes the whole columns of
+    // the eliminated equations' nodes (kept while the set of nodes holds), so that each one
+    // gets the whole fill and keeps its own columns of it.
+    std::vector<int> nodes;
+    for (int eq : eqs) nodes.push_back(dofs_.node_of(eq));
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    if (nodes != ghost_nodes_) {
+      std::vector<char> mask(model_.mesh->n_nodes(), 0);
+      for (int v : nodes) mask[v] = 1;
+      ghost_ = SparseMatrix();
+      ghost_ = assemble_stiffness_matrix(model_, dofs_, &mask);
+      ghost_nodes_ = std::move(nodes);
+    }
+    for (size_t i = 0; i < relations.size(); ++i)
+      for (SparseMatrix::InnerIterator it(ghost_, relations[i].eq); it; ++it)
+        if (cons.free_index[it.row()] >= 0) column[i].emplace_back(static_cast<int>(it.row()), it.value());
+  } else {
+    for (size_t i = 0; i < relations.size(); ++i) {
+      const int e = relations[i].eq;
+      // Its constrained rows are left out: their residual is not solved for and no term
+      // of K' lies on them.
+      for (SparseMatrix::InnerIterator it(elastic_.ff, cons.free_index[e]); it; ++it)
+        column[i].emplace_back(elastic_.equation[it.row()], it.value());
+    }
   }
   for (const auto& tr : triplets)
     if (index_of[tr.col()] >= 0) column[index_of[tr.col()]].emplace_back(tr.row(), tr.value());
@@ -426,6 +449,16 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
   }
   LUNASTER_ASSERT(cons.constrained == elastic_.constrained, "the Dirichlet set changed within a run");
   const int nf = cons.n_free;
+  if (new_constraints) {
+    sys.owned.clear();
+    if (distributed_) {
+      sys.owned.assign(nf, 0);
+      for (int eq = 0; eq < dofs_.n_dofs(); ++eq)
+        if (cons.free_index[eq] >= 0) sys.owned[cons.free_index[eq]] = owned_nodes_[dofs_.node_of(eq)];
+    }
+  }
+  // A shared model: this rank's columns only (the others are empty here).
+  auto mine = [&sys](int j) { return sys.owned.empty() || sys.owned[j]; };
   if (!contact_) {  // K_ff alone: nothing to copy, nothing to add
     if (new_constraints) ++sys.pattern, sys.valid = true;
     sys.matrix = &elastic_.ff;
@@ -446,14 +479,15 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
       const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
       if (i >= 0 && j >= 0) ++start[j + 2];
     }
-    for (int j = 0; j < nf; ++j) ++start[j + 2];  // the diagonal
+    for (int j = 0; j < nf; ++j) start[j + 2] += mine(j);  // the diagonal
     for (int j = 0; j <= nf; ++j) start[j + 1] += start[j];
     extra.resize(start[nf + 1]);
     for (const auto& tr : contact) {
       const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
       if (i >= 0 && j >= 0) extra[start[j + 1]++] = i;
     }
-    for (int j = 0; j < nf; ++j) extra[start[j + 1]++] = j;
+    for (int j = 0; j < nf; ++j)
+      if (mine(j)) extra[start[j + 1]++] = j;
     std::vector<int> extra_end(nf);
     for (int j = 0; j < nf; ++j) {
       std::sort(extra.begin() + start[j], extra.begin() + start[j + 1]);
@@ -500,7 +534,7 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
       sys.contact_pos[k] = i >= 0 && j >= 0 ? position(i, j) : -1;
     }
     sys.diagonal.resize(cons.n_free);
-    for (int k = 0; k < cons.n_free; ++k) sys.diagonal[k] = position(k, k);
+    for (int k = 0; k < cons.n_free; ++k) sys.diagonal[k] = mine(k) ? position(k, k) : -1;
     sys.contact_version = version;
     ++sys.pattern;
     sys.valid = true;
@@ -541,19 +575,35 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     mix(bits);
   }
   for (int eq : condensed)
-    if (cons.free_index[eq] >= 0) values[sys.diagonal[cons.free_index[eq]]] = 1.0, mix(static_cast<std::uint64_t>(eq));
+    if (cons.free_index[eq] >= 0) {
+      if (mine(cons.free_index[eq])) values[sys.diagonal[cons.free_index[eq]]] = 1.0;
+      mix(static_cast<std::uint64_t>(eq));
+    }
   // Eliminated unknowns: their rows and columns (elastic values included) become a unit diagonal.
   const int* outer = sys.a.outerIndexPtr();
   const int* inner = sys.a.innerIndexPtr();
-  for (int eq : eliminated) {
-    const int j = cons.free_index[eq];
-    for (int p = outer[j]; p < outer[j + 1]; ++p) {
-      const int i = inner[p];
-      values[p] = 0.0;
-      values[std::lower_bound(inner + outer[i], inner + outer[i + 1], j) - inner] = 0.0;
+  if (sys.owned.empty()) {
+    for (int eq : eliminated) {
+      const int j = cons.free_index[eq];
+      for (int p = outer[j]; p < outer[j + 1]; ++p) {
+        const int i = inner[p];
+        values[p] = 0.0;
+        values[std::lower_bound(inner + outer[i], inner + outer[i + 1], j) - inner] = 0.0;
+      }
+      values[sys.diagonal[j]] = 1.0;
+      mix(~static_cast<std::uint64_t>(eq));
     }
-    values[sys.diagonal[j]] = 1.0;
-    mix(~static_cast<std::uint64_t>(eq));
+  } else if (!eliminated.empty()) {
+    // A shared model: column j may be another rank's, so row j is found by a pass over this
+    // rank's columns.
+    std::vector<char> gone(nf, 0);
+    for (int eq : eliminated) gone[cons.free_index[eq]] = 1, mix(~static_cast<std::uint64_t>(eq));
+    for (int j = 0; j < nf; ++j) {
+      if (!mine(j)) continue;
+      for (int p = outer[j]; p < outer[j + 1]; ++p)
+        if (gone[j] || gone[inner[p]]) values[p] = 0.0;
+      if (gone[j]) values[sys.diagonal[j]] = 1.0;
+    }
   }
   sys.values_key = key;
 }
@@ -647,6 +697,13 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         Stopwatch watch(stats_.assemble_seconds);
         eliminated_eqs = eliminate(cons, eliminated, residual, k_contact, r_free);
       }
+      if (distributed_) {
+        // Every rank computed every contact term (the pairing sees the whole surfaces): it
+        // keeps those of its own columns.
+        k_contact.erase(std::remove_if(k_contact.begin(), k_contact.end(),
+                                       [this](const Triplet& tr) { return !owned_nodes_[dofs_.node_of(tr.col())]; }),
+                        k_contact.end());
+      }
       {
         Stopwatch watch(stats_.assemble_seconds);
         update_system(cons, k_contact, condensed, eliminated_eqs);
@@ -692,7 +749,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         // A new pairing with the same statuses: the previous factorisation is a close
         // preconditioner; a few Krylov iterations replace a factorisation when they converge.
         Stopwatch watch(stats_.solve_seconds);
-        const KrylovResult k = preconditioned_gmres(a, *solver, -r_free, du, kKrylovIterations, kKrylovTolerance);
+        const KrylovResult k =
+            preconditioned_gmres(system_product, *solver, -r_free, du, kKrylovIterations, kKrylovTolerance);
         if (k.converged) {
           solved = true;
           accuracy.raw_residual = accuracy.residual = k.residual;

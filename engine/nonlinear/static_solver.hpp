@@ -113,7 +113,8 @@ class StaticSolver {
     /// the next update need not copy them again. No second copy of K_ff is kept.
     bool values_elastic = false;
     std::vector<int> contact_pos;      ///< position in a of each contact triplet, -1 if constrained
-    std::vector<int> diagonal;         ///< position of each diagonal entry in a
+    std::vector<int> diagonal;         ///< position of each diagonal entry in a, -1 in another rank's column
+    std::vector<char> owned;           ///< shared model: per free equation, whether this rank holds its column
     std::uint64_t values_key = 0;      ///< key of a's current values (update_system)
     SystemState state[kSolverKinds];              ///< per backend (SolverKind)
   };
@@ -141,12 +142,19 @@ class StaticSolver {
   /// constrained columns. Nothing else of K is kept: they give K u, the system's refill and
   /// the eliminations' columns.
   SplitMatrix elastic_;
-  /// The model shared among the ranks of an MPI run (several ranks, no contact, a backend
-  /// that takes a distributed system: MUMPS or PETSc). The volume cells are partitioned
+  /// The model shared among the ranks of an MPI run (several ranks, a backend named by the
+  /// deck that takes a distributed system: MUMPS or PETSc). The volume cells are partitioned
   /// (PT-Scotch); each rank assembles the complete columns of the nodes it owns
-  /// (owned_nodes_), so elastic_ holds only those, and products with it are summed over
-  /// the ranks. Everything else (mesh, vectors, results) is whole on every rank.
+  /// (owned_nodes_), so elastic_ and the system hold only those, and products with them are
+  /// summed over the ranks. Contact is computed whole on every rank (pairing sees the whole
+  /// surfaces) and each rank keeps the terms of its own columns. Everything else (mesh,
+  /// vectors, results) is whole on every rank.
   bool distributed_ = false;
+  /// With a shared model and contact eliminations: the whole columns of K at the eliminated
+  /// equations' nodes (every rank computes them, a band along the contact surface), for the
+  /// nodes in ghost_nodes_.
+  SparseMatrix ghost_;
+  std::vector<int> ghost_nodes_;
   /// K_ff's storage was handed to the backend (an iterative one keeps its own copy): K_ff u
   /// comes from the backend's product, elastic_.ff keeps its size only. Without contact the
   /// system is K_ff itself and is never factorised again in the run.

@@ -9,6 +9,12 @@ namespace lunaster::engine {
 
 KrylovResult preconditioned_gmres(const SparseMatrix& a, const LinearSolver& preconditioner, const Vector& b,
                                   Vector& x, int max_iterations, double tolerance) {
+  return preconditioned_gmres([&a](const Vector& v) -> Vector { return a * v; }, preconditioner, b, x,
+                              max_iterations, tolerance);
+}
+
+KrylovResult preconditioned_gmres(const MatrixProduct& a, const LinearSolver& preconditioner, const Vector& b,
+                                  Vector& x, int max_iterations, double tolerance) {
   KrylovResult result;
   const int n = static_cast<int>(b.size());
   x = Vector::Zero(n);
@@ -26,7 +32,7 @@ KrylovResult preconditioned_gmres(const SparseMatrix& a, const LinearSolver& pre
   g[0] = b_norm;
   int k = 0;
   for (; k < m; ++k) {
-    Vector w = a * preconditioner.solve(v[k]);
+    Vector w = a(preconditioner.solve(v[k]));
     for (int i = 0; i <= k; ++i) {  // modified Gram-Schmidt
       h(i, k) = w.dot(v[i]);
       w -= h(i, k) * v[i];
@@ -56,7 +62,7 @@ KrylovResult preconditioned_gmres(const SparseMatrix& a, const LinearSolver& pre
   Vector z = Vector::Zero(n);
   for (int i = 0; i < k; ++i) z += y[i] * v[i];
   x = preconditioner.solve(z);
-  result.residual = (a * x - b).norm() / b_norm;
+  result.residual = (a(x) - b).norm() / b_norm;
   result.converged = std::isfinite(result.residual) && result.residual <= tolerance;
   return result;
 }

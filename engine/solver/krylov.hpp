@@ -18,5 +18,8 @@ struct KrylovResult {
 /// or after `max_iterations` (one restart cycle of that length).
 KrylovResult preconditioned_gmres(const SparseMatrix& a, const LinearSolver& preconditioner, const Vector& b,
                                   Vector& x, int max_iterations, double tolerance);
+/// The same with A known through its product (a system shared among MPI ranks).
+KrylovResult preconditioned_gmres(const MatrixProduct& a, const LinearSolver& preconditioner, const Vector& b,
+                                  Vector& x, int max_iterations, double tolerance);
 
 }  // namespace lunaster::engine

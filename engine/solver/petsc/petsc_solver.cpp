@@ -247,9 +247,23 @@ void PetscSolver::number_rows(int n_equations) {
     groups = n_equations;
   } else {
     const PetscInt in_blocks = static_cast<PetscInt>(layout_.n_blocks()) * bs_;
+    std::vector<int> outside;
+    for (int eq = 0; eq < n_equations; ++eq) {
+      if (layout_.block[eq] >= 0) group_row[eq] = layout_.block[eq] * bs_ + layout_.component[eq];
+      else outside.push_back(eq);
+    }
+    // With owners, each rank's outside equations fill groups of their own.
+    if (owned)
+      std::stable_sort(outside.begin(), outside.end(), [this](int x, int y) { return layout_.owner[x] < layout_.owner[y]; });
     PetscInt next = in_blocks;
-    for (int eq = 0; eq < n_equations; ++eq)
-      group_row[eq] = layout_.block[eq] >= 0 ? layout_.block[eq] * bs_ + layout_.component[eq] : next++;
+    int group_owner = -1;
+    for (int eq : outside) {
+      if (owned && layout_.owner[eq] != group_owner) {
+        next = (next + bs_ - 1) / bs_ * bs_;  // a new group (the last one padded)
+        group_owner = layout_.owner[eq];
+      }
+      group_row[eq] = next++;
+    }
     groups = (next + bs_ - 1) / bs_;
   }
   n_ = groups * bs_;
