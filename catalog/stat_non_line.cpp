@@ -66,7 +66,9 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                    "multipliers, mid-side ties, continuous penalty; the log says so once), or UMFPACK below "
                    "10,000 unknowns in a run without mpirun (no MPI start-up); AUTO also gives 3D "
                    "systems of more than 100,000 unknowns to MUMPS, whose orderings fill less there; MUMPS and "
-                   "UMFPACK are used as asked; PETSC solves iteratively (a Krylov method and a preconditioner)")
+                   "UMFPACK are used as asked; PETSC solves iteratively (a Krylov method and a preconditioner). "
+                   "Under mpirun, MUMPS and PETSC share the model among the ranks (Scotch partition, each "
+                   "rank assembling its own rows); the other methods give every rank the whole system")
                   .into_values({"AUTO", "MUMPS", "LDLT", "MULT_FRONT", "CHOLMOD", "UMFPACK", "PETSC"})
                   .def("AUTO")},
              "Linear solver")

@@ -11,7 +11,7 @@ PACKAGES=(
   libmumps-dev                # MUMPS, MPI build: one process or the ranks of mpirun
   libpetsc-real-dev           # PETSc (Krylov solvers, algebraic multigrid: GAMG, hypre BoomerAMG, ML)
   openmpi-bin                 # mpirun, for decks run on several processes
-  libptscotch-dev             # PT-Scotch: a model's cells shared among the ranks of an MPI run
+  libscotch-dev               # Scotch: a model's cells shared among the ranks of an MPI run
   libopenblas-pthread-dev     # OpenBLAS: the BLAS/LAPACK under CHOLMOD, UMFPACK and MUMPS
   libmedc-dev libhdf5-openmpi-dev libopenmpi-dev  # MED-file 4.1 (built on the OpenMPI HDF5): meshes, results
   libgtest-dev libgmock-dev   # unit tests

@@ -1,5 +1,5 @@
 -- SOLVEUR METHODE='MUMPS' and 'PETSC' on models without contact: serially one process solves; under
--- `mpirun -np N` the model is shared among the ranks (PT-Scotch partition of the cells, each rank
+-- `mpirun -np N` the model is shared among the ranks (Scotch partition of the cells, each rank
 -- assembling the stiffness of its own nodes, MUMPS given each rank's entries, PETSc each rank's
 -- rows), and the values must equal the serial ones (tests/mpi compares them, rank by rank output).
 --   1. SSNP121 I's geometry glued (meshes/glued3d_*.med: two unit cubes stacked, HEXA8 and HEXA20),

@@ -1,10 +1,9 @@
 #include "engine/assembly/partition.hpp"
 
-#include <mpi.h>
 #include <cstdint>
 #include <cstdio>
-// PT-Scotch's header uses these types without including their headers.
-#include <ptscotch.h>
+// Scotch's header uses these types without including their headers.
+#include <scotch.h>
 
 #include <algorithm>
 #include <string>
@@ -46,51 +45,54 @@ CellPartition partition_cells(const Mesh& mesh, const std::vector<int>& cells, i
   } else if (n < 4 * out.parts) {
     out.cell_part = block_parts(n, out.parts);
   } else {
-    // This rank's vertices of the dual graph: cells [first, last).
-    const int first = static_cast<int>(static_cast<long long>(n) * rank / out.parts);
-    const int last = static_cast<int>(static_cast<long long>(n) * (rank + 1) / out.parts);
-    std::vector<SCOTCH_Num> vert(static_cast<size_t>(last - first) + 1, 0), edge;
-    std::vector<int> shared(n, 0), touched;
-    for (int i = first; i < last; ++i) {
-      const int c = cells[i];
-      touched.clear();
-      for (int a = 0, nn = mesh.cell_n_nodes(c); a < nn; ++a) {
-        const int v = mesh.cell(c)[a];
-        for (int p = start[v]; p < start[v + 1]; ++p) {
-          const int j = node_cells[p];
-          if (j == i) continue;
-          if (shared[j]++ == 0) touched.push_back(j);
+    // Rank 0 partitions the dual graph with Scotch's sequential partitioner, from its
+    // generator's initial state, and gives the parts to the others: the same cells give the
+    // same parts in every run (PT-Scotch's parallel partitioner gave run-to-run differences).
+    std::vector<SCOTCH_Num> part(n, 0);
+    int status = 0;
+    if (rank == 0) {
+      // Vertex weights: the size of the cell's element matrix (nodes squared), what it adds
+      // to the assembly and to its rank's rows. Counting cells alone gave the rank holding the
+      // HEXA20 half of SSNP121 I four times the other's memory.
+      std::vector<SCOTCH_Num> vert(static_cast<size_t>(n) + 1, 0), weight(n, 1), edge;
+      std::vector<int> shared(n, 0), touched;
+      for (int i = 0; i < n; ++i) {
+        const int c = cells[i];
+        weight[i] = mesh.cell_n_nodes(c) * mesh.cell_n_nodes(c);
+        touched.clear();
+        for (int a = 0, nn = mesh.cell_n_nodes(c); a < nn; ++a) {
+          const int v = mesh.cell(c)[a];
+          for (int p = start[v]; p < start[v + 1]; ++p) {
+            const int j = node_cells[p];
+            if (j == i) continue;
+            if (shared[j]++ == 0) touched.push_back(j);
+          }
         }
+        std::sort(touched.begin(), touched.end());
+        for (int j : touched) {
+          if (shared[j] >= dim) edge.push_back(j);
+          shared[j] = 0;
+        }
+        vert[i + 1] = static_cast<SCOTCH_Num>(edge.size());
       }
-      std::sort(touched.begin(), touched.end());
-      for (int j : touched) {
-        if (shared[j] >= dim) edge.push_back(j);
-        shared[j] = 0;
-      }
-      vert[i - first + 1] = static_cast<SCOTCH_Num>(edge.size());
+      SCOTCH_Graph graph;
+      SCOTCH_Strat strategy;
+      status = SCOTCH_graphInit(&graph);
+      SCOTCH_stratInit(&strategy);
+      if (status == 0)
+        status = SCOTCH_graphBuild(&graph, 0, n, vert.data(), nullptr, weight.data(), nullptr,
+                                   static_cast<SCOTCH_Num>(edge.size()), edge.data(), nullptr);
+      SCOTCH_randomReset();
+      if (status == 0) status = SCOTCH_graphPart(&graph, out.parts, &strategy, part.data());
+      SCOTCH_stratExit(&strategy);
+      SCOTCH_graphExit(&graph);
     }
-    std::vector<int>().swap(shared);
-    const SCOTCH_Num local = last - first, arcs = static_cast<SCOTCH_Num>(edge.size());
-    std::vector<SCOTCH_Num> part(static_cast<size_t>(std::max(local, 1)), 0);
-    SCOTCH_Dgraph graph;
-    SCOTCH_Strat strategy;
-    if (SCOTCH_dgraphInit(&graph, MPI_COMM_WORLD) != 0)
-      throw SolveError("PT-Scotch: the distributed graph of the cells could not be created");
-    SCOTCH_stratInit(&strategy);
-    int status = SCOTCH_dgraphBuild(&graph, 0, local, local, vert.data(), nullptr, nullptr, nullptr, arcs, arcs,
-                                    edge.data(), nullptr, nullptr);
-    // Scotch's pseudo-random generator from its initial state: the same cells, the same parts.
-    SCOTCH_randomReset();
-    if (status == 0) status = SCOTCH_dgraphPart(&graph, out.parts, &strategy, part.data());
-    SCOTCH_stratExit(&strategy);
-    SCOTCH_dgraphExit(&graph);
-    // Every rank sees the others' status: a failure stops them all, none waits.
-    double failed = status != 0 ? 1.0 : 0.0;
-    if (parallel::max_over_ranks(failed) > 0.0)
-      throw SolveError("PT-Scotch could not partition the " + std::to_string(n) + " cells over " +
+    // Every rank learns rank 0's status: a failure stops them all, none waits.
+    if (parallel::max_over_ranks(status != 0 ? 1.0 : 0.0) > 0.0)
+      throw SolveError("Scotch could not partition the " + std::to_string(n) + " cells over " +
                        std::to_string(out.parts) + " ranks");
-    part.resize(static_cast<size_t>(local));
-    out.cell_part = parallel::gather_all(std::vector<int>(part.begin(), part.end()));
+    parallel::broadcast(part.data(), n);
+    out.cell_part.assign(part.begin(), part.end());
   }
   // Node owners: the rank with most of the node's cells; on a tie, the one owning fewer
   // nodes so far (the same order on every rank: the same owners).

@@ -14,12 +14,14 @@ struct CellPartition {
   int interface_nodes = 0;      ///< nodes whose cells lie on more than one rank
 };
 
-/// Partitions `cells` over the ranks of the run (parallel::size() parts) with PT-Scotch, on
+/// Partitions `cells` over the ranks of the run (parallel::size() parts) with Scotch, on
 /// their dual graph: two cells are adjacent when they share `dim` nodes or more (a face, in
-/// 3D also an edge of quadratic cells). Every rank computes its share of the graph and gets
-/// the whole result. A node belongs to the rank holding most of its cells, on a tie the one
-/// owning fewer nodes so far. The same cells give the same parts in every run. Collective: every rank calls it with the same mesh and cells. With one
-/// rank, every cell and node is rank 0's.
+/// 3D also an edge of quadratic cells); each cell weighs the size of its element matrix
+/// (nodes squared), so that a rank of quadratic cells gets fewer of them. Rank 0 partitions
+/// and every rank gets the result. A node belongs to the rank holding most of its cells, on
+/// a tie the one owning fewer nodes so far. The same cells give the same parts in every run.
+/// Collective: every rank calls it with the same mesh and cells. With one rank, every cell
+/// and node is rank 0's.
 CellPartition partition_cells(const Mesh& mesh, const std::vector<int>& cells, int dim);
 
 }  // namespace lunaster::engine

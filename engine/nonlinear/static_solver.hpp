@@ -144,7 +144,7 @@ class StaticSolver {
   SplitMatrix elastic_;
   /// The model shared among the ranks of an MPI run (several ranks, a backend named by the
   /// deck that takes a distributed system: MUMPS or PETSc). The volume cells are partitioned
-  /// (PT-Scotch); each rank assembles the complete columns of the nodes it owns
+  /// (Scotch); each rank assembles the complete columns of the nodes it owns
   /// (owned_nodes_), so elastic_ and the system hold only those, and products with them are
   /// summed over the ranks. Contact is computed whole on every rank (pairing sees the whole
   /// surfaces) and each rank keeps the terms of its own columns. Everything else (mesh,

@@ -99,6 +99,13 @@ void broadcast(double* data, long long n) {
     MPI_Bcast(data + start, static_cast<int>(std::min(kChunk, n - start)), MPI_DOUBLE, 0, MPI_COMM_WORLD);
 }
 
+void broadcast(int* data, long long n) {
+  if (size() == 1) return;
+  constexpr long long kChunk = 1LL << 30;
+  for (long long start = 0; start < n; start += kChunk)
+    MPI_Bcast(data + start, static_cast<int>(std::min(kChunk, n - start)), MPI_INT, 0, MPI_COMM_WORLD);
+}
+
 void sum_over_ranks(double* data, long long n) {
   if (size() == 1) return;
   constexpr long long kChunk = 1LL << 30;

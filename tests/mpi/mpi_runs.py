@@ -116,7 +116,7 @@ def verify_suite(exe, source, scratch):
     # METHODE='MUMPS' or 'PETSC' without contact: the model is shared among the ranks, each
     # assembling its own nodes' stiffness (its values are among those compared above).
     shared = "testcases/distributed_solvers.lua"
-    n_shared = b[shared]["output"].count("model shared among 2 ranks (PT-Scotch)")
+    n_shared = b[shared]["output"].count("model shared among 2 ranks (Scotch)")
     check(n_shared == 11, f"{shared}: each of its 11 solves (2 with contact) shares the model among the 2 ranks ({n_shared})")
     check("model shared" not in a[shared]["output"], f"{shared}: a serial run shares nothing")
 
