@@ -257,7 +257,8 @@ def expectations(deck):
 
 def errors(exe, source, scratch):
     scratch.mkdir(parents=True)
-    for deck, want in (("misspelt_keyword.lua", 2), ("singular_free_body_mumps.lua", 3)):
+    for deck, want in (("misspelt_keyword.lua", 2), ("singular_free_body_mumps.lua", 3),
+                       ("singular_free_direction_mumps.lua", 3)):
         path = source / "testcases" / "errors" / deck
         patterns, status = expectations(path)
         check(status == want, f"{deck}: the deck expects exit status {want}")
@@ -271,6 +272,8 @@ def errors(exe, source, scratch):
         check(len(re.findall(first, text)) == 1, f"{deck}: the error is printed once ({len(re.findall(first, text))})")
         check(re.search(re.escape(deck) + r":\d+: ", text) is not None, f"{deck}: the error names file:line")
         check(rank_output(logs, 1) == "", f"{deck}: rank 1 prints nothing")
+        if "mumps" in deck:  # METHODE='MUMPS': the model is shared, the diagnosis is the serial one
+            check("model shared among 2 ranks" in text, f"{deck}: the model is shared among the ranks")
 
     code, out, err, _ = run([mpirun(), "-np", 2, exe, "verify", source / "testcases" / "patch_2d.lua"], scratch)
     check(code == 2 and (out + err).count("lunaster verify --np N") == 1,
