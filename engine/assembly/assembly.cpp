@@ -121,20 +121,11 @@ void run_two_workers(Work&& work) {
 void stiffness_pattern(const Mesh& mesh, const DofMap& dofs, const std::vector<int>& cells,
                        const std::vector<char>* owned, SparseMatrix& k) {
   const int n_nodes = mesh.n_nodes(), dim = dofs.dim(), n = dofs.n_dofs();
-  // Cells of each node (CSR).
-  std::vector<int> cell_start(static_cast<size_t>(n_nodes) + 1, 0), node_cells;
-  for (int c : cells)
-    for (int a = 0, nn = mesh.cell_n_nodes(c); a < nn; ++a) ++cell_start[mesh.cell(c)[a] + 1];
-  for (int v = 0; v < n_nodes; ++v) cell_start[v + 1] += cell_start[v];
-  node_cells.resize(cell_start[n_nodes]);
-  {
-    std::vector<int> fill(cell_start.begin(), cell_start.end() - 1);
-    for (int c : cells)
-      for (int a = 0, nn = mesh.cell_n_nodes(c); a < nn; ++a) node_cells[fill[mesh.cell(c)[a]]++] = c;
-  }
+  Mesh::NodeCells around = mesh.node_cells(cells);
+  const std::vector<int>& cell_start = around.start;
   // Coupled nodes of each node, sorted by their first equation.
   std::vector<int> adj_start(static_cast<size_t>(n_nodes) + 1, 0), adj;
-  adj.reserve(node_cells.size() * 3);
+  adj.reserve(around.positions.size() * 3);
   std::vector<int> mark(n_nodes, -1);
   auto by_equation = [&dofs](int x, int y) { return dofs.dof(x, 0) < dofs.dof(y, 0); };
   for (int v = 0; v < n_nodes; ++v) {
@@ -144,7 +135,7 @@ void stiffness_pattern(const Mesh& mesh, const DofMap& dofs, const std::vector<i
       continue;
     }
     for (int p = cell_start[v]; p < cell_start[v + 1]; ++p) {
-      const int c = node_cells[p];
+      const int c = cells[around.positions[p]];
       for (int a = 0, nn = mesh.cell_n_nodes(c); a < nn; ++a) {
         const int w = mesh.cell(c)[a];
         if (mark[w] != v) mark[w] = v, adj.push_back(w);
@@ -156,7 +147,7 @@ void stiffness_pattern(const Mesh& mesh, const DofMap& dofs, const std::vector<i
       for (int k = 1; k < dim; ++k)
         LUNASTER_ASSERT(dofs.dof(v, k) == dofs.dof(v, 0) + k, "stiffness pattern: node DOFs are not consecutive");
   }
-  std::vector<int>().swap(node_cells);
+  around = Mesh::NodeCells();  // freed before the matrix is allocated (cell_start is not read below)
   // Columns: DIM rows per coupled node; none for the other unknowns (multipliers).
   k = SparseMatrix(n, n);
   int* outer = k.outerIndexPtr();

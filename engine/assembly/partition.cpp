@@ -28,18 +28,10 @@ CellPartition partition_cells(const Mesh& mesh, const std::vector<int>& cells, i
   out.parts = parallel::size();
   const int n = static_cast<int>(cells.size());
   const int rank = parallel::rank();
-  // Cells of each node (CSR, positions in `cells`).
   const int n_nodes = mesh.n_nodes();
-  std::vector<int> start(static_cast<size_t>(n_nodes) + 1, 0), node_cells;
-  for (int c : cells)
-    for (int a = 0, nn = mesh.cell_n_nodes(c); a < nn; ++a) ++start[mesh.cell(c)[a] + 1];
-  for (int v = 0; v < n_nodes; ++v) start[v + 1] += start[v];
-  node_cells.resize(start[n_nodes]);
-  {
-    std::vector<int> fill(start.begin(), start.end() - 1);
-    for (int i = 0; i < n; ++i)
-      for (int a = 0, nn = mesh.cell_n_nodes(cells[i]); a < nn; ++a) node_cells[fill[mesh.cell(cells[i])[a]]++] = i;
-  }
+  const Mesh::NodeCells around = mesh.node_cells(cells);
+  const std::vector<int>& start = around.start;
+  const std::vector<int>& node_cells = around.positions;
   if (out.parts == 1) {
     out.cell_part.assign(n, 0);
   } else if (n < 4 * out.parts) {

@@ -80,6 +80,20 @@ std::vector<int> Mesh::nodes_of_cells(const std::vector<int>& cells) const {
   return nodes;
 }
 
+Mesh::NodeCells Mesh::node_cells(const std::vector<int>& cells) const {
+  NodeCells out;
+  const int nn = n_nodes();
+  out.start.assign(static_cast<size_t>(nn) + 1, 0);
+  for (int c : cells)
+    for (int a = 0, k = cell_n_nodes(c); a < k; ++a) ++out.start[cell(c)[a] + 1];
+  for (int v = 0; v < nn; ++v) out.start[v + 1] += out.start[v];
+  out.positions.resize(out.start[nn]);
+  std::vector<int> fill(out.start.begin(), out.start.end() - 1);
+  for (size_t i = 0; i < cells.size(); ++i)
+    for (int a = 0, k = cell_n_nodes(cells[i]); a < k; ++a) out.positions[fill[cell(cells[i])[a]]++] = static_cast<int>(i);
+  return out;
+}
+
 void Mesh::detect_dimension() {
   for (CellType t : cell_types) {
     if (cell_info(t).dim == 3) {

@@ -52,6 +52,14 @@ class Mesh {
   /// Nodes of the given cells, sorted and unique.
   std::vector<int> nodes_of_cells(const std::vector<int>& cells) const;
 
+  /// The given cells around each node, as compressed rows: node v's are
+  /// positions[start[v] .. start[v+1]) in `cells` (cell ids: cells[position]), in the order of `cells`.
+  struct NodeCells {
+    std::vector<int> start;      ///< n_nodes + 1
+    std::vector<int> positions;  ///< positions in the cell list
+  };
+  NodeCells node_cells(const std::vector<int>& cells) const;
+
   /// Sets `dim` from the coordinates and cell types.
   void detect_dimension();
 
