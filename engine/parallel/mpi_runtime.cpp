@@ -92,26 +92,32 @@ int fortran_comm_world() {
   return static_cast<int>(MPI_Comm_c2f(MPI_COMM_WORLD));
 }
 
+namespace {
+
+/// `call(offset, count)` over [0, n) in pieces that an MPI count (an int) can hold.
+template <class Call>
+void in_chunks(long long n, Call&& call) {
+  constexpr long long kChunk = 1LL << 30;
+  for (long long start = 0; start < n; start += kChunk) call(start, static_cast<int>(std::min(kChunk, n - start)));
+}
+
+}  // namespace
+
 void broadcast(double* data, long long n) {
   if (size() == 1) return;
-  constexpr long long kChunk = 1LL << 30;  // MPI counts are int
-  for (long long start = 0; start < n; start += kChunk)
-    MPI_Bcast(data + start, static_cast<int>(std::min(kChunk, n - start)), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  in_chunks(n, [&](long long at, int count) { MPI_Bcast(data + at, count, MPI_DOUBLE, 0, MPI_COMM_WORLD); });
 }
 
 void broadcast(int* data, long long n) {
   if (size() == 1) return;
-  constexpr long long kChunk = 1LL << 30;
-  for (long long start = 0; start < n; start += kChunk)
-    MPI_Bcast(data + start, static_cast<int>(std::min(kChunk, n - start)), MPI_INT, 0, MPI_COMM_WORLD);
+  in_chunks(n, [&](long long at, int count) { MPI_Bcast(data + at, count, MPI_INT, 0, MPI_COMM_WORLD); });
 }
 
 void sum_over_ranks(double* data, long long n) {
   if (size() == 1) return;
-  constexpr long long kChunk = 1LL << 30;
-  for (long long start = 0; start < n; start += kChunk)
-    MPI_Allreduce(MPI_IN_PLACE, data + start, static_cast<int>(std::min(kChunk, n - start)), MPI_DOUBLE, MPI_SUM,
-                  MPI_COMM_WORLD);
+  in_chunks(n, [&](long long at, int count) {
+    MPI_Allreduce(MPI_IN_PLACE, data + at, count, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  });
 }
 
 double max_over_ranks(double value) {
