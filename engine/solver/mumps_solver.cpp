@@ -15,6 +15,7 @@
 #include "engine/core/error.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 #include "engine/solver/backends.hpp"
+#include "engine/solver/mumps_entries.hpp"
 
 namespace lunaster::engine {
 namespace {
@@ -74,16 +75,7 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   const int sym = kind == MatrixKind::SymmetricPositiveDefinite ? 1 : (kind == MatrixKind::SymmetricIndefinite ? 2 : 0);
   std::vector<MUMPS_INT> irn, jcn;
   std::vector<double> val;
-  irn.reserve(a.nonZeros());
-  jcn.reserve(a.nonZeros());
-  val.reserve(a.nonZeros());
-  for (int c = 0; c < a.outerSize(); ++c)
-    for (SparseMatrix::InnerIterator it(a, c); it; ++it) {
-      if (sym != 0 && it.row() > c) continue;  // upper triangle only
-      irn.push_back(it.row() + 1);
-      jcn.push_back(c + 1);
-      val.push_back(it.value());
-    }
+  mumps_entries(a, sym, irn, jcn, val);
   // The Newton and contact loops of a step factorise matrices of one pattern again and
   // again: keep MUMPS's analysis (ordering, symbolic factorisation) while it holds.
   bool same_pattern = analysed_ && sym == id_.sym && static_cast<MUMPS_INT>(a.rows()) == id_.n &&
@@ -94,21 +86,7 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   jcn_.swap(jcn);
   val_.swap(val);
   // Where the entries go: the host's centralised arrays, or each rank's own (distributed).
-  auto hand_over = [this] {
-    if (distributed_) {
-      id_.nnz_loc = static_cast<MUMPS_INT8>(val_.size());
-      id_.nz_loc = static_cast<MUMPS_INT>(val_.size());
-      id_.irn_loc = irn_.data();
-      id_.jcn_loc = jcn_.data();
-      id_.a_loc = val_.data();
-    } else {
-      id_.nnz = static_cast<MUMPS_INT8>(val_.size());
-      id_.nz = static_cast<MUMPS_INT>(val_.size());
-      id_.irn = irn_.data();
-      id_.jcn = jcn_.data();
-      id_.a = val_.data();
-    }
-  };
+  auto hand_over = [this] { give_mumps_entries(id_, distributed_, irn_, jcn_, val_); };
   if (same_pattern) {
     hand_over();
     id_.job = 2;  // factorisation with the analysis kept

@@ -23,6 +23,7 @@
 #include "engine/core/error.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 #include "engine/solver/linear_solver.hpp"
+#include "engine/solver/mumps_entries.hpp"
 
 namespace lunaster::engine {
 namespace {
@@ -106,26 +107,9 @@ class SinglePrecisionFactor {
     id_.icntl[6] = 7;
     id_.icntl[17] = distributed ? 3 : 0;  // ICNTL(18): each rank's entries
     if (distributed || parallel::rank() == 0) {
-      irn_.clear(), jcn_.clear(), val_.clear();
-      for (int c = 0; c < a.outerSize(); ++c)
-        for (SparseMatrix::InnerIterator it(a, c); it; ++it) {
-          if (id_.sym != 0 && it.row() > c) continue;
-          irn_.push_back(it.row() + 1);
-          jcn_.push_back(c + 1);
-          val_.push_back(static_cast<float>(it.value()));
-        }
+      mumps_entries(a, id_.sym, irn_, jcn_, val_);
       id_.n = static_cast<MUMPS_INT>(a.rows());
-      if (distributed) {
-        id_.nnz_loc = static_cast<MUMPS_INT8>(val_.size());
-        id_.irn_loc = irn_.data();
-        id_.jcn_loc = jcn_.data();
-        id_.a_loc = val_.data();
-      } else {
-        id_.nnz = static_cast<MUMPS_INT8>(val_.size());
-        id_.irn = irn_.data();
-        id_.jcn = jcn_.data();
-        id_.a = val_.data();
-      }
+      give_mumps_entries(id_, distributed, irn_, jcn_, val_);
     }
     id_.job = 4;
     smumps_c(&id_);
