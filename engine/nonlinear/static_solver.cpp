@@ -776,8 +776,9 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           LUNASTER_ASSERT(!distributed_ || solver->takes_distributed(), "a shared model needs a backend that takes it");
           if (iterative || distributed_) solver->set_layout(system_layout(cons, condensed, eliminated_eqs));
           LUNASTER_ASSERT(!elastic_in_solver_, "K_ff was handed to a backend: it cannot be factorised again");
-          if (!contact_ && iterative) {
-            // The system is K_ff itself and the backend keeps its own copy: one copy is enough.
+          if (&a == &elastic_.ff) {
+            // The system is K_ff itself: a backend that keeps its own copy (PETSc) takes it,
+            // and one copy is enough; a direct backend leaves it here.
             elastic_in_solver_ = solver->factorize_taking(elastic_.ff, kind);
             if (elastic_in_solver_) elastic_holder_ = solver.get();
           } else {
