@@ -1,5 +1,6 @@
 #include "commands/test_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -15,16 +16,14 @@ std::string check_line(bool ok, const std::string& kind, const std::string& what
   return buf;
 }
 
-/// Relative (or absolute) difference as code_aster: RELATIF divides by |refe|,
-/// or by ORDRE_GRANDEUR when the reference is zero.
-double difference(double calc, double refe, bool relative, double magnitude) {
+}  // namespace
+
+double check_difference(double calc, double refe, bool relative, double magnitude) {
   const double d = std::abs(calc - refe);
   if (!relative) return d;
-  const double scale = refe != 0.0 ? std::abs(refe) : magnitude;
+  const double scale = std::max(std::abs(refe), magnitude);
   return scale > 0.0 ? d / scale : d;
 }
-
-}  // namespace
 
 void report_checks(const catalog::Args& occ, Session& session, double value, const std::string& what) {
   const bool relative = occ.text("CRITERE") == "RELATIF";
@@ -34,7 +33,7 @@ void report_checks(const catalog::Args& occ, Session& session, double value, con
     any = true;
     const double refe = occ.real("VALE_CALC");
     const double tol = occ.real("TOLE_MACHINE");
-    const double err = difference(value, refe, relative, magnitude);
+    const double err = check_difference(value, refe, relative, magnitude);
     const bool ok = err <= tol;
     if (!session.code_aster_vale_calc) {
       session.tests.push_back({ok, check_line(ok, "NON_REGRESSION", what, refe, value, err, tol, occ.text("CRITERE"))});
@@ -56,7 +55,7 @@ void report_checks(const catalog::Args& occ, Session& session, double value, con
     any = true;
     const double refe = occ.real("VALE_REFE");
     const double tol = occ.real("PRECISION");
-    const double err = difference(value, refe, relative, magnitude);
+    const double err = check_difference(value, refe, relative, magnitude);
     const bool ok = err <= tol;
     session.tests.push_back({ok, check_line(ok, occ.text("REFERENCE"), what, refe, value, err, tol, occ.text("CRITERE"))});
     session.log().always(session.tests.back().text);

@@ -9,6 +9,13 @@
 
 namespace lunaster::cmd {
 
+/// The error of one check, as code_aster: ABSOLU gives |calc - refe|; RELATIF divides by
+/// |refe|, or by ORDRE_GRANDEUR (`magnitude`, 0 when not given) when |refe| is smaller.
+/// A quantity that is zero in theory is computed as round-off, which changes with the
+/// machine's arithmetic kernels: its VALE_CALC is compared on the scale of the quantity
+/// (ORDRE_GRANDEUR), never relative to its own round-off.
+double check_difference(double calc, double refe, bool relative, double magnitude);
+
 /// Checks `value` against the reference keywords of `occ` (common::test_reference_keywords),
 /// prints and records one line per check; `what` names the value in the line. DeckError at
 /// VALE_CALC when neither VALE_CALC nor VALE_REFE is given.

@@ -69,7 +69,7 @@ std::vector<Keyword> test_reference_keywords() {
       real("VALE_REFE", "Reference value from an independent source"),
       text("CRITERE", "Relative or absolute comparison").into_values({"RELATIF", "ABSOLU"}).def("RELATIF"),
       real("PRECISION", "Tolerance of the VALE_REFE check").def(1e-3).range(0.0, std::nullopt),
-      real("ORDRE_GRANDEUR", "Magnitude used instead of the reference when it is near zero").above(0.0),
+      real("ORDRE_GRANDEUR", "Magnitude of the tested quantity: a RELATIF check divides by it when the reference (VALE_CALC or VALE_REFE) is smaller, as for a value zero in theory").above(0.0),
       text("LEGENDE", "Free label printed with the check"),
   };
 }
