@@ -161,6 +161,20 @@ const std::vector<int>& ContactProblem::condensed_equations() const {
   return coupled() ? ContactHook::condensed_equations() : multiplier_eqs_;
 }
 
+std::vector<int> ContactProblem::surface_equations() const {
+  // The pairing couples slave nodes to master nodes of the zones (geometry_nodes_), through
+  // their displacements, their LAGS_C and the multipliers of the QUAD8 ties.
+  std::vector<int> eqs;
+  for (int node : geometry_nodes_)
+    for (int c = 0; c < N_COMPONENTS; ++c)
+      if (dofs_.dof(node, c) >= 0) eqs.push_back(dofs_.dof(node, c));
+  for (const LinearRelation& r : relations_.relations())
+    if (r.multiplier >= 0) eqs.push_back(r.multiplier);
+  std::sort(eqs.begin(), eqs.end());
+  eqs.erase(std::unique(eqs.begin(), eqs.end()), eqs.end());
+  return eqs;
+}
+
 MatrixKind ContactProblem::matrix_kind() const {
   if (coupled() || !relations_.empty()) return MatrixKind::SymmetricIndefinite;
   return MatrixKind::SymmetricPositiveDefinite;

@@ -66,6 +66,11 @@ class ContactHook {
     static const std::vector<Elimination> none;
     return none;
   }
+  /// Every equation a contact term of this run may touch, whatever the pairing (sorted): the
+  /// unknowns of the contact surfaces' nodes and the hook's own. The rest of the system is
+  /// then the elastic stiffness alone, and the driver may keep it factorised for the whole run
+  /// (InterfaceSolver). Empty: not known.
+  virtual std::vector<int> surface_equations() const { return {}; }
   /// False when the contact conditions are not yet met at the last add_to_system (statuses
   /// changed there, or an active condition is violated): Newton goes on even if the residual
   /// is small (semi-smooth Newton on the statuses).

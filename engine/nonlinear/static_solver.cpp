@@ -437,6 +437,26 @@ std::vector<int> StaticSolver::eliminate(const Constraints& cons, const std::vec
   return eqs;
 }
 
+void StaticSolver::choose_interface(const Constraints& cons) {
+  interface_use_ = -1;
+  // METHODE='AUTO' only: a deck that names its solver gets it. The dense Schur complement
+  // costs m^2 doubles and m^3/3 operations per contact pass: a small interface only, against
+  // a large interior (the 2D SSNP121 geometries; a 3D surface of a few hundred nodes is
+  // already too large: 4263 equations on the cont3d benchmark).
+  constexpr int kMaxInterface = 2500, kInteriorPerInterface = 20;
+  if (!contact_ || !options_.auto_solver || options_.solver != SolverKind::Cholmod || distributed_) return;
+  std::vector<int> eqs;
+  for (int eq : contact_->surface_equations())
+    if (cons.free_index[eq] >= 0) eqs.push_back(cons.free_index[eq]);
+  std::sort(eqs.begin(), eqs.end());
+  const int m = static_cast<int>(eqs.size());
+  if (m == 0 || m > kMaxInterface || static_cast<long>(m) * kInteriorPerInterface > cons.n_free) return;
+  on_interface_.assign(cons.n_free, 0);
+  for (int k : eqs) on_interface_[k] = 1;
+  interface_ = make_interface_solver(std::move(eqs));
+  interface_use_ = 1;
+}
+
 void StaticSolver::update_system(const Constraints& cons, const std::vector<Triplet>& contact,
                                  const std::vector<int>& condensed, const std::vector<int>& eliminated) {
   if (!system_) system_ = std::make_unique<SystemCache>();
@@ -558,6 +578,32 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     }
     sys.values_elastic = true;
   }
+  if (interface_use_ == 1 && interface_reference_ != sys.elastic_generation) {
+    // a holds K_ff alone: the reference of the contact passes, factorised once per run.
+    double seconds = 0.0;
+    {
+      Stopwatch watch(seconds);
+      try {
+        interface_->factorize_reference(sys.a);
+        interface_reference_ = sys.elastic_generation;
+        stats_.interface_equations = static_cast<int>(interface_->interface().size());
+        interface_state_ = SystemState{};
+        ++stats_.factorisations;
+        log_.info("  elastic system factorised with the " + std::to_string(interface_->interface().size()) +
+                  " equations of the contact surfaces last: each contact pass factorises their Schur "
+                  "complement only");
+      } catch (const SolveError& err) {
+        if (err.out_of_memory()) throw;
+        interface_use_ = -1;
+        interface_.reset();
+        stats_.interface_equations = 0;
+        log_.info("  the elastic system alone is not positive definite (a body held by contact only): "
+                  "each contact pass factorises the whole system");
+      }
+    }
+    stats_.factorize_seconds += seconds;
+    stats_.assemble_seconds -= seconds;  // the caller times update_system as assembly
+  }
   // The key of these values: the elastic part's generation, the contact values and the
   // condensed equations (FNV-1a over their bits). Equal keys, equal matrices.
   std::uint64_t key = 1469598103934665603ULL;
@@ -667,27 +713,6 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       }
       if (iter == options_.iter_glob_maxi) break;
 
-      // The system of this iteration: the contact law may condense its multipliers out
-      // (then it is SPD), and says which kind of matrix is left.
-      const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
-      const SolverKind backend = backend_for(kind);
-      // With no contact point active, the bodies must be held by Dirichlet
-      // conditions alone; the indefinite backends would not say when they are
-      // not (round-off hides the zero pivot), so check the elastic part once.
-      // Without contact the same holds for UMFPACK and MUMPS, which return some
-      // solution of a singular but consistent system (a free rigid translation).
-      // CHOLMOD's own factorisation stops on such a system (then diagnosed below):
-      // no second factorisation is spent on the check.
-      // The check is itself a Cholesky factorisation: an iterative backend, chosen because
-      // factorising does not fit, skips it (a singular system then fails to converge).
-      // A shared model skips it too: it would need the whole stiffness on one rank (MUMPS's
-      // null-pivot detection and the solve's residual still catch a singular system).
-      if (!rigid_checked_ && backend != SolverKind::Cholmod && backend != SolverKind::Petsc && !distributed_ &&
-          (!contact_ || contact_->n_active() == 0)) {
-        Stopwatch watch(stats_.assemble_seconds);
-        if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, elastic_.ff, t)) throw *rigid;
-        rigid_checked_ = true;
-      }
       static const std::vector<int> no_equations;
       static const std::vector<Elimination> no_eliminations;
       const std::vector<int>& condensed = contact_ ? contact_->condensed_equations() : no_equations;
@@ -704,9 +729,45 @@ void StaticSolver::solve_instant(double t, Vector& u) {
                                        [this](const Triplet& tr) { return !owned_nodes_[dofs_.node_of(tr.col())]; }),
                         k_contact.end());
       }
+      if (interface_use_ == 0) choose_interface(cons);
+      if (interface_use_ == 1 && !eliminated_eqs.empty())
+        interface_use_ = -1, interface_.reset(), stats_.interface_equations = 0;
+      if (interface_use_ == 1)
+        for (const Triplet& tr : k_contact) {
+          const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
+          if (i >= 0 && j >= 0 && (!on_interface_[i] || !on_interface_[j])) {
+            log_.info("  a contact term outside the surfaces' equations: each contact pass factorises the whole system");
+            interface_use_ = -1, interface_.reset(), stats_.interface_equations = 0;
+            break;
+          }
+        }
       {
         Stopwatch watch(stats_.assemble_seconds);
         update_system(cons, k_contact, condensed, eliminated_eqs);
+      }
+      // The system of this iteration: the contact law may condense its multipliers out
+      // (then it is SPD), and says which kind of matrix is left.
+      const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
+      // (The interface solver is CHOLMOD's factorisation of K_ff: no other backend is chosen.)
+      const SolverKind backend = interface_use_ == 1 ? SolverKind::Cholmod : backend_for(kind);
+      // With no contact point active, the bodies must be held by Dirichlet
+      // conditions alone; the indefinite backends would not say when they are
+      // not (round-off hides the zero pivot), so check the elastic part once.
+      // Without contact the same holds for UMFPACK and MUMPS, which return some
+      // solution of a singular but consistent system (a free rigid translation).
+      // CHOLMOD's own factorisation stops on such a system (then diagnosed below):
+      // no second factorisation is spent on the check.
+      // The check is itself a Cholesky factorisation: an iterative backend, chosen because
+      // factorising does not fit, skips it (a singular system then fails to converge).
+      // A shared model skips it too: it would need the whole stiffness on one rank (MUMPS's
+      // null-pivot detection and the solve's residual still catch a singular system).
+      // The interface solver's reference is the same Cholesky factorisation of K_ff: done.
+      if (!rigid_checked_ && interface_use_ != 1 && backend != SolverKind::Cholmod && backend != SolverKind::Petsc &&
+          !distributed_ &&
+          (!contact_ || contact_->n_active() == 0)) {
+        Stopwatch watch(stats_.assemble_seconds);
+        if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, elastic_.ff, t)) throw *rigid;
+        rigid_checked_ = true;
       }
       const SparseMatrix& a = *system_->matrix;
       // A x for the accuracy of a solve: this rank's columns of a, summed over the ranks; the
@@ -723,13 +784,15 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         if (cons.free_index[eq] >= 0) r_free[cons.free_index[eq]] = 0.0;
       Vector du;
       RefinedSolve accuracy;
-      SystemState& state = system_->state[static_cast<int>(backend)];
-      auto& solver = solvers_[static_cast<int>(backend)];
-      if (!solver) {
+      const bool via_interface = interface_use_ == 1;
+      SystemState& state = via_interface ? interface_state_ : system_->state[static_cast<int>(backend)];
+      auto& backend_solver = solvers_[static_cast<int>(backend)];
+      if (!via_interface && !backend_solver) {
         IterativeSettings settings = options_.iterative;
         if (options_.krylov_history) settings.history = [this](const std::string& line) { log_.info(line); };
-        solver = make_linear_solver(backend, settings);
+        backend_solver = make_linear_solver(backend, settings);
       }
+      LinearSolver* const solver = via_interface ? interface_.get() : backend_solver.get();
       const bool iterative = solver->iterative();
       const unsigned long long statuses = contact_ ? contact_->status_key() : 0ULL;
       const bool same_matrix =
@@ -744,7 +807,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         solved = true;
         log_.info("         (factorisation of iteration " + std::to_string(state.iteration) + " reused)");
       }
-      if (!solved && !iterative && !same_matrix && state.factorised && state.n == a.rows() &&
+      if (!solved && !iterative && !via_interface && !same_matrix && state.factorised && state.n == a.rows() &&
           state.statuses == statuses && state.pattern != system_->pattern) {
         // A new pairing with the same statuses: the previous factorisation is a close
         // preconditioner; a few Krylov iterations replace a factorisation when they converge.
@@ -780,7 +843,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
             // The system is K_ff itself: a backend that keeps its own copy (PETSc) takes it,
             // and one copy is enough; a direct backend leaves it here.
             elastic_in_solver_ = solver->factorize_taking(elastic_.ff, kind);
-            if (elastic_in_solver_) elastic_holder_ = solver.get();
+            if (elastic_in_solver_) elastic_holder_ = solver;
           } else {
             solver->factorize(a, kind);
           }
@@ -789,6 +852,9 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           throw diagnose(cons, err, t);
         }
         ++stats_.factorisations;
+        if (via_interface)
+          log_.info("  linear solve: Schur complement of the " + std::to_string(interface_->interface().size()) +
+                    " surface equations factorised on the kept elastic factorisation");
         state.factorised = true;
         state.n = a.rows();
         state.pattern = system_->pattern;

@@ -15,6 +15,7 @@
 #include "engine/nonlinear/contact_hook.hpp"
 #include "engine/nonlinear/loads.hpp"
 #include "engine/nonlinear/reduction.hpp"
+#include "engine/solver/interface_solver.hpp"
 #include "engine/solver/linear_solver.hpp"
 
 namespace lunaster::engine {
@@ -65,6 +66,9 @@ struct SolverStats {
   double solve_residual = 0.0;
   int refinement_steps = 0;        ///< extra solves spent on iterative refinement
   int factorisations = 0;          ///< numeric factorisations (a solve may reuse the last one)
+  /// Equations of the contact surfaces when the contact passes were solved on the elastic
+  /// factorisation kept for the run (their Schur complement factorised per pass); 0: not.
+  int interface_equations = 0;
   int krylov_iterations = 0;       ///< GMRES iterations preconditioned by a previous factorisation, or of an iterative solver
   double resi_glob_rela = 0.0;     ///< RESI_GLOB_RELA reached at the last converged Newton iteration
 };
@@ -165,6 +169,17 @@ class StaticSolver {
   /// One solver per backend for the whole run (each keeps its analysis while the pattern holds).
   std::unique_ptr<LinearSolver> solvers_[kSolverKinds];
   std::unique_ptr<SystemCache> system_;
+  /// Contact passes on the elastic factorisation kept for the run (InterfaceSolver): with
+  /// METHODE='AUTO', a contact hook that names its surface equations, no eliminations and a
+  /// small interface, each contact pass factorises only the interface's dense Schur
+  /// complement. interface_use_: 0 not decided yet, 1 used, -1 not (decided at the first solve).
+  std::unique_ptr<InterfaceSolver> interface_;
+  int interface_use_ = 0;
+  long interface_reference_ = -1;  ///< elastic generation of the factorised reference
+  SystemState interface_state_;
+  std::vector<char> on_interface_;  ///< per free equation: on the interface
+  /// Decides interface_use_ for this run (first contact solve).
+  void choose_interface(const Constraints& cons);
   double k_scale_ = 0.0;
   bool rigid_checked_ = false;  ///< elastic part proven free of rigid-body modes
   bool backend_note_logged_ = false;  ///< the Cholmod -> Mumps substitution was logged in this run

@@ -119,17 +119,17 @@ struct SolveResult {
   DofMap dofs;
   Vector u;
   int n_settle = 0;  ///< contact passes (calls to settle)
+  SolverStats stats;
 };
 
 /// One load step from u = 0 to the imposed values and pressures, through StaticSolver.
 inline SolveResult solve(const FeModel& model, const std::vector<Imposed>& imposed,
                          const std::vector<std::pair<std::vector<int>, double>>& pressures, ContactHook& hook,
-                         const lunaster::Log& log) {
+                         const lunaster::Log& log, NewtonOptions options = {}) {
   MechanicalLoads loads;
   loads.multipliers.push_back([](double t) { return t; });
   for (const auto& d : imposed) loads.dirichlet.push_back({d.node, d.component, d.value, 0});
   for (const auto& [cells, p] : pressures) loads.pressures.push_back({cells, p, 0});
-  NewtonOptions options;
   options.resi_glob_rela = 1e-8;  // 100 times the default; round-off leaves ~1e-10
   options.iter_glob_maxi = 25;
   StaticSolver solver(model, loads, options, &hook, log);
@@ -137,6 +137,7 @@ inline SolveResult solve(const FeModel& model, const std::vector<Imposed>& impos
   SolveResult res;
   res.dofs = solver.dofs();
   res.n_settle = solver.stats().contact_passes;
+  res.stats = solver.stats();
   // The unknowns back from the DEPL field (LAGR_* relation multipliers are not results).
   const NodalField& depl = steps.back().nodal.at("DEPL");
   res.u = Vector::Zero(res.dofs.n_dofs());
