@@ -11,6 +11,8 @@ mkdir -p "$m"
 # SSNP121 modelisations (A, B, C, G share ssnp121a.med)
 "$gen" --upper quad4:12 --lower quad4:11 -o "$tc/ssnp121a.med"
 "$gen" --upper quad4:12 --lower quad8:11 -o "$tc/ssnp121h.med"
+# SSNP121 A refined (ssnp121a_fine.lua: contact passes on the kept elastic factorisation)
+"$gen" --upper quad4:48 --lower quad4:44 -o "$m/ssnp121a_fine.med"
 "$gen" --v1 hexa20:4x4x4 --v2 hexa20:4x4x4 -o "$tc/ssnp121d.med"
 "$gen" --v1 penta15:4x4x4 --v2 penta15:4x4x4 -o "$tc/ssnp121e.med"
 "$gen" --v1 penta15:4x4x4 --v2 hexa20:4x4x4 -o "$tc/ssnp121f.med"
