@@ -375,11 +375,16 @@ void ContactProblem::add_to_system(const Vector& u, std::vector<Triplet>& tangen
     for (int a = 0; a < p.n_slave; ++a) residual[leq[a]] += p.phi[a] * (c.sigma * g - c.kappa * lambda);
     // Condensed: the multiplier rows are solved in recover(); their entries stay zero here.
     const double on = condensed ? 0.0 : 1.0;
+    int la[8], lk[LinearGap::kMaxTerms];
+    for (int a = 0; a < p.n_slave; ++a) la[a] = local.index(leq[a]);
+    for (int k = 0; k < p.gap.n; ++k) lk[k] = local.index(p.gap.eq[k]);
     for (int a = 0; a < p.n_slave; ++a) {
-      for (int b = 0; b < p.n_slave; ++b) local.add(leq[a], leq[b], -on * c.kappa * p.phi[a] * p.phi[b]);
+      const double kappa_a = -on * c.kappa * p.phi[a], sigma_a = on * c.sigma * p.phi[a],
+                   alpha_a = on * c.alpha * p.phi[a];
+      for (int b = 0; b < p.n_slave; ++b) local.add_at(la[a], la[b], kappa_a * p.phi[b]);
       for (int k = 0; k < p.gap.n; ++k) {
-        local.add(leq[a], p.gap.eq[k], on * c.sigma * p.phi[a] * p.gap.coef[k]);
-        local.add(p.gap.eq[k], leq[a], on * c.alpha * p.phi[a] * p.gap.coef[k]);
+        local.add_at(la[a], lk[k], sigma_a * p.gap.coef[k]);
+        local.add_at(lk[k], la[a], alpha_a * p.gap.coef[k]);
       }
     }
   }

@@ -65,6 +65,12 @@ int LocalTangent::index(int eq) {
 }
 
 void LocalTangent::add_outer(const LinearGap& a, const LinearGap& b, double factor) {
+  // The points of a cell paired with one master cell share their equations: the pattern of
+  // a a^T (an inactive point's zeros) is marked once for them.
+  if (factor == 0.0 && &a == &b) {
+    if (marked_.size() == static_cast<size_t>(a.n) && std::equal(a.eq.begin(), a.eq.begin() + a.n, marked_.begin())) return;
+    marked_.assign(a.eq.begin(), a.eq.begin() + a.n);
+  }
   int ia[LinearGap::kMaxTerms], ib[LinearGap::kMaxTerms];
   for (int i = 0; i < a.n; ++i) ia[i] = index(a.eq[i]);
   for (int j = 0; j < b.n; ++j) ib[j] = index(b.eq[j]);
@@ -72,6 +78,10 @@ void LocalTangent::add_outer(const LinearGap& a, const LinearGap& b, double fact
     double* row = dense_.data() + static_cast<size_t>(ia[i]) * stride_;
     char* mark = touched_.data() + static_cast<size_t>(ia[i]) * stride_;
     const double fa = factor * a.coef[i];
+    if (fa == 0.0) {  // the pattern only (an inactive point's zeros)
+      for (int j = 0; j < b.n; ++j) mark[ib[j]] = 1;
+      continue;
+    }
     for (int j = 0; j < b.n; ++j) row[ib[j]] += fa * b.coef[j], mark[ib[j]] = 1;
   }
 }
@@ -86,6 +96,7 @@ void LocalTangent::flush(std::vector<Triplet>& tangent) {
   }
   for (int eq : eqs_) pos_[eq] = -1;
   eqs_.clear();
+  marked_.clear();
 }
 
 }  // namespace lunaster::engine::contact

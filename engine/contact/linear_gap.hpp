@@ -52,8 +52,13 @@ void add_gradient(const LinearGap& g, double factor, Vector& residual);
 class LocalTangent {
  public:
   /// tangent(row, col) += v, equations numbered as in the assembled system.
-  void add(int row, int col, double v) {
-    const size_t k = static_cast<size_t>(index(row)) * stride_ + index(col);
+  void add(int row, int col, double v) { add_at(index(row), index(col), v); }
+  /// Local index of an equation (added on first use): add_at with indices looked up once
+  /// per point instead of once per entry.
+  int index(int eq);
+  /// tangent(eqs[i], eqs[j]) += v for local indices from index().
+  void add_at(int i, int j, double v) {
+    const size_t k = static_cast<size_t>(i) * stride_ + j;
     dense_[k] += v;
     touched_[k] = 1;
   }
@@ -64,7 +69,7 @@ class LocalTangent {
   void flush(std::vector<Triplet>& tangent);
 
  private:
-  int index(int eq);
+  std::vector<int> marked_;         ///< equations of the last a a^T added as a pattern only (factor 0)
   std::vector<int> eqs_;            ///< equations of the local rows/columns, in order of arrival
   std::vector<int> pos_;            ///< equation -> local index, -1 when absent (sized on demand)
   std::vector<double> dense_;  ///< stride_ x stride_, row-major
