@@ -65,7 +65,10 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                    "when the system is symmetric positive definite and with MUMPS otherwise (contact "
                    "multipliers, mid-side ties, continuous penalty; the log says so once), or UMFPACK below "
                    "10,000 unknowns in a run without mpirun (no MPI start-up); AUTO also gives 3D "
-                   "systems of more than 100,000 unknowns to MUMPS, whose orderings fill less there; MUMPS and "
+                   "systems of more than 100,000 unknowns to MUMPS, whose orderings fill less there, and "
+                   "solves contact (DEFI_CONTACT) with the elastic stiffness factorised once by CHOLMOD, the "
+                   "contact surfaces' equations ordered last, when they are at most 2,500 and a twentieth of "
+                   "the model: each contact pass then factorises their dense Schur complement only; MUMPS and "
                    "UMFPACK are used as asked; PETSC solves iteratively (a Krylov method and a preconditioner). "
                    "Under mpirun, MUMPS and PETSC share the model among the ranks (Scotch partition, each "
                    "rank assembling its own rows); the other methods give every rank the whole system")
