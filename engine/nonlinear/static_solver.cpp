@@ -451,10 +451,59 @@ void StaticSolver::choose_interface(const Constraints& cons) {
   std::sort(eqs.begin(), eqs.end());
   const int m = static_cast<int>(eqs.size());
   if (m == 0 || m > kMaxInterface || static_cast<long>(m) * kInteriorPerInterface > cons.n_free) return;
+  // The reference is K_ff itself, which must store a diagonal on every interface equation. The
+  // multipliers' columns are empty and come last (their equations are numbered after every
+  // displacement): each gets a zero diagonal appended, in the storage K_ff already holds
+  // (split_matrix left it the constrained columns' room).
+  SparseMatrix& k = elastic_.ff;
+  const int nf = static_cast<int>(k.cols());
+  int first_empty = nf;
+  while (first_empty > 0 && k.outerIndexPtr()[first_empty] == k.outerIndexPtr()[first_empty - 1]) --first_empty;
+  for (int j : eqs) {
+    if (j >= first_empty) continue;
+    const int* rows = k.innerIndexPtr() + k.outerIndexPtr()[j];
+    const int* end = k.innerIndexPtr() + k.outerIndexPtr()[j + 1];
+    if (!std::binary_search(rows, end, j)) return;  // an interface equation without a diagonal entry
+  }
+  if (first_empty < nf) {
+    const int nnz = static_cast<int>(k.nonZeros());
+    k.resizeNonZeros(nnz + (nf - first_empty));
+    for (int j = first_empty; j < nf; ++j) {
+      k.innerIndexPtr()[nnz + (j - first_empty)] = j;
+      k.valuePtr()[nnz + (j - first_empty)] = 0.0;
+      k.outerIndexPtr()[j + 1] = nnz + (j - first_empty) + 1;
+    }
+  }
   on_interface_.assign(cons.n_free, 0);
   for (int k : eqs) on_interface_[k] = 1;
   interface_ = make_interface_solver(std::move(eqs));
   interface_use_ = 1;
+}
+
+void StaticSolver::factorize_interface_reference(SystemCache& sys) {
+  double seconds = 0.0;
+  {
+    Stopwatch watch(seconds);
+    try {
+      interface_->factorize_reference(elastic_.ff);
+      interface_reference_ = sys.elastic_generation;
+      interface_state_ = SystemState{};
+      stats_.interface_equations = static_cast<int>(interface_->interface().size());
+      ++stats_.factorisations;
+      log_.info("  elastic system factorised with the " + std::to_string(interface_->interface().size()) +
+                " equations of the contact surfaces last: each contact pass factorises their Schur "
+                "complement only");
+    } catch (const SolveError& err) {
+      if (err.out_of_memory()) throw;
+      interface_use_ = -1;
+      interface_.reset();
+      stats_.interface_equations = 0;
+      log_.info("  the elastic system alone is not positive definite (a body held by contact only): "
+                "each contact pass factorises the whole system");
+    }
+  }
+  stats_.factorize_seconds += seconds;
+  stats_.assemble_seconds -= seconds;  // the caller times update_system as assembly
 }
 
 void StaticSolver::update_system(const Constraints& cons, const std::vector<Triplet>& contact,
@@ -486,6 +535,63 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     std::uint64_t key = 1469598103934665603ULL;
     sys.values_key = (key ^ static_cast<std::uint64_t>(sys.elastic_generation)) * 1099511628211ULL;
     return;
+  }
+  if (interface_use_ == 1 && interface_reference_ != sys.elastic_generation) factorize_interface_reference(sys);
+  if (interface_use_ == 1) {
+    // The interface solver: a holds C alone, the contact terms and the condensed equations'
+    // unit diagonals (K_ff has zeros there), in a pattern built once per contact pattern.
+    if (new_constraints || !sys.increment || version != sys.contact_version || contact.size() != sys.contact_pos.size()) {
+      sys.a = SparseMatrix();
+      std::vector<Triplet> pattern;
+      pattern.reserve(contact.size() + interface_->interface().size());
+      for (const auto& tr : contact) {
+        const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
+        if (i >= 0 && j >= 0) pattern.emplace_back(i, j, 0.0);
+      }
+      for (int j : interface_->interface()) pattern.emplace_back(j, j, 0.0);
+      SparseMatrix c(nf, nf);
+      c.setFromTriplets(pattern.begin(), pattern.end());
+      sys.a.swap(c);
+      const int* outer = sys.a.outerIndexPtr();
+      const int* inner = sys.a.innerIndexPtr();
+      auto position = [&](int i, int j) {
+        return static_cast<int>(std::lower_bound(inner + outer[j], inner + outer[j + 1], i) - inner);
+      };
+      sys.contact_pos.resize(contact.size());
+      for (size_t k = 0; k < contact.size(); ++k) {
+        const int i = cons.free_index[contact[k].row()], j = cons.free_index[contact[k].col()];
+        sys.contact_pos[k] = i >= 0 && j >= 0 ? position(i, j) : -1;
+      }
+      sys.diagonal.assign(nf, -1);
+      for (int j : interface_->interface()) sys.diagonal[j] = position(j, j);
+      sys.contact_version = version;
+      sys.increment = true;
+      sys.values_elastic = false;
+      ++sys.pattern;
+      sys.valid = true;
+      sys.matrix = &sys.a;
+    }
+    std::fill(sys.a.valuePtr(), sys.a.valuePtr() + sys.a.nonZeros(), 0.0);
+    std::uint64_t key = 1469598103934665603ULL;
+    auto mix = [&key](std::uint64_t v) { key = (key ^ v) * 1099511628211ULL; };
+    mix(static_cast<std::uint64_t>(sys.elastic_generation));
+    double* values = sys.a.valuePtr();
+    for (size_t k = 0; k < contact.size(); ++k) {
+      if (sys.contact_pos[k] < 0) continue;
+      const double v = contact[k].value();
+      values[sys.contact_pos[k]] += v;
+      std::uint64_t bits;
+      std::memcpy(&bits, &v, sizeof bits);
+      mix(bits);
+    }
+    for (int eq : condensed)
+      if (cons.free_index[eq] >= 0) values[sys.diagonal[cons.free_index[eq]]] = 1.0, mix(static_cast<std::uint64_t>(eq));
+    sys.values_key = key;
+    return;
+  }
+  if (sys.increment) {  // the interface solver was dropped: the whole system from now on
+    sys.increment = false;
+    sys.contact_version = -2;
   }
   const int* el_outer = elastic_.ff.outerIndexPtr();
   const int* el_inner = elastic_.ff.innerIndexPtr();
@@ -577,32 +683,6 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
       std::fill(values + k, values + outer[j + 1], 0.0);
     }
     sys.values_elastic = true;
-  }
-  if (interface_use_ == 1 && interface_reference_ != sys.elastic_generation) {
-    // a holds K_ff alone: the reference of the contact passes, factorised once per run.
-    double seconds = 0.0;
-    {
-      Stopwatch watch(seconds);
-      try {
-        interface_->factorize_reference(sys.a);
-        interface_reference_ = sys.elastic_generation;
-        stats_.interface_equations = static_cast<int>(interface_->interface().size());
-        interface_state_ = SystemState{};
-        ++stats_.factorisations;
-        log_.info("  elastic system factorised with the " + std::to_string(interface_->interface().size()) +
-                  " equations of the contact surfaces last: each contact pass factorises their Schur "
-                  "complement only");
-      } catch (const SolveError& err) {
-        if (err.out_of_memory()) throw;
-        interface_use_ = -1;
-        interface_.reset();
-        stats_.interface_equations = 0;
-        log_.info("  the elastic system alone is not positive definite (a body held by contact only): "
-                  "each contact pass factorises the whole system");
-      }
-    }
-    stats_.factorize_seconds += seconds;
-    stats_.assemble_seconds -= seconds;  // the caller times update_system as assembly
   }
   // The key of these values: the elastic part's generation, the contact values and the
   // condensed equations (FNV-1a over their bits). Equal keys, equal matrices.
@@ -776,6 +856,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         Vector y;
         if (elastic_in_solver_ && elastic_holder_->multiply(x, y)) return y;
         y = a * x;
+        if (system_->increment) y += elastic_.ff * x;  // a is C: the system is K_ff + C
         if (distributed_) parallel::sum_over_ranks(y.data(), y.size());
         return y;
       };

@@ -116,6 +116,9 @@ class StaticSolver {
     /// a's values are K_ff alone (nothing added since they were copied from elastic_.ff), so
     /// the next update need not copy them again. No second copy of K_ff is kept.
     bool values_elastic = false;
+    /// a holds the contact terms alone, C (interface solver: the system is K_ff + C, and K_ff
+    /// is never copied); false: a is the whole system.
+    bool increment = false;
     std::vector<int> contact_pos;      ///< position in a of each contact triplet, -1 if constrained
     std::vector<int> diagonal;         ///< position of each diagonal entry in a, -1 in another rank's column
     std::vector<char> owned;           ///< shared model: per free equation, whether this rank holds its column
@@ -180,6 +183,9 @@ class StaticSolver {
   std::vector<char> on_interface_;  ///< per free equation: on the interface
   /// Decides interface_use_ for this run (first contact solve).
   void choose_interface(const Constraints& cons);
+  /// Factorises the interface solver's reference from K_ff (once per run); on failure the
+  /// interface solver is dropped and the whole system is solved from then on.
+  void factorize_interface_reference(SystemCache& sys);
   double k_scale_ = 0.0;
   bool rigid_checked_ = false;  ///< elastic part proven free of rigid-body modes
   bool backend_note_logged_ = false;  ///< the Cholmod -> Mumps substitution was logged in this run

@@ -354,15 +354,16 @@ void CholmodInterfaceSolver::factorize_reference(SparseMatrix& r) {
   for (int k = n - m; k < n; ++k)
     if (!on_interface[perm[k]]) throw SolveError("CHOLMOD: CAMD did not order the interface last");
   for (int k = n - m; k < n; ++k) slot_[perm[k]] = k - (n - m);
-  // Unit diagonals where the reference has none (multipliers), restored below.
+  // Unit diagonals where K has none (multipliers), restored below.
   std::vector<std::pair<double*, double>> saved;
+  std::vector<int> unit_diagonal;
   for (int eq : interface_) {
     const int* rows = r.innerIndexPtr() + r.outerIndexPtr()[eq];
     const int* end = r.innerIndexPtr() + r.outerIndexPtr()[eq + 1];
     const int* d = std::lower_bound(rows, end, eq);
     if (d == end || *d != eq) throw SolveError("interface solver: no diagonal entry at equation " + std::to_string(eq));
     double& v = r.valuePtr()[d - r.innerIndexPtr()];
-    if (v == 0.0) saved.emplace_back(&v, v), v = 1.0;
+    if (v == 0.0) saved.emplace_back(&v, v), v = 1.0, unit_diagonal.push_back(eq);
   }
   auto restore = [&saved] {
     for (auto& [where, value] : saved) *where = value;
@@ -381,13 +382,6 @@ void CholmodInterfaceSolver::factorize_reference(SparseMatrix& r) {
     throw SolveError("CHOLMOD: the elastic system without contact is not positive definite (status " +
                      std::to_string(common_.status) + ")");
   }
-  // R_II as it was factorised (unit diagonals included), then the values restored.
-  Eigen::MatrixXd r_ii = Eigen::MatrixXd::Zero(m, m);
-  for (int eq : interface_)
-    for (int p = r.outerIndexPtr()[eq]; p < r.outerIndexPtr()[eq + 1]; ++p) {
-      const int i = r.innerIndexPtr()[p];
-      if (slot_[i] >= 0) r_ii(slot_[i], slot_[eq]) = r.valuePtr()[p];
-    }
   restore();
   // L_II from the supernodes holding the last m columns.
   const auto* super = static_cast<const int*>(factor_->super);
@@ -408,11 +402,11 @@ void CholmodInterfaceSolver::factorize_reference(SparseMatrix& r) {
       for (int k = c - super[sn]; k < nsrow; ++k) l_ii_(ls[pi[sn] + k] - first, c - first) = col[k];
     }
   }
-  // G = L_II L_II^T - R_II: L_II^T, multiplied from the left by the triangle L_II (dtrmm).
+  // G = L_II L_II^T - D_II: L_II^T, multiplied from the left by the triangle L_II (dtrmm).
   g_ = l_ii_.transpose();
   cblas_dtrmm(CblasColMajor, CblasLeft, CblasLower, CblasNoTrans, CblasNonUnit, m, m, 1.0, l_ii_.data(), m,
               g_.data(), m);
-  g_ -= r_ii;
+  for (int eq : unit_diagonal) g_(slot_[eq], slot_[eq]) -= 1.0;
 }
 
 void CholmodInterfaceSolver::factorize(const SparseMatrix& a, MatrixKind /*kind*/) {

@@ -92,21 +92,10 @@ TEST(Solvers, SaddlePointSystemIndefiniteBackends) {
   EXPECT_THROW(cholmod->factorize(a, MatrixKind::SymmetricIndefinite), InternalError);
 }
 
-/// `a` with the values of its entries in rows and columns of `eqs` (the II block) scaled by
-/// `s`: s = 0 gives the reference of a contact system, its pattern kept.
-SparseMatrix scale_block(SparseMatrix a, const std::vector<int>& eqs, double s) {
-  std::vector<char> in(a.rows(), 0);
-  for (int e : eqs) in[e] = 1;
-  for (int c = 0; c < a.outerSize(); ++c)
-    for (SparseMatrix::InnerIterator it(a, c); it; ++it)
-      if (in[it.row()] && in[c]) it.valueRef() *= s;
-  return a;
-}
-
 TEST(InterfaceSolver, ContactPassesOnTheKeptElasticFactorisation) {
   // The saddle point's multipliers (30, 31) and the displacements they couple (0..5), plus
-  // 7 and 12 (interface nodes without contact terms yet): the interface. Its multipliers'
-  // diagonals are stored zeros, as the driver's systems hold them.
+  // 7 and 12 (interface nodes without contact terms yet): the interface. K, the elastic part,
+  // stores zero diagonals on the multipliers, as the driver's does.
   const int n = 30;
   const std::vector<int> interface = {0, 1, 2, 3, 4, 5, 7, 12, n, n + 1};
   SparseMatrix a = saddle_matrix(n);
@@ -115,29 +104,33 @@ TEST(InterfaceSolver, ContactPassesOnTheKeptElasticFactorisation) {
   diag.insert(n + 1, n + 1) = 1.0;
   a = a + 0.0 * diag;  // stored zero diagonals on the multipliers
   a.makeCompressed();
-  // The reference: the elastic part, zeros where contact terms go (the II block beyond K's).
-  SparseMatrix r = a;
-  for (int c = 0; c < r.outerSize(); ++c)
-    for (SparseMatrix::InnerIterator it(r, c); it; ++it)
+  SparseMatrix k = a;  // the elastic part: zeros where contact terms go
+  for (int c = 0; c < k.outerSize(); ++c)
+    for (SparseMatrix::InnerIterator it(k, c); it; ++it)
       if (it.row() >= n || c >= n) it.valueRef() = 0.0;
-  const SparseMatrix r_before = r;
+  const SparseMatrix k_before = k;
   auto solver = make_interface_solver(interface);
-  solver->factorize_reference(r);
-  EXPECT_EQ((r - r_before).norm(), 0.0);  // the unit diagonals were given back
-  solver->factorize(a, MatrixKind::SymmetricIndefinite);
+  solver->factorize_reference(k);
+  EXPECT_EQ((k - k_before).norm(), 0.0);  // the unit diagonals were given back
+  // Each pass gets the contact terms alone, C = A - K.
+  solver->factorize(a - k, MatrixKind::SymmetricIndefinite);
   check_solution(a, solver->solve(rhs(n + 2)), "interface solver, saddle point");
   // Another pass: new contact values on the II block only (a penalty on the coupled
   // displacements), the reference kept.
   SparseMatrix a2 = a;
   for (int c = 0; c < 6; ++c) a2.coeffRef(c, c) += 50.0 * (c + 1);
-  solver->factorize(a2, MatrixKind::SymmetricIndefinite);
+  solver->factorize(a2 - k, MatrixKind::SymmetricIndefinite);
   check_solution(a2, solver->solve(rhs(n + 2)), "interface solver, second pass");
   // The pass without contact: the multipliers decoupled (unit diagonal), the elastic solve.
-  SparseMatrix a3 = scale_block(a, {n, n + 1}, 0.0);
-  for (int c = 0; c < 6; ++c) a3.coeffRef(c, n) = a3.coeffRef(n, c) = 0.0, a3.coeffRef(c, n + 1) = a3.coeffRef(n + 1, c) = 0.0;
+  SparseMatrix a3 = k;
   a3.coeffRef(n, n) = a3.coeffRef(n + 1, n + 1) = 1.0;
-  solver->factorize(a3, MatrixKind::SymmetricPositiveDefinite);
+  solver->factorize(a3 - k, MatrixKind::SymmetricPositiveDefinite);
   check_solution(a3, solver->solve(rhs(n + 2)), "interface solver, no contact");
+  // Terms outside the interface are not read: the answer is K + C_II's.
+  SparseMatrix outside = a2 - k;
+  outside.coeffRef(20, 20) += 1e3;
+  solver->factorize(outside, MatrixKind::SymmetricIndefinite);
+  check_solution(a2, solver->solve(rhs(n + 2)), "interface solver, terms outside the interface");
 }
 
 TEST(InterfaceSolver, AReferenceThatIsNotPositiveDefiniteIsRefused) {
