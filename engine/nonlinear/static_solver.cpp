@@ -958,7 +958,15 @@ void StaticSolver::solve_instant(double t, Vector& u) {
                   " iteration(s), relative residual " + sci(accuracy.residual));
       } else if (!solved) {
         Stopwatch watch(stats_.solve_seconds);
-        accuracy = solve_with_refinement(*solver, system_product, -r_free, du);
+        // |A| |x| for the backward error (not with a shared model or K_ff in PETSc's hands).
+        const MatrixProduct abs_product = [&a, this](const Vector& x) -> Vector {
+          Vector y = Vector::Zero(x.size());
+          add_abs_product(a, x, y);
+          if (system_->increment) add_abs_product(elastic_.ff, x, y);
+          return y;
+        };
+        const bool whole = !distributed_ && !elastic_in_solver_;
+        accuracy = solve_with_refinement(*solver, system_product, -r_free, du, 3, 1e-10, whole ? &abs_product : nullptr);
       }
       ++stats_.newton_iterations;
       stats_.refinement_steps += accuracy.steps;

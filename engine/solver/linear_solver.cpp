@@ -37,12 +37,26 @@ RefinedSolve solve_with_refinement(const LinearSolver& solver, const SparseMatri
                                refine_above);
 }
 
+void add_abs_product(const SparseMatrix& a, const Vector& x, Vector& y) {
+  for (int j = 0; j < a.outerSize(); ++j) {
+    const double xj = std::abs(x[j]);
+    if (xj == 0.0) continue;
+    for (SparseMatrix::InnerIterator it(a, j); it; ++it) y[it.row()] += std::abs(it.value()) * xj;
+  }
+}
+
 RefinedSolve solve_with_refinement(const LinearSolver& solver, const MatrixProduct& a, const Vector& b, Vector& x,
-                                   int max_steps, double refine_above) {
+                                   int max_steps, double refine_above, const MatrixProduct* abs_product) {
   RefinedSolve out;
   x = solver.solve(b);
   out.raw_residual = out.residual = relative_residual(a, x, b);
-  while (out.steps < max_steps && std::isfinite(out.residual) && out.residual > refine_above) {
+  auto backward_stable = [&] {
+    if (!abs_product || !std::isfinite(out.residual)) return false;
+    const double r = (a(x) - b).cwiseAbs().maxCoeff();
+    const double scale = (*abs_product)(x).cwiseAbs().maxCoeff() + b.cwiseAbs().maxCoeff();
+    return r <= kBackwardStable * scale;
+  };
+  while (out.steps < max_steps && std::isfinite(out.residual) && out.residual > refine_above && !backward_stable()) {
     Vector refined = x - solver.solve(a(x) - b);
     ++out.steps;
     const double next = relative_residual(a, refined, b);

@@ -457,6 +457,49 @@ class UselessSolver final : public LinearSolver {
   std::string name() const override { return "useless"; }
 };
 
+TEST(Refinement, ABackwardStableSolveIsNotRefined) {
+  // b along A's smallest eigenvector (eigenvalue 1e-8): x = (1e8, -1e8) and A x cancels to
+  // b = (1, -1). The relative residual is then eps |A| |x| / |b|, about 1e-8, from the
+  // product alone; the backward error |A x - b| / (|A| |x| + |b|) is eps.
+  SparseMatrix a(2, 2);
+  a.insert(0, 0) = 1.0;
+  a.insert(1, 1) = 1.0;
+  a.insert(0, 1) = 1.0 - 1e-8;
+  a.insert(1, 0) = 1.0 - 1e-8;
+  a.makeCompressed();
+  Vector b(2);
+  b << 1.0, -1.0;
+  const MatrixProduct product = [&a](const Vector& x) -> Vector { return a * x; };
+  const MatrixProduct abs_product = [&a](const Vector& x) -> Vector {
+    Vector y = Vector::Zero(x.size());
+    add_abs_product(a, x, y);
+    return y;
+  };
+  auto s = make_linear_solver(SolverKind::Cholmod);
+  s->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+  Vector x_plain, x_backward;
+  const RefinedSolve plain = solve_with_refinement(*s, product, b, x_plain);
+  const RefinedSolve backward = solve_with_refinement(*s, product, b, x_backward, 3, 1e-10, &abs_product);
+  EXPECT_GT(backward.raw_residual, 1e-10);  // the relative residual alone asks for refinement
+  EXPECT_GE(plain.steps, 1);                // ... and gets a useless step
+  EXPECT_EQ(backward.steps, 0);
+  EXPECT_NEAR(x_backward[0], 1e8, 1e8 * 1e-7);
+  // An inexact factorisation is still refined when the backward error is known.
+  const SparseMatrix big = spd_matrix(40);
+  InexactSolver inexact(1e-6);
+  inexact.factorize(big, MatrixKind::SymmetricPositiveDefinite);
+  const MatrixProduct big_product = [&big](const Vector& x) -> Vector { return big * x; };
+  const MatrixProduct big_abs = [&big](const Vector& x) -> Vector {
+    Vector y = Vector::Zero(x.size());
+    add_abs_product(big, x, y);
+    return y;
+  };
+  Vector x;
+  const RefinedSolve refined = solve_with_refinement(inexact, big_product, rhs(40), x, 3, 1e-10, &big_abs);
+  EXPECT_GT(refined.steps, 0);
+  EXPECT_LT(refined.residual, 1e-10);
+}
+
 TEST(Refinement, AnExactFactorisationNeedsNoRefinement) {
   const SparseMatrix a = spd_matrix(40);
   auto s = make_linear_solver(SolverKind::Cholmod);
