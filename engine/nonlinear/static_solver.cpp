@@ -45,6 +45,23 @@ class Stopwatch {
 
 double inf_norm(const Vector& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
 
+/// Position of entry (i, j) in a's storage (the entry must be in the pattern).
+int position_in(const SparseMatrix& a, int i, int j) {
+  const int* outer = a.outerIndexPtr();
+  const int* inner = a.innerIndexPtr();
+  return static_cast<int>(std::lower_bound(inner + outer[j], inner + outer[j + 1], i) - inner);
+}
+
+/// Position in a of each contact triplet (free numbering), -1 for a constrained one.
+void locate_triplets(const SparseMatrix& a, const std::vector<int>& free_index, const std::vector<Triplet>& contact,
+                     std::vector<int>& pos) {
+  pos.resize(contact.size());
+  for (size_t k = 0; k < contact.size(); ++k) {
+    const int i = free_index[contact[k].row()], j = free_index[contact[k].col()];
+    pos[k] = i >= 0 && j >= 0 ? position_in(a, i, j) : -1;
+  }
+}
+
 std::string sci(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.6e", v);
@@ -552,18 +569,9 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
       SparseMatrix c(nf, nf);
       c.setFromTriplets(pattern.begin(), pattern.end());
       sys.a.swap(c);
-      const int* outer = sys.a.outerIndexPtr();
-      const int* inner = sys.a.innerIndexPtr();
-      auto position = [&](int i, int j) {
-        return static_cast<int>(std::lower_bound(inner + outer[j], inner + outer[j + 1], i) - inner);
-      };
-      sys.contact_pos.resize(contact.size());
-      for (size_t k = 0; k < contact.size(); ++k) {
-        const int i = cons.free_index[contact[k].row()], j = cons.free_index[contact[k].col()];
-        sys.contact_pos[k] = i >= 0 && j >= 0 ? position(i, j) : -1;
-      }
+      locate_triplets(sys.a, cons.free_index, contact, sys.contact_pos);
       sys.diagonal.assign(nf, -1);
-      for (int j : interface_->interface()) sys.diagonal[j] = position(j, j);
+      for (int j : interface_->interface()) sys.diagonal[j] = position_in(sys.a, j, j);
       sys.contact_version = version;
       sys.increment = true;
       sys.values_elastic = false;
@@ -649,18 +657,9 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
       merge_column(j, [&r](int row) { *r++ = row; });
     }
     sys.a.swap(a);  // Eigen 3.4's sparse assignment would copy it
-    outer = sys.a.outerIndexPtr();
-    inner = sys.a.innerIndexPtr();
-    auto position = [&](int i, int j) {
-      return static_cast<int>(std::lower_bound(inner + outer[j], inner + outer[j + 1], i) - inner);
-    };
-    sys.contact_pos.resize(contact.size());
-    for (size_t k = 0; k < contact.size(); ++k) {
-      const int i = cons.free_index[contact[k].row()], j = cons.free_index[contact[k].col()];
-      sys.contact_pos[k] = i >= 0 && j >= 0 ? position(i, j) : -1;
-    }
+    locate_triplets(sys.a, cons.free_index, contact, sys.contact_pos);
     sys.diagonal.resize(cons.n_free);
-    for (int k = 0; k < cons.n_free; ++k) sys.diagonal[k] = mine(k) ? position(k, k) : -1;
+    for (int k = 0; k < cons.n_free; ++k) sys.diagonal[k] = mine(k) ? position_in(sys.a, k, k) : -1;
     sys.contact_version = version;
     ++sys.pattern;
     sys.valid = true;

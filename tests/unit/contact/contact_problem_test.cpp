@@ -14,22 +14,6 @@ using lunaster::engine::contact::ContactProblem;
 
 namespace {
 
-ContactDefinition definition(const TwoBlocks& tb, ContactMethod method, ContactInit init) {
-  ContactDefinition def;
-  def.method = method;
-  def.reac_geom = GeometryUpdate::Controlled;
-  def.nb_iter_geom = 2;
-  ContactZone z;
-  z.slave_cells = tb.ab;
-  z.master_cells = tb.ef;
-  z.integration = IntegrationScheme::Simpson;
-  z.integration_order = 4;
-  z.coef_cont = 1000.0;
-  z.coef_pena = 1e9;
-  z.init = init;
-  def.zones.push_back(z);
-  return def;
-}
 
 std::unique_ptr<ContactProblem> problem(const ContactDefinition& def, const Mesh& mesh, bool condense) {
   std::unique_ptr<ContactProblem> p(dynamic_cast<ContactProblem*>(make_contact_hook(def, mesh, 2).release()));
@@ -42,7 +26,7 @@ std::unique_ptr<ContactProblem> problem(const ContactDefinition& def, const Mesh
 TEST(ContactCondensation, PenaltySolvesAnSpdSystemAndRecoversTheSameLagsC) {
   const TwoBlocks tb = make_two_blocks(12, 11, false);
   const FeModel model = make_model(tb.mesh, 2e6, 0.0);
-  const ContactDefinition def = definition(tb, ContactMethod::ContinuousPenalty, ContactInit::No);
+  const ContactDefinition def = zone_ab_on_ef(tb, ContactMethod::ContinuousPenalty, ContactInit::No);
   auto condensed = problem(def, tb.mesh, true);
   auto full = problem(def, tb.mesh, false);
   const SolveResult a = solve(model, displacement_bcs(tb), {}, *condensed, quiet_log());
@@ -71,7 +55,7 @@ TEST(ContactCondensation, PenaltySolvesAnSpdSystemAndRecoversTheSameLagsC) {
 
 TEST(ContactCondensation, AugmentedLagrangianIsCondensedOnlyWhileNoPointIsActive) {
   const TwoBlocks tb = make_two_blocks(4, 3, false);
-  auto p = problem(definition(tb, ContactMethod::Continuous, ContactInit::No), tb.mesh, true);
+  auto p = problem(zone_ab_on_ef(tb, ContactMethod::Continuous, ContactInit::No), tb.mesh, true);
   DofMap dofs(tb.mesh, make_model(tb.mesh, 2e6, 0.0).volume_cells(), 2);
   p->add_dofs(dofs);
   p->begin_step(Vector::Zero(dofs.n_dofs()), quiet_log());
@@ -86,7 +70,7 @@ TEST(ContactCondensation, AugmentedLagrangianIsCondensedOnlyWhileNoPointIsActive
 
 TEST(ContactSnapshot, RestoresTheStatusesOfTheStepStart) {
   const TwoBlocks tb = make_two_blocks(4, 3, false);
-  auto p = problem(definition(tb, ContactMethod::Continuous, ContactInit::Yes), tb.mesh, true);
+  auto p = problem(zone_ab_on_ef(tb, ContactMethod::Continuous, ContactInit::Yes), tb.mesh, true);
   DofMap dofs(tb.mesh, make_model(tb.mesh, 2e6, 0.0).volume_cells(), 2);
   p->add_dofs(dofs);
   const ContactSnapshot before_first = p->snapshot();  // nothing paired yet

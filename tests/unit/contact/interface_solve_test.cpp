@@ -15,22 +15,6 @@ namespace {
 
 constexpr double kYoung = 2.0e6;
 
-ContactDefinition zone_definition(const TwoBlocks& tb, ContactMethod method, ContactInit init) {
-  ContactDefinition def;
-  def.method = method;
-  def.reac_geom = GeometryUpdate::Controlled;
-  def.nb_iter_geom = 2;
-  ContactZone z;
-  z.slave_cells = tb.ab;
-  z.master_cells = tb.ef;
-  z.integration = IntegrationScheme::Simpson;
-  z.integration_order = 4;
-  z.coef_cont = 1000.0;
-  z.coef_pena = 1e9;
-  z.init = init;
-  def.zones.push_back(z);
-  return def;
-}
 
 NewtonOptions auto_solver() {
   NewtonOptions o;
@@ -62,7 +46,7 @@ TEST(ContactInterfaceSolve, EveryLawGivesTheWholeSystemAnswer) {
                         Case{ContactMethod::DiscreteLagrange, ContactInit::No, "CONTRAINTE"},
                         Case{ContactMethod::DiscretePenalty, ContactInit::No, "PENALISATION"}}) {
     SCOPED_TRACE(c.name);
-    const ContactDefinition def = zone_definition(tb, c.method, c.init);
+    const ContactDefinition def = zone_ab_on_ef(tb, c.method, c.init);
     auto kept = make_contact_hook(def, tb.mesh, 2);
     const SolveResult r = solve(model, displacement_bcs(tb), {}, *kept, quiet_log(), auto_solver());
     auto whole = make_contact_hook(def, tb.mesh, 2);
@@ -85,7 +69,7 @@ TEST(ContactInterfaceSolve, ABodyHeldByContactAloneIsSolvedWhole) {
   // without contact its stiffness is singular, so no elastic factorisation can be kept.
   const TwoBlocks tb = make_two_blocks(48, 44, false);
   const FeModel model = make_model(tb.mesh, kYoung, 0.0);
-  const ContactDefinition def = zone_definition(tb, ContactMethod::Continuous, ContactInit::Yes);
+  const ContactDefinition def = zone_ab_on_ef(tb, ContactMethod::Continuous, ContactInit::Yes);
   std::vector<Imposed> bcs = {{tb.cd_nodes[0], DX, 0.0}};
   for (int n : tb.gh_nodes) bcs.push_back({n, DX, 0.0}), bcs.push_back({n, DY, 0.0});
   auto hook = make_contact_hook(def, tb.mesh, 2);

@@ -109,6 +109,25 @@ inline std::vector<Imposed> displacement_bcs(const TwoBlocks& tb) {
   return bcs;
 }
 
+/// One zone AB (slave) on EF (master) with `method`: SIMPSON ORDRE_INT=4, COEF_CONT=1000,
+/// COEF_PENA=1e9, REAC_GEOM='CONTROLE' with two pairings, as SSNP121 A.
+inline ContactDefinition zone_ab_on_ef(const TwoBlocks& tb, ContactMethod method, ContactInit init) {
+  ContactDefinition def;
+  def.method = method;
+  def.reac_geom = GeometryUpdate::Controlled;
+  def.nb_iter_geom = 2;
+  ContactZone z;
+  z.slave_cells = tb.ab;
+  z.master_cells = tb.ef;
+  z.integration = IntegrationScheme::Simpson;
+  z.integration_order = 4;
+  z.coef_cont = 1000.0;
+  z.coef_pena = 1e9;
+  z.init = init;
+  def.zones.push_back(z);
+  return def;
+}
+
 /// A log that prints nothing.
 inline lunaster::Log quiet_log() {
   static std::ostringstream sink;
