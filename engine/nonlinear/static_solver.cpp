@@ -45,6 +45,29 @@ class Stopwatch {
 
 double inf_norm(const Vector& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
 
+/// FNV-1a key of a system's values: equal keys, equal matrices.
+struct ValuesKey {
+  std::uint64_t h = 1469598103934665603ULL;
+  void mix(std::uint64_t v) { h = (h ^ v) * 1099511628211ULL; }
+};
+
+/// values[pos[k]] += contact[k] for every located triplet, each value mixed into `key`;
+/// true when one was added.
+bool add_triplet_values(const std::vector<Triplet>& contact, const std::vector<int>& pos, double* values,
+                        ValuesKey& key) {
+  bool any = false;
+  for (size_t k = 0; k < contact.size(); ++k) {
+    if (pos[k] < 0) continue;
+    any = true;
+    const double v = contact[k].value();
+    values[pos[k]] += v;
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    key.mix(bits);
+  }
+  return any;
+}
+
 /// Position of entry (i, j) in a's storage (the entry must be in the pattern).
 int position_in(const SparseMatrix& a, int i, int j) {
   const int* outer = a.outerIndexPtr();
@@ -580,21 +603,14 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
       sys.matrix = &sys.a;
     }
     std::fill(sys.a.valuePtr(), sys.a.valuePtr() + sys.a.nonZeros(), 0.0);
-    std::uint64_t key = 1469598103934665603ULL;
-    auto mix = [&key](std::uint64_t v) { key = (key ^ v) * 1099511628211ULL; };
-    mix(static_cast<std::uint64_t>(sys.elastic_generation));
+    ValuesKey key;
+    key.mix(static_cast<std::uint64_t>(sys.elastic_generation));
     double* values = sys.a.valuePtr();
-    for (size_t k = 0; k < contact.size(); ++k) {
-      if (sys.contact_pos[k] < 0) continue;
-      const double v = contact[k].value();
-      values[sys.contact_pos[k]] += v;
-      std::uint64_t bits;
-      std::memcpy(&bits, &v, sizeof bits);
-      mix(bits);
-    }
+    add_triplet_values(contact, sys.contact_pos, values, key);
     for (int eq : condensed)
-      if (cons.free_index[eq] >= 0) values[sys.diagonal[cons.free_index[eq]]] = 1.0, mix(static_cast<std::uint64_t>(eq));
-    sys.values_key = key;
+      if (cons.free_index[eq] >= 0)
+        values[sys.diagonal[cons.free_index[eq]]] = 1.0, key.mix(static_cast<std::uint64_t>(eq));
+    sys.values_key = key.h;
     return;
   }
   if (sys.increment) {  // the interface solver was dropped: the whole system from now on
@@ -685,20 +701,12 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
   }
   // The key of these values: the elastic part's generation, the contact values and the
   // condensed equations (FNV-1a over their bits). Equal keys, equal matrices.
-  std::uint64_t key = 1469598103934665603ULL;
-  auto mix = [&key](std::uint64_t v) { key = (key ^ v) * 1099511628211ULL; };
+  ValuesKey key;
+  auto mix = [&key](std::uint64_t v) { key.mix(v); };
   mix(static_cast<std::uint64_t>(sys.elastic_generation));
   // Whatever is added below leaves values that the next call must refill.
   sys.values_elastic = sys.values_elastic && condensed.empty() && eliminated.empty();
-  for (size_t k = 0; k < contact.size(); ++k) {
-    if (sys.contact_pos[k] < 0) continue;
-    sys.values_elastic = false;
-    const double v = contact[k].value();
-    values[sys.contact_pos[k]] += v;
-    std::uint64_t bits;
-    std::memcpy(&bits, &v, sizeof bits);
-    mix(bits);
-  }
+  if (add_triplet_values(contact, sys.contact_pos, values, key)) sys.values_elastic = false;
   for (int eq : condensed)
     if (cons.free_index[eq] >= 0) {
       if (mine(cons.free_index[eq])) values[sys.diagonal[cons.free_index[eq]]] = 1.0;
@@ -730,7 +738,7 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
       if (gone[j]) values[sys.diagonal[j]] = 1.0;
     }
   }
-  sys.values_key = key;
+  sys.values_key = key.h;
 }
 
 void StaticSolver::solve_instant(double t, Vector& u) {
