@@ -515,7 +515,7 @@ void StaticSolver::choose_interface(const Constraints& cons) {
     }
   }
   on_interface_.assign(cons.n_free, 0);
-  for (int k : eqs) on_interface_[k] = 1;
+  for (int j : eqs) on_interface_[j] = 1;
   interface_ = make_interface_solver(std::move(eqs));
   interface_use_ = 1;
 }
@@ -973,7 +973,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           return y;
         };
         const bool whole = !distributed_ && !elastic_in_solver_;
-        accuracy = solve_with_refinement(*solver, system_product, -r_free, du, 3, 1e-10, whole ? &abs_product : nullptr);
+        accuracy = solve_with_refinement(*solver, system_product, -r_free, du, 3, 1e-10, whole ? &abs_product : nullptr,
+                                         kSolveTolerance);
       }
       ++stats_.newton_iterations;
       stats_.refinement_steps += accuracy.steps;

@@ -46,12 +46,13 @@ void add_abs_product(const SparseMatrix& a, const Vector& x, Vector& y) {
 }
 
 RefinedSolve solve_with_refinement(const LinearSolver& solver, const MatrixProduct& a, const Vector& b, Vector& x,
-                                   int max_steps, double refine_above, const MatrixProduct* abs_product) {
+                                   int max_steps, double refine_above, const MatrixProduct* abs_product,
+                                   double accept) {
   RefinedSolve out;
   x = solver.solve(b);
   out.raw_residual = out.residual = relative_residual(a, x, b);
   auto backward_stable = [&] {
-    if (!abs_product || !std::isfinite(out.residual)) return false;
+    if (!abs_product || !std::isfinite(out.residual) || out.residual > accept) return false;
     const double r = (a(x) - b).cwiseAbs().maxCoeff();
     const double scale = (*abs_product)(x).cwiseAbs().maxCoeff() + b.cwiseAbs().maxCoeff();
     return r <= kBackwardStable * scale;

@@ -118,15 +118,16 @@ struct RefinedSolve {
 /// but regular system (a stiff penalty, badly scaled multipliers) is then solved to
 /// working accuracy; a singular one keeps its large residual for the caller to judge.
 /// With `abs_product` (|A| |x|, entry by entry), no step is spent on a solve that is
-/// already backward stable: when |A x - b| <= kBackwardStable (|A| |x| + |b|) (largest
-/// entries), the residual is the round-off of the products themselves (a right-hand side
-/// small beside the terms of A x, as in a contact pass whose multipliers are 1e5 Pa)
-/// and no refinement can lower it.
+/// already backward stable, |A x - b| <= kBackwardStable (|A| |x| + |b|) (largest
+/// entries), and whose relative residual is within `accept` (the caller's acceptance): the
+/// residual is then the round-off of the products themselves (a right-hand side small
+/// beside the terms of A x, as in a contact pass whose multipliers are 1e5 Pa). A residual
+/// beyond `accept` is still refined: a step may bring it within (a stiff penalty).
 RefinedSolve solve_with_refinement(const LinearSolver& solver, const SparseMatrix& a, const Vector& b, Vector& x,
                                    int max_steps = 3, double refine_above = 1e-10);
 RefinedSolve solve_with_refinement(const LinearSolver& solver, const MatrixProduct& a, const Vector& b, Vector& x,
                                    int max_steps = 3, double refine_above = 1e-10,
-                                   const MatrixProduct* abs_product = nullptr);
+                                   const MatrixProduct* abs_product = nullptr, double accept = 1e-6);
 /// Normwise backward error below which a solve is taken as exact to round-off.
 constexpr double kBackwardStable = 1e-14;
 /// |A| |x| for a compressed-column matrix (entry by entry), added to y.

@@ -498,6 +498,10 @@ TEST(Refinement, ABackwardStableSolveIsNotRefined) {
   const RefinedSolve refined = solve_with_refinement(inexact, big_product, rhs(40), x, 3, 1e-10, &big_abs);
   EXPECT_GT(refined.steps, 0);
   EXPECT_LT(refined.residual, 1e-10);
+  // A backward-stable solve whose residual the caller would reject is still refined.
+  Vector x_rejected;
+  const RefinedSolve rejected = solve_with_refinement(*s, product, b, x_rejected, 3, 1e-10, &abs_product, 1e-12);
+  EXPECT_EQ(rejected.steps, plain.steps);
 }
 
 TEST(Refinement, AnExactFactorisationNeedsNoRefinement) {
