@@ -51,6 +51,12 @@ void start_mpi() {
     mca_default("OMPI_MCA_ess_singleton_isolated", "1");
     mca_default("OMPI_MCA_pml", "ob1");
     mca_default("OMPI_MCA_btl", "self");
+    // No session directory: every isolated singleton of a user would share
+    // /tmp/ompi.<host>.<uid>/jf.0, which one removes when it ends while another, starting,
+    // creates its own below it (MPI_Init then fails on mkdir: about 1 run in 60 when many
+    // run at once, tests/mpi/concurrent_runs.sh). A singleton with only the self transport
+    // keeps nothing there.
+    mca_default("OMPI_MCA_orte_create_session_dirs", "0");
   }
   int provided = 0;
   MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
