@@ -373,8 +373,8 @@ SolverKind StaticSolver::backend_for(MatrixKind kind) {
 /// The system of one Newton iteration, K_ff + contact terms restricted to the free
 /// equations. Without a contact hook it is elastic_.ff itself. Otherwise its pattern (K_ff's,
 /// contact, a diagonal on every free equation) is built once per contact pattern version,
-/// with the position of every contact triplet in it; each iteration copies K_ff into it
-/// (not when it holds K_ff already) and adds the contact terms in place.
+/// with the position of every contact triplet in it, and becomes K_ff's own; each iteration
+/// writes its terms into that one storage and restore_elastic() puts K_ff's values back.
 /// Elimination of unknowns by linear relations du_E = A du_R + b (contact_hook.hpp):
 /// K' = K_RR + K_RE A + A^T K_ER + A^T K_EE A and r' = (r + K b)_R + A^T (r + K b)_E. Only
 /// the columns of K at E are read (K is symmetric), so the cost follows the relations, not
@@ -418,9 +418,10 @@ std::vector<int> StaticSolver::eliminate(const Constraints& cons, const std::vec
     for (size_t i = 0; i < relations.size(); ++i) {
       const int e = relations[i].eq;
       // Its constrained rows are left out: their residual is not solved for and no term
-      // of K' lies on them.
+      // of K' lies on them. So are zeros (the contact positions update_system added to
+      // K_ff's pattern): the fill, and with it the system's pattern, follows the relations.
       for (SparseMatrix::InnerIterator it(elastic_.ff, cons.free_index[e]); it; ++it)
-        column[i].emplace_back(elastic_.equation[it.row()], it.value());
+        if (it.value() != 0.0) column[i].emplace_back(elastic_.equation[it.row()], it.value());
     }
   }
   for (const auto& tr : triplets)
@@ -549,6 +550,7 @@ void StaticSolver::factorize_interface_reference(SystemCache& sys) {
 void StaticSolver::update_system(const Constraints& cons, const std::vector<Triplet>& contact,
                                  const std::vector<int>& condensed, const std::vector<int>& eliminated) {
   if (!system_) system_ = std::make_unique<SystemCache>();
+  restore_elastic();
   SystemCache& sys = *system_;
   const long version = contact_ ? contact_->pattern_version() : 0;
   const bool new_constraints = !sys.valid || sys.constrained != cons.constrained;
@@ -597,7 +599,6 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
       for (int j : interface_->interface()) sys.diagonal[j] = position_in(sys.a, j, j);
       sys.contact_version = version;
       sys.increment = true;
-      sys.values_elastic = false;
       ++sys.pattern;
       sys.valid = true;
       sys.matrix = &sys.a;
@@ -615,15 +616,21 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
   }
   if (sys.increment) {  // the interface solver was dropped: the whole system from now on
     sys.increment = false;
+    sys.a = SparseMatrix();
     sys.contact_version = -2;
   }
-  const int* el_outer = elastic_.ff.outerIndexPtr();
-  const int* el_inner = elastic_.ff.innerIndexPtr();
-  const double* el_values = elastic_.ff.valuePtr();
+  // K_ff and the system share one storage (a second copy of K_ff was the largest array of a
+  // mortar run after the factor): K_ff's pattern grows to hold every contact position, and
+  // each iteration writes its terms into it, saving the values it overwrites for
+  // restore_elastic().
+  SparseMatrix& k = elastic_.ff;
   if (new_constraints || version != sys.contact_version || contact.size() != sys.contact_pos.size()) {
+    const int* el_outer = k.outerIndexPtr();
+    const int* el_inner = k.innerIndexPtr();
+    const double* el_values = k.valuePtr();
     // Pattern column by column: the rows of K_ff merged with the contact rows of the column
-    // (bucketed, sorted, unique) and the diagonal; no global sort.
-    sys.a = SparseMatrix();  // the old pattern goes before the new one is built
+    // (bucketed, sorted, unique) and the diagonal; no global sort. Positions K_ff did not
+    // have hold zeros (a later pattern keeps them: the union only grows).
     std::vector<int> start(static_cast<size_t>(nf) + 2, 0), extra;
     for (const auto& tr : contact) {
       const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
@@ -643,19 +650,17 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
       std::sort(extra.begin() + start[j], extra.begin() + start[j + 1]);
       extra_end[j] = static_cast<int>(std::unique(extra.begin() + start[j], extra.begin() + start[j + 1]) - extra.begin());
     }
-    // Union of the two sorted row lists of column j, passed to emit(row).
+    // Union of the two sorted row lists of column j, passed to emit(row, K_ff's value or 0).
     auto merge_column = [&](int j, auto&& emit) {
       const int* e0 = extra.data() + start[j];
       const int* e1 = extra.data() + extra_end[j];
       int p = el_outer[j];
       const int p1 = el_outer[j + 1];
-      int k = -1;  // next elastic row of the column, -1 when none is left
-      auto next_elastic = [&] { k = p < p1 ? el_inner[p++] : -1; };
-      next_elastic();
-      while (k >= 0 || e0 != e1) {
-        if (e0 == e1 || (k >= 0 && k < *e0)) emit(k), next_elastic();
-        else if (k < 0 || *e0 < k) emit(*e0++);
-        else emit(k), next_elastic(), ++e0;  // in both
+      while (p < p1 || e0 != e1) {
+        const int r = p < p1 ? el_inner[p] : -1;
+        if (e0 == e1 || (r >= 0 && r < *e0)) emit(r, el_values[p++]);
+        else if (r < 0 || *e0 < r) emit(*e0++, 0.0);
+        else emit(r, el_values[p++]), ++e0;  // in both
       }
     };
     SparseMatrix a(nf, nf);
@@ -663,67 +668,55 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     outer[0] = 0;
     for (int j = 0; j < nf; ++j) {
       int count = 0;
-      merge_column(j, [&count](int) { ++count; });
+      merge_column(j, [&count](int, double) { ++count; });
       outer[j + 1] = outer[j] + count;
     }
-    a.resizeNonZeros(outer[nf]);
-    int* inner = a.innerIndexPtr();
-    for (int j = 0; j < nf; ++j) {
-      int* r = inner + outer[j];
-      merge_column(j, [&r](int row) { *r++ = row; });
+    if (outer[nf] != k.nonZeros()) {  // else K_ff's pattern holds them all already
+      a.resizeNonZeros(outer[nf]);
+      int* inner = a.innerIndexPtr();
+      double* values = a.valuePtr();
+      for (int j = 0; j < nf; ++j) {
+        int at = outer[j];
+        merge_column(j, [&](int row, double v) { inner[at] = row, values[at++] = v; });
+      }
+      k.swap(a);  // the old K_ff goes with a; Eigen 3.4's sparse assignment would copy it
     }
-    sys.a.swap(a);  // Eigen 3.4's sparse assignment would copy it
-    locate_triplets(sys.a, cons.free_index, contact, sys.contact_pos);
+    locate_triplets(k, cons.free_index, contact, sys.contact_pos);
     sys.diagonal.resize(cons.n_free);
-    for (int k = 0; k < cons.n_free; ++k) sys.diagonal[k] = mine(k) ? position_in(sys.a, k, k) : -1;
+    for (int j = 0; j < cons.n_free; ++j) sys.diagonal[j] = mine(j) ? position_in(k, j, j) : -1;
     sys.contact_version = version;
     ++sys.pattern;
     sys.valid = true;
-    sys.values_elastic = false;
-    sys.matrix = &sys.a;
+    sys.matrix = &k;
   }
-  double* values = sys.a.valuePtr();
-  if (!sys.values_elastic) {
-    // K_ff in the system's pattern (its rows are a sorted subset of each column's rows);
-    // the other positions (contact only) get zeros.
-    const int* outer = sys.a.outerIndexPtr();
-    const int* inner = sys.a.innerIndexPtr();
-    for (int j = 0; j < nf; ++j) {
-      int k = outer[j];
-      for (int p = el_outer[j]; p < el_outer[j + 1]; ++p) {
-        const int i = el_inner[p];
-        while (inner[k] < i) values[k++] = 0.0;
-        values[k++] = el_values[p];
-      }
-      std::fill(values + k, values + outer[j + 1], 0.0);
-    }
-    sys.values_elastic = true;
-  }
+  double* values = k.valuePtr();
+  std::vector<std::pair<int, double>>& saved = sys.saved;
+  auto set = [&](int p, double v) { saved.emplace_back(p, values[p]), values[p] = v; };
   // The key of these values: the elastic part's generation, the contact values and the
   // condensed equations (FNV-1a over their bits). Equal keys, equal matrices.
   ValuesKey key;
   auto mix = [&key](std::uint64_t v) { key.mix(v); };
   mix(static_cast<std::uint64_t>(sys.elastic_generation));
-  // Whatever is added below leaves values that the next call must refill.
-  sys.values_elastic = sys.values_elastic && condensed.empty() && eliminated.empty();
-  if (add_triplet_values(contact, sys.contact_pos, values, key)) sys.values_elastic = false;
+  for (int p : sys.contact_pos)
+    if (p >= 0) saved.emplace_back(p, values[p]);
+  add_triplet_values(contact, sys.contact_pos, values, key);
   for (int eq : condensed)
     if (cons.free_index[eq] >= 0) {
-      if (mine(cons.free_index[eq])) values[sys.diagonal[cons.free_index[eq]]] = 1.0;
+      if (mine(cons.free_index[eq])) set(sys.diagonal[cons.free_index[eq]], 1.0);
       mix(static_cast<std::uint64_t>(eq));
     }
   // Eliminated unknowns: their rows and columns (elastic values included) become a unit diagonal.
-  const int* outer = sys.a.outerIndexPtr();
-  const int* inner = sys.a.innerIndexPtr();
+  const int* outer = k.outerIndexPtr();
+  const int* inner = k.innerIndexPtr();
   if (sys.owned.empty()) {
     for (int eq : eliminated) {
       const int j = cons.free_index[eq];
       for (int p = outer[j]; p < outer[j + 1]; ++p) {
         const int i = inner[p];
-        values[p] = 0.0;
-        values[std::lower_bound(inner + outer[i], inner + outer[i + 1], j) - inner] = 0.0;
+        set(p, 0.0);
+        set(static_cast<int>(std::lower_bound(inner + outer[i], inner + outer[i + 1], j) - inner), 0.0);
       }
-      values[sys.diagonal[j]] = 1.0;
+      set(sys.diagonal[j], 1.0);
       mix(~static_cast<std::uint64_t>(eq));
     }
   } else if (!eliminated.empty()) {
@@ -734,11 +727,19 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     for (int j = 0; j < nf; ++j) {
       if (!mine(j)) continue;
       for (int p = outer[j]; p < outer[j + 1]; ++p)
-        if (gone[j] || gone[inner[p]]) values[p] = 0.0;
-      if (gone[j]) values[sys.diagonal[j]] = 1.0;
+        if (gone[j] || gone[inner[p]]) set(p, 0.0);
+      if (gone[j]) set(sys.diagonal[j], 1.0);
     }
   }
   sys.values_key = key.h;
+}
+
+void StaticSolver::restore_elastic() {
+  if (!system_ || system_->saved.empty()) return;
+  double* values = elastic_.ff.valuePtr();
+  const auto& saved = system_->saved;
+  for (auto it = saved.rbegin(); it != saved.rend(); ++it) values[it->first] = it->second;
+  system_->saved.clear();
 }
 
 void StaticSolver::solve_instant(double t, Vector& u) {
@@ -832,6 +833,12 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         Stopwatch watch(stats_.assemble_seconds);
         update_system(cons, k_contact, condensed, eliminated_eqs);
       }
+      // elastic_.ff is K_ff again when this iteration ends, however it ends (the next
+      // residual, a diagnosis, a subdivided step read it).
+      struct RestoreElastic {
+        StaticSolver* self;
+        ~RestoreElastic() { self->restore_elastic(); }
+      } restore_at_end{this};
       // The system of this iteration: the contact law may condense its multipliers out
       // (then it is SPD), and says which kind of matrix is left.
       const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
@@ -853,8 +860,10 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           !distributed_ &&
           (!contact_ || contact_->n_active() == 0)) {
         Stopwatch watch(stats_.assemble_seconds);
+        restore_elastic();  // K_ff itself, without this iteration's terms
         if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, elastic_.ff, t)) throw *rigid;
         rigid_checked_ = true;
+        update_system(cons, k_contact, condensed, eliminated_eqs);  // the terms again
       }
       const SparseMatrix& a = *system_->matrix;
       // A x for the accuracy of a solve: this rank's columns of a, summed over the ranks; the
@@ -927,7 +936,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           LUNASTER_ASSERT(!distributed_ || solver->takes_distributed(), "a shared model needs a backend that takes it");
           if (iterative || distributed_) solver->set_layout(system_layout(cons, condensed, eliminated_eqs));
           LUNASTER_ASSERT(!elastic_in_solver_, "K_ff was handed to a backend: it cannot be factorised again");
-          if (&a == &elastic_.ff) {
+          if (&a == &elastic_.ff && !contact_) {
             // The system is K_ff itself: a backend that keeps its own copy (PETSc) takes it,
             // and one copy is enough; a direct backend leaves it here.
             elastic_in_solver_ = solver->factorize_taking(elastic_.ff, kind);
@@ -937,6 +946,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           }
         } catch (const SolveError& err) {
           if (err.out_of_memory() || err.failure().what == Failure::What::IterativeSolve) throw;
+          restore_elastic();
           throw diagnose(cons, err, t);
         }
         ++stats_.factorisations;
@@ -986,13 +996,15 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       stats_.solve_residual = std::max(stats_.solve_residual, solve_error);
       const double accepted =
           iterative ? std::max(kSolveTolerance, 1.01 * options_.iterative.relative_residual) : kSolveTolerance;
-      if (!(solve_error <= accepted))
+      if (!(solve_error <= accepted)) {
+        restore_elastic();
         throw diagnose(
             cons,
             SolveError("the linear solver returned no accurate solution (relative residual of the solve " +
                        sci(raw_error) + ", " + sci(solve_error) + " after iterative refinement; accepted below " +
                        sci(accepted) + ")"),
             t);
+      }
       for (int eq = 0; eq < n; ++eq)
         if (cons.free_index[eq] >= 0) u[eq] += du[cons.free_index[eq]];
       for (const Elimination& e : eliminated) {

@@ -111,22 +111,27 @@ class StaticSolver {
     long elastic_generation = 0;       ///< incremented when the Dirichlet set changes
     long contact_version = -1;         ///< contact pattern version the pattern was built for
     long pattern = 0;                  ///< incremented at each new pattern
-    SparseMatrix a;                    ///< the system (pattern and current values) with a contact hook
-    const SparseMatrix* matrix = nullptr;  ///< the system: &a, or elastic_.ff without a contact hook
-    /// a's values are K_ff alone (nothing added since they were copied from elastic_.ff), so
-    /// the next update need not copy them again. No second copy of K_ff is kept.
-    bool values_elastic = false;
+    /// The interface solver's contact terms C (the system is K_ff + C, increment is true).
+    SparseMatrix a;
+    /// The system: elastic_.ff (without a contact hook K_ff itself; with one, K_ff with this
+    /// iteration's contact terms written in place, see saved), or &a with the interface solver.
+    const SparseMatrix* matrix = nullptr;
     /// a holds the contact terms alone, C (interface solver: the system is K_ff + C, and K_ff
-    /// is never copied); false: a is the whole system.
+    /// is never copied); false: the matrix is the whole system.
     bool increment = false;
-    std::vector<int> contact_pos;      ///< position in a of each contact triplet, -1 if constrained
-    std::vector<int> diagonal;         ///< position of each diagonal entry in a, -1 in another rank's column
+    /// K_ff's values that this iteration's system overwrote in elastic_.ff (position, value),
+    /// put back by restore_elastic() in reverse order: K_ff and the system share one storage.
+    std::vector<std::pair<int, double>> saved;
+    std::vector<int> contact_pos;      ///< position in the matrix of each contact triplet, -1 if constrained
+    std::vector<int> diagonal;         ///< position of each diagonal entry in the matrix, -1 in another rank's column
     std::vector<char> owned;           ///< shared model: per free equation, whether this rank holds its column
     std::uint64_t values_key = 0;      ///< key of a's current values (update_system)
     SystemState state[kSolverKinds];              ///< per backend (SolverKind)
   };
   void update_system(const Constraints& cons, const std::vector<Triplet>& contact, const std::vector<int>& condensed,
                      const std::vector<int>& eliminated);
+  /// elastic_.ff back to K_ff (the values update_system overwrote); nothing to do when it holds K_ff.
+  void restore_elastic();
   std::vector<int> eliminate(const Constraints& cons, const std::vector<Elimination>& relations, const Vector& residual,
                              std::vector<Triplet>& triplets, Vector& r_free);
   /// The node blocks of the system's equations (condensed and eliminated equations left
