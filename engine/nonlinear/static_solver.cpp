@@ -682,6 +682,14 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
       k.swap(a);  // the old K_ff goes with a; Eigen 3.4's sparse assignment would copy it
     }
     locate_triplets(k, cons.free_index, contact, sys.contact_pos);
+    sys.contact_unique.clear();
+    {
+      std::vector<char> seen(static_cast<size_t>(k.nonZeros()), 0);  // no sort of millions of 3D positions
+      for (int p : sys.contact_pos)
+        if (p >= 0 && !seen[p]) seen[p] = 1, sys.contact_unique.push_back(p);
+    }
+    sys.contact_elastic.resize(sys.contact_unique.size());
+    for (size_t i = 0; i < sys.contact_unique.size(); ++i) sys.contact_elastic[i] = k.valuePtr()[sys.contact_unique[i]];
     sys.diagonal.resize(cons.n_free);
     for (int j = 0; j < cons.n_free; ++j) sys.diagonal[j] = mine(j) ? position_in(k, j, j) : -1;
     sys.contact_version = version;
@@ -697,9 +705,7 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
   ValuesKey key;
   auto mix = [&key](std::uint64_t v) { key.mix(v); };
   mix(static_cast<std::uint64_t>(sys.elastic_generation));
-  for (int p : sys.contact_pos)
-    if (p >= 0) saved.emplace_back(p, values[p]);
-  add_triplet_values(contact, sys.contact_pos, values, key);
+  sys.contact_written = add_triplet_values(contact, sys.contact_pos, values, key);
   for (int eq : condensed)
     if (cons.free_index[eq] >= 0) {
       if (mine(cons.free_index[eq])) set(sys.diagonal[cons.free_index[eq]], 1.0);
@@ -735,11 +741,14 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
 }
 
 void StaticSolver::restore_elastic() {
-  if (!system_ || system_->saved.empty()) return;
+  if (!system_) return;
+  SystemCache& sys = *system_;
   double* values = elastic_.ff.valuePtr();
-  const auto& saved = system_->saved;
-  for (auto it = saved.rbegin(); it != saved.rend(); ++it) values[it->first] = it->second;
-  system_->saved.clear();
+  for (auto it = sys.saved.rbegin(); it != sys.saved.rend(); ++it) values[it->first] = it->second;
+  sys.saved.clear();
+  if (sys.contact_written)
+    for (size_t i = 0; i < sys.contact_unique.size(); ++i) values[sys.contact_unique[i]] = sys.contact_elastic[i];
+  sys.contact_written = false;
 }
 
 void StaticSolver::solve_instant(double t, Vector& u) {

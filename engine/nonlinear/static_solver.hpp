@@ -119,9 +119,14 @@ class StaticSolver {
     /// a holds the contact terms alone, C (interface solver: the system is K_ff + C, and K_ff
     /// is never copied); false: the matrix is the whole system.
     bool increment = false;
-    /// K_ff's values that this iteration's system overwrote in elastic_.ff (position, value),
-    /// put back by restore_elastic() in reverse order: K_ff and the system share one storage.
+    /// K_ff and the system share one storage, elastic_.ff: what restore_elastic() puts back.
+    /// The values this iteration's condensed and eliminated equations overwrote (position,
+    /// value; put back in reverse order), then K_ff's values at the contact positions (each
+    /// position once, kept with the pattern: K_ff does not change within a run).
     std::vector<std::pair<int, double>> saved;
+    std::vector<int> contact_unique;
+    std::vector<double> contact_elastic;
+    bool contact_written = false;  ///< the contact terms are in elastic_.ff now
     std::vector<int> contact_pos;      ///< position in the matrix of each contact triplet, -1 if constrained
     std::vector<int> diagonal;         ///< position of each diagonal entry in the matrix, -1 in another rank's column
     std::vector<char> owned;           ///< shared model: per free equation, whether this rank holds its column
