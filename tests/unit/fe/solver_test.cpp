@@ -457,10 +457,30 @@ class UselessSolver final : public LinearSolver {
   std::string name() const override { return "useless"; }
 };
 
+/// CHOLMOD's solution moved by `eps` times its size along (1, ..., 1): a backward-stable
+/// solve whose error is set here, not left to the round-off of one machine and compiler
+/// (an exact x made A x - b exactly zero in a -O1 build).
+class BackwardStableSolver final : public LinearSolver {
+ public:
+  explicit BackwardStableSolver(double eps) : eps_(eps) {}
+  void factorize(const SparseMatrix& a, MatrixKind kind) override { inner_->factorize(a, kind); }
+  Vector solve(const Vector& b) const override {
+    Vector x = inner_->solve(b);
+    const double shift = eps_ * x.cwiseAbs().maxCoeff();
+    return (x.array() + shift).matrix();
+  }
+  std::string name() const override { return "backward-stable CHOLMOD"; }
+
+ private:
+  double eps_;
+  std::unique_ptr<LinearSolver> inner_ = make_linear_solver(SolverKind::Cholmod);
+};
+
 TEST(Refinement, ABackwardStableSolveIsNotRefined) {
   // b along A's smallest eigenvector (eigenvalue 1e-8): x = (1e8, -1e8) and A x cancels to
-  // b = (1, -1). The relative residual is then eps |A| |x| / |b|, about 1e-8, from the
-  // product alone; the backward error |A x - b| / (|A| |x| + |b|) is eps.
+  // b = (1, -1). An error of 4 eps |x| along the largest eigenvector (eigenvalue 2) leaves
+  // a relative residual of about 8e-8 |x| eps / |b| = 8e-8, while the backward error
+  // |A x - b| / (|A| |x| + |b|) stays about 4e-16.
   SparseMatrix a(2, 2);
   a.insert(0, 0) = 1.0;
   a.insert(1, 1) = 1.0;
@@ -475,11 +495,11 @@ TEST(Refinement, ABackwardStableSolveIsNotRefined) {
     add_abs_product(a, x, y);
     return y;
   };
-  auto s = make_linear_solver(SolverKind::Cholmod);
-  s->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+  BackwardStableSolver s(4e-16);
+  s.factorize(a, MatrixKind::SymmetricPositiveDefinite);
   Vector x_plain, x_backward;
-  const RefinedSolve plain = solve_with_refinement(*s, product, b, x_plain);
-  const RefinedSolve backward = solve_with_refinement(*s, product, b, x_backward, 3, 1e-10, &abs_product);
+  const RefinedSolve plain = solve_with_refinement(s, product, b, x_plain);
+  const RefinedSolve backward = solve_with_refinement(s, product, b, x_backward, 3, 1e-10, &abs_product);
   EXPECT_GT(backward.raw_residual, 1e-10);  // the relative residual alone asks for refinement
   EXPECT_GE(plain.steps, 1);                // ... and gets a useless step
   EXPECT_EQ(backward.steps, 0);
@@ -500,7 +520,7 @@ TEST(Refinement, ABackwardStableSolveIsNotRefined) {
   EXPECT_LT(refined.residual, 1e-10);
   // A backward-stable solve whose residual the caller would reject is still refined.
   Vector x_rejected;
-  const RefinedSolve rejected = solve_with_refinement(*s, product, b, x_rejected, 3, 1e-10, &abs_product, 1e-12);
+  const RefinedSolve rejected = solve_with_refinement(s, product, b, x_rejected, 3, 1e-10, &abs_product, 1e-12);
   EXPECT_EQ(rejected.steps, plain.steps);
 }
 
