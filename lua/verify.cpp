@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -181,9 +182,29 @@ DeckOutcome run_child(const fs::path& executable, const fs::path& deck, const fs
   std::vector<char*> argv;
   for (auto& word : words) argv.push_back(word.data());
   argv.push_back(nullptr);
+  // Each mpirun its own OpenMPI session directory tree: the jobs that verify -j runs at once
+  // would otherwise share /tmp/ompi.<host>.<uid> (or the user's orte_tmpdir_base), which
+  // two of them create at once or the first to end removes while another creates its
+  // directory in it: that one's MPI_Init fails ("mkdir ... File exists"). Below the user's
+  // base when one is set.
+  std::vector<char*> envp;
+  std::string session_setting;
+  fs::path session;
+  if (!launcher.empty()) {
+    const char* base = std::getenv("OMPI_MCA_orte_tmpdir_base");
+    std::string pattern = ((base && *base ? fs::path(base) : fs::temp_directory_path()) / "lunaster-mpi-XXXXXX").string();
+    if (mkdtemp(pattern.data())) {
+      session = pattern;
+      session_setting = "OMPI_MCA_orte_tmpdir_base=" + pattern;
+    }
+  }
+  for (char** e = environ; *e; ++e)
+    if (session_setting.empty() || std::strncmp(*e, "OMPI_MCA_orte_tmpdir_base=", 26) != 0) envp.push_back(*e);
+  if (!session_setting.empty()) envp.push_back(session_setting.data());
+  envp.push_back(nullptr);
   pid_t pid = 0;
   const std::string program = words.front();
-  int rc = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
+  int rc = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&actions);
   close(fds[1]);
   bool killed = false;
@@ -236,6 +257,10 @@ DeckOutcome run_child(const fs::path& executable, const fs::path& deck, const fs
       outcome.output += "\nkilled by signal " + std::to_string(WTERMSIG(wstatus)) + "\n";
   } else {
     outcome.output = "cannot start " + program;
+  }
+  if (!session.empty()) {
+    std::error_code ignored;
+    fs::remove_all(session, ignored);
   }
   close(fds[0]);
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
