@@ -67,7 +67,9 @@ TEST(LocalTangent, FlushEmptiesTheAccumulator) {
   double sum = 0.0;
   for (const auto& t : out) {
     EXPECT_TRUE((t.row() == 3 || t.row() == 4) && (t.col() == 3 || t.col() == 4));
-    if (t.row() == 3 && t.col() == 4) EXPECT_DOUBLE_EQ(t.value(), 2.5);
+    if (t.row() == 3 && t.col() == 4) {
+      EXPECT_DOUBLE_EQ(t.value(), 2.5);
+    }
     sum += std::abs(t.value());
   }
   EXPECT_DOUBLE_EQ(sum, 2.5);

@@ -141,7 +141,9 @@ TEST(HertzMesh, CellCountsFollowTheLayout3d) {
     EXPECT_EQ(group_size(m, "BLOCK_TOP"), static_cast<size_t>(mx * mx + 2 * mx * kl));
     EXPECT_EQ(group_size(m, "BLOCK_BOTTOM"), static_cast<size_t>(mx * mx));
     EXPECT_EQ(group_size(m, "BLOCK_SIDE"), static_cast<size_t>(2 * mx * mz));
-    if (o.grading == 1.0) EXPECT_EQ(mz, 3);
+    if (o.grading == 1.0) {
+      EXPECT_EQ(mz, 3);
+    }
     for (const char* g : {"O_BALL", "O_BLOCK", "C_BALL", "D_BLOCK"}) ASSERT_EQ(m.node_groups.at(g).size(), 1u) << g;
   }
 }
@@ -168,7 +170,9 @@ TEST(HertzMesh, CellsArePositiveAndWellShaped) {
     EXPECT_GT(worst, k.bound) << what;
     // boundary cells point out of their body (ORIE_PEAU would change nothing)
     for (const auto& [name, cells] : m.cell_groups)
-      if (name != "BALL" && name != "BLOCK") EXPECT_EQ(orient_boundary_outward(m, cells), 0) << what << " " << name;
+      if (name != "BALL" && name != "BLOCK") {
+        EXPECT_EQ(orient_boundary_outward(m, cells), 0) << what << " " << name;
+      }
   }
 }
 
@@ -186,11 +190,13 @@ TEST(HertzMesh, GroupsLieOnTheirCurvesAndQuadraticEdgesOnTheSphere) {
     for (int n : m.nodes_of_cells(m.cell_groups.at("BLOCK_SIDE")))
       EXPECT_TRUE(m.node(n)[0] == o.width || (m.dim == 3 && m.node(n)[1] == o.width)) << what;
     for (const char* g : {"AXIS_BALL", "AXIS_BLOCK", "SYMX_BALL", "SYMX_BLOCK"})
-      if (m.cell_groups.count(g))
+      if (m.cell_groups.count(g)) {
         for (int n : m.nodes_of_cells(m.cell_groups.at(g))) EXPECT_EQ(m.node(n)[0], 0.0) << g;
+      }
     for (const char* g : {"SYMY_BALL", "SYMY_BLOCK"})
-      if (m.cell_groups.count(g))
+      if (m.cell_groups.count(g)) {
         for (int n : m.nodes_of_cells(m.cell_groups.at(g))) EXPECT_EQ(m.node(n)[1], 0.0) << g;
+      }
     // every ball node inside the ball, every block node inside the block
     for (int n : m.nodes_of_cells(m.cell_groups.at("BALL"))) {
       EXPECT_LE(from_centre(m, n, r), r * (1 + 1e-14)) << what;
