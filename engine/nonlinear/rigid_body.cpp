@@ -2,7 +2,9 @@
 
 #include "engine/nonlinear/reduction.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <numeric>
 
@@ -44,6 +46,26 @@ std::string body_name(const Mesh& mesh, const std::vector<int>& body) {
   return "the body " + names.front().second + " (" + std::to_string(body.size()) + " cells)";
 }
 
+/// Smallest eigenvalue of the modes' Gram matrix (modes O(1), one row per held equation)
+/// below which a motion is unheld: a held motion gives at least (distance between the
+/// holding nodes / body size)^2, a free one round-off.
+constexpr double kUnheldEigenvalue = 1e-12;
+
+SolveError rigid_body_error(const FeModel& model, const std::vector<int>& body, int node, int component, double t) {
+  char inst[32];
+  std::snprintf(inst, sizeof inst, "%.6e", t);
+  const Mesh& mesh = *model.mesh;
+  SolveError err(
+      "the stiffness matrix is singular at instant " + std::string(inst) + ": " + body_name(mesh, body) +
+          " has a rigid-body mode (free to move along " + component_name(component) + ", detected at node " +
+          mesh.node_names[node] + ")",
+      {"nothing holds this body in that direction: impose a displacement on it,",
+       "or, if only contact holds it, make its contact active from the first iteration",
+       "so that the contact pressure carries the load from the start"});
+  err.failure().what = Failure::What::RigidBodyMode;
+  return err;
+}
+
 }  // namespace
 
 std::optional<SolveError> find_rigid_body_mode(const FeModel& model, const DofMap& dofs,
@@ -65,22 +87,98 @@ std::optional<SolveError> find_rigid_body_mode(const FeModel& model, const DofMa
   } catch (const SolveError&) {
     column = chol->failed_column();
   }
-  char inst[32];
-  std::snprintf(inst, sizeof inst, "%.6e", t);
   if (column < 0 || column >= static_cast<int>(back.size())) return std::nullopt;
   const int eq = back[column];
-  const int node = dofs.node_of(eq);
+  return rigid_body_error(model, body_of_node(model, dofs.node_of(eq)), dofs.node_of(eq), dofs.component_of(eq), t);
+}
+
+std::optional<SolveError> find_unheld_body(const FeModel& model, const DofMap& dofs,
+                                           const std::vector<int>& free_index, const std::vector<int>& held,
+                                           double t) {
   const Mesh& mesh = *model.mesh;
-  const std::string who = body_name(mesh, body_of_node(model, node));
-  SolveError err(
-      "the stiffness matrix is singular at instant " + std::string(inst) + ": " + who +
-          " has a rigid-body mode (free to move along " + component_name(dofs.component_of(eq)) + ", detected at node " +
-          mesh.node_names[node] + ")",
-      {"nothing holds this body in that direction: impose a displacement on it,",
-       "or, if only contact holds it, make its contact active from the first iteration",
-       "so that the contact pressure carries the load from the start"});
-  err.failure().what = Failure::What::RigidBodyMode;
-  return err;
+  const std::vector<int> cells = model.volume_cells();
+  if (cells.empty()) return std::nullopt;
+  std::vector<char> holds(dofs.n_dofs(), 0);
+  for (int eq = 0; eq < dofs.n_dofs(); ++eq) holds[eq] = free_index[eq] < 0;
+  for (int eq : held) holds[eq] = 1;
+  // Bodies: connected sets of cells (by shared nodes).
+  std::vector<int> parent(mesh.n_nodes());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int a) {
+    while (parent[a] != a) a = parent[a] = parent[parent[a]];
+    return a;
+  };
+  for (int c : cells)
+    for (int k = 1; k < mesh.cell_n_nodes(c); ++k) parent[find(mesh.cell(c)[k])] = find(mesh.cell(c)[0]);
+  std::vector<std::vector<int>> body_cells;
+  std::vector<int> body_index(mesh.n_nodes(), -1);
+  for (int c : cells) {
+    const int r = find(mesh.cell(c)[0]);
+    if (body_index[r] < 0) body_index[r] = static_cast<int>(body_cells.size()), body_cells.emplace_back();
+    body_cells[body_index[r]].push_back(c);
+  }
+  const int dim = dofs.dim();
+  for (const std::vector<int>& body : body_cells) {
+    // The body's rigid-body motions: translations and rotations (AXIS: the axial translation
+    // only), about the body's centre, lengths scaled by its size so that every mode is O(1).
+    std::vector<int> nodes;
+    for (int c : body)
+      for (int k = 0; k < mesh.cell_n_nodes(c); ++k) nodes.push_back(mesh.cell(c)[k]);
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    double centre[3] = {0, 0, 0}, size = 0.0;
+    for (int n : nodes)
+      for (int k = 0; k < 3; ++k) centre[k] += mesh.node(n)[k] / static_cast<double>(nodes.size());
+    for (int n : nodes)
+      for (int k = 0; k < 3; ++k) size = std::max(size, std::abs(mesh.node(n)[k] - centre[k]));
+    if (!(size > 0.0)) size = 1.0;
+    const Modelisation kind = model.modelisation[body.front()];
+    const int n_modes = kind == Modelisation::Axisymmetric ? 1 : dim == 3 ? 6 : 3;
+    // mode(n, k, j): component k of rigid motion j at node n.
+    auto mode = [&](int n, int k, int j) -> double {
+      if (kind == Modelisation::Axisymmetric) return k == DY ? 1.0 : 0.0;
+      if (j < dim) return k == j ? 1.0 : 0.0;
+      double x[3];
+      for (int i = 0; i < 3; ++i) x[i] = (mesh.node(n)[i] - centre[i]) / size;
+      if (dim == 2) return k == DX ? -x[1] : k == DY ? x[0] : 0.0;
+      // rotations about X, Y, Z: omega x (x - centre)
+      const int axis = j - 3;
+      double w[3] = {0, 0, 0};
+      w[axis] = 1.0;
+      const double r[3] = {w[1] * x[2] - w[2] * x[1], w[2] * x[0] - w[0] * x[2], w[0] * x[1] - w[1] * x[0]};
+      return r[k];
+    };
+    // Gram matrix of the modes on the held equations: a (near) zero eigenvalue is a motion
+    // that no condition opposes.
+    Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(n_modes, n_modes);
+    for (int n : nodes)
+      for (int k = 0; k < dim; ++k) {
+        const int eq = dofs.dof(n, k);
+        if (eq < 0 || !holds[eq]) continue;
+        Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1> row(n_modes);  // no heap
+        for (int j = 0; j < n_modes; ++j) row[j] = mode(n, k, j);
+        gram.noalias() += row * row.transpose();
+      }
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(gram);
+    if (eig.info() != Eigen::Success || eig.eigenvalues()[0] > kUnheldEigenvalue) continue;
+    // The free motion; name the node and component where it moves most (the first such).
+    const Eigen::VectorXd alpha = eig.eigenvectors().col(0);
+    double largest = 0.0;
+    for (int n : nodes)
+      for (int k = 0; k < dim; ++k) {
+        double v = 0.0;
+        for (int j = 0; j < n_modes; ++j) v += alpha[j] * mode(n, k, j);
+        largest = std::max(largest, std::abs(v));
+      }
+    for (int n : nodes)
+      for (int k = 0; k < dim; ++k) {
+        double v = 0.0;
+        for (int j = 0; j < n_modes; ++j) v += alpha[j] * mode(n, k, j);
+        if (std::abs(v) >= (1.0 - 1e-9) * largest && dofs.dof(n, k) >= 0)
+          return rigid_body_error(model, body, n, k, t);
+      }
+  }
+  return std::nullopt;
 }
 
 SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, const std::vector<int>& free_index,

@@ -26,6 +26,16 @@ std::optional<SolveError> find_rigid_body_mode(const FeModel& model, const DofMa
                                                const std::vector<int>& free_index,
                                                const SparseMatrix& elastic, double t);
 
+/// The rigid-body error for a body (connected set of cells) that no condition holds:
+/// a translation or rotation of it (AXIS: the axial translation) that vanishes on every
+/// equation fixed by a Dirichlet condition or listed in `held` (equations tied by
+/// relations, counted as holding). Geometry only: no factorisation, the same answer on
+/// every rank of a shared model and for every backend. It sees no mechanism inside a
+/// body (two parts joined at one node): find_rigid_body_mode does.
+std::optional<SolveError> find_unheld_body(const FeModel& model, const DofMap& dofs,
+                                           const std::vector<int>& free_index, const std::vector<int>& held,
+                                           double t);
+
 SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, const std::vector<int>& free_index,
                                     const SparseMatrix& elastic, const SolveError& original, double t);
 

@@ -865,14 +865,27 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       // A shared model skips it too: it would need the whole stiffness on one rank (MUMPS's
       // null-pivot detection and the solve's residual still catch a singular system).
       // The interface solver's reference is the same Cholesky factorisation of K_ff: done.
-      if (!rigid_checked_ && interface_use_ != 1 && backend != SolverKind::Cholmod && backend != SolverKind::Petsc &&
-          !distributed_ &&
-          (!contact_ || contact_->n_active() == 0)) {
-        Stopwatch watch(stats_.assemble_seconds);
-        restore_elastic();  // K_ff itself, without this iteration's terms
-        if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, elastic_.ff, t)) throw *rigid;
+      // Before any of these, a body that no Dirichlet condition holds in some rigid motion is
+      // found from the geometry alone: every backend, every rank of a shared model, no
+      // factorisation (a free body under MUMPS with a shared model was otherwise caught only
+      // when round-off left its null pivot an exact zero).
+      if (!rigid_checked_ && (!contact_ || contact_->n_active() == 0)) {
+        std::vector<int> related;  // every unknown of a relation: counted as holding
+        for (const Elimination& e : eliminated) {
+          related.push_back(e.eq);
+          for (const auto& term : e.terms) related.push_back(term.first);
+        }
+        if (auto rigid = find_unheld_body(model_, dofs_, cons.free_index, related, t)) {
+          restore_elastic();
+          throw *rigid;
+        }
+        if (interface_use_ != 1 && backend != SolverKind::Cholmod && backend != SolverKind::Petsc && !distributed_) {
+          Stopwatch watch(stats_.assemble_seconds);
+          restore_elastic();  // K_ff itself, without this iteration's terms
+          if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, elastic_.ff, t)) throw *rigid;
+          update_system(cons, k_contact, condensed, eliminated_eqs);  // the terms again
+        }
         rigid_checked_ = true;
-        update_system(cons, k_contact, condensed, eliminated_eqs);  // the terms again
       }
       const SparseMatrix& a = *system_->matrix;
       // A x for the accuracy of a solve: this rank's columns of a, summed over the ranks; the
