@@ -39,6 +39,8 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import compare_checks  # noqa: E402
+sys.path.insert(0, str(HERE.parent / "budget"))
+from run_budget_tests import SANITIZED, before  # noqa: E402  (wall-time bounds, Release only)
 
 failures = []
 ENV = dict(os.environ)
@@ -308,7 +310,7 @@ def errors(exe, source, scratch):
     code, out, err, seconds = run([exe, "verify", source / "testcases" / "patch_2d.lua", "--np", "2", "--time-limit",
                                    "1", "--out", "f"], scratch, env=env)
     check(code == 1 and "launcher: SIGTERM" in out and re.search(r"patch_2d\.lua +TIMEOUT", out) is not None
-          and 5.5 < seconds < 9.0, f"verify --np: a launcher still running 5 s past the limit gets SIGTERM ({seconds:.1f} s)")
+          and 5.5 < seconds and before(seconds, 9.0), f"verify --np: a launcher still running 5 s past the limit gets SIGTERM ({seconds:.1f} s)")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -320,19 +322,19 @@ def rank_failure(exe, meshgen, source, scratch):
                    check=True, stdout=subprocess.DEVNULL)
     stop = r"refined\.lua: time limit of 1 s exceeded while running \S*refined\.lua:\d+: STAT_NON_LINE; the run is stopped"
     code, out, err, seconds = run([mpirun(), "-np", 2, exe, "run", deck, "-q", "--out", "o", "--time-limit", "1"], scratch)
-    check(code == 5 and seconds < 5.0, f"--time-limit 1 on both ranks stops the run inside the solve: exit 5 ({seconds:.1f} s)")
+    check(code == 5 and before(seconds, 5.0), f"--time-limit 1 on both ranks stops the run inside the solve: exit 5 ({seconds:.1f} s)")
     check(len(re.findall(stop, out + err)) == 1 and "rank 1" not in out + err,
           "the time-limit message once, rank 0's")
 
     # The deck's set-up fits in the limit and its solve does not; AddressSanitizer's shadow
     # memory puts a process at about 200 MB before its first command (make test-asan).
-    limit = "400" if os.environ.get("LUNASTER_SANITIZED") else "150"
+    limit = "400" if SANITIZED else "150"
     memory = rf"memory limit of {limit} MB exceeded \(resident memory \d+ MB\) while running"
     for failing in (0, 1):
         args = [["run", deck, "-q", "--out", "o"], ["run", deck, "-q", "--out", "o"]]
         args[failing] += ["--memory-limit", limit]
         code, out, err, seconds = run(mpmd(exe, args[0], args[1], scratch / f"memory{failing}.logs"), scratch)
-        check(code == 6 and seconds < 10.0,
+        check(code == 6 and before(seconds, 10.0),
               f"--memory-limit {limit} on rank {failing} only: that rank stops, and the run with it: exit 6 ({seconds:.1f} s)")
         check(re.search(memory, out + err) is not None and ((f"lunaster: rank {failing}:" in out + err) == (failing > 0)),
               f"the memory message is printed (by rank {failing}{', which says so' if failing else ''})")
@@ -346,7 +348,7 @@ def rank_failure(exe, meshgen, source, scratch):
         args[failing][1] = error_deck
         code, out, err, seconds = run(mpmd(exe, args[0], args[1], scratch / f"alone{failing}.logs"), scratch, timeout=120)
         text = out + err
-        check(code == 2 and RANK_WAIT_SECONDS - 1 < seconds < RANK_WAIT_SECONDS + 15,
+        check(code == 2 and RANK_WAIT_SECONDS - 1 < seconds and before(seconds, RANK_WAIT_SECONDS + 15),
               f"a deck error on rank {failing} alone ends the run: exit 2 after the wait ({seconds:.1f} s)")
         check("misspelt_keyword.lua:6: DEFI_MATERIAU: ELAS.NUU" in text, "the error is shown")
         check(f"rank {failing} stopped with exit status 2 and the other ranks have not ended" in text,
@@ -359,7 +361,7 @@ def rank_failure(exe, meshgen, source, scratch):
     code, out, err, seconds = run(mpmd(exe, ["run", source / "testcases" / "patch_2d.lua", "--out", "o", "-q"],
                                        ["run", error_deck, "--out", "o"], scratch / "worst.logs"), scratch)
     text = out + err
-    check(code == 2 and seconds < RANK_WAIT_SECONDS, f"rank 0 OK, rank 1 deck error: the run exits 2 ({seconds:.1f} s)")
+    check(code == 2 and before(seconds, RANK_WAIT_SECONDS), f"rank 0 OK, rank 1 deck error: the run exits 2 ({seconds:.1f} s)")
     check("lunaster: rank 1 ended with exit status 2 (rank 0: 0)" in text and
           "lunaster: rank 1: " + str(error_deck) + ":6: DEFI_MATERIAU: ELAS.NUU" in text,
           "rank 0 names the rank that ended otherwise, with its error")
