@@ -347,6 +347,28 @@ bool ContactProblem::settle(const Vector& u, const Log& log) {
   return false;
 }
 
+bool ContactProblem::add_residual(const Vector& u, Vector& residual) {
+  if (def_.geometry_loop == FixedPointOrNewton::Newton) return false;  // it pairs at every add_to_system
+  if (statuses_in_newton())
+    for (auto& p : points_) p.active = p.paired && law_->status(multiplier(u, p), p.gap.value(u), rho(p.zone));
+  std::vector<Triplet> relation_terms;  // a few per QUAD8 face: not worth a residual-only path
+  relations_.add_to_system(dofs_, u, relation_terms, residual);
+  for (const ContactPoint& p : points_) {
+    if (p.wjac == 0.0) continue;
+    const PointCoefficients c = law_->coefficients(p, rho(p.zone));
+    add_point_residual(p, c, multiplier(u, p), p.gap.value(u), residual);
+  }
+  return true;
+}
+
+void ContactProblem::add_point_residual(const ContactPoint& p, const PointCoefficients& c, double lambda, double g,
+                                        Vector& residual) const {
+  if (c.alpha != 0.0 || c.beta != 0.0) add_gradient(p.gap, c.alpha * lambda + c.beta * g, residual);
+  if (multiplier_nodes_.empty()) return;
+  for (int a = 0; a < p.n_slave; ++a)
+    residual[dofs_.dof(p.slave_nodes[a], LAGS_C)] += p.phi[a] * (c.sigma * g - c.kappa * lambda);
+}
+
 void ContactProblem::add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) {
   if (def_.geometry_loop == FixedPointOrNewton::Newton) pair(u);
   if (statuses_in_newton())
@@ -366,13 +388,12 @@ void ContactProblem::add_to_system(const Vector& u, std::vector<Triplet>& tangen
     const PointCoefficients c = law_->coefficients(p, rho(p.zone));
     const double lambda = multiplier(u, p);
     const double g = p.gap.value(u);
-    if (c.alpha != 0.0 || c.beta != 0.0) add_gradient(p.gap, c.alpha * lambda + c.beta * g, residual);
+    add_point_residual(p, c, lambda, g, residual);
     // Every entry the pairing allows is emitted, zeros included (flush emits the whole block):
     // the pattern then depends on the pairing only, not on the statuses.
     local.add_outer(p.gap, p.gap, c.beta);
     if (multiplier_nodes_.empty()) continue;
     for (int a = 0; a < p.n_slave; ++a) leq[a] = dofs_.dof(p.slave_nodes[a], LAGS_C);
-    for (int a = 0; a < p.n_slave; ++a) residual[leq[a]] += p.phi[a] * (c.sigma * g - c.kappa * lambda);
     // Condensed: the multiplier rows are solved in recover(); their entries stay zero here.
     const double on = condensed ? 0.0 : 1.0;
     int la[8], lk[LinearGap::kMaxTerms];

@@ -32,6 +32,7 @@ class ContactProblem final : public ContactHook {
   void add_dofs(DofMap& dofs) override;
   void begin_step(const Vector& u, const Log& log) override;
   void add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) override;
+  bool add_residual(const Vector& u, Vector& residual) override;
   const std::vector<int>& condensed_equations() const override;
   void recover(Vector& u) override;
   bool settle(const Vector& u, const Log& log) override;
@@ -68,6 +69,9 @@ class ContactProblem final : public ContactHook {
   int update_statuses(const Vector& u);
   void first_pairing_report(const Log& log) const;
   bool statuses_in_newton() const;
+  /// Point p's terms of the residual: its gap gradient and its multiplier rows.
+  void add_point_residual(const ContactPoint& p, const PointCoefficients& c, double lambda, double g,
+                          Vector& residual) const;
 
   const ContactDefinition def_;
   const Mesh& mesh_;

@@ -51,6 +51,12 @@ class ContactHook {
   /// system pattern and the solvers their analysis. Rows and columns of
   /// `condensed_equations()` hold zeros; the driver puts a unit diagonal there.
   virtual void add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) = 0;
+  /// The residual part of add_to_system alone, with the same side effects (statuses updated
+  /// inside Newton), when the hook can give it for less than the tangent: the driver tests
+  /// convergence on it and calls add_to_system only for an iteration that solves, so the
+  /// tangent of a converged iterate is never built. Returns false, `residual` untouched,
+  /// when not provided.
+  virtual bool add_residual(const Vector& /*u*/, Vector& /*residual*/) { return false; }
   /// Unknowns the hook eliminates from the next linear solve (valid after add_to_system):
   /// the driver solves for the others and then calls `recover`. Empty: none.
   virtual const std::vector<int>& condensed_equations() const {

@@ -777,9 +777,13 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         Stopwatch watch(stats_.assemble_seconds);
         residual = stiffness_times(u) - f_ext;
       }
+      // From the second iteration on, the residual may converge: a hook that gives its residual
+      // alone gives it first, and its tangent only for an iteration that solves.
+      bool tangent_pending = false;
       if (contact_) {
         Stopwatch watch(stats_.contact_seconds);
-        contact_->add_to_system(u, k_contact, residual);
+        tangent_pending = iter > 0 && contact_->add_residual(u, residual);
+        if (!tangent_pending) contact_->add_to_system(u, k_contact, residual);
       }
       // Relative residual as code_aster's RESI_GLOB_RELA: free residual over the largest load or reaction.
       double denom = inf_norm(f_ext);
@@ -809,6 +813,11 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         break;
       }
       if (iter == options_.iter_glob_maxi) break;
+      if (tangent_pending) {
+        Stopwatch watch(stats_.contact_seconds);
+        Vector again = Vector::Zero(n);  // the residual is in `residual` already
+        contact_->add_to_system(u, k_contact, again);
+      }
 
       static const std::vector<int> no_equations;
       static const std::vector<Elimination> no_eliminations;
