@@ -630,18 +630,23 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     const double* el_values = k.valuePtr();
     // Pattern column by column: the rows of K_ff merged with the contact rows of the column
     // (bucketed, sorted, unique) and the diagonal; no global sort. Positions K_ff did not
-    // have hold zeros (a later pattern keeps them: the union only grows).
+    // have hold zeros until the next pattern.
+    // Each contact position with its transpose (in this rank's columns): the pattern stays
+    // symmetric (the eliminations below find row j of column i by search) whatever the
+    // contact terms' own symmetry.
     std::vector<int> start(static_cast<size_t>(nf) + 2, 0), extra;
     for (const auto& tr : contact) {
       const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
-      if (i >= 0 && j >= 0) ++start[j + 2];
+      if (i >= 0 && j >= 0) ++start[j + 2], start[i + 2] += mine(i);
     }
     for (int j = 0; j < nf; ++j) start[j + 2] += mine(j);  // the diagonal
     for (int j = 0; j <= nf; ++j) start[j + 1] += start[j];
     extra.resize(start[nf + 1]);
     for (const auto& tr : contact) {
       const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
-      if (i >= 0 && j >= 0) extra[start[j + 1]++] = i;
+      if (i < 0 || j < 0) continue;
+      extra[start[j + 1]++] = i;
+      if (mine(i)) extra[start[i + 1]++] = j;
     }
     for (int j = 0; j < nf; ++j)
       if (mine(j)) extra[start[j + 1]++] = j;
@@ -650,7 +655,14 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
       std::sort(extra.begin() + start[j], extra.begin() + start[j + 1]);
       extra_end[j] = static_cast<int>(std::unique(extra.begin() + start[j], extra.begin() + start[j + 1]) - extra.begin());
     }
-    // Union of the two sorted row lists of column j, passed to emit(row, K_ff's value or 0).
+    // Union of the two sorted row lists of column j, passed to emit(row, K_ff's value or 0,
+    // whether the position is there for contact only), less the positions an earlier pairing
+    // added that this one does not use (sys.contact_only, ascending): a sliding contact does
+    // not leave its whole path in the pattern and the factor's fill. K_ff's own positions all
+    // stay, zeros included (its pattern is symmetric to the bit, its values are not).
+    // `changed` counts the positions added or dropped.
+    long changed = 0;
+    size_t cursor = 0;  // into sys.contact_only, restarted by each pass over the columns
     auto merge_column = [&](int j, auto&& emit) {
       const int* e0 = extra.data() + start[j];
       const int* e1 = extra.data() + extra_end[j];
@@ -658,9 +670,19 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
       const int p1 = el_outer[j + 1];
       while (p < p1 || e0 != e1) {
         const int r = p < p1 ? el_inner[p] : -1;
-        if (e0 == e1 || (r >= 0 && r < *e0)) emit(r, el_values[p++]);
-        else if (r < 0 || *e0 < r) emit(*e0++, 0.0);
-        else emit(r, el_values[p++]), ++e0;  // in both
+        if (e0 == e1 || (r >= 0 && r < *e0)) {  // K_ff's only
+          const bool stale = cursor < sys.contact_only.size() && sys.contact_only[cursor] == p;
+          cursor += stale;
+          if (stale) ++changed;
+          else emit(r, el_values[p], false);
+          ++p;
+        } else if (r < 0 || *e0 < r) {  // contact's only
+          emit(*e0++, 0.0, true), ++changed;
+        } else {  // in both
+          const bool added = cursor < sys.contact_only.size() && sys.contact_only[cursor] == p;
+          cursor += added;
+          emit(r, el_values[p++], added), ++e0;
+        }
       }
     };
     SparseMatrix a(nf, nf);
@@ -668,17 +690,23 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     outer[0] = 0;
     for (int j = 0; j < nf; ++j) {
       int count = 0;
-      merge_column(j, [&count](int, double) { ++count; });
+      merge_column(j, [&count](int, double, bool) { ++count; });
       outer[j + 1] = outer[j] + count;
     }
-    if (outer[nf] != k.nonZeros()) {  // else K_ff's pattern holds them all already
+    if (changed > 0) {  // else K_ff's pattern is this one already
       a.resizeNonZeros(outer[nf]);
       int* inner = a.innerIndexPtr();
       double* values = a.valuePtr();
+      std::vector<int> contact_only;
+      cursor = 0;
       for (int j = 0; j < nf; ++j) {
         int at = outer[j];
-        merge_column(j, [&](int row, double v) { inner[at] = row, values[at++] = v; });
+        merge_column(j, [&](int row, double v, bool only) {
+          if (only) contact_only.push_back(at);
+          inner[at] = row, values[at++] = v;
+        });
       }
+      sys.contact_only.swap(contact_only);
       k.swap(a);  // the old K_ff goes with a; Eigen 3.4's sparse assignment would copy it
     }
     locate_triplets(k, cons.free_index, contact, sys.contact_pos);
@@ -850,6 +878,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       {
         Stopwatch watch(stats_.assemble_seconds);
         update_system(cons, k_contact, condensed, eliminated_eqs);
+        stats_.system_entries = system_->matrix->nonZeros();
       }
       // elastic_.ff is K_ff again when this iteration ends, however it ends (the next
       // residual, a diagnosis, a subdivided step read it).

@@ -70,6 +70,7 @@ struct SolverStats {
   /// factorisation kept for the run (their Schur complement factorised per pass); 0: not.
   int interface_equations = 0;
   int krylov_iterations = 0;       ///< GMRES iterations preconditioned by a previous factorisation, or of an iterative solver
+  long system_entries = 0;         ///< stored entries of the last system matrix (this rank's columns)
   double resi_glob_rela = 0.0;     ///< RESI_GLOB_RELA reached at the last converged Newton iteration
 };
 
@@ -125,12 +126,14 @@ class StaticSolver {
     /// position once, kept with the pattern: K_ff does not change within a run).
     std::vector<std::pair<int, double>> saved;
     std::vector<int> contact_unique;
+    /// Positions of elastic_.ff that are not K_ff's own, there for the contact terms (ascending).
+    std::vector<int> contact_only;
     std::vector<double> contact_elastic;
     bool contact_written = false;  ///< the contact terms are in elastic_.ff now
     std::vector<int> contact_pos;      ///< position in the matrix of each contact triplet, -1 if constrained
     std::vector<int> diagonal;         ///< position of each diagonal entry in the matrix, -1 in another rank's column
     std::vector<char> owned;           ///< shared model: per free equation, whether this rank holds its column
-    std::uint64_t values_key = 0;      ///< key of a's current values (update_system)
+    std::uint64_t values_key = 0;      ///< key of the system's current values (*matrix; update_system)
     SystemState state[kSolverKinds];              ///< per backend (SolverKind)
   };
   void update_system(const Constraints& cons, const std::vector<Triplet>& contact, const std::vector<int>& condensed,
