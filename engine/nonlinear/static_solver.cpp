@@ -631,22 +631,17 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     // Pattern column by column: the rows of K_ff merged with the contact rows of the column
     // (bucketed, sorted, unique) and the diagonal; no global sort. Positions K_ff did not
     // have hold zeros until the next pattern.
-    // Each contact position with its transpose (in this rank's columns): the pattern stays
-    // symmetric (the eliminations below find row j of column i by search) whatever the
-    // contact terms' own symmetry.
     std::vector<int> start(static_cast<size_t>(nf) + 2, 0), extra;
     for (const auto& tr : contact) {
       const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
-      if (i >= 0 && j >= 0) ++start[j + 2], start[i + 2] += mine(i);
+      if (i >= 0 && j >= 0) ++start[j + 2];
     }
     for (int j = 0; j < nf; ++j) start[j + 2] += mine(j);  // the diagonal
     for (int j = 0; j <= nf; ++j) start[j + 1] += start[j];
     extra.resize(start[nf + 1]);
     for (const auto& tr : contact) {
       const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
-      if (i < 0 || j < 0) continue;
-      extra[start[j + 1]++] = i;
-      if (mine(i)) extra[start[i + 1]++] = j;
+      if (i >= 0 && j >= 0) extra[start[j + 1]++] = i;
     }
     for (int j = 0; j < nf; ++j)
       if (mine(j)) extra[start[j + 1]++] = j;
