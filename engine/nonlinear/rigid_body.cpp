@@ -12,10 +12,9 @@ namespace lunaster::engine {
 
 namespace {
 
-/// Connected component (by shared nodes) of the model's volume cells containing `node`.
-std::vector<int> body_of_node(const FeModel& model, int node) {
-  const Mesh& mesh = *model.mesh;
-  const std::vector<int> cells = model.volume_cells();
+/// Bodies: per mesh node, a representative node of the connected set (by shared nodes) of
+/// `cells` that holds it (union-find).
+std::vector<int> body_roots(const Mesh& mesh, const std::vector<int>& cells) {
   std::vector<int> parent(mesh.n_nodes());
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](int a) {
@@ -24,10 +23,18 @@ std::vector<int> body_of_node(const FeModel& model, int node) {
   };
   for (int c : cells)
     for (int k = 1; k < mesh.cell_n_nodes(c); ++k) parent[find(mesh.cell(c)[k])] = find(mesh.cell(c)[0]);
+  for (int v = 0; v < mesh.n_nodes(); ++v) parent[v] = find(v);
+  return parent;
+}
+
+/// Connected component (by shared nodes) of the model's volume cells containing `node`.
+std::vector<int> body_of_node(const FeModel& model, int node) {
+  const Mesh& mesh = *model.mesh;
+  const std::vector<int> cells = model.volume_cells();
+  const std::vector<int> root = body_roots(mesh, cells);
   std::vector<int> body;
-  const int root = find(node);
   for (int c : cells)
-    if (find(mesh.cell(c)[0]) == root) body.push_back(c);
+    if (root[mesh.cell(c)[0]] == root[node]) body.push_back(c);
   return body;
 }
 
@@ -101,19 +108,12 @@ std::optional<SolveError> find_unheld_body(const FeModel& model, const DofMap& d
   std::vector<char> holds(dofs.n_dofs(), 0);
   for (int eq = 0; eq < dofs.n_dofs(); ++eq) holds[eq] = free_index[eq] < 0;
   for (int eq : held) holds[eq] = 1;
-  // Bodies: connected sets of cells (by shared nodes).
-  std::vector<int> parent(mesh.n_nodes());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int a) {
-    while (parent[a] != a) a = parent[a] = parent[parent[a]];
-    return a;
-  };
-  for (int c : cells)
-    for (int k = 1; k < mesh.cell_n_nodes(c); ++k) parent[find(mesh.cell(c)[k])] = find(mesh.cell(c)[0]);
+  // Bodies: connected sets of cells (by shared nodes), in the order of their first cell.
+  const std::vector<int> root = body_roots(mesh, cells);
   std::vector<std::vector<int>> body_cells;
   std::vector<int> body_index(mesh.n_nodes(), -1);
   for (int c : cells) {
-    const int r = find(mesh.cell(c)[0]);
+    const int r = root[mesh.cell(c)[0]];
     if (body_index[r] < 0) body_index[r] = static_cast<int>(body_cells.size()), body_cells.emplace_back();
     body_cells[body_index[r]].push_back(c);
   }
