@@ -30,7 +30,8 @@ Slide slide(int n_instants) {
   options.iter_glob_maxi = 25;
   std::vector<double> instants;
   for (int i = 0; i <= n_instants; ++i) instants.push_back(double(i) / n_instants);
-  StaticSolver solver(model, loads, options, hook.get(), quiet_log());
+  const lunaster::Log log = quiet_log();  // the solver keeps a reference: not a temporary
+  StaticSolver solver(model, loads, options, hook.get(), log);
   const std::vector<ResultStep> steps = solver.run(instants);
   Slide s;
   s.stats = solver.stats();
