@@ -347,10 +347,14 @@ bool ContactProblem::settle(const Vector& u, const Log& log) {
   return false;
 }
 
-bool ContactProblem::add_residual(const Vector& u, Vector& residual) {
-  if (def_.geometry_loop == FixedPointOrNewton::Newton) return false;  // it pairs at every add_to_system
+void ContactProblem::update_statuses_in_newton(const Vector& u) {
   if (statuses_in_newton())
     for (auto& p : points_) p.active = p.paired && law_->status(multiplier(u, p), p.gap.value(u), rho(p.zone));
+}
+
+bool ContactProblem::add_residual(const Vector& u, Vector& residual) {
+  if (def_.geometry_loop == FixedPointOrNewton::Newton) return false;  // it pairs at every add_to_system
+  update_statuses_in_newton(u);
   std::vector<Triplet> relation_terms;  // a few per QUAD8 face: not worth a residual-only path
   relations_.add_to_system(dofs_, u, relation_terms, residual);
   for (const ContactPoint& p : points_) {
@@ -371,8 +375,7 @@ void ContactProblem::add_point_residual(const ContactPoint& p, const PointCoeffi
 
 void ContactProblem::add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) {
   if (def_.geometry_loop == FixedPointOrNewton::Newton) pair(u);
-  if (statuses_in_newton())
-    for (auto& p : points_) p.active = p.paired && law_->status(multiplier(u, p), p.gap.value(u), rho(p.zone));
+  update_statuses_in_newton(u);
   relations_.add_to_system(dofs_, u, tangent, residual);
   const bool condensed = !coupled();
   // The points of a slave cell are consecutive and share their DOFs: their terms are

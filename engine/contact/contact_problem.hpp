@@ -69,6 +69,8 @@ class ContactProblem final : public ContactHook {
   int update_statuses(const Vector& u);
   void first_pairing_report(const Log& log) const;
   bool statuses_in_newton() const;
+  /// The statuses at iterate u, when they are updated inside Newton (else unchanged).
+  void update_statuses_in_newton(const Vector& u);
   /// Point p's terms of the residual: its gap gradient and its multiplier rows.
   void add_point_residual(const ContactPoint& p, const PointCoefficients& c, double lambda, double g,
                           Vector& residual) const;

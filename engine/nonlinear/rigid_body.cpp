@@ -163,20 +163,18 @@ std::optional<SolveError> find_unheld_body(const FeModel& model, const DofMap& d
     if (eig.info() != Eigen::Success || eig.eigenvalues()[0] > kUnheldEigenvalue) continue;
     // The free motion; name the node and component where it moves most (the first such).
     const Eigen::VectorXd alpha = eig.eigenvectors().col(0);
-    double largest = 0.0;
-    for (int n : nodes)
+    std::vector<double> motion(nodes.size() * static_cast<size_t>(dim));
+    for (size_t i = 0; i < nodes.size(); ++i)
       for (int k = 0; k < dim; ++k) {
         double v = 0.0;
-        for (int j = 0; j < n_modes; ++j) v += alpha[j] * mode(n, k, j);
-        largest = std::max(largest, std::abs(v));
+        for (int j = 0; j < n_modes; ++j) v += alpha[j] * mode(nodes[i], k, j);
+        motion[i * dim + k] = std::abs(v);
       }
-    for (int n : nodes)
-      for (int k = 0; k < dim; ++k) {
-        double v = 0.0;
-        for (int j = 0; j < n_modes; ++j) v += alpha[j] * mode(n, k, j);
-        if (std::abs(v) >= (1.0 - 1e-9) * largest && dofs.dof(n, k) >= 0)
-          return rigid_body_error(model, body, n, k, t);
-      }
+    const double largest = *std::max_element(motion.begin(), motion.end());
+    for (size_t i = 0; i < nodes.size(); ++i)
+      for (int k = 0; k < dim; ++k)
+        if (motion[i * dim + k] >= (1.0 - 1e-9) * largest && dofs.dof(nodes[i], k) >= 0)
+          return rigid_body_error(model, body, nodes[i], k, t);
   }
   return std::nullopt;
 }

@@ -886,32 +886,24 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
       // (The interface solver is CHOLMOD's factorisation of K_ff: no other backend is chosen.)
       const SolverKind backend = interface_use_ == 1 ? SolverKind::Cholmod : backend_for(kind);
-      // With no contact point active, the bodies must be held by Dirichlet
-      // conditions alone; the indefinite backends would not say when they are
-      // not (round-off hides the zero pivot), so check the elastic part once.
-      // Without contact the same holds for UMFPACK and MUMPS, which return some
-      // solution of a singular but consistent system (a free rigid translation).
-      // CHOLMOD's own factorisation stops on such a system (then diagnosed below):
-      // no second factorisation is spent on the check.
-      // The check is itself a Cholesky factorisation: an iterative backend, chosen because
-      // factorising does not fit, skips it (a singular system then fails to converge).
-      // A shared model skips it too: it would need the whole stiffness on one rank (MUMPS's
-      // null-pivot detection and the solve's residual still catch a singular system).
-      // The interface solver's reference is the same Cholesky factorisation of K_ff: done.
-      // Before any of these, a body that no Dirichlet condition holds in some rigid motion is
-      // found from the geometry alone: every backend, every rank of a shared model, no
-      // factorisation (a free body under MUMPS with a shared model was otherwise caught only
-      // when round-off left its null pivot an exact zero).
+      // With no contact point active, the bodies must be held by Dirichlet conditions (and
+      // relations) alone. Checked once, before any factorisation:
+      // - from the geometry, every backend and every rank of a shared model: a body that
+      //   some translation or rotation moves without moving a held equation (a free body under
+      //   MUMPS would otherwise be caught only when round-off left its null pivot a zero);
+      // - then, for what geometry does not see (a mechanism inside a body), by a Cholesky
+      //   factorisation of K_ff, for UMFPACK and MUMPS, which return some solution of a
+      //   singular but consistent system. CHOLMOD's own factorisation stops on such a system
+      //   (diagnosed below), the interface solver's reference is that factorisation, an
+      //   iterative backend chosen because factorising does not fit skips it, and so does a
+      //   shared model, which would need the whole stiffness on one rank.
       if (!rigid_checked_ && (!contact_ || contact_->n_active() == 0)) {
         std::vector<int> related;  // every unknown of a relation: counted as holding
         for (const Elimination& e : eliminated) {
           related.push_back(e.eq);
           for (const auto& term : e.terms) related.push_back(term.first);
         }
-        if (auto rigid = find_unheld_body(model_, dofs_, cons.free_index, related, t)) {
-          restore_elastic();
-          throw *rigid;
-        }
+        if (auto rigid = find_unheld_body(model_, dofs_, cons.free_index, related, t)) throw *rigid;
         if (interface_use_ != 1 && backend != SolverKind::Cholmod && backend != SolverKind::Petsc && !distributed_) {
           Stopwatch watch(stats_.assemble_seconds);
           restore_elastic();  // K_ff itself, without this iteration's terms
