@@ -4,7 +4,7 @@
 # state, DZ = -p/E at the top, checked to 1e-6). Each run is a whole `lunaster run` (mesh reading,
 # assembly, solve, start-up included) timed by /usr/bin/time: wall seconds, and the peak memory of
 # each rank (each rank under its own /usr/bin/time): the largest and their sum.
-# Usage: tests/bench/solver_scaling.sh [-n RANKS] [BUILD_DIR] SOLVER:N...
+# Usage: tests/bench/solver_scaling.sh [-n RANKS] [BUILD_DIR] SOLVER:N...   (BUILD_DIR: default build)
 #   SOLVER: MUMPS | CHOLMOD | GAMG (PETSc CG + GAMG) | BOOMER (PETSc CG + BoomerAMG) | LDLT_SP
 #   -n RANKS: run under `mpirun -np RANKS` (each rank its share of the PETSc matrix / MUMPS work).
 # Example: tests/bench/solver_scaling.sh build MUMPS:30 GAMG:30 GAMG:99
@@ -13,6 +13,7 @@ ranks=1
 if [ "${1:-}" = "-n" ]; then ranks=$2; shift 2; fi
 build=${1:-build}; shift || true
 root=$(cd "$(dirname "$0")/../.." && pwd)
+case $build in /*) bin=$build ;; *) bin=$root/$build ;; esac  # BUILD_DIR: relative to the checkout, or absolute
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 launch=()
 if [ "$ranks" -gt 1 ]; then
@@ -24,7 +25,7 @@ printf "%-8s %5s %6s %10s %9s %9s %9s %10s %10s\n" solver ranks N unknowns wall_
 for run in "$@"; do
   solver=${run%%:*}; n=${run##*:}
   mesh="$work/block_$n.med"
-  [ -f "$mesh" ] || "$root/$build/lunaster-meshgen" --block "hexa8:$n" -o "$mesh" >/dev/null
+  [ -f "$mesh" ] || "$bin/lunaster-meshgen" --block "hexa8:$n" -o "$mesh" >/dev/null
   case $solver in
     MUMPS|CHOLMOD) solveur="_F{ METHODE = '$solver' }" ;;
     GAMG|BOOMER|ML) solveur="_F{ METHODE = 'PETSC', ALGORITHME = 'CG', PRE_COND = '$solver', RESI_RELA = 1.0e-8 }" ;;
@@ -52,7 +53,7 @@ LUA
   # OMPI_COMM_WORLD_RANK); the wall time is the whole run's.
   rm -f "$work"/peak.*
   ranked=(sh -c '/usr/bin/time -f "%M" -o "$0/peak.${OMPI_COMM_WORLD_RANK:-0}" "$@"' "$work")
-  if ! /usr/bin/time -f "%e" -o "$work/time" "${launch[@]}" "${ranked[@]}" "$root/$build/lunaster" run "$deck" \
+  if ! /usr/bin/time -f "%e" -o "$work/time" "${launch[@]}" "${ranked[@]}" "$bin/lunaster" run "$deck" \
        --out "$work/out" -q > "$work/log" 2>&1; then
     echo "$solver N=$n failed:"; tail -5 "$work/log"; continue
   fi
