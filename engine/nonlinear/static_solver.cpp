@@ -834,9 +834,12 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       const bool maxi_ok = options_.resi_glob_maxi <= 0.0 || resi_maxi <= options_.resi_glob_maxi;
       const bool contact_ok = !contact_ || contact_->newton_converged();
       // A later pass needs no solve when the new pairing or statuses left the residual where
-      // the previous pass converged (at most twice it: e.g. a flat interface translated), not
-      // merely within RESI_GLOB_RELA: the solution keeps the accuracy Newton had reached.
-      const bool unchanged = iter > 0 || resi_maxi <= 2.0 * last_converged_maxi;
+      // the previous pass converged (at most twice it: e.g. a flat interface translated), or
+      // three orders below RESI_GLOB_RELA (an iterative solve's round-off moves a re-pairing by
+      // about its tolerance); merely within RESI_GLOB_RELA would accept the looser state a
+      // changed pairing leaves, and lose the accuracy Newton had reached.
+      const bool unchanged = iter > 0 || resi_maxi <= 2.0 * last_converged_maxi ||
+                             resi_rela <= 1e-3 * options_.resi_glob_rela;
       if (may_converge && unchanged && rela_ok && maxi_ok && contact_ok) {
         if (iter == 0) log_.info("  the new pairing or statuses leave the residual as it was: no solve in this pass");
         last_converged_maxi = resi_maxi;
