@@ -6,6 +6,7 @@
 #include "commands/concepts.hpp"
 #include "engine/fe/stress.hpp"
 #include "engine/nonlinear/nodal_forces.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::cmd {
 
@@ -54,20 +55,30 @@ ConceptPtr calc_champ(const Args& args, Session& session) {
   auto want = [&](const char* name) { return std::find(wanted.begin(), wanted.end(), name) != wanted.end(); };
   const engine::FeModel model = build_fe_model(*resu->modele, *resu->cham_mater, args, "RESULTAT");
   const engine::DofMap dofs(*model.mesh, model.volume_cells(), model.dim);
+  // A model shared among MPI ranks by STAT_NON_LINE: each rank computes the cells it held and
+  // the ranks sum their parts, so every rank has the whole fields (IMPR_RESU, TEST_RESU).
+  const std::vector<int>* cell_rank =
+      resu->cell_rank.size() == static_cast<size_t>(model.mesh->n_cells()) ? &resu->cell_rank : nullptr;
+  if (cell_rank) {
+    const long mine = std::count(cell_rank->begin(), cell_rank->end(), engine::parallel::rank());
+    const long all = static_cast<long>(cell_rank->size()) - std::count(cell_rank->begin(), cell_rank->end(), -1);
+    session.log().info("CALC_CHAMP: each rank computes the cells it held in STAT_NON_LINE (this rank " +
+                       std::to_string(mine) + " of " + std::to_string(all) + ")");
+  }
   for (size_t i : selected_steps(args, *resu)) {
     auto& step = resu->steps[i];
     const engine::Vector u = displacement_vector(dofs, step.nodal.at("DEPL"));
-    if (want("FORC_NODA")) step.nodal["FORC_NODA"] = engine::internal_nodal_forces(model, dofs, u);
+    if (want("FORC_NODA")) step.nodal["FORC_NODA"] = engine::internal_nodal_forces(model, dofs, u, cell_rank);
     if (want("REAC_NODA")) {
       try {
-        step.nodal["REAC_NODA"] = engine::reaction_forces(model, dofs, u, resu->loads, step.inst);
+        step.nodal["REAC_NODA"] = engine::reaction_forces(model, dofs, u, resu->loads, step.inst, cell_rank);
       } catch (const DeckError& err) {  // a FONC_MULT outside its range at this instant
         throw args.error("FORCE", "loads of RESULTAT defined at instant " + std::to_string(step.inst), err.message());
       }
     }
     const bool stresses = want("SIGM_ELNO") || want("SIGM_NOEU") || want("SIEQ_ELNO") || want("SIEQ_NOEU");
     if (!stresses) continue;
-    engine::ElnoField sigm = engine::compute_sigm_elno(model, dofs, u);
+    engine::ElnoField sigm = engine::compute_sigm_elno(model, dofs, u, cell_rank);
     if (want("SIGM_NOEU")) step.nodal["SIGM_NOEU"] = engine::elno_to_noeu(*model.mesh, sigm);
     if (want("SIEQ_ELNO") || want("SIEQ_NOEU")) {
       engine::ElnoField sieq = engine::compute_sieq_elno(sigm);

@@ -92,6 +92,9 @@ struct EvolNoli : Concept {
   /// The loads of the EXCIT that made it, with their multipliers: REAC_NODA subtracts them.
   engine::MechanicalLoads loads;
   engine::SolverStats stats;  ///< cost of the STAT_NON_LINE that made it (IMPR_MESURE)
+  /// With a model shared among MPI ranks: per mesh cell, the rank that held it (CALC_CHAMP
+  /// computes each cell there); empty otherwise.
+  std::vector<int> cell_rank;
   std::string type_name() const override { return "evol_noli"; }
 };
 

@@ -216,6 +216,7 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     }
   }
   result->stats = solver.stats();
+  result->cell_rank = solver.cell_ranks();
   return result;
 }
 

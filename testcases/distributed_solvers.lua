@@ -5,7 +5,9 @@
 --   1. SSNP121 I's geometry glued (meshes/glued3d_*.med: two unit cubes stacked, HEXA8 and HEXA20),
 --      ENCAST clamped, SURCHA moved by DZ = -0.1, E = 2e6, NU = 0: SIZZ = -1e5 Pa everywhere and
 --      DZ = -0.05 m on the interface, to 1e-8 with MUMPS and with PETSc (CG + BOOMER, CG + GAMG,
---      FGMRES + LDLT_SP) at RESI_RELA = 1e-12.
+--      FGMRES + LDLT_SP) at RESI_RELA = 1e-12; the reactions on ENCAST sum to 1e5 N (the unit
+--      face's). Under mpirun, CALC_CHAMP computes each cell on the rank that held it and the ranks
+--      sum their parts.
 --   2. The thick-walled cylinder of axis_thick_cylinder.lua (AXIS QUAD8, Lame solution) with MUMPS:
 --      u_r at the inner and outer radius to 1e-4 (the mesh's own error, as in that deck).
 --   3. Contact with MUMPS (under mpirun every rank pairs the whole surfaces and keeps the contact
@@ -20,14 +22,14 @@ L_INST = DEFI_LIST_REEL{ DEBUT = 0.0, INTERVALLE = _F{ JUSQU_A = 1.0, NOMBRE = 1
 -- VALE_CALC: lunaster's own values from a real serial run (non-regression, relative 1e-6), in the
 -- order of the checks below.
 local calc = {
-  ['hexa8 MUMPS'] = { -1.000000000000e+05, -1.000000000000e+05, -5.000000000000e-02, -5.000000000000e-02 },
-  ['hexa8 CG_BOOMER'] = { -1.000000000000e+05, -9.999999999996e+04, -5.000000000001e-02, -4.999999999999e-02 },
-  ['hexa8 CG_GAMG'] = { -1.000000000000e+05, -1.000000000000e+05, -5.000000000000e-02, -5.000000000000e-02 },
-  ['hexa8 FGMRES_LDLT_SP'] = { -1.000000000000e+05, -9.999999999996e+04, -5.000000000000e-02, -4.999999999999e-02 },
-  ['hexa20 MUMPS'] = { -1.000000000000e+05, -1.000000000000e+05, -5.000000000000e-02, -5.000000000000e-02 },
-  ['hexa20 CG_BOOMER'] = { -1.000000000003e+05, -9.999999999947e+04, -5.000000000003e-02, -4.999999999997e-02 },
-  ['hexa20 CG_GAMG'] = { -1.000000000007e+05, -9.999999999933e+04, -5.000000000010e-02, -4.999999999993e-02 },
-  ['hexa20 FGMRES_LDLT_SP'] = { -1.000000000003e+05, -9.999999999977e+04, -4.999999999998e-02, -4.999999999991e-02 },
+  ['hexa8 MUMPS'] = { -1.000000000000e+05, -1.000000000000e+05, -5.000000000000e-02, -5.000000000000e-02, 1.000000000000e+05 },
+  ['hexa8 CG_BOOMER'] = { -1.000000000000e+05, -9.999999999996e+04, -5.000000000001e-02, -4.999999999999e-02, 9.999999999999e+04 },
+  ['hexa8 CG_GAMG'] = { -1.000000000000e+05, -1.000000000000e+05, -5.000000000000e-02, -5.000000000000e-02, 1.000000000000e+05 },
+  ['hexa8 FGMRES_LDLT_SP'] = { -1.000000000000e+05, -9.999999999996e+04, -5.000000000000e-02, -4.999999999999e-02, 9.999999999998e+04 },
+  ['hexa20 MUMPS'] = { -1.000000000000e+05, -1.000000000000e+05, -5.000000000000e-02, -5.000000000000e-02, 1.000000000000e+05 },
+  ['hexa20 CG_BOOMER'] = { -1.000000000003e+05, -9.999999999947e+04, -5.000000000003e-02, -4.999999999997e-02, 9.999999999994e+04 },
+  ['hexa20 CG_GAMG'] = { -1.000000000007e+05, -9.999999999933e+04, -5.000000000010e-02, -4.999999999993e-02, 1.000000000000e+05 },
+  ['hexa20 FGMRES_LDLT_SP'] = { -1.000000000003e+05, -9.999999999977e+04, -4.999999999998e-02, -4.999999999991e-02, 9.999999999987e+04 },
   ['ssnp121i mortar MUMPS'] = { -1.000000000000e+05, -9.999999999999e+04, -5.000000000000e-02, -5.000000000000e-02 },
   ['axis quad8 MUMPS'] = { 9.533333331379e-04, 6.066666665685e-04 },
 }
@@ -47,7 +49,7 @@ for _, cell in ipairs({ 'hexa8', 'hexa20' }) do
   for _, name in ipairs({ 'MUMPS', 'CG_BOOMER', 'CG_GAMG', 'FGMRES_LDLT_SP' }) do
     local R = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CM, EXCIT = _F{ CHARGE = CH }, SOLVEUR = solvers[name],
                              COMPORTEMENT = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L_INST } }
-    R = CALC_CHAMP{ reuse = R, RESULTAT = R, CONTRAINTE = { 'SIGM_NOEU' } }
+    R = CALC_CHAMP{ reuse = R, RESULTAT = R, CONTRAINTE = { 'SIGM_NOEU' }, FORCE = { 'REAC_NODA' } }
     local label, k = cell .. ' ' .. name, 0
     local function t(cham, cmp, kind, refe, group)
       k = k + 1
@@ -58,6 +60,7 @@ for _, cell in ipairs({ 'hexa8', 'hexa20' }) do
     TEST_RESU{ RESU = {
       t('SIGM_NOEU', 'SIZZ', 'MIN', -1.0e5), t('SIGM_NOEU', 'SIZZ', 'MAX', -1.0e5),
       t('DEPL', 'DZ', 'MIN', -0.05, 'SURESC'), t('DEPL', 'DZ', 'MAX', -0.05, 'SURESC'),
+      t('REAC_NODA', 'DZ', 'SOMM', 1.0e5, 'ENCAST'),
     } }
   end
 end

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "engine/assembly/element_kernels.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::engine {
 namespace {
@@ -276,11 +277,14 @@ void assemble_stiffness(const FeModel& model, const DofMap& dofs, std::vector<Tr
   if (failure) std::rethrow_exception(failure);
 }
 
-void assemble_internal_forces(const FeModel& model, const DofMap& dofs, const Vector& u, Vector& f_int) {
+void assemble_internal_forces(const FeModel& model, const DofMap& dofs, const Vector& u, Vector& f_int,
+                              const std::vector<int>* cell_rank) {
   LUNASTER_ASSERT(model.mesh != nullptr, "assemble_internal_forces: model without mesh");
   f_int = Vector::Zero(dofs.n_dofs());
   const Mesh& mesh = *model.mesh;
+  const int rank = cell_rank ? parallel::rank() : 0;
   for (int cell : model.volume_cells()) {
+    if (cell_rank && (*cell_rank)[cell] != rank) continue;
     dispatch_volume(mesh.cell_types[cell], [&](auto nn, auto dim) {
       constexpr int NN = decltype(nn)::value, DIM = decltype(dim)::value, ND = NN * DIM;
       constexpr int NS = kernels::kVoigt<DIM>;

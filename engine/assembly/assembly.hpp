@@ -28,7 +28,10 @@ SparseMatrix assemble_stiffness_matrix(const FeModel& model, const DofMap& dofs,
                                        const std::vector<char>* owned_nodes = nullptr);
 
 /// f_int = K u for linear elasticity, assembled cell by cell (no global matrix needed).
-void assemble_internal_forces(const FeModel& model, const DofMap& dofs, const Vector& u, Vector& f_int);
+/// With `cell_rank` (per mesh cell, the rank whose cell it is: a shared model's partition),
+/// only this rank's cells are assembled: the ranks' vectors sum to the whole one.
+void assemble_internal_forces(const FeModel& model, const DofMap& dofs, const Vector& u, Vector& f_int,
+                              const std::vector<int>* cell_rank = nullptr);
 
 /// Adds the consistent nodal forces of a pressure `pressure` (Pa, positive
 /// pushes against the boundary cell's normal, as PRES_REP) on boundary cells

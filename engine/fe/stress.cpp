@@ -10,6 +10,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "engine/assembly/element_kernels.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::engine {
 namespace {
@@ -63,7 +64,8 @@ Eigen::MatrixXd gauss_stresses(const FeModel& model, const DofMap& dofs, const V
 
 }  // namespace
 
-ElnoField compute_sigm_elno(const FeModel& model, const DofMap& dofs, const Vector& u) {
+ElnoField compute_sigm_elno(const FeModel& model, const DofMap& dofs, const Vector& u,
+                            const std::vector<int>* cell_rank) {
   LUNASTER_ASSERT(model.mesh != nullptr, "compute_sigm_elno: model without mesh");
   const Mesh& mesh = *model.mesh;
   ElnoField f;
@@ -75,8 +77,9 @@ ElnoField compute_sigm_elno(const FeModel& model, const DofMap& dofs, const Vect
   f.cell_offsets.assign(mesh.n_cells() + 1, 0);
   for (int c = 0; c < mesh.n_cells(); ++c) f.cell_offsets[c + 1] = f.cell_offsets[c] + (is_volume[c] ? mesh.cell_n_nodes(c) : 0);
   f.values.assign(static_cast<size_t>(f.cell_offsets.back()) * nc, 0.0);
+  const int rank = cell_rank ? parallel::rank() : 0;
   for (int c = 0; c < mesh.n_cells(); ++c) {
-    if (!is_volume[c]) continue;
+    if (!is_volume[c] || (cell_rank && (*cell_rank)[c] != rank)) continue;
     const Eigen::MatrixXd sg = kernels::dispatch_volume(mesh.cell_types[c], [&](auto nn, auto dim) {
       return gauss_stresses<decltype(nn)::value, decltype(dim)::value>(model, dofs, u, c);
     });
@@ -87,6 +90,8 @@ ElnoField compute_sigm_elno(const FeModel& model, const DofMap& dofs, const Vect
     for (int a = 0; a < re.n_nodes; ++a)
       for (int k = 0; k < nc; ++k) f.values[(static_cast<size_t>(f.cell_offsets[c]) + a) * nc + k] = sn(a, k);
   }
+  // Each row was computed by one rank, the others hold zeros there: the sum is exact.
+  if (cell_rank) parallel::sum_over_ranks(f.values.data(), static_cast<long long>(f.values.size()));
   return f;
 }
 

@@ -9,8 +9,11 @@ namespace lunaster::engine {
 
 /// SIGM_ELNO: stresses at the nodes of every volume cell. Components
 /// SIXX SIYY SIZZ SIXY (2D) or SIXX SIYY SIZZ SIXY SIXZ SIYZ (3D), Pa.
-/// Computed at Gauss points and extrapolated to the nodes.
-ElnoField compute_sigm_elno(const FeModel& model, const DofMap& dofs, const Vector& u);
+/// Computed at Gauss points and extrapolated to the nodes. With `cell_rank` (per mesh cell,
+/// the rank whose cell it is: a shared model's partition) each rank computes its own cells
+/// and the ranks sum their rows (collective): every rank ends with the whole field.
+ElnoField compute_sigm_elno(const FeModel& model, const DofMap& dofs, const Vector& u,
+                            const std::vector<int>* cell_rank = nullptr);
 
 /// *_NOEU from *_ELNO: arithmetic mean over the cells sharing each node (code_aster's rule).
 NodalField elno_to_noeu(const Mesh& mesh, const ElnoField& elno);

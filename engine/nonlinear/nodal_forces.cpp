@@ -4,6 +4,7 @@
 
 #include "engine/assembly/assembly.hpp"
 #include "engine/core/error.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::engine {
 
@@ -20,6 +21,14 @@ NodalField as_nodal_field(const FeModel& model, const DofMap& dofs, const Vector
       if (eq >= 0) field.set(node, c, f[eq]);
     }
   return field;
+}
+
+/// B^T sigma over the cells, this rank's only with `cell_rank` and then summed over the ranks.
+Vector internal_forces(const FeModel& model, const DofMap& dofs, const Vector& u, const std::vector<int>* cell_rank) {
+  Vector f_int;
+  assemble_internal_forces(model, dofs, u, f_int, cell_rank);
+  if (cell_rank) parallel::sum_over_ranks(f_int.data(), static_cast<long long>(f_int.size()));
+  return f_int;
 }
 
 }  // namespace
@@ -39,16 +48,14 @@ Vector external_forces(const FeModel& model, const DofMap& dofs, const Mechanica
   return f;
 }
 
-NodalField internal_nodal_forces(const FeModel& model, const DofMap& dofs, const Vector& u) {
-  Vector f_int;
-  assemble_internal_forces(model, dofs, u, f_int);
-  return as_nodal_field(model, dofs, f_int);
+NodalField internal_nodal_forces(const FeModel& model, const DofMap& dofs, const Vector& u,
+                                 const std::vector<int>* cell_rank) {
+  return as_nodal_field(model, dofs, internal_forces(model, dofs, u, cell_rank));
 }
 
 NodalField reaction_forces(const FeModel& model, const DofMap& dofs, const Vector& u, const MechanicalLoads& loads,
-                           double t) {
-  Vector f_int;
-  assemble_internal_forces(model, dofs, u, f_int);
+                           double t, const std::vector<int>* cell_rank) {
+  const Vector f_int = internal_forces(model, dofs, u, cell_rank);
   return as_nodal_field(model, dofs, f_int - external_forces(model, dofs, loads, t));
 }
 

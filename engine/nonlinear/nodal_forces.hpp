@@ -17,12 +17,15 @@ Vector external_forces(const FeModel& model, const DofMap& dofs, const Mechanica
 /// Internal nodal forces B^T sigma (N, or N per unit thickness in 2D) of displacement `u`,
 /// assembled by the same element kernels as the solver's internal forces, as a nodal
 /// field DX, DY[, DZ] defined on every node carrying displacement unknowns in `dofs`.
-NodalField internal_nodal_forces(const FeModel& model, const DofMap& dofs, const Vector& u);
+/// With `cell_rank` (a shared model's partition, per mesh cell) each rank assembles its own
+/// cells and the ranks sum (collective): every rank ends with the whole field.
+NodalField internal_nodal_forces(const FeModel& model, const DofMap& dofs, const Vector& u,
+                                 const std::vector<int>* cell_rank = nullptr);
 
 /// Reactions: internal forces minus the external loads at instant t. What remains is what
 /// the supports (DDL_IMPO, linear relations) and, where surfaces touch, contact exert on the
 /// body, with the sign of a force the body applies on them (code_aster's REAC_NODA).
 NodalField reaction_forces(const FeModel& model, const DofMap& dofs, const Vector& u, const MechanicalLoads& loads,
-                           double t);
+                           double t, const std::vector<int>* cell_rank = nullptr);
 
 }  // namespace lunaster::engine

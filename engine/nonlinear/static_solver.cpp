@@ -181,6 +181,7 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   for (auto& s : solvers_) s.reset();
   stats_.n_dofs = n;
   distributed_ = shares_model();
+  cell_rank_.clear();
   ghost_ = SparseMatrix();
   ghost_nodes_.clear();
   elastic_in_solver_ = false;
@@ -195,6 +196,8 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
       const std::vector<int> cells = model_.volume_cells();
       const CellPartition part = partition_cells(mesh, cells, model_.dim);
       node_owner_ = part.node_owner;
+      cell_rank_.assign(mesh.n_cells(), -1);
+      for (size_t i = 0; i < cells.size(); ++i) cell_rank_[cells[i]] = part.cell_part[i];
       owned_nodes_.assign(mesh.n_nodes(), 0);
       std::vector<int> nodes_of(part.parts, 0), cells_of(part.parts, 0);
       for (int v = 0; v < mesh.n_nodes(); ++v)

@@ -89,6 +89,9 @@ class StaticSolver {
   const DofMap& dofs() const { return dofs_; }
   /// Cost of the last `run` (also filled when it throws).
   const SolverStats& stats() const { return stats_; }
+  /// With a model shared among the ranks: per mesh cell, the rank whose volume cell it is
+  /// (-1 for other cells), for post-processing where the cells live; empty otherwise.
+  const std::vector<int>& cell_ranks() const { return cell_rank_; }
 
  private:
   /// Advances u from instant t0 to t1, splitting the step on ConvergenceError.
@@ -182,6 +185,7 @@ class StaticSolver {
   const LinearSolver* elastic_holder_ = nullptr;
   std::vector<int> node_owner_;
   std::vector<char> owned_nodes_;
+  std::vector<int> cell_rank_;  ///< see cell_ranks()
   /// One solver per backend for the whole run (each keeps its analysis while the pattern holds).
   std::unique_ptr<LinearSolver> solvers_[kSolverKinds];
   std::unique_ptr<SystemCache> system_;

@@ -124,6 +124,12 @@ def verify_suite(exe, source, scratch):
     n_shared = b[shared]["output"].count("model shared among 2 ranks (Scotch)")
     check(n_shared == 11, f"{shared}: each of its 11 solves (2 with contact) shares the model among the 2 ranks ({n_shared})")
     check("model shared" not in a[shared]["output"], f"{shared}: a serial run shares nothing")
+    # Its CALC_CHAMP (SIGM_NOEU, REAC_NODA) computes each cell on the rank that held it.
+    split = re.findall(r"CALC_CHAMP: each rank computes the cells it held in STAT_NON_LINE \(this rank (\d+) of (\d+)\)",
+                       b[shared]["output"])
+    check(len(split) == 8 and all(0 < int(m) < int(n) for m, n in split),
+          f"{shared}: each of its 8 CALC_CHAMP computes a part of the cells on rank 0 ({split})")
+    check("CALC_CHAMP: each rank" not in a[shared]["output"], f"{shared}: a serial CALC_CHAMP computes every cell")
 
     # The comparison can fail: a value off by 1e-7, a check gone, a status changed.
     name = next(n for n in sorted(b) if test_lines(b[n]["output"]))
