@@ -283,6 +283,7 @@ SystemLayout StaticSolver::system_layout(const Constraints& cons, const std::vec
   const Mesh& mesh = *model_.mesh;
   SystemLayout layout;
   layout.dim = model_.dim;
+  for (int c : model_.volume_cells()) layout.quadratic = layout.quadratic || cell_info(mesh.cell_types[c]).order > 1;
   layout.block.assign(cons.n_free, -1);
   layout.component.assign(cons.n_free, 0);
   std::vector<char> outside(cons.n_free, 0);

@@ -47,6 +47,10 @@ struct SystemLayout {
   std::vector<int> block;       ///< per equation: its node block, -1 outside any (multipliers, condensed)
   std::vector<int> component;   ///< per equation in a block: its component, 0..dim-1
   std::vector<double> coords;   ///< dim per block: the node's coordinates
+  /// The model has quadratic volume cells (HEXA20, TETRA10 ...): their stiffness couples a
+  /// node to many more, with couplings of both signs, and multigrid's strength threshold
+  /// follows (see the PETSc solver).
+  bool quadratic = false;
   /// A model shared among the ranks of an MPI run: per equation, the rank whose matrix
   /// holds its column complete (and its row: the systems are symmetric). Each rank's matrix
   /// then holds only its own columns, and the system is the sum of the ranks' matrices.

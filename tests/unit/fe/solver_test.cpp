@@ -1,6 +1,8 @@
 // Linear solver backends against a dense Eigen solve; singular matrices.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <Eigen/Dense>
 #include <SuiteSparse_config.h>
 
@@ -263,6 +265,32 @@ TEST(Solvers, PetscMultigridOnNodeBlocks) {
     s->set_layout(layout);
     s->factorize(a, MatrixKind::SymmetricPositiveDefinite);
     check_solution(a, s->solve(rhs(n)), s->name() + " on node blocks");
+  }
+}
+
+TEST(Solvers, BoomerStrengthFollowsTheCells) {
+  // The strength threshold is 0.7 for a model with quadratic cells and 0.5 otherwise, in the
+  // same process (PETSc's options database is shared: the second system must not keep the
+  // first one's value); the l1 Gauss-Seidel sweeps forward down and backward up.
+  const int n = 60;
+  const SparseMatrix a = spd_matrix(n);
+  using S = IterativeSettings;
+  for (bool quadratic : {true, false, true}) {
+    SystemLayout layout;
+    layout.dim = 2;
+    for (int b = 0; b < n / 2; ++b) layout.coords.insert(layout.coords.end(), {0.1 * b, 0.05 * (b % 3)});
+    for (int eq = 0; eq < n; ++eq) layout.block.push_back(eq / 2), layout.component.push_back(eq % 2);
+    layout.quadratic = quadratic;
+    S settings = petsc(S::Krylov::CG, S::Preconditioner::Boomer);
+    std::vector<std::string> lines;
+    settings.history = [&lines](const std::string& line) { lines.push_back(line); };
+    auto s = make_linear_solver(SolverKind::Petsc, settings);
+    s->set_layout(layout);
+    s->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+    check_solution(a, s->solve(rhs(n)), "BOOMER");
+    const std::string expected = std::string("    BoomerAMG: strength threshold ") + (quadratic ? "0.7" : "0.5") +
+                                 ", smoothing l1-Gauss-Seidel down, backward-l1-Gauss-Seidel up";
+    EXPECT_NE(std::find(lines.begin(), lines.end(), expected), lines.end()) << (lines.empty() ? "" : lines[0]);
   }
 }
 
