@@ -505,13 +505,18 @@ void PetscSolver::set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* t
         if (value && !named_by_user(name)) PetscOptionsSetValue(nullptr, name, value);
       }
       if (settings_.history) {  // what this system's V-cycle uses (INFO = 2)
-        char threshold[32] = "?", down[64] = "?", up[64] = "?";
-        PetscBool found = PETSC_FALSE;
-        PetscOptionsGetString(nullptr, nullptr, "-pc_hypre_boomeramg_strong_threshold", threshold, sizeof threshold, &found);
-        PetscOptionsGetString(nullptr, nullptr, "-pc_hypre_boomeramg_relax_type_down", down, sizeof down, &found);
-        PetscOptionsGetString(nullptr, nullptr, "-pc_hypre_boomeramg_relax_type_up", up, sizeof up, &found);
-        settings_.history(std::string("    BoomerAMG: strength threshold ") + threshold + ", smoothing " + down +
-                          " down, " + up + " up");
+        auto option = [](const char* name) {
+          char value[64] = "";
+          PetscBool found = PETSC_FALSE;
+          PetscOptionsGetString(nullptr, nullptr, name, value, sizeof value, &found);
+          return std::string(found ? value : "hypre's default");
+        };
+        const std::string smoothing =
+            relaxation_named ? option("-pc_hypre_boomeramg_relax_type_all") + " both ways"
+                             : option("-pc_hypre_boomeramg_relax_type_down") + " down, " +
+                                   option("-pc_hypre_boomeramg_relax_type_up") + " up";
+        settings_.history("    BoomerAMG: strength threshold " + option("-pc_hypre_boomeramg_strong_threshold") +
+                          ", smoothing " + smoothing);
       }
       break;
     }
