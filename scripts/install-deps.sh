@@ -10,6 +10,7 @@ PACKAGES=(
   libsuitesparse-dev          # CHOLMOD (SPD), UMFPACK (general)
   libmumps-dev                # MUMPS, MPI build: one process or the ranks of mpirun
   libpetsc-real-dev           # PETSc (Krylov solvers, algebraic multigrid: GAMG, hypre BoomerAMG, ML)
+  libhypre-dev                # hypre: BoomerAMG's matrix built directly (PETSC, PRE_COND='BOOMER')
   openmpi-bin                 # mpirun, for decks run on several processes
   libscotch-dev               # Scotch: a model's cells shared among the ranks of an MPI run
   libopenblas-pthread-dev     # OpenBLAS: the BLAS/LAPACK under CHOLMOD, UMFPACK and MUMPS

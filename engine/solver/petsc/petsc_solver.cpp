@@ -10,6 +10,7 @@
 #include <mpi.h>
 #include <petscksp.h>
 #include <petscpc.h>
+#include <petscmathypre.h>
 
 #include <algorithm>
 #include <cmath>
@@ -184,6 +185,15 @@ class PetscSolver final : public LinearSolver {
   void from_petsc(Vec v, Vector& x) const;
   void number_rows(int n_equations);
   void build_matrix(const SparseMatrix& a, MatrixKind kind);
+  /// BoomerAMG's matrix: hypre's own (ParCSR), built from `a` directly. PCHYPRE would convert
+  /// an AIJ matrix into one and keep both; this way the system is held once on PETSc's side.
+  void build_hypre_matrix(const SparseMatrix& a, MatrixKind kind);
+  /// Calls row(r, entries) for each of this rank's rows r (0-based, local) with its entries
+  /// (column in PETSc's numbering, value), sorted by column unless `sorted` is false; `a`
+  /// is symmetric.
+  template <class Row>
+  void for_each_local_row(const SparseMatrix& a, Row row, bool sorted = true) const;
+  void set_symmetry_options(MatrixKind kind);
   void attach_near_null_space();
   bool multigrid() const {
     return settings_.preconditioner == Settings::Preconditioner::Gamg ||
@@ -292,6 +302,30 @@ void PetscSolver::number_rows(int n_equations) {
   for (int eq = 0; eq < n_equations; ++eq) eq_of_[row_of_[eq]] = eq;
 }
 
+template <class Row>
+void PetscSolver::for_each_local_row(const SparseMatrix& a, Row row, bool sorted) const {
+  const int* outer = a.outerIndexPtr();
+  const int* inner = a.innerIndexPtr();
+  const double* value = a.valuePtr();
+  std::vector<std::pair<PetscInt, double>> entries;
+  for (PetscInt r = 0; r < local_rows_; ++r) {
+    const int eq = eq_of_[first_row_ + r];
+    entries.clear();
+    if (eq < 0) {
+      entries.emplace_back(first_row_ + r, 1.0);  // padding: an identity row
+    } else {
+      for (int k = outer[eq]; k < outer[eq + 1]; ++k) entries.emplace_back(row_of_[inner[k]], value[k]);
+      if (sorted && bs_ > 1) std::sort(entries.begin(), entries.end());
+    }
+    row(r, entries);
+  }
+}
+
+void PetscSolver::set_symmetry_options(MatrixKind kind) {
+  if (kind != MatrixKind::General) check(MatSetOption(a_, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+  if (kind == MatrixKind::SymmetricPositiveDefinite) check(MatSetOption(a_, MAT_SPD, PETSC_TRUE), "MatSetOption");
+}
+
 void PetscSolver::build_matrix(const SparseMatrix& a, MatrixKind kind) {
   // Rows of this rank as compressed rows. The system matrices are symmetric with both
   // triangles stored, so A's compressed columns are its compressed rows; a general
@@ -307,8 +341,6 @@ void PetscSolver::build_matrix(const SparseMatrix& a, MatrixKind kind) {
   number_rows(static_cast<int>(a.rows()));
   const int size = parallel::size();
   const int* outer = rows->outerIndexPtr();
-  const int* inner = rows->innerIndexPtr();
-  const double* value = rows->valuePtr();
   // The rows in PETSc's numbering, sized exactly (no growth: at 3e6 unknowns a doubling
   // vector would hold a third more than the matrix).
   std::vector<PetscInt>& ia = ia_;
@@ -325,18 +357,9 @@ void PetscSolver::build_matrix(const SparseMatrix& a, MatrixKind kind) {
   va.shrink_to_fit();
   ja.reserve(ia.back());
   va.reserve(ia.back());
-  std::vector<std::pair<PetscInt, double>> row;
-  for (PetscInt r = 0; r < local_rows_; ++r) {
-    const int eq = eq_of_[first_row_ + r];
-    row.clear();
-    if (eq < 0) {
-      row.emplace_back(first_row_ + r, 1.0);  // padding: an identity row
-    } else {
-      for (int k = outer[eq]; k < outer[eq + 1]; ++k) row.emplace_back(row_of_[inner[k]], value[k]);
-      if (bs_ > 1) std::sort(row.begin(), row.end());
-    }
-    for (const auto& [col, v] : row) ja.push_back(col), va.push_back(v);
-  }
+  for_each_local_row(*rows, [&](PetscInt, const std::vector<std::pair<PetscInt, double>>& entries) {
+    for (const auto& [col, v] : entries) ja.push_back(col), va.push_back(v);
+  });
   if (size == 1) {
     // One process: PETSc works on these arrays (kept alive by the solver), no copy.
     check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, n_, n_, ia.data(), ja.data(), va.data(), &a_),
@@ -352,8 +375,72 @@ void PetscSolver::build_matrix(const SparseMatrix& a, MatrixKind kind) {
     std::vector<PetscInt>().swap(ja_);
     std::vector<PetscScalar>().swap(va_);
   }
-  if (kind != MatrixKind::General) check(MatSetOption(a_, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
-  if (kind == MatrixKind::SymmetricPositiveDefinite) check(MatSetOption(a_, MAT_SPD, PETSC_TRUE), "MatSetOption");
+  set_symmetry_options(kind);
+}
+
+void PetscSolver::build_hypre_matrix(const SparseMatrix& a, MatrixKind kind) {
+  LUNASTER_ASSERT(kind != MatrixKind::General, "PETSc: BoomerAMG's matrix must be symmetric");
+  number_rows(static_cast<int>(a.rows()));
+  // hypre's ParCSR holds this rank's rows as two CSR blocks: "diag", the columns of this
+  // rank's rows (local numbering, the diagonal entry first in each row, as hypre's
+  // smoothers read it) and "offd", the other columns (numbered in col_map_offd, the sorted
+  // global columns). First the sizes, then the values written in place: the matrix is never
+  // held twice, by us or by hypre (whose IJ interface would buffer it).
+  const PetscInt first = first_row_, last = first_row_ + local_rows_;
+  const auto local = [&](PetscInt col) { return col >= first && col < last; };
+  HYPRE_Int nnz_diag = 0, nnz_offd = 0;
+  std::vector<HYPRE_Int> offd_of(static_cast<size_t>(n_), -1);  // global column -> offd column
+  for_each_local_row(a, [&](PetscInt, const std::vector<std::pair<PetscInt, double>>& entries) {
+    for (const auto& entry : entries) {
+      if (local(entry.first)) ++nnz_diag;
+      else ++nnz_offd, offd_of[entry.first] = 0;
+    }
+  }, false);
+  HYPRE_Int n_offd = 0;
+  for (PetscInt col = 0; col < n_; ++col)
+    if (offd_of[col] == 0) offd_of[col] = n_offd++;
+  HYPRE_BigInt starts[2] = {static_cast<HYPRE_BigInt>(first), static_cast<HYPRE_BigInt>(last)};
+  hypre_ParCSRMatrix* h = hypre_ParCSRMatrixCreate(PETSC_COMM_WORLD, n_, n_, starts, starts, n_offd, nnz_diag, nnz_offd);
+  // Ours until PETSc takes it (an exception below frees it).
+  std::unique_ptr<hypre_ParCSRMatrix, HYPRE_Int (*)(hypre_ParCSRMatrix*)> owned(h, hypre_ParCSRMatrixDestroy);
+  if (!h || hypre_ParCSRMatrixInitialize(h) != 0) {
+    throw SolveError("hypre: the matrix for BoomerAMG could not be allocated (" + std::to_string(nnz_diag + nnz_offd) +
+                     " entries on this rank)");
+  }
+  hypre_CSRMatrix* diag = hypre_ParCSRMatrixDiag(h);
+  hypre_CSRMatrix* offd = hypre_ParCSRMatrixOffd(h);
+  HYPRE_Int *di = hypre_CSRMatrixI(diag), *dj = hypre_CSRMatrixJ(diag);
+  HYPRE_Int *oi = hypre_CSRMatrixI(offd), *oj = hypre_CSRMatrixJ(offd);
+  HYPRE_Complex *dv = hypre_CSRMatrixData(diag), *ov = hypre_CSRMatrixData(offd);
+  HYPRE_BigInt* col_map = hypre_ParCSRMatrixColMapOffd(h);
+  for (PetscInt col = 0; col < n_; ++col)
+    if (offd_of[col] >= 0) col_map[offd_of[col]] = static_cast<HYPRE_BigInt>(col);
+  di[0] = oi[0] = 0;
+  for_each_local_row(a, [&](PetscInt r, const std::vector<std::pair<PetscInt, double>>& entries) {
+    HYPRE_Int d = di[r], o = oi[r];
+    bool diagonal = false;
+    for (const auto& [col, v] : entries) {
+      if (local(col)) {
+        if (col == first + r) {  // the diagonal first: shift the row's earlier entries along
+          for (HYPRE_Int k = d; k > di[r]; --k) dj[k] = dj[k - 1], dv[k] = dv[k - 1];
+          dj[di[r]] = static_cast<HYPRE_Int>(r), dv[di[r]] = v;
+          diagonal = true;
+        } else {
+          dj[d] = static_cast<HYPRE_Int>(col - first), dv[d] = v;
+        }
+        ++d;
+      } else {
+        oj[o] = offd_of[col], ov[o] = v, ++o;
+      }
+    }
+    LUNASTER_ASSERT(diagonal, "hypre: a row of the system has no diagonal entry");
+    di[r + 1] = d, oi[r + 1] = o;
+  });
+  std::vector<HYPRE_Int>().swap(offd_of);
+  check(MatCreateFromParCSR(h, MATHYPRE, PETSC_OWN_POINTER, &a_), "MatCreateFromParCSR");
+  owned.release();
+  check(MatSetBlockSize(a_, bs_), "MatSetBlockSize");  // BoomerAMG's number of functions
+  set_symmetry_options(kind);
 }
 
 void PetscSolver::attach_near_null_space() {
@@ -430,7 +517,8 @@ void PetscSolver::set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* t
                             {"a saddle-point system (contact multipliers) needs a single-precision factorisation as "
                              "preconditioner with FGMRES or GMRES"});
   release();
-  build_matrix(a, kind);
+  if (settings_.preconditioner == Settings::Preconditioner::Boomer) build_hypre_matrix(a, kind);
+  else build_matrix(a, kind);
   attach_near_null_space();
   Vec local = nullptr;
   check(MatCreateVecs(a_, &local, nullptr), "MatCreateVecs");
