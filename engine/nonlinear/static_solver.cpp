@@ -345,17 +345,32 @@ SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err
 
 SolverKind StaticSolver::backend_for(MatrixKind kind) {
   if (options_.solver == SolverKind::Petsc) return SolverKind::Petsc;  // iterative: any kind, as asked
-  // A large 3D SPD system: MUMPS beat CHOLMOD on the 2.8e5-unknown HEXA8/HEXA20 mortar benchmark
-  // (factorisation 63 s and 6.6 GB against 139 s and 11 GB; CHOLMOD's best ordering there, METIS
-  // on the node graph, still filled 8.8e8 entries). Below, CHOLMOD stays faster.
+  // A large 3D SPD system: a factorisation fills too much. On the 2.8e5-unknown HEXA8/HEXA20
+  // mortar benchmark CHOLMOD took 139 s and 11 GB (its best ordering, METIS on the node graph,
+  // still filled 8.8e8 entries), MUMPS 63 s and 6.6 GB, PETSc's CG with BoomerAMG 20-25 s and
+  // 1.3 GB. Below, CHOLMOD stays faster. AUTO's CG solves to a relative residual of 1e-12 (the
+  // mortar multipliers of that benchmark needed it to stay within 1e-8) in at most 500
+  // iterations, and MUMPS takes over if it fails: a choice of ours must not stop a run that a
+  // factorisation would have done. A process of an MPI run keeps MUMPS (the same values on
+  // every rank, as with CHOLMOD below this size).
   constexpr int kLargeSpd3d = 100000;
   if (options_.auto_solver && options_.solver == SolverKind::Cholmod && kind == MatrixKind::SymmetricPositiveDefinite &&
       model_.dim == 3 && stats_.n_free > kLargeSpd3d) {
+    const bool iterative = parallel::size() == 1;
     if (!backend_note_logged_)
-      log_.info("SOLVEUR METHODE='AUTO': MUMPS for a 3D system of " + std::to_string(stats_.n_free) +
-                " unknowns (its orderings fill less than CHOLMOD's at this size)");
+      log_.info("SOLVEUR METHODE='AUTO': " +
+                std::string(iterative ? "PETSc CG + BoomerAMG (RESI_RELA 1e-12, MUMPS if it does not converge)"
+                                      : "MUMPS") +
+                " for a 3D system of " + std::to_string(stats_.n_free) +
+                " unknowns (a factorisation fills too much at this size)");
     backend_note_logged_ = true;
-    return SolverKind::Mumps;
+    if (!iterative) return SolverKind::Mumps;
+    options_.iterative = IterativeSettings{};
+    options_.iterative.krylov = IterativeSettings::Krylov::CG;
+    options_.iterative.preconditioner = IterativeSettings::Preconditioner::Boomer;
+    options_.iterative.relative_residual = 1e-12;
+    options_.iterative.max_iterations = 500;
+    return SolverKind::Petsc;
   }
   if (options_.solver != SolverKind::Cholmod || kind == MatrixKind::SymmetricPositiveDefinite) return options_.solver;
   // Contact with multipliers gives a symmetric indefinite system: MUMPS (LDLT with
@@ -953,7 +968,11 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       if (!via_interface && !backend_solver) {
         IterativeSettings settings = options_.iterative;
         if (options_.krylov_history) settings.history = [this](const std::string& line) { log_.info(line); };
-        backend_solver = make_linear_solver(backend, settings);
+        if (options_.auto_solver && backend == SolverKind::Petsc)
+          backend_solver = make_iterative_with_fallback(settings, SolverKind::Mumps,
+                                                        [this](const std::string& line) { log_.info(line); });
+        else
+          backend_solver = make_linear_solver(backend, settings);
       }
       LinearSolver* const solver = via_interface ? interface_.get() : backend_solver.get();
       const bool iterative = solver->iterative();

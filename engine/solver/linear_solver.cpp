@@ -22,6 +22,76 @@ std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind, const Iterativ
   throw InternalError("make_linear_solver: unknown solver kind");
 }
 
+namespace {
+
+class IterativeWithFallback final : public LinearSolver {
+ public:
+  IterativeWithFallback(const IterativeSettings& settings, SolverKind direct,
+                        std::function<void(const std::string&)> note)
+      : iterative_(make_linear_solver(SolverKind::Petsc, settings)), direct_kind_(direct), note_(std::move(note)) {}
+
+  void factorize(const SparseMatrix& a, MatrixKind kind) override {
+    a_ = &a, kind_ = kind;
+    if (!fallen_) {
+      try {
+        iterative_->factorize(a, kind);
+        return;
+      } catch (const SolveError& err) {
+        if (err.out_of_memory()) throw;
+        fall_back(err.message());
+      }
+    }
+    direct_->factorize(a, kind);
+  }
+  Vector solve(const Vector& b) const override {
+    if (!fallen_) {
+      try {
+        return iterative_->solve(b);
+      } catch (const SolveError& err) {
+        if (err.failure().what != Failure::What::IterativeSolve || !a_) throw;
+        fall_back(err.message());
+        direct_->factorize(*a_, kind_);
+      }
+    }
+    return direct_->solve(b);
+  }
+  std::string name() const override {
+    return fallen_ ? direct_->name() + " (after " + iterative_->name() + ")" : iterative_->name();
+  }
+  int failed_column() const override { return fallen_ ? direct_->failed_column() : -1; }
+  bool iterative() const override { return !fallen_; }
+  void set_layout(SystemLayout layout) override {
+    if (!fallen_) iterative_->set_layout(std::move(layout));
+  }
+  bool multiply(const Vector& x, Vector& y) const override { return !fallen_ && iterative_->multiply(x, y); }
+  int iterations() const override { return fallen_ ? 0 : iterative_->iterations(); }
+
+ private:
+  void fall_back(const std::string& why) const {
+    fallen_ = true;
+    direct_ = make_linear_solver(direct_kind_);
+    if (note_)
+      note_("  SOLVEUR METHODE='AUTO': " + iterative_->name() + " failed (" + why + "); " + direct_->name() +
+            " factorises the system from now on");
+  }
+
+  std::unique_ptr<LinearSolver> iterative_;
+  SolverKind direct_kind_;
+  std::function<void(const std::string&)> note_;
+  // solve() is const for its callers; a failed iterative solve changes backend there.
+  mutable std::unique_ptr<LinearSolver> direct_;
+  mutable bool fallen_ = false;
+  const SparseMatrix* a_ = nullptr;
+  MatrixKind kind_ = MatrixKind::SymmetricPositiveDefinite;
+};
+
+}  // namespace
+
+std::unique_ptr<LinearSolver> make_iterative_with_fallback(const IterativeSettings& iterative, SolverKind direct,
+                                                           std::function<void(const std::string&)> note) {
+  return std::make_unique<IterativeWithFallback>(iterative, direct, std::move(note));
+}
+
 double relative_residual(const SparseMatrix& a, const Vector& x, const Vector& b) {
   return relative_residual([&a](const Vector& v) -> Vector { return a * v; }, x, b);
 }

@@ -99,6 +99,13 @@ class LinearSolver {
 
 /// Builds a backend. Never returns null. `iterative` is read by SolverKind::Petsc only.
 std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind, const IterativeSettings& iterative = {});
+/// An iterative backend the driver chose (SOLVEUR METHODE='AUTO'), not the deck: PETSc with
+/// `iterative`, and when it cannot build its preconditioner or a solve does not converge,
+/// a factorisation by `direct` of the same matrix instead, from then on. `note` is told
+/// why. The matrix given to factorize() must stay alive and unchanged until the next
+/// factorize(): a failed solve factorises it then.
+std::unique_ptr<LinearSolver> make_iterative_with_fallback(const IterativeSettings& iterative, SolverKind direct,
+                                                           std::function<void(const std::string&)> note);
 
 /// y = A x for an operator A known only through its product (e.g. a matrix shared among
 /// MPI ranks, the product then summed over them).

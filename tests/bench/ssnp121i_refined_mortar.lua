@@ -1,7 +1,7 @@
 -- Benchmark (not a verification deck): ssnp121i_refined.lua with mortar contact (DEFI_CONT,
 -- APPARIEMENT='MORTAR', ALGO_CONT='LAGRANGIEN'): the same mesh (V1 50x50x10 HEXA8 under V2
 -- 40x40x10 HEXA20, about 3.2e5 unknowns), QUAD4 slave (2500 cells) on QUAD8 master (1600 cells),
--- non-matching. The active slave displacements are eliminated: the system is SPD (CHOLMOD).
+-- non-matching. The active slave displacements are eliminated: the system is SPD (SOLVEUR AUTO: CG + BoomerAMG).
 -- Generate the mesh next to this deck first:
 --   build/lunaster-meshgen --v1 hexa8:5x5x1 --v2 hexa20:4x4x1 --refine 10 -o tests/bench/ssnp121i_refined.med
 -- then: /usr/bin/time -v build/lunaster run tests/bench/ssnp121i_refined_mortar.lua -q

@@ -220,6 +220,46 @@ TEST(Solvers, PetscSaddlePointNeedsAFactorisationAsPreconditioner) {
   }
 }
 
+TEST(Solvers, AutoIterativeFallsBackToAFactorisation) {
+  // SOLVEUR METHODE='AUTO' may pick CG for a large system; where CG fails, MUMPS factorises
+  // the same matrix and the run goes on, with a note saying why.
+  using S = IterativeSettings;
+  std::vector<std::string> notes;
+  auto note = [&notes](const std::string& line) { notes.push_back(line); };
+  // A solve that does not converge (two unpreconditioned CG iterations).
+  const SparseMatrix a = spd_matrix(200);
+  auto s = make_iterative_with_fallback(petsc(S::Krylov::CG, S::Preconditioner::None, 2), SolverKind::Mumps, note);
+  s->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+  EXPECT_TRUE(s->iterative());
+  check_solution(a, s->solve(rhs(200)), "CG, then MUMPS");
+  EXPECT_FALSE(s->iterative());
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("did not converge"), std::string::npos) << notes[0];
+  EXPECT_NE(notes[0].find("MUMPS factorises the system from now on"), std::string::npos) << notes[0];
+  EXPECT_NE(s->name().find("MUMPS (after PETSc CG"), std::string::npos) << s->name();
+  // From then on the factorisation serves every matrix.
+  const SparseMatrix b = spd_matrix(120);
+  s->factorize(b, MatrixKind::SymmetricPositiveDefinite);
+  check_solution(b, s->solve(rhs(120)), "MUMPS after the fallback");
+  EXPECT_EQ(notes.size(), 1u);
+  // A preconditioner that cannot be built (multigrid on a saddle point): MUMPS at once.
+  notes.clear();
+  const SparseMatrix saddle = saddle_matrix(30);
+  auto t = make_iterative_with_fallback(petsc(S::Krylov::CG, S::Preconditioner::Boomer), SolverKind::Mumps, note);
+  t->factorize(saddle, MatrixKind::SymmetricIndefinite);
+  check_solution(saddle, t->solve(rhs(32)), "saddle point, MUMPS");
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("saddle point"), std::string::npos) << notes[0];
+  // CG that converges: no fallback.
+  notes.clear();
+  auto u = make_iterative_with_fallback(petsc(S::Krylov::CG, S::Preconditioner::Jacobi), SolverKind::Mumps, note);
+  u->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+  check_solution(a, u->solve(rhs(200)), "CG + JACOBI");
+  EXPECT_TRUE(u->iterative());
+  EXPECT_GT(u->iterations(), 0);
+  EXPECT_TRUE(notes.empty());
+}
+
 TEST(Solvers, PetscSolveThatMissesItsToleranceFails) {
   using S = IterativeSettings;
   const SparseMatrix a = spd_matrix(200);
