@@ -390,11 +390,13 @@ void PetscSolver::build_hypre_matrix(const SparseMatrix& a, MatrixKind kind) {
   const auto local = [&](PetscInt col) { return col >= first && col < last; };
   HYPRE_Int nnz_diag = 0, nnz_offd = 0;
   std::vector<HYPRE_Int> offd_of(static_cast<size_t>(n_), -1);  // global column -> offd column
-  for_each_local_row(a, [&](PetscInt, const std::vector<std::pair<PetscInt, double>>& entries) {
+  for_each_local_row(a, [&](PetscInt r, const std::vector<std::pair<PetscInt, double>>& entries) {
+    bool diagonal = false;
     for (const auto& entry : entries) {
-      if (local(entry.first)) ++nnz_diag;
+      if (local(entry.first)) ++nnz_diag, diagonal = diagonal || entry.first == first + r;
       else ++nnz_offd, offd_of[entry.first] = 0;
     }
+    LUNASTER_ASSERT(diagonal, "hypre: a row of the system has no diagonal entry");
   }, false);
   HYPRE_Int n_offd = 0;
   for (PetscInt col = 0; col < n_; ++col)
@@ -417,23 +419,16 @@ void PetscSolver::build_hypre_matrix(const SparseMatrix& a, MatrixKind kind) {
     if (offd_of[col] >= 0) col_map[offd_of[col]] = static_cast<HYPRE_BigInt>(col);
   di[0] = oi[0] = 0;
   for_each_local_row(a, [&](PetscInt r, const std::vector<std::pair<PetscInt, double>>& entries) {
-    HYPRE_Int d = di[r], o = oi[r];
-    bool diagonal = false;
+    HYPRE_Int d = di[r] + 1, o = oi[r];  // di[r]: the diagonal's place (every row has one)
     for (const auto& [col, v] : entries) {
-      if (local(col)) {
-        if (col == first + r) {  // the diagonal first: shift the row's earlier entries along
-          for (HYPRE_Int k = d; k > di[r]; --k) dj[k] = dj[k - 1], dv[k] = dv[k - 1];
-          dj[di[r]] = static_cast<HYPRE_Int>(r), dv[di[r]] = v;
-          diagonal = true;
-        } else {
-          dj[d] = static_cast<HYPRE_Int>(col - first), dv[d] = v;
-        }
-        ++d;
+      if (col == first + r) {
+        dj[di[r]] = static_cast<HYPRE_Int>(r), dv[di[r]] = v;
+      } else if (local(col)) {
+        dj[d] = static_cast<HYPRE_Int>(col - first), dv[d++] = v;
       } else {
-        oj[o] = offd_of[col], ov[o] = v, ++o;
+        oj[o] = offd_of[col], ov[o++] = v;
       }
     }
-    LUNASTER_ASSERT(diagonal, "hypre: a row of the system has no diagonal entry");
     di[r + 1] = d, oi[r + 1] = o;
   });
   std::vector<HYPRE_Int>().swap(offd_of);
