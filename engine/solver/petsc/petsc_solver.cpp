@@ -557,13 +557,14 @@ void PetscSolver::set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* t
       // Quadratic cells take strength 0.7: the refined mortar case (HEXA8 and HEXA20) needed 40
       // CG iterations instead of 91 and half the time, a HEXA20 block 0.85 of the time, while
       // the HEXA8 block is 1.2 times slower at 0.7.
-      // One Gauss-Seidel sweep forward before the coarse grid and one backward after it (the
-      // V-cycle stays symmetric, as CG needs), not a symmetric sweep each way: the 3.3e5-unknown
-      // block and the refined mortar case solve in about 0.8 times the time, with more
-      // iterations at half the cost each. The l1 variant: with several ranks, hypre's hybrid
-      // sweep (Jacobi between ranks) made the preconditioner indefinite on the refined mortar
-      // case (CG stopped, DIVERGED_INDEFINITE_PC); the l1 one stays convergent. On one rank the
-      // two are the same sweep.
+      // Smoothing: hypre's Chebyshev polynomial (degree 2, on an estimate of the largest
+      // eigenvalue of D^-1 A) on every level but the coarsest, each way. It is symmetric, as CG
+      // needs, and the same sweep on any number of ranks (hypre's hybrid Gauss-Seidel, Jacobi
+      // between ranks, made the preconditioner indefinite on the refined mortar case with two
+      // ranks). It takes the iterations the l1 Gauss-Seidel sweeps took (40-42 on the refined
+      // mortar case, 23-30 on the HEXA8 and HEXA20 blocks) at about 0.7 of their time: one
+      // process, the refined mortar case 14.3-14.9 s against 19.4-20.0 s, the 3.3e5-unknown
+      // HEXA8 block 5.3-5.8 s against 7.4-8.5 s (tests/bench/README.md).
       // These go into PETSc's options database, which the run shares: an option the user named
       // in PETSC_OPTIONS (looked up before this code set any) wins, ours follow each system.
       static std::map<std::string, bool> user_named;
@@ -583,8 +584,8 @@ void PetscSolver::set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* t
             {"-pc_hypre_boomeramg_P_max", "4"},
             {"-pc_hypre_boomeramg_agg_nl", "1"},
             {"-pc_hypre_boomeramg_strong_threshold", layout_.quadratic ? "0.7" : "0.5"},
-            {"-pc_hypre_boomeramg_relax_type_down", relaxation_named ? nullptr : "l1-Gauss-Seidel"},
-            {"-pc_hypre_boomeramg_relax_type_up", relaxation_named ? nullptr : "backward-l1-Gauss-Seidel"}}) {
+            {"-pc_hypre_boomeramg_relax_type_down", relaxation_named ? nullptr : "Chebyshev"},
+            {"-pc_hypre_boomeramg_relax_type_up", relaxation_named ? nullptr : "Chebyshev"}}) {
         if (value && !named_by_user(name)) PetscOptionsSetValue(nullptr, name, value);
       }
       if (settings_.history) {  // what this system's V-cycle uses (INFO = 2)

@@ -317,7 +317,7 @@ TEST(Solvers, PetscMultigridOnNodeBlocks) {
 TEST(Solvers, BoomerStrengthFollowsTheCells) {
   // The strength threshold is 0.7 for a model with quadratic cells and 0.5 otherwise, in the
   // same process (PETSc's options database is shared: the second system must not keep the
-  // first one's value); the l1 Gauss-Seidel sweeps forward down and backward up.
+  // first one's value); Chebyshev smoothing each way.
   const int n = 60;
   const SparseMatrix a = spd_matrix(n);
   using S = IterativeSettings;
@@ -335,7 +335,7 @@ TEST(Solvers, BoomerStrengthFollowsTheCells) {
     s->factorize(a, MatrixKind::SymmetricPositiveDefinite);
     check_solution(a, s->solve(rhs(n)), "BOOMER");
     const std::string expected = std::string("    BoomerAMG: strength threshold ") + (quadratic ? "0.7" : "0.5") +
-                                 ", smoothing l1-Gauss-Seidel down, backward-l1-Gauss-Seidel up";
+                                 ", smoothing Chebyshev down, Chebyshev up";
     EXPECT_NE(std::find(lines.begin(), lines.end(), expected), lines.end()) << (lines.empty() ? "" : lines[0]);
   }
 }
