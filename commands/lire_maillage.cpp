@@ -6,8 +6,10 @@
 #include "engine/io/gmsh_reader.hpp"
 #include "commands/failures.hpp"
 #include "engine/io/med_reader.hpp"
+#include "engine/mesh/mesh_bytes.hpp"
 #include "engine/mesh/mesh_checks.hpp"
 #include "engine/mesh/orientation.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::cmd {
 
@@ -40,6 +42,24 @@ std::filesystem::path mesh_path(const Args& args, const Session& session, const 
   return session.deck_path.parent_path() / ("fort." + std::to_string(unit));
 }
 
+/// Reads the mesh file into `mesh` and reorients its clockwise 2D and mirrored 3D cells
+/// (valid cells listed in the other orientation; tangled or collapsed cells stop the run).
+/// Returns the reoriented cells.
+std::vector<int> read_mesh_file(const Args& args, const std::string& format, const std::filesystem::path& path,
+                                engine::Mesh& mesh) {
+  if (format == "GMSH") {
+    mesh = engine::read_gmsh(path.string());
+  } else {
+    try {
+      mesh = engine::read_med(path.string(), args.has("NOM_MED") ? args.text("NOM_MED") : std::string());
+    } catch (Error& err) {
+      say_in_keywords(err);
+      throw;
+    }
+  }
+  return engine::orient_cells(mesh, path.string());
+}
+
 }  // namespace
 
 ConceptPtr lire_maillage(const Args& args, Session& session) {
@@ -48,19 +68,39 @@ ConceptPtr lire_maillage(const Args& args, Session& session) {
   const std::filesystem::path path = mesh_path(args, session, format);
   auto result = std::make_shared<Maillage>();
   result->source_file = path.string();
-  if (format == "GMSH") {
-    *result->mesh = engine::read_gmsh(path.string());
+  std::vector<int> reoriented;
+  namespace parallel = engine::parallel;
+  if (parallel::size() == 1) {
+    reoriented = read_mesh_file(args, format, path, *result->mesh);
   } else {
-    try {
-      *result->mesh = engine::read_med(path.string(), args.has("NOM_MED") ? args.text("NOM_MED") : std::string());
-    } catch (Error& err) {
-      say_in_keywords(err);
-      throw;
+    // Under mpirun the file is read once, by rank 0, which sends the mesh (reoriented) to the
+    // others: one reader of a shared file, not one per rank. Where rank 0 cannot read it,
+    // the others read it themselves and so stop on the same error (or, if the failure was
+    // rank 0's alone, carry on until the run is brought down by rank 0's error).
+    int read = 1;
+    std::string bytes;
+    if (parallel::rank() == 0) {
+      try {
+        reoriented = read_mesh_file(args, format, path, *result->mesh);
+        bytes = engine::mesh_to_bytes(*result->mesh);
+      } catch (...) {
+        read = 0;
+        parallel::broadcast(&read, 1);
+        throw;
+      }
+    }
+    parallel::broadcast(&read, 1);
+    if (!read) {
+      reoriented = read_mesh_file(args, format, path, *result->mesh);
+    } else {
+      parallel::broadcast(bytes);
+      int n_reoriented = static_cast<int>(reoriented.size());
+      parallel::broadcast(&n_reoriented, 1);
+      reoriented.resize(n_reoriented);
+      parallel::broadcast(reoriented.data(), n_reoriented);
+      if (parallel::rank() != 0) *result->mesh = engine::mesh_from_bytes(bytes);
     }
   }
-  // Clockwise 2D cells and mirrored 3D cells are valid cells listed in the other
-  // orientation: reorient them once here (tangled or collapsed cells stop the run).
-  const std::vector<int> reoriented = engine::orient_cells(*result->mesh, path.string());
   const auto& mesh = *result->mesh;
   if (const auto orphans = engine::unreferenced_nodes(mesh); !orphans.empty()) {
     std::string names;

@@ -37,6 +37,8 @@ int fortran_comm_world();
 /// Rank 0's values of `data` on every rank (nothing on one rank).
 void broadcast(double* data, long long n);
 void broadcast(int* data, long long n);
+/// Rank 0's `bytes` on every rank (resized there; nothing on one rank).
+void broadcast(std::string& bytes);
 /// Every rank's `data` summed element by element, the sum on every rank (nothing on one rank).
 void sum_over_ranks(double* data, long long n);
 /// The largest of the ranks' `value`s, on every rank.
