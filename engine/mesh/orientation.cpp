@@ -88,8 +88,8 @@ CornerTable corner_table(CellType type) {
     const auto* begin = faces.nodes[f].data();
     for (int k = 0; k < m; ++k) {
       FaceCorner corner{faces.nodes[f][k], faces.nodes[f][(k + 1) % m], faces.nodes[f][(k + m - 1) % m], {}, 0};
-      // Every listing of a neighbour counts, as before (an edge shared by two faces is listed
-      // twice): the minimum and maximum do not change.
+      // An edge shared by two faces lists its far vertex twice: the same determinant twice,
+      // which leaves the minimum and maximum as they are.
       for (int other : neighbours[corner.v]) {
         if (std::find(begin, begin + m, other) != begin + m) continue;
         LUNASTER_ASSERT(corner.n_others < static_cast<int>(corner.others.size()), "too many corner neighbours");
