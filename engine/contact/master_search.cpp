@@ -276,6 +276,10 @@ MasterProjection MasterSurface::project(const double* point, double tolerance) c
   // projection beats a clamped one, then the lowest mesh cell index wins. The
   // pairing is then reproducible even where the cells' normals differ (kinks).
   const double tie = 1e-10 * spacing_;
+  // "Inside" within 1e-8 of the reference cell: a slave node over a master node, displaced by
+  // the round-off of a solve, is inside both neighbouring cells (with 1e-12 the sign of that
+  // round-off chose the cell, and two solve paths of one deck paired it differently).
+  constexpr double kInsideTie = 1e-8;
   for (const auto& [box_distance, k] : order) {
     if (best.found && box_distance > best.distance + tie) break;
     gather(xyz_->data(), k, xyz);
@@ -289,11 +293,11 @@ MasterProjection MasterSurface::project(const double* point, double tolerance) c
     const double dist = std::sqrt(dot3(d, d));
     bool better = !best.found || dist < best.distance - tie;
     if (!better && dist <= best.distance + tie) {
-      const bool inside = cp.outside <= 1e-12, best_inside = best.outside <= 1e-12;
+      const bool inside = cp.outside <= kInsideTie, best_inside = best.outside <= kInsideTie;
       better = inside != best_inside ? inside
                                      : (inside ? cells_[k] < best.cell
-                                               : cp.outside < best.outside - 1e-12 ||
-                                                     (cp.outside <= best.outside + 1e-12 && cells_[k] < best.cell));
+                                               : cp.outside < best.outside - kInsideTie ||
+                                                     (cp.outside <= best.outside + kInsideTie && cells_[k] < best.cell));
     }
     if (better) {
       best.found = true, best.cell = cells_[k], best.distance = dist, best.outside = cp.outside;

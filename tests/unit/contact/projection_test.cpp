@@ -244,12 +244,15 @@ TEST(ContactProjection, TiesAtSharedNodesAreDecidedByCellIndexNotRoundOff) {
   for (int c : cells)
     for (int a = 0; a < 6 && expected < 0; ++a)
       if (mesh.cell(c)[a] == mesh.cell(cells[10])[0]) expected = c;
-  for (int s = 0; s < 27; ++s) {
-    const double eps = 1e-13;
-    const double point[3] = {node[0] + eps * (s % 3 - 1), node[1] + eps * (s / 3 % 3 - 1),
-                             node[2] + eps * (s / 9 - 1)};
-    const MasterProjection p = master.project(point, 0.5);
-    ASSERT_TRUE(p.found);
-    EXPECT_EQ(p.cell, expected) << "offset " << s;
+  // 1e-11: round-off of the size a solve leaves in displaced coordinates (one penalty deck
+  // solved two ways paired a slave node over a master node with either neighbour).
+  for (const double eps : {1e-13, 1e-11}) {
+    for (int s = 0; s < 27; ++s) {
+      const double point[3] = {node[0] + eps * (s % 3 - 1), node[1] + eps * (s / 3 % 3 - 1),
+                               node[2] + eps * (s / 9 - 1)};
+      const MasterProjection p = master.project(point, 0.5);
+      ASSERT_TRUE(p.found);
+      EXPECT_EQ(p.cell, expected) << "offset " << eps << " direction " << s;
+    }
   }
 }
