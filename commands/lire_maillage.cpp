@@ -1,4 +1,5 @@
 // LIRE_MAILLAGE: reads a MED or Gmsh mesh.
+#include <exception>
 #include <filesystem>
 
 #include "commands/commands.hpp"
@@ -74,30 +75,27 @@ ConceptPtr lire_maillage(const Args& args, Session& session) {
     reoriented = read_mesh_file(args, format, path, *result->mesh);
   } else {
     // Under mpirun the file is read once, by rank 0, which sends the mesh (reoriented) to the
-    // others: one reader of a shared file, not one per rank. Where rank 0 cannot read it,
-    // the others read it themselves and so stop on the same error (or, if the failure was
-    // rank 0's alone, carry on until the run is brought down by rank 0's error).
-    int read = 1;
+    // others: one reader of a shared file, not one per rank. Only rank 0 logs, so only it
+    // keeps the list of reoriented cells. Where rank 0 cannot read the file, the others read
+    // it themselves and so stop on the same error (or, if the failure was rank 0's alone,
+    // carry on until the run is brought down by rank 0's error).
+    std::exception_ptr failure;
     std::string bytes;
     if (parallel::rank() == 0) {
       try {
         reoriented = read_mesh_file(args, format, path, *result->mesh);
         bytes = engine::mesh_to_bytes(*result->mesh);
       } catch (...) {
-        read = 0;
-        parallel::broadcast(&read, 1);
-        throw;
+        failure = std::current_exception();
       }
     }
+    int read = failure ? 0 : 1;
     parallel::broadcast(&read, 1);
+    if (failure) std::rethrow_exception(failure);
     if (!read) {
-      reoriented = read_mesh_file(args, format, path, *result->mesh);
+      read_mesh_file(args, format, path, *result->mesh);
     } else {
       parallel::broadcast(bytes);
-      int n_reoriented = static_cast<int>(reoriented.size());
-      parallel::broadcast(&n_reoriented, 1);
-      reoriented.resize(n_reoriented);
-      parallel::broadcast(reoriented.data(), n_reoriented);
       if (parallel::rank() != 0) *result->mesh = engine::mesh_from_bytes(bytes);
     }
   }

@@ -148,9 +148,8 @@ std::vector<QuadraturePoint> gauss_legendre(int n) {
 }
 
 const std::vector<QuadraturePoint>& full_integration(CellType type) {
-  constexpr int kTypes = static_cast<int>(CellType::Hexa20) + 1;
-  static std::array<std::vector<QuadraturePoint>, kTypes> rules;
-  static std::array<std::once_flag, kTypes> once;
+  static std::array<std::vector<QuadraturePoint>, kCellTypeCount> rules;
+  static std::array<std::once_flag, kCellTypeCount> once;
   const int t = static_cast<int>(type);
   std::call_once(once[t], [&] { rules[t] = build_rule(type); });
   return rules[t];

@@ -93,9 +93,8 @@ int cell_n_vertices(CellType type) { return facts(type).n_vertices; }
 bool has_shape_functions(CellType type) { return type != CellType::Point1 && type != CellType::Pyram5; }
 
 const ReferenceElement& reference_element(CellType type) {
-  constexpr int kTypes = static_cast<int>(CellType::Hexa20) + 1;
-  static std::array<ReferenceElement, kTypes> table;
-  static std::array<std::once_flag, kTypes> once;
+  static std::array<ReferenceElement, kCellTypeCount> table;
+  static std::array<std::once_flag, kCellTypeCount> once;
   const int t = static_cast<int>(type);
   std::call_once(once[t], [&] { table[t] = build(type); });
   return table[t];

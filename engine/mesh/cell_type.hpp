@@ -7,6 +7,8 @@
 namespace lunaster::engine {
 
 enum class CellType { Point1, Seg2, Seg3, Tria3, Tria6, Quad4, Quad8, Tetra4, Tetra10, Pyram5, Penta6, Penta15, Hexa8, Hexa20 };
+/// Number of cell types (the size of a table indexed by CellType).
+inline constexpr int kCellTypeCount = static_cast<int>(CellType::Hexa20) + 1;
 
 /// Static facts about a cell type.
 struct CellInfo {

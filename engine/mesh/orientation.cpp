@@ -102,10 +102,9 @@ CornerTable corner_table(CellType type) {
 }
 
 const CornerTable& corner_table_of(CellType type) {
-  constexpr int n_types = static_cast<int>(CellType::Hexa20) + 1;
-  static const std::array<CornerTable, n_types> tables = [] {
-    std::array<CornerTable, n_types> all;
-    for (int t = 0; t < n_types; ++t)
+  static const std::array<CornerTable, kCellTypeCount> tables = [] {
+    std::array<CornerTable, kCellTypeCount> all;
+    for (int t = 0; t < kCellTypeCount; ++t)
       if (cell_info(static_cast<CellType>(t)).dim == 3) all[t] = corner_table(static_cast<CellType>(t));
     return all;
   }();
