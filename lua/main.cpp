@@ -20,6 +20,7 @@
 #include "lua/runner.hpp"
 #include "lua/verify.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
+#include "engine/solver/blas.hpp"
 
 namespace fs = std::filesystem;
 using namespace lunaster;
@@ -378,6 +379,7 @@ int main(int argc, char** argv) {
   // Under mpirun every rank learns its number before anything runs (a single process
   // initialises MPI only if a solver needs it: engine/parallel/mpi_runtime.hpp); only rank 0
   // prints, and a rank's errors are kept for the end of the run.
+  lunaster::engine::configure_blas();  // before OpenBLAS's idle workers spin for long
   const bool several_ranks = parallel::launched_by_mpi();
   std::stringbuf rank_errors;
   std::streambuf* const standard_error = std::cerr.rdbuf();

@@ -46,8 +46,17 @@ void configure_blas() {
   static const bool done = [] {
     select_openblas_kernels();
     // OpenBLAS reads these itself when it is loaded; an explicit count would override them.
-    if (!has_env("OPENBLAS_NUM_THREADS") && !has_env("GOTO_NUM_THREADS") && !has_env("OMP_NUM_THREADS"))
+    if (!has_env("OPENBLAS_NUM_THREADS") && !has_env("GOTO_NUM_THREADS") && !has_env("OMP_NUM_THREADS")) {
       openblas_set_num_threads(kBlasThreads);
+      // Loaded without a count, OpenBLAS started a worker per further core, and each spins in
+      // sched_yield for about 2^28 cycles before sleeping: 0.13 s of CPU, half of it system
+      // time, beside the first 0.15 s of every run (perf on the glued k = 16 deck). One
+      // thread never uses them, so stop them; OpenBLAS starts them again if a later
+      // openblas_set_num_threads asks for more (its server restarts on demand).
+      using Shutdown = int (*)();
+      if (kBlasThreads == 1)
+        if (const auto stop = reinterpret_cast<Shutdown>(dlsym(RTLD_DEFAULT, "blas_thread_shutdown_"))) stop();
+    }
     // CHOLMOD's supernodal factorisation opens an OpenMP region of 4 threads
     // (a constant of its build) around every large supernode's scatter loops:
     // on 2 cores that is tens of thousands of futex waits and context switches
