@@ -94,7 +94,7 @@ Vector SplitMatrix::times(const Vector& u) const {
   const int nf = static_cast<int>(equation.size());
   Vector u_free(nf);
   for (int j = 0; j < nf; ++j) u_free[j] = u[equation[j]];
-  const Vector k_u_free = ff * u_free;
+  const Vector k_u_free = symmetric ? symmetric_times(ff, u_free) : Vector(ff * u_free);
   Vector ku = Vector::Zero(static_cast<Eigen::Index>(free_index.size()));
   for (int j = 0; j < nf; ++j) ku[equation[j]] = k_u_free[j];
   const int* outer = c.outerIndexPtr();

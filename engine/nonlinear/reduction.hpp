@@ -22,6 +22,9 @@ struct SplitMatrix {
   std::vector<int> constrained;  ///< C, sorted
   std::vector<int> free_index;   ///< per equation: its column in ff, -1 in C
   std::vector<int> equation;     ///< per column of ff: its equation
+  /// ff is the whole K(F, F), so symmetric as stored; false for one rank's columns of a
+  /// shared model, whose product must scatter column by column.
+  bool symmetric = true;
   /// K u over the whole numbering.
   Vector times(const Vector& u) const;
 };

@@ -213,6 +213,7 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
     }
     SparseMatrix k = assemble_stiffness_matrix(model_, dofs_, distributed_ ? &owned_nodes_ : nullptr);
     split_matrix(k, constrained, elastic_);
+    elastic_.symmetric = !distributed_;  // a rank holds only its own nodes' columns
   }
   k_scale_ = std::max(elastic_.ff.nonZeros() ? elastic_.ff.coeffs().cwiseAbs().maxCoeff() : 0.0,
                       elastic_.c.nonZeros() ? elastic_.c.coeffs().cwiseAbs().maxCoeff() : 0.0);
@@ -949,11 +950,16 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       const SparseMatrix& a = *system_->matrix;
       // A x for the accuracy of a solve: this rank's columns of a, summed over the ranks; the
       // backend's product once K_ff is in its hands.
-      const MatrixProduct system_product = [&a, this](const Vector& x) -> Vector {
+      // Without contact terms or eliminated relations a is K_ff, symmetric as stored (a
+      // condensed or eliminated row is not: its column keeps its entries), unless a rank
+      // holds only its own columns of it.
+      const bool a_is_k_ff = !contact_ && eliminated_eqs.empty() && !distributed_;
+      const MatrixProduct system_product = [&a, a_is_k_ff, this](const Vector& x) -> Vector {
         Vector y;
         if (elastic_in_solver_ && elastic_holder_->multiply(x, y)) return y;
-        y = a * x;
-        if (system_->increment) y += elastic_.ff * x;  // a is C: the system is K_ff + C
+        y = a_is_k_ff ? symmetric_times(a, x) : Vector(a * x);
+        if (system_->increment)  // a is C: the system is K_ff + C
+          y += elastic_.symmetric ? symmetric_times(elastic_.ff, x) : Vector(elastic_.ff * x);
         if (distributed_) parallel::sum_over_ranks(y.data(), y.size());
         return y;
       };

@@ -143,5 +143,10 @@ RefinedSolve solve_with_refinement(const LinearSolver& solver, const MatrixProdu
 constexpr double kBackwardStable = 1e-14;
 /// |A| |x| for a compressed-column matrix (entry by entry), added to y.
 void add_abs_product(const SparseMatrix& a, const Vector& x, Vector& y);
+/// A x for a symmetric matrix whose columns hold both triangles: entry j is column j
+/// times x (a gather, where the general product scatters), so the columns can be shared
+/// between two threads, each writing its own entries. A matrix of fewer than 2e5 entries
+/// is done on the calling thread.
+Vector symmetric_times(const SparseMatrix& a, const Vector& x);
 
 }  // namespace lunaster::engine

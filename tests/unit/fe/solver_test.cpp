@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 
 #include <Eigen/Dense>
 #include <SuiteSparse_config.h>
@@ -596,6 +598,28 @@ TEST(Refinement, ABackwardStableSolveIsNotRefined) {
   Vector x_rejected;
   const RefinedSolve rejected = solve_with_refinement(s, product, b, x_rejected, 3, 1e-10, &abs_product, 1e-12);
   EXPECT_EQ(rejected.steps, plain.steps);
+}
+
+TEST(SymmetricProduct, GathersWhatTheGeneralProductScatters) {
+  // A banded symmetric matrix with unequal entries, below and above the 2e5 entries at
+  // which the columns are shared between two threads (an uneven split: the band is cut at
+  // the ends); the gather must equal Eigen's scatter to round-off and leave no entry unset.
+  for (const int n : {500, 30000}) {
+    std::vector<Eigen::Triplet<double>> t;
+    for (int i = 0; i < n; ++i)
+      for (int j = std::max(0, i - 4); j <= std::min(n - 1, i + 4); ++j)
+        t.emplace_back(i, j, 1.0 + 0.01 * ((i + j) % 17) + (i == j ? 10.0 : 0.0));
+    SparseMatrix a(n, n);
+    a.setFromTriplets(t.begin(), t.end());
+    a.makeCompressed();
+    ASSERT_EQ(n > 1000, a.nonZeros() >= 200000);
+    Vector x(n);
+    for (int i = 0; i < n; ++i) x[i] = std::sin(0.37 * i) + 0.5;
+    const Vector expected = a * x;
+    const Vector y = symmetric_times(a, x);
+    ASSERT_EQ(y.size(), n);
+    EXPECT_LT((y - expected).cwiseAbs().maxCoeff(), 1e-13 * expected.cwiseAbs().maxCoeff()) << "n = " << n;
+  }
 }
 
 TEST(Refinement, AnExactFactorisationNeedsNoRefinement) {
