@@ -15,9 +15,10 @@ namespace lunaster::engine {
 inline constexpr int kBlasThreads = 1;
 
 /// Sets up the dense kernels once per process, before the first BLAS call
-/// (later calls do nothing): OpenBLAS's kernel family and thread count, and
-/// OpenMP's. Called at the start of `lunaster` (which stops OpenBLAS's idle workers
-/// before they spin) and by make_linear_solver, never per BLAS call.
+/// (later calls do nothing): OpenBLAS's kernel family and thread count, OpenMP's,
+/// and SuiteSparse's allocator (large blocks on huge pages). Called at the start of
+/// `lunaster` (which stops OpenBLAS's idle workers before they spin) and by
+/// make_linear_solver, never per BLAS call.
 void configure_blas();
 
 /// Threads OpenBLAS uses for one call.

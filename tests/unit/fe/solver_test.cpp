@@ -600,6 +600,31 @@ TEST(Refinement, ABackwardStableSolveIsNotRefined) {
   EXPECT_EQ(rejected.steps, plain.steps);
 }
 
+TEST(Solvers, LargeFactorsOnHugePagesSolveAsSmallOnes) {
+  // A 5-point Laplacian on a 250 x 250 grid: CHOLMOD's factor and workspace are blocks of
+  // over 4 MB, which the solver libraries' allocator places on huge pages (engine/solver/
+  // blas.cpp). UMFPACK's blocks go the same way.
+  const int side = 250, n = side * side;
+  std::vector<Triplet> t;
+  for (int i = 0; i < side; ++i)
+    for (int j = 0; j < side; ++j) {
+      const int p = i * side + j;
+      t.emplace_back(p, p, 4.0 + 1e-3 * (p % 7));
+      if (j + 1 < side) t.emplace_back(p, p + 1, -1.0), t.emplace_back(p + 1, p, -1.0);
+      if (i + 1 < side) t.emplace_back(p, p + side, -1.0), t.emplace_back(p + side, p, -1.0);
+    }
+  SparseMatrix a(n, n);
+  a.setFromTriplets(t.begin(), t.end());
+  a.makeCompressed();
+  const Vector b = rhs(n);
+  for (const SolverKind kind : {SolverKind::Cholmod, SolverKind::Umfpack}) {
+    auto s = make_linear_solver(kind);
+    s->factorize(a, kind == SolverKind::Cholmod ? MatrixKind::SymmetricPositiveDefinite : MatrixKind::General);
+    const Vector x = s->solve(b);
+    EXPECT_LT((a * x - b).norm(), 1e-12 * b.norm()) << s->name();
+  }
+}
+
 TEST(SymmetricProduct, GathersWhatTheGeneralProductScatters) {
   // A banded symmetric matrix with unequal entries, below and above the 2e5 entries at
   // which the columns are shared between two threads (an uneven split: the band is cut at
