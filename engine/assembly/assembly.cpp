@@ -10,6 +10,7 @@
 #include <limits>
 #include <thread>
 
+#include "engine/core/memory.hpp"
 #include "engine/assembly/element_kernels.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 
@@ -160,6 +161,8 @@ void stiffness_pattern(const Mesh& mesh, const DofMap& dofs, const std::vector<i
     outer[eq + 1] = outer[eq] + static_cast<int>(rows);
   }
   k.resizeNonZeros(outer[n]);
+  advise_huge_pages(k.innerIndexPtr(), sizeof(int) * static_cast<std::size_t>(outer[n]));
+  advise_huge_pages(k.valuePtr(), sizeof(double) * static_cast<std::size_t>(outer[n]));
   int* inner = k.innerIndexPtr();
   for (int eq = 0; eq < n; ++eq) {
     if (outer[eq + 1] == outer[eq]) continue;

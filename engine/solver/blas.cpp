@@ -4,12 +4,13 @@
 #include <SuiteSparse_config.h>
 #include <cblas.h>
 #include <dlfcn.h>
-#include <sys/mman.h>
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdlib>
 #include <cstring>
+
+#include "engine/core/memory.hpp"
 
 namespace lunaster::engine {
 namespace {
@@ -43,17 +44,14 @@ void select_openblas_kernels() {
   unsetenv("OPENBLAS_CORETYPE");  // read once by init: the environment stays as the user gave it
 }
 
-/// Blocks from 4 MB up (a factor's values, its supernodal workspace) on 2 MB boundaries,
-/// advised as transparent huge pages: one page fault per 2 MB instead of 512. A kernel
-/// that gives no huge pages ignores the advice and the block is an ordinary one.
-constexpr std::size_t kLargeBlock = std::size_t{4} << 20;
-constexpr std::size_t kHugePage = std::size_t{2} << 20;
-
+/// Blocks from 4 MB up (a factor's values, its supernodal workspace) start on a 2 MB
+/// boundary and are advised as transparent huge pages (engine/core/memory.hpp).
 void* large_pages_malloc(std::size_t size) {
+  constexpr std::size_t kLargeBlock = std::size_t{4} << 20, kHugePage = std::size_t{2} << 20;
   if (size < kLargeBlock) return std::malloc(size);
   void* p = nullptr;
   if (posix_memalign(&p, kHugePage, size) != 0) return nullptr;
-  madvise(p, size & ~(kHugePage - 1), MADV_HUGEPAGE);
+  advise_huge_pages(p, size);
   return p;
 }
 

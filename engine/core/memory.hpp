@@ -1,0 +1,22 @@
+#pragma once
+/// Page-level advice for large arrays.
+#include <sys/mman.h>
+
+#include <cstddef>
+#include <cstdint>
+
+namespace lunaster::engine {
+
+/// Asks the kernel for transparent huge pages under the 2 MB-aligned part of
+/// [p, p + bytes), before it is first written: one page fault per 2 MB instead of 512.
+/// Only advice: a kernel that offers no huge pages leaves the memory as it was. For arrays
+/// of several MB that are filled once (a matrix's entries, a factor).
+inline void advise_huge_pages(const void* p, std::size_t bytes) {
+  constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
+  const std::uintptr_t start = reinterpret_cast<std::uintptr_t>(p);
+  const std::uintptr_t begin = (start + kHuge - 1) & ~(kHuge - 1);
+  const std::uintptr_t end = (start + bytes) & ~(kHuge - 1);
+  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+}
+
+}  // namespace lunaster::engine
