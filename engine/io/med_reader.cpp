@@ -124,11 +124,13 @@ void read_nodes(med_idt fid, const MeshHeader& header, const std::string& path, 
   if (MEDmeshNodeCoordinateRd(fid, name.c_str(), MED_NO_DT, MED_NO_IT, MED_FULL_INTERLACE, xyz.data()) < 0)
     fail(path, "corrupt MED file (cannot read the node coordinates)");
   std::vector<std::string> names = read_names(fid, name, MED_NODE, MED_NONE, n, path);
+  // Sized once: growing by doubling copies every array and touches its pages twice.
   mesh.coords.reserve(3 * static_cast<size_t>(n));
+  mesh.node_names.reserve(static_cast<size_t>(n));
   for (med_int i = 0; i < n; ++i) {
     double p[3] = {0.0, 0.0, 0.0};
     for (int k = 0; k < sdim; ++k) p[k] = xyz[static_cast<size_t>(i) * sdim + k];
-    mesh.add_node(p[0], p[1], p[2], names.empty() ? std::string() : names[i]);
+    mesh.add_node(p[0], p[1], p[2], names.empty() ? std::string() : std::move(names[i]));
   }
   families = read_families(fid, name, MED_NODE, MED_NONE, n);
 }
@@ -169,7 +171,12 @@ void read_cells_of_type(med_idt fid, const std::string& name, CellType type, con
   if (MEDmeshElementConnectivityRd(fid, name.c_str(), MED_NO_DT, MED_NO_IT, MED_CELL, geo, MED_NODAL,
                                    MED_FULL_INTERLACE, conn.data()) < 0)
     fail(path, "corrupt MED file (cannot read the " + type_name + " connectivity)");
-  const std::vector<std::string> names = read_names(fid, name, MED_CELL, geo, n, path);
+  std::vector<std::string> names = read_names(fid, name, MED_CELL, geo, n, path);
+  const size_t cells_after = mesh.cell_types.size() + static_cast<size_t>(n);
+  mesh.cell_types.reserve(cells_after);
+  mesh.cell_offsets.reserve(cells_after + 1);
+  mesh.cell_names.reserve(cells_after);
+  mesh.cell_nodes.reserve(mesh.cell_nodes.size() + static_cast<size_t>(n) * nn);
   std::vector<int> nodes(nn);
   for (med_int c = 0; c < n; ++c) {
     for (int k = 0; k < nn; ++k) {
@@ -179,7 +186,7 @@ void read_cells_of_type(med_idt fid, const std::string& name, CellType type, con
                        std::to_string(node) + " of " + std::to_string(mesh.n_nodes()));
       nodes[k] = static_cast<int>(node - 1);
     }
-    mesh.add_cell(type, nodes, names.empty() ? std::string() : names[c]);
+    mesh.add_cell(type, nodes, names.empty() ? std::string() : std::move(names[c]));
   }
   const std::vector<med_int> fam = read_families(fid, name, MED_CELL, geo, n);
   families.insert(families.end(), fam.begin(), fam.end());
