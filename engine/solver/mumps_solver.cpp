@@ -107,7 +107,8 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     id_.icntl[3] = 0;
     id_.icntl[23] = 1;  // ICNTL(24): null pivot detection
     // ICNTL(7): the fill-reducing ordering. On sparse rows (2D meshes: 18 to 26 entries a row
-    // for QUAD4/QUAD8) AMD beat the automatic choice (nested dissection by SCOTCH here), whose
+    // for QUAD4/QUAD8) AMD beat the automatic choice (PORD's nested dissection: Debian 12's
+    // MUMPS 5.5 is built without METIS and SCOTCH, and says so when asked for them), whose
     // analysis cost more than it saved: SSNP121 2D contact, k = 16, 1.7 s against 2.0 s; k = 32,
     // 7.5 s against 8.7 s. On 3D rows (81 and more) nested dissection wins: the 3D HEXA8/HEXA20
     // contact case took 2.0 s against 3.2 s with AMD. tests/bench/README.md has the runs.
