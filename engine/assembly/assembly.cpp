@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "engine/core/memory.hpp"
+#include "engine/core/two_workers.hpp"
 #include "engine/assembly/element_kernels.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 
@@ -91,29 +92,6 @@ void stiffness_range(const FeModel& model, const DofMap& dofs, const std::vector
         for (int r = 0; r < ND; ++r) *t++ = Triplet(eq[r], eq[c], ke(r, c));
     });
   }
-}
-
-/// Two workers (the target machine has 2 cores): `work(0)` here, `work(1)` on a helper
-/// thread. Each reports the position of the cell it failed on (or SIZE_MAX) and its
-/// exception; the one of the earlier cell is re-thrown, so the error is the one a single
-/// pass in cell order would raise.
-template <class Work>
-void run_two_workers(Work&& work) {
-  std::exception_ptr failure[2];
-  size_t failed_at[2] = {SIZE_MAX, SIZE_MAX};
-  auto guarded = [&](int w) {
-    try {
-      work(w, failed_at[w]);
-    } catch (...) {
-      failure[w] = std::current_exception();
-    }
-  };
-  std::thread helper(guarded, 1);
-  guarded(0);
-  helper.join();
-  const int first = failed_at[1] < failed_at[0] ? 1 : 0;
-  if (failure[first]) std::rethrow_exception(failure[first]);
-  if (failure[1 - first]) std::rethrow_exception(failure[1 - first]);
 }
 
 /// Compressed pattern of the stiffness: column (node b, component k) holds, for every node

@@ -187,7 +187,6 @@ std::int64_t MasterSurface::key(int i, int j, int l) const {
 void MasterSurface::update(const std::vector<double>& xyz) {
   xyz_ = &xyz;
   grid_.clear();
-  stamp_.assign(cells_.size(), 0);
   if (cells_.empty()) return;
   std::vector<double>& box = boxes_;
   box.assign(6 * cells_.size(), 0.0);
@@ -235,7 +234,6 @@ std::vector<int> MasterSurface::candidates(const double* point) const {
   for (int i = 0; i < 3; ++i)
     centre[i] = std::clamp(static_cast<int>(std::floor((point[i] - origin_[i]) / spacing_)), 0, n_grid_[i] - 1);
   std::vector<int> out;
-  ++stamp_value_;
   const int max_ring = std::max({n_grid_[0], n_grid_[1], n_grid_[2]});
   int found_ring = -1;
   for (int r = 0; r <= max_ring; ++r) {
@@ -245,12 +243,15 @@ std::vector<int> MasterSurface::candidates(const double* point) const {
           if (std::max({std::abs(i - centre[0]), std::abs(j - centre[1]), std::abs(l - centre[2])}) != r) continue;
           auto it = grid_.find(key(i, j, l));
           if (it == grid_.end()) continue;
-          for (int k : it->second)
-            if (stamp_[k] != stamp_value_) stamp_[k] = stamp_value_, out.push_back(k);
+          out.insert(out.end(), it->second.begin(), it->second.end());
         }
     if (!out.empty() && found_ring < 0) found_ring = r;
     if (found_ring >= 0 && r >= found_ring + 1) break;
   }
+  // A cell spans several buckets. Made unique here, not with marks kept in the surface, so
+  // that points can be projected from several threads at once.
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 

@@ -51,7 +51,8 @@ class MasterSurface {
 
   /// Projects `point` on the nearest master cell. A projection outside a cell by
   /// more than `tolerance` (reference units, TOLE_PROJ_EXT) is rejected; within
-  /// it, the projection is clamped into the cell.
+  /// it, the projection is clamped into the cell. Reads the surface only: several threads
+  /// may project at once.
   MasterProjection project(const double* point, double tolerance) const;
 
   const std::vector<int>& cells() const { return cells_; }
@@ -83,8 +84,6 @@ class MasterSurface {
   int n_grid_[3] = {1, 1, 1};
   std::unordered_map<std::int64_t, std::vector<int>> grid_;
   std::vector<double> boxes_;  ///< per cell: min xyz, max xyz (widened for quadratic cells)
-  mutable std::vector<int> stamp_;
-  mutable int stamp_value_ = 0;
 };
 
 }  // namespace lunaster::engine::contact

@@ -1,6 +1,8 @@
 // Surface shape functions, orthogonal projection and the master-surface index.
 #include <cmath>
 #include <random>
+#include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -227,6 +229,35 @@ TEST(ContactProjection, GridSearchMatchesBruteForceOn3dQuadraticSurfaces) {
       }
       EXPECT_NEAR(p.distance, best, 1e-10) << (triangles ? "TRIA6" : "QUAD8") << " trial " << trial;
     }
+  }
+}
+
+TEST(ContactProjection, TwoThreadsProjectingAtOnceGetTheSerialResults) {
+  // Contact pairing shares its points between two threads that project on one surface at
+  // once (ContactProblem::pair): project() must read the surface only.
+  Mesh mesh;
+  const std::vector<int> cells = wavy_surface(mesh, 16, false);
+  MasterSurface master(mesh, cells, false);
+  master.update(mesh.coords);
+  std::mt19937 gen(11);
+  std::uniform_real_distribution<double> xy(0.0, 2.0), z(-0.15, 0.15);
+  const int n = 20000;
+  std::vector<double> points(3 * n);
+  for (double& v : points) v = 0.0;
+  for (int k = 0; k < n; ++k) points[3 * k] = xy(gen), points[3 * k + 1] = xy(gen), points[3 * k + 2] = z(gen);
+  std::vector<MasterProjection> serial(n), shared(n);
+  for (int k = 0; k < n; ++k) serial[k] = master.project(&points[3 * k], 0.5);
+  auto range = [&](int begin, int end) {
+    for (int k = begin; k < end; ++k) shared[k] = master.project(&points[3 * k], 0.5);
+  };
+  std::thread helper(range, n / 2, n);
+  range(0, n / 2);
+  helper.join();
+  for (int k = 0; k < n; ++k) {
+    ASSERT_EQ(shared[k].found, serial[k].found) << k;
+    ASSERT_EQ(shared[k].cell, serial[k].cell) << k;
+    ASSERT_EQ(shared[k].xi[0], serial[k].xi[0]) << k;
+    ASSERT_EQ(shared[k].xi[1], serial[k].xi[1]) << k;
   }
 }
 
