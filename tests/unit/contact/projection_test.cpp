@@ -1,5 +1,6 @@
 // Surface shape functions, orthogonal projection and the master-surface index.
 #include <cmath>
+#include <memory>
 #include <random>
 #include <thread>
 #include <vector>
@@ -197,16 +198,27 @@ std::vector<int> wavy_surface(Mesh& mesh, int n, bool triangles) {
   return cells;
 }
 
+/// The wavy surface as a master surface, its grid built on the mesh's coordinates.
+struct WavyMaster {
+  Mesh mesh;
+  std::vector<int> cells;
+  std::unique_ptr<MasterSurface> master;
+  WavyMaster(int n, bool triangles) : cells(wavy_surface(mesh, n, triangles)) {
+    master = std::make_unique<MasterSurface>(mesh, cells, false);
+    master->update(mesh.coords);
+  }
+};
+
 }  // namespace
 
 TEST(ContactProjection, GridSearchMatchesBruteForceOn3dQuadraticSurfaces) {
   // The box pruning of MasterSurface::project must never skip the closest cell,
   // including on curved cells that bulge out of their nodes' bounding box.
   for (bool triangles : {false, true}) {
-    Mesh mesh;
-    const std::vector<int> cells = wavy_surface(mesh, 12, triangles);
-    MasterSurface master(mesh, cells, false);
-    master.update(mesh.coords);
+    const WavyMaster wavy(12, triangles);
+    const Mesh& mesh = wavy.mesh;
+    const std::vector<int>& cells = wavy.cells;
+    const MasterSurface& master = *wavy.master;
     std::mt19937 gen(5);
     std::uniform_real_distribution<double> xy(0.05, 1.95), z(-0.15, 0.15);
     for (int trial = 0; trial < 300; ++trial) {
@@ -235,15 +247,12 @@ TEST(ContactProjection, GridSearchMatchesBruteForceOn3dQuadraticSurfaces) {
 TEST(ContactProjection, TwoThreadsProjectingAtOnceGetTheSerialResults) {
   // Contact pairing shares its points between two threads that project on one surface at
   // once (ContactProblem::pair): project() must read the surface only.
-  Mesh mesh;
-  const std::vector<int> cells = wavy_surface(mesh, 16, false);
-  MasterSurface master(mesh, cells, false);
-  master.update(mesh.coords);
+  const WavyMaster wavy(16, false);
+  const MasterSurface& master = *wavy.master;
   std::mt19937 gen(11);
   std::uniform_real_distribution<double> xy(0.0, 2.0), z(-0.15, 0.15);
   const int n = 20000;
   std::vector<double> points(3 * n);
-  for (double& v : points) v = 0.0;
   for (int k = 0; k < n; ++k) points[3 * k] = xy(gen), points[3 * k + 1] = xy(gen), points[3 * k + 2] = z(gen);
   std::vector<MasterProjection> serial(n), shared(n);
   for (int k = 0; k < n; ++k) serial[k] = master.project(&points[3 * k], 0.5);
