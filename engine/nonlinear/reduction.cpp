@@ -89,12 +89,16 @@ void split_matrix(SparseMatrix& k, std::vector<int> constrained, SplitMatrix& ou
   k = SparseMatrix();
 }
 
+Vector SplitMatrix::ff_times(const Vector& x) const {
+  return symmetric ? symmetric_times(ff, x) : Vector(ff * x);
+}
+
 Vector SplitMatrix::times(const Vector& u) const {
   // K u = K(:, F) u_F + K(:, C) u_C; rows C of K(:, F) u_F are K(C, F) u_F = K(F, C)^T u_F.
   const int nf = static_cast<int>(equation.size());
   Vector u_free(nf);
   for (int j = 0; j < nf; ++j) u_free[j] = u[equation[j]];
-  const Vector k_u_free = symmetric ? symmetric_times(ff, u_free) : Vector(ff * u_free);
+  const Vector k_u_free = ff_times(u_free);
   Vector ku = Vector::Zero(static_cast<Eigen::Index>(free_index.size()));
   for (int j = 0; j < nf; ++j) ku[equation[j]] = k_u_free[j];
   const int* outer = c.outerIndexPtr();

@@ -27,6 +27,8 @@ struct SplitMatrix {
   bool symmetric = true;
   /// K u over the whole numbering.
   Vector times(const Vector& u) const;
+  /// K(F, F) x, x over the free equations (ff's columns).
+  Vector ff_times(const Vector& x) const;
 };
 
 /// Splits K (square, symmetric, compressed, sorted columns) into `out`; `constrained` need

@@ -950,16 +950,14 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       const SparseMatrix& a = *system_->matrix;
       // A x for the accuracy of a solve: this rank's columns of a, summed over the ranks; the
       // backend's product once K_ff is in its hands.
-      // Without contact terms or eliminated relations a is K_ff, symmetric as stored (a
-      // condensed or eliminated row is not: its column keeps its entries), unless a rank
-      // holds only its own columns of it.
-      const bool a_is_k_ff = !contact_ && eliminated_eqs.empty() && !distributed_;
+      // Without contact a is K_ff itself, with its own product; with contact terms it may
+      // hold condensed or eliminated rows, which are not symmetric.
+      const bool a_is_k_ff = !contact_ && &a == &elastic_.ff;
       const MatrixProduct system_product = [&a, a_is_k_ff, this](const Vector& x) -> Vector {
         Vector y;
         if (elastic_in_solver_ && elastic_holder_->multiply(x, y)) return y;
-        y = a_is_k_ff ? symmetric_times(a, x) : Vector(a * x);
-        if (system_->increment)  // a is C: the system is K_ff + C
-          y += elastic_.symmetric ? symmetric_times(elastic_.ff, x) : Vector(elastic_.ff * x);
+        y = a_is_k_ff ? elastic_.ff_times(x) : Vector(a * x);
+        if (system_->increment) y += elastic_.ff_times(x);  // a is C: the system is K_ff + C
         if (distributed_) parallel::sum_over_ranks(y.data(), y.size());
         return y;
       };

@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <thread>
 
 #include "engine/core/error.hpp"
+#include "engine/core/two_workers.hpp"
 #include "engine/solver/backends.hpp"
 #include "engine/solver/blas.hpp"
 
@@ -136,9 +136,7 @@ Vector symmetric_times(const SparseMatrix& a, const Vector& x) {
   }
   // Split where half the entries are: the first column whose start passes the middle.
   const int middle = static_cast<int>(std::upper_bound(outer, outer + n, outer[n] / 2) - outer) - 1;
-  std::thread helper(columns, middle, n);
-  columns(0, middle);
-  helper.join();
+  run_two_workers([&](int w, size_t&) { w == 0 ? columns(0, middle) : columns(middle, n); });
   return y;
 }
 
