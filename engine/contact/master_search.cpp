@@ -205,9 +205,21 @@ void MasterSurface::update(const std::vector<double>& xyz) {
       ext = std::max(ext, b[3 + i] - b[i]);
     }
     size_sum += ext;
-    // A curved quadratic cell may bulge out of its nodes' box: widen it by half its extent.
-    if (surface_n_nodes(types_[k]) > surface_n_vertices(types_[k]))
-      for (int i = 0; i < 6; ++i) b[i] += (i < 3 ? -0.5 : 0.5) * ext;
+    // A curved quadratic cell may bulge out of its nodes' box. With d_e the offset of edge e's
+    // mid-side node from the middle of its vertices, x(xi) = x_linear(xi) + sum_e N_e(xi) d_e,
+    // where x_linear is the (bi)linear interpolation of the vertices and the mid-side functions
+    // N_e are non-negative on the cell with a sum of at most 1 (SEG3), 4/3 (TRIA6) or 2 (QUAD8):
+    // widening each coordinate by 2 max_e |d_e| bounds the bulge. A flat cell keeps its tight box,
+    // so a point is only projected on the cells it is near.
+    const int nv = surface_n_vertices(types_[k]), nn = surface_n_nodes(types_[k]);
+    const auto& nodes = nodes_[k];
+    double bulge[3] = {0.0, 0.0, 0.0};
+    for (int m = nv; m < nn; ++m) {
+      const size_t a = nodes[m - nv], c = nodes[(m - nv + 1) % nv], mid_node = nodes[m];
+      for (int i = 0; i < 3; ++i)
+        bulge[i] = std::max(bulge[i], 2.0 * std::abs(xyz[3 * mid_node + i] - 0.5 * (xyz[3 * a + i] + xyz[3 * c + i])));
+    }
+    for (int i = 0; i < 3; ++i) b[i] -= bulge[i], b[3 + i] += bulge[i];
   }
   spacing_ = std::max(size_sum / cells_.size(), 1e-12);
   for (int i = 0; i < 3; ++i) {
@@ -248,10 +260,8 @@ std::vector<int> MasterSurface::candidates(const double* point) const {
     if (!out.empty() && found_ring < 0) found_ring = r;
     if (found_ring >= 0 && r >= found_ring + 1) break;
   }
-  // A cell spans several buckets. Made unique here, not with marks kept in the surface, so
-  // that points can be projected from several threads at once.
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
+  // A cell spanning several buckets is listed once per bucket: `project` drops the repeats
+  // after its sort (marks kept in the surface would stop threads projecting at once).
   return out;
 }
 
@@ -272,6 +282,7 @@ MasterProjection MasterSurface::project(const double* point, double tolerance) c
     order.emplace_back(std::sqrt(d2), k);
   }
   std::sort(order.begin(), order.end());
+  order.erase(std::unique(order.begin(), order.end()), order.end());
   // Ties (a point on a node or edge shared by several master cells) are decided
   // geometrically, not by round-off: within `tie` of the best distance, an inside
   // projection beats a clamped one, then the lowest mesh cell index wins. The

@@ -67,6 +67,7 @@ class MasterSurface {
   double orientation(int k) const { return sign_[k]; }
 
  private:
+  /// Cells whose boxes share a bucket with the point or its rings; a cell may be listed twice.
   std::vector<int> candidates(const double* point) const;
   void gather(const double* xyz, int k, double* out) const;
   std::int64_t key(int i, int j, int l) const;

@@ -296,3 +296,38 @@ TEST(ContactProjection, TiesAtSharedNodesAreDecidedByCellIndexNotRoundOff) {
     }
   }
 }
+
+TEST(ContactProjection, DomedQuadraticCellIsFoundAboveItsNodes) {
+  // A quadratic cell whose mid-side nodes all rise by h bulges above every one of its nodes
+  // (to 2h for QUAD8, 4h/3 for TRIA6). A flat cell nearer than the domed cell's node box but
+  // farther than the dome itself must not win: the box pruning has to cover the bulge.
+  for (const CellType t : {CellType::Quad8, CellType::Tria6}) {
+    const double h = 0.3, apex = t == CellType::Quad8 ? 2 * h : 4 * h / 3;
+    Mesh mesh;
+    mesh.dim = 3;
+    std::vector<int> dome_nodes;
+    for (int a = 0; a < surface_n_nodes(t); ++a) {
+      double xi[2];
+      surface_reference_node(t, a, xi);
+      const double x = t == CellType::Quad8 ? 0.5 * (xi[0] + 1) : xi[0], y = t == CellType::Quad8 ? 0.5 * (xi[1] + 1) : xi[1];
+      dome_nodes.push_back(mesh.add_node(x, y, a < surface_n_vertices(t) ? 0.0 : h));
+    }
+    const int dome = mesh.add_cell(t, dome_nodes);
+    // The point, 0.02 above the apex (at the reference centre), and a flat lid 0.08 above it.
+    const double centre[2] = {t == CellType::Quad8 ? 0.0 : 1.0 / 3, t == CellType::Quad8 ? 0.0 : 1.0 / 3};
+    double xyz[3 * kMaxSurfaceNodes];
+    for (int a = 0; a < surface_n_nodes(t); ++a)
+      for (int i = 0; i < 3; ++i) xyz[3 * a + i] = mesh.node(dome_nodes[a])[i];
+    const SurfacePoint top = surface_point(t, xyz, centre);
+    ASSERT_NEAR(top.x[2], apex, 1e-14);
+    const double point[3] = {top.x[0], top.x[1], apex + 0.02}, lid_z = apex + 0.1;
+    const int lid = mesh.add_cell(CellType::Quad4, {mesh.add_node(-0.5, -0.5, lid_z), mesh.add_node(1.5, -0.5, lid_z),
+                                                    mesh.add_node(1.5, 1.5, lid_z), mesh.add_node(-0.5, 1.5, lid_z)});
+    MasterSurface master(mesh, {dome, lid}, false);
+    master.update(mesh.coords);
+    const MasterProjection p = master.project(point, 0.5);
+    ASSERT_TRUE(p.found);
+    EXPECT_EQ(p.cell, dome) << surface_type_name(t);
+    EXPECT_NEAR(p.distance, 0.02, 1e-12) << surface_type_name(t);
+  }
+}
