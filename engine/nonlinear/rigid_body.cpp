@@ -117,15 +117,20 @@ std::optional<SolveError> find_unheld_body(const FeModel& model, const DofMap& d
     if (body_index[r] < 0) body_index[r] = static_cast<int>(body_cells.size()), body_cells.emplace_back();
     body_cells[body_index[r]].push_back(c);
   }
+  // Each body's nodes in increasing order, from one pass over the nodes (the bodies share
+  // none); sorting every cell's nodes instead took 4 % of a glued 2D run of 68,000 cells.
+  std::vector<char> in_model(mesh.n_nodes(), 0);
+  for (int c : cells)
+    for (int k = 0; k < mesh.cell_n_nodes(c); ++k) in_model[mesh.cell(c)[k]] = 1;
+  std::vector<std::vector<int>> body_nodes(body_cells.size());
+  for (int v = 0; v < mesh.n_nodes(); ++v)
+    if (in_model[v]) body_nodes[body_index[root[v]]].push_back(v);
   const int dim = dofs.dim();
-  for (const std::vector<int>& body : body_cells) {
+  for (size_t b = 0; b < body_cells.size(); ++b) {
+    const std::vector<int>& body = body_cells[b];
+    const std::vector<int>& nodes = body_nodes[b];
     // The body's rigid-body motions: translations and rotations (AXIS: the axial translation
     // only), about the body's centre, lengths scaled by its size so that every mode is O(1).
-    std::vector<int> nodes;
-    for (int c : body)
-      for (int k = 0; k < mesh.cell_n_nodes(c); ++k) nodes.push_back(mesh.cell(c)[k]);
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
     double centre[3] = {0, 0, 0}, size = 0.0;
     for (int n : nodes)
       for (int k = 0; k < 3; ++k) centre[k] += mesh.node(n)[k] / static_cast<double>(nodes.size());
