@@ -14,7 +14,8 @@
 #   glued2d_k32 / cont2d_k32   the same with 368 and 384 / 352 cells per side
 #   elas3d        SSNP121 3D geometry, HEXA8 20x20x4 under HEXA20 16x16x4, interface displacement imposed
 #   cont3d        the same mesh in contact, CONTINUE, SIMPSON ORDRE_INT=4
-#   elas2d_1inst / elas2d_10inst   glued k=16, 1 instant against 10 instants of the same ramp
+#   elas2d_1inst / elas2d_10inst   glued k=16, 1 instant against 10 instants of the same ramp (FONC_MULT:
+#                  each instant solves for a new load)
 #   mortar2d_k16 / mortar2d_k32    the cont2d meshes with mortar contact (DEFI_CONT, LAGRANGIEN, CONTACT_INIT='OUI')
 #   mortar2d_k16_init_non          the same with CONTACT_INIT='NON' (a first solve without contact)
 #   mortar3d      the cont3d mesh with mortar contact (CONTACT_INIT='OUI')
@@ -31,18 +32,18 @@ work=$(mktemp -d); [ -n "${KEEP:-}" ] && echo "work: $work" >&2 || trap 'rm -rf 
 
 mesh2d() { [ -f "$work/$1.med" ] || "$gen" "${@:2}" -o "$work/$1.med" >/dev/null; }
 deck2d() {  # name mesh contact(0/1/mortar/mortar_non) n_instants
-  local contact="" excit="EXCIT = _F{ CHARGE = CH }"
+  local contact="" excit="EXCIT = _F{ CHARGE = CH, FONC_MULT = F }"
   if [ "$3" = mortar ] || [ "$3" = mortar_non ]; then
     local init=OUI; [ "$3" = mortar_non ] && init=NON
     contact="CONT = DEFI_CONT{ MODELE = MO, ZONE = _F{ APPARIEMENT = 'MORTAR', GROUP_MA_ESCL = 'AB', GROUP_MA_MAIT = 'EF',
              ALGO_CONT = 'LAGRANGIEN', CONTACT_INIT = '$init' } }"
-    excit="CONTACT = CONT, EXCIT = _F{ CHARGE = CH }"
+    excit="CONTACT = CONT, EXCIT = _F{ CHARGE = CH, FONC_MULT = F }"
   fi
   if [ "$3" = 1 ]; then
     contact="CONT = DEFI_CONTACT{ MODELE = MO, FORMULATION = 'CONTINUE', REAC_GEOM = 'CONTROLE', NB_ITER_GEOM = 2,
   ZONE = _F{ GROUP_MA_ESCL = 'AB', GROUP_MA_MAIT = 'EF', INTEGRATION = 'SIMPSON', ORDRE_INT = 4,
              COEF_CONT = 1000.0, CONTACT_INIT = 'NON' } }"
-    excit="CONTACT = CONT, EXCIT = _F{ CHARGE = CH }"
+    excit="CONTACT = CONT, EXCIT = _F{ CHARGE = CH, FONC_MULT = F }"
   fi
   cat > "$work/$1.lua" <<LUA
 DEBUT()
