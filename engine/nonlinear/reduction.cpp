@@ -117,4 +117,17 @@ Vector SplitMatrix::times(const Vector& u) const {
   return ku;
 }
 
+void SplitMatrix::add_constrained_rows(const Vector& x, Vector& y) const {
+  // Row c of K(C, F) is column c of K(F, C) (K is symmetric): its free entries.
+  const int* outer = c.outerIndexPtr();
+  const int* inner = c.innerIndexPtr();
+  const double* values = c.valuePtr();
+  for (int k = 0; k < static_cast<int>(constrained.size()); ++k) {
+    double row = 0.0;
+    for (int p = outer[k]; p < outer[k + 1]; ++p)
+      if (free_index[inner[p]] >= 0) row += values[p] * x[free_index[inner[p]]];
+    y[constrained[k]] += row;
+  }
+}
+
 }  // namespace lunaster::engine

@@ -29,6 +29,8 @@ struct SplitMatrix {
   Vector times(const Vector& u) const;
   /// K(F, F) x, x over the free equations (ff's columns).
   Vector ff_times(const Vector& x) const;
+  /// y[C] += K(C, F) x, x over the free equations, y over the whole numbering.
+  void add_constrained_rows(const Vector& x, Vector& y) const;
 };
 
 /// Splits K (square, symmetric, compressed, sorted columns) into `out`; `constrained` need

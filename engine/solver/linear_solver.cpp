@@ -170,6 +170,7 @@ RefinedSolve solve_with_refinement(const LinearSolver& solver, const MatrixProdu
     r = std::move(r_refined);
     out.residual = next;
   }
+  out.ax_minus_b = std::move(r);
   return out;
 }
 

@@ -121,6 +121,7 @@ struct RefinedSolve {
   double raw_residual = 0.0;
   double residual = 0.0;
   int steps = 0;
+  Vector ax_minus_b;  ///< A x - b at the returned x (what `residual` measures)
 };
 
 /// Solves A x = b with the solver's current factorisation of A, then refines
