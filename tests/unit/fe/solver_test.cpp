@@ -507,6 +507,35 @@ TEST(Solvers, BackendsAgreeOnAnFeStiffness) {
   }
 }
 
+TEST(Solvers, CholmodSupernodalSolveAgreesWithUmfpackIn3d) {
+  // A 3D HEXA8 block: supernodes of tens of columns with rows below them, so both sweeps of
+  // CHOLMOD's supernodal solve (done with Eigen's kernels) meet every case: a supernode with
+  // and without rows below, the fill-reducing permutation, several right-hand sides.
+  test::BlockBuilder block(CellType::Hexa8, 8, 0.2);
+  block.fill();
+  const Mesh& mesh = block.mesh();
+  const FeModel model = test::make_model(mesh, 3, Modelisation::Solid3D, ElasticMaterial{2.0e11, 0.3, 0.0});
+  const DofMap dofs(mesh, model.volume_cells(), 3);
+  std::vector<Triplet> t;
+  assemble_stiffness(model, dofs, t);
+  for (int node = 0; node < mesh.n_nodes(); ++node)
+    if (mesh.node(node)[2] == 0.0)
+      for (int c = 0; c < 3; ++c) t.emplace_back(dofs.dof(node, c), dofs.dof(node, c), 1e13);
+  SparseMatrix k(dofs.n_dofs(), dofs.n_dofs());
+  k.setFromTriplets(t.begin(), t.end());
+  auto cholmod = make_linear_solver(SolverKind::Cholmod);
+  auto umfpack = make_linear_solver(SolverKind::Umfpack);
+  cholmod->factorize(k, MatrixKind::SymmetricPositiveDefinite);
+  umfpack->factorize(k, MatrixKind::General);
+  for (int shift = 0; shift < 3; ++shift) {
+    Vector f = rhs(dofs.n_dofs());
+    for (int i = 0; i < f.size(); ++i) f[i] *= 1.0 + shift * std::cos(0.3 * i);
+    const Vector x = cholmod->solve(f), ref = umfpack->solve(f);
+    EXPECT_LT((k * x - f).norm(), 1e-12 * (k * x).cwiseAbs().sum()) << "right-hand side " << shift;
+    EXPECT_LT((x - ref).norm(), 1e-9 * ref.norm()) << "right-hand side " << shift;
+  }
+}
+
 /// A solver that factorises A + shift * diag(A) instead of A: each solve is off by a
 /// relative error of about `shift`, as a direct solver is on an ill-conditioned system.
 class InexactSolver final : public LinearSolver {
