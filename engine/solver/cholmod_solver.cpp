@@ -9,6 +9,7 @@
 #include <cholmod.h>
 
 #include <algorithm>
+#include <numeric>
 #include <cstdint>
 #include <cstddef>
 
@@ -18,12 +19,25 @@
 #include <Eigen/Dense>
 
 #include "engine/core/error.hpp"
+#include "engine/core/two_workers.hpp"
 #include "engine/solver/backends.hpp"
 #include "engine/solver/blas.hpp"
 #include "engine/solver/interface_solver.hpp"
 
 namespace lunaster::engine {
 namespace {
+
+/// The supernodes of a factor shared between two threads for the triangular sweeps:
+/// subtrees of the elimination tree that are disjoint (a supernode's updates go to its
+/// ancestors only), two sets of them of about equal work, and the rest, their ancestors
+/// (`top`). Empty lists: one thread does everything.
+struct SweepPlan {
+  std::vector<int> subtrees[2];   ///< each thread's supernodes, increasing
+  std::vector<int> top;           ///< the other supernodes, increasing
+  std::vector<int> top_columns;   ///< the columns of `top`
+};
+SweepPlan plan_sweeps(const cholmod_factor* f);
+Vector supernodal_solve(const cholmod_factor* f, const SweepPlan& plan, const Vector& b);
 
 class CholmodSolver final : public LinearSolver {
  public:
@@ -56,6 +70,7 @@ class CholmodSolver final : public LinearSolver {
   Eigen::Index n_ = -1, nnz_ = -1;  ///< size of the analysed pattern
   std::uint64_t fingerprint_ = 0;   ///< pattern_fingerprint of the analysed pattern
   std::vector<int> upper_count_;    ///< rows of each column up to the diagonal (the view's nz)
+  SweepPlan plan_;                  ///< how the solves share the factor's supernodes (per analysis)
   int failed_ = -1;
   bool ready_ = false;
 };
@@ -195,50 +210,154 @@ int weak_pivot_column(const cholmod_factor* factor, const Vector& diag) {
 
 int CholmodSolver::smallest_pivot_column(const SparseMatrix& a) const { return weak_pivot_column(factor_, a.diagonal()); }
 
+/// The supernodal factor's arrays (CHOLMOD's layout: supernode s holds columns super[s] to
+/// super[s+1]-1, its rows are ls[pi[s]..pi[s+1]), its values the column-major block at px[s]).
+struct Supernodes {
+  explicit Supernodes(const cholmod_factor* f)
+      : n(static_cast<int>(f->n)),
+        count(static_cast<int>(f->nsuper)),
+        perm(static_cast<const int*>(f->Perm)),
+        super(static_cast<const int*>(f->super)),
+        pi(static_cast<const int*>(f->pi)),
+        px(static_cast<const int*>(f->px)),
+        ls(static_cast<const int*>(f->s)),
+        lx(static_cast<const double*>(f->x)) {}
+  int columns(int s) const { return super[s + 1] - super[s]; }
+  int rows(int s) const { return pi[s + 1] - pi[s]; }
+  Eigen::Map<const Eigen::MatrixXd> block(int s) const { return {lx + px[s], rows(s), columns(s)}; }
+  int n, count;
+  const int *perm, *super, *pi, *px, *ls;
+  const double* lx;
+};
+
+/// L y = x in place, supernode `s` of the forward sweep (`t`: scratch of maxesize).
+void forward(const Supernodes& f, int s, Vector& x, Vector& t) {
+  const int k1 = f.super[s], nscol = f.columns(s), nbelow = f.rows(s) - nscol;
+  const auto l = f.block(s);
+  auto xs = x.segment(k1, nscol);
+  l.topRows(nscol).triangularView<Eigen::Lower>().solveInPlace(xs);
+  if (nbelow == 0) return;
+  auto below = t.head(nbelow);
+  below.noalias() = l.bottomRows(nbelow) * xs;
+  const int* rows = f.ls + f.pi[s] + nscol;
+  for (int i = 0; i < nbelow; ++i) x[rows[i]] -= below[i];
+}
+
+/// L^T z = y in place, supernode `s` of the backward sweep.
+void backward(const Supernodes& f, int s, Vector& x, Vector& t) {
+  const int k1 = f.super[s], nscol = f.columns(s), nbelow = f.rows(s) - nscol;
+  const auto l = f.block(s);
+  auto xs = x.segment(k1, nscol);
+  if (nbelow > 0) {
+    auto below = t.head(nbelow);
+    const int* rows = f.ls + f.pi[s] + nscol;
+    for (int i = 0; i < nbelow; ++i) below[i] = x[rows[i]];
+    xs.noalias() -= l.bottomRows(nbelow).transpose() * below;
+  }
+  l.topRows(nscol).triangularView<Eigen::Lower>().transpose().solveInPlace(xs);
+}
+
+SweepPlan plan_sweeps(const cholmod_factor* factor) {
+  SweepPlan plan;
+  const Supernodes f(factor);
+  // Below about 2e6 factor entries (a few ms a sweep) a second thread costs what it saves.
+  constexpr double kEntriesForTwoThreads = 2e6;
+  if (static_cast<double>(factor->xsize) < kEntriesForTwoThreads || f.count < 2) return plan;
+  // Elimination tree of the supernodes: the parent holds the first row below the diagonal
+  // block. A parent comes after its children.
+  std::vector<int> owner_of_column(f.n), parent(f.count, -1);
+  for (int s = 0; s < f.count; ++s)
+    for (int k = f.super[s]; k < f.super[s + 1]; ++k) owner_of_column[k] = s;
+  std::vector<double> work(f.count), subtree(f.count);
+  std::vector<std::vector<int>> children(f.count);
+  std::vector<int> roots;
+  for (int s = 0; s < f.count; ++s) {
+    work[s] = static_cast<double>(f.rows(s)) * f.columns(s);
+    subtree[s] += work[s];
+    if (f.rows(s) > f.columns(s)) {
+      parent[s] = owner_of_column[f.ls[f.pi[s] + f.columns(s)]];
+      subtree[parent[s]] += subtree[s];
+      children[parent[s]].push_back(s);
+    } else {
+      roots.push_back(s);
+    }
+  }
+  // Frontier of subtrees: the roots, then the heaviest subtree is opened (it joins the top,
+  // its children the frontier) while it outweighs all the others together and the top stays
+  // a small part of the work.
+  const double total = std::accumulate(work.begin(), work.end(), 0.0);
+  std::vector<int> frontier = roots;
+  std::vector<char> in_top(f.count, 0);
+  double top_work = 0.0;
+  for (;;) {
+    auto heaviest = std::max_element(frontier.begin(), frontier.end(),
+                                      [&](int a, int b) { return subtree[a] < subtree[b]; });
+    double frontier_work = 0.0;
+    for (int s : frontier) frontier_work += subtree[s];
+    if (subtree[*heaviest] <= 0.5 * frontier_work) break;
+    const int s = *heaviest;
+    if (top_work + work[s] > 0.25 * total) return plan;  // no balanced split worth a thread
+    frontier.erase(heaviest);
+    in_top[s] = 1, top_work += work[s];
+    frontier.insert(frontier.end(), children[s].begin(), children[s].end());
+  }
+  // Heaviest subtrees first, each to the lighter thread.
+  std::sort(frontier.begin(), frontier.end(), [&](int a, int b) { return subtree[a] > subtree[b]; });
+  std::vector<int> thread_of(f.count, -1);
+  double load[2] = {0.0, 0.0};
+  for (int s : frontier) {
+    const int w = load[0] <= load[1] ? 0 : 1;
+    thread_of[s] = w, load[w] += subtree[s];
+  }
+  for (int s = f.count - 1; s >= 0; --s)
+    if (!in_top[s] && thread_of[s] < 0) thread_of[s] = thread_of[parent[s]];
+  for (int s = 0; s < f.count; ++s) {
+    if (in_top[s]) {
+      plan.top.push_back(s);
+      for (int k = f.super[s]; k < f.super[s + 1]; ++k) plan.top_columns.push_back(k);
+    } else {
+      plan.subtrees[thread_of[s]].push_back(s);
+    }
+  }
+  return plan;
+}
+
 /// x = A^-1 b from a supernodal LL^T factor of P A P^T, supernode by supernode with Eigen's
 /// dense kernels: in each sweep a supernode is one small triangular solve and one product
 /// with its rows below. cholmod_solve makes the same two BLAS calls per supernode through
 /// OpenBLAS, whose per-call set-up (argument checks, a locked buffer) weighs on the many
-/// small supernodes of a 2D factor: a solve is BLAS-2, memory-bound, and repeated for
-/// every instant and refinement step.
-Vector supernodal_solve(const cholmod_factor* f, const Vector& b) {
-  const int n = static_cast<int>(f->n);
-  const auto* perm = static_cast<const int*>(f->Perm);
-  const auto* super = static_cast<const int*>(f->super);
-  const auto* pi = static_cast<const int*>(f->pi);
-  const auto* px = static_cast<const int*>(f->px);
-  const auto* ls = static_cast<const int*>(f->s);
-  const auto* lx = static_cast<const double*>(f->x);
-  const int nsuper = static_cast<int>(f->nsuper);
-  using Block = Eigen::Map<const Eigen::MatrixXd>;
-  Vector x(n);
-  for (int k = 0; k < n; ++k) x[k] = b[perm ? perm[k] : k];
-  Vector below(static_cast<Eigen::Index>(f->maxesize));
-  for (int s = 0; s < nsuper; ++s) {  // L y = P b
-    const int k1 = super[s], nscol = super[s + 1] - k1, nsrow = pi[s + 1] - pi[s], nbelow = nsrow - nscol;
-    const Block l(lx + px[s], nsrow, nscol);
-    auto xs = x.segment(k1, nscol);
-    l.topRows(nscol).triangularView<Eigen::Lower>().solveInPlace(xs);
-    if (nbelow == 0) continue;
-    auto t = below.head(nbelow);
-    t.noalias() = l.bottomRows(nbelow) * xs;
-    const int* rows = ls + pi[s] + nscol;
-    for (int i = 0; i < nbelow; ++i) x[rows[i]] -= t[i];
+/// small supernodes of a 2D factor. A solve is BLAS-2 and memory-bound: with a plan, two
+/// threads sweep disjoint subtrees at once. Forward, the second thread works on its own
+/// copy of x (its updates to the shared ancestors are added after); backward, the ancestors
+/// are done first and then only read.
+Vector supernodal_solve(const cholmod_factor* factor, const SweepPlan& plan, const Vector& b) {
+  const Supernodes f(factor);
+  Vector x(f.n);
+  for (int k = 0; k < f.n; ++k) x[k] = b[f.perm ? f.perm[k] : k];
+  const Eigen::Index scratch = static_cast<Eigen::Index>(factor->maxesize);
+  Vector t(scratch);
+  if (plan.subtrees[0].empty()) {
+    for (int s = 0; s < f.count; ++s) forward(f, s, x, t);
+    for (int s = f.count - 1; s >= 0; --s) backward(f, s, x, t);
+  } else {
+    Vector y = x;  // the second thread's forward copy
+    run_two_workers([&](int w, size_t&) {
+      Vector scratch_w(scratch);
+      for (int s : plan.subtrees[w]) forward(f, s, w == 0 ? x : y, scratch_w);
+    });
+    for (int s : plan.subtrees[1])
+      for (int k = f.super[s]; k < f.super[s + 1]; ++k) x[k] = y[k];
+    for (int k : plan.top_columns) x[k] += y[k] - b[f.perm ? f.perm[k] : k];
+    for (int s : plan.top) forward(f, s, x, t);
+    for (auto s = plan.top.rbegin(); s != plan.top.rend(); ++s) backward(f, *s, x, t);
+    run_two_workers([&](int w, size_t&) {
+      Vector scratch_w(scratch);
+      const auto& mine = plan.subtrees[w];
+      for (auto s = mine.rbegin(); s != mine.rend(); ++s) backward(f, *s, x, scratch_w);
+    });
   }
-  for (int s = nsuper - 1; s >= 0; --s) {  // L^T z = y
-    const int k1 = super[s], nscol = super[s + 1] - k1, nsrow = pi[s + 1] - pi[s], nbelow = nsrow - nscol;
-    const Block l(lx + px[s], nsrow, nscol);
-    auto xs = x.segment(k1, nscol);
-    if (nbelow > 0) {
-      auto t = below.head(nbelow);
-      const int* rows = ls + pi[s] + nscol;
-      for (int i = 0; i < nbelow; ++i) t[i] = x[rows[i]];
-      xs.noalias() -= l.bottomRows(nbelow).transpose() * t;
-    }
-    l.topRows(nscol).triangularView<Eigen::Lower>().transpose().solveInPlace(xs);
-  }
-  Vector out(n);
-  for (int k = 0; k < n; ++k) out[perm ? perm[k] : k] = x[k];
+  Vector out(f.n);
+  for (int k = 0; k < f.n; ++k) out[f.perm ? f.perm[k] : k] = x[k];
   return out;
 }
 
@@ -287,6 +406,7 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     n_ = m->cols();
     nnz_ = m->nonZeros();
     fingerprint_ = fingerprint;
+    plan_ = factor_->is_super ? plan_sweeps(factor_) : SweepPlan{};
   }
   const int ok = cholmod_factorize(&s, factor_, &common_);
   if (common_.status == CHOLMOD_NOT_POSDEF) {
@@ -306,7 +426,7 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
 
 Vector CholmodSolver::solve(const Vector& b) const {
   if (!ready_) throw InternalError("CHOLMOD: solve called without a valid factorisation");
-  if (factor_->is_super && factor_->is_ll) return supernodal_solve(factor_, b);
+  if (factor_->is_super && factor_->is_ll) return supernodal_solve(factor_, plan_, b);
   cholmod_dense rhs{};
   rhs.nrow = b.size();
   rhs.ncol = 1;

@@ -536,6 +536,36 @@ TEST(Solvers, CholmodSupernodalSolveAgreesWithUmfpackIn3d) {
   }
 }
 
+TEST(Solvers, CholmodSolvesOnTwoThreadsAgreeWithUmfpack) {
+  // A 5-point operator on a 300 x 300 grid with varying coefficients: its factor (over 2e6
+  // entries) is swept by two threads over disjoint subtrees of the elimination tree, the
+  // ancestors they share after (forward) or before (backward). Any update lost or counted
+  // twice in that hand-over moves the solution far beyond the tolerance.
+  const int side = 300, n = side * side;
+  std::vector<Triplet> t;
+  for (int i = 0; i < side; ++i)
+    for (int j = 0; j < side; ++j) {
+      const int p = i * side + j;
+      const double cx = 1.0 + 0.5 * std::sin(0.1 * i), cy = 1.0 + 0.5 * std::cos(0.07 * j);
+      t.emplace_back(p, p, 2.0 * (cx + cy) + 1e-3);
+      if (j + 1 < side) t.emplace_back(p, p + 1, -cx), t.emplace_back(p + 1, p, -cx);
+      if (i + 1 < side) t.emplace_back(p, p + side, -cy), t.emplace_back(p + side, p, -cy);
+    }
+  SparseMatrix a(n, n);
+  a.setFromTriplets(t.begin(), t.end());
+  auto cholmod = make_linear_solver(SolverKind::Cholmod);
+  auto umfpack = make_linear_solver(SolverKind::Umfpack);
+  cholmod->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+  umfpack->factorize(a, MatrixKind::General);
+  for (int shift = 0; shift < 3; ++shift) {
+    Vector f = rhs(n);
+    for (int i = 0; i < n; ++i) f[i] *= 1.0 + shift * std::cos(0.01 * i);
+    const Vector x = cholmod->solve(f), ref = umfpack->solve(f);
+    EXPECT_LT((a * x - f).norm(), 1e-12 * f.norm()) << "right-hand side " << shift;
+    EXPECT_LT((x - ref).norm(), 1e-10 * ref.norm()) << "right-hand side " << shift;
+  }
+}
+
 /// A solver that factorises A + shift * diag(A) instead of A: each solve is off by a
 /// relative error of about `shift`, as a direct solver is on an ill-conditioned system.
 class InexactSolver final : public LinearSolver {
