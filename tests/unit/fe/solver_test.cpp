@@ -480,22 +480,65 @@ TEST(Singularity, DescribesNodeAndComponent) {
 namespace lunaster::engine {
 namespace {
 
-TEST(Solvers, BackendsAgreeOnAnFeStiffness) {
-  // 2D block of 40 x 40 QUAD4 with elastic supports at the bottom: exercises
-  // the node-graph ordering and the dense kernels on supernodes of real size.
-  test::BlockBuilder block(CellType::Quad4, 40, 0.3);
+/// Stiffness of an n x n (x n) block of QUAD4 (plane strain) or HEXA8 cells, interior nodes
+/// moved by up to `distortion` cells, its bottom nodes held by springs `spring`: SPD.
+SparseMatrix block_on_springs(CellType type, int n, double distortion, double young, double spring) {
+  test::BlockBuilder block(type, n, distortion);
   block.fill();
   const Mesh& mesh = block.mesh();
-  const FeModel model = test::make_model(mesh, 2, Modelisation::PlaneStrain, ElasticMaterial{2.0e6, 0.3, 0.0});
-  const DofMap dofs(mesh, model.volume_cells(), 2);
+  const int dim = mesh.dim;
+  const FeModel model = test::make_model(mesh, dim, dim == 3 ? Modelisation::Solid3D : Modelisation::PlaneStrain,
+                                         ElasticMaterial{young, 0.3, 0.0});
+  const DofMap dofs(mesh, model.volume_cells(), dim);
   std::vector<Triplet> t;
   assemble_stiffness(model, dofs, t);
   for (int node = 0; node < mesh.n_nodes(); ++node)
-    if (mesh.node(node)[1] == 0.0)
-      for (int c = 0; c < 2; ++c) t.emplace_back(dofs.dof(node, c), dofs.dof(node, c), 1e8);
+    if (mesh.node(node)[dim - 1] == 0.0)
+      for (int c = 0; c < dim; ++c) t.emplace_back(dofs.dof(node, c), dofs.dof(node, c), spring);
   SparseMatrix k(dofs.n_dofs(), dofs.n_dofs());
   k.setFromTriplets(t.begin(), t.end());
-  const Vector f = rhs(dofs.n_dofs());
+  return k;
+}
+
+/// A 5-point operator on a side x side grid, coefficients varying along each direction: SPD.
+SparseMatrix five_point_operator(int side) {
+  const int n = side * side;
+  std::vector<Triplet> t;
+  for (int i = 0; i < side; ++i)
+    for (int j = 0; j < side; ++j) {
+      const int p = i * side + j;
+      const double cx = 1.0 + 0.5 * std::sin(0.1 * i), cy = 1.0 + 0.5 * std::cos(0.07 * j);
+      t.emplace_back(p, p, 2.0 * (cx + cy) + 1e-3);
+      if (j + 1 < side) t.emplace_back(p, p + 1, -cx), t.emplace_back(p + 1, p, -cx);
+      if (i + 1 < side) t.emplace_back(p, p + side, -cy), t.emplace_back(p + side, p, -cy);
+    }
+  SparseMatrix a(n, n);
+  a.setFromTriplets(t.begin(), t.end());
+  return a;
+}
+
+/// CHOLMOD's solutions of a x = f for three right-hand sides against UMFPACK's: residual
+/// within `residual_tol` of |A| |x| summed, difference within `difference_tol` of the size.
+void expect_cholmod_solves_as_umfpack(const SparseMatrix& a, double residual_tol, double difference_tol) {
+  auto cholmod = make_linear_solver(SolverKind::Cholmod);
+  auto umfpack = make_linear_solver(SolverKind::Umfpack);
+  cholmod->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+  umfpack->factorize(a, MatrixKind::General);
+  const int n = static_cast<int>(a.rows());
+  for (int shift = 0; shift < 3; ++shift) {
+    Vector f = rhs(n);
+    for (int i = 0; i < n; ++i) f[i] *= 1.0 + shift * std::cos(0.3 * i);
+    const Vector x = cholmod->solve(f), ref = umfpack->solve(f);
+    EXPECT_LT((a * x - f).norm(), residual_tol * (a * x).cwiseAbs().sum()) << "right-hand side " << shift;
+    EXPECT_LT((x - ref).norm(), difference_tol * ref.norm()) << "right-hand side " << shift;
+  }
+}
+
+TEST(Solvers, BackendsAgreeOnAnFeStiffness) {
+  // 2D block of 40 x 40 QUAD4 with elastic supports at the bottom: exercises
+  // the node-graph ordering and the dense kernels on supernodes of real size.
+  const SparseMatrix k = block_on_springs(CellType::Quad4, 40, 0.3, 2.0e6, 1e8);
+  const Vector f = rhs(static_cast<int>(k.rows()));
   Vector first;
   for (SolverKind kind : {SolverKind::Cholmod, SolverKind::Umfpack, SolverKind::Mumps}) {
     auto s = make_linear_solver(kind);
@@ -511,29 +554,7 @@ TEST(Solvers, CholmodSupernodalSolveAgreesWithUmfpackIn3d) {
   // A 3D HEXA8 block: supernodes of tens of columns with rows below them, so both sweeps of
   // CHOLMOD's supernodal solve (done with Eigen's kernels) meet every case: a supernode with
   // and without rows below, the fill-reducing permutation, several right-hand sides.
-  test::BlockBuilder block(CellType::Hexa8, 8, 0.2);
-  block.fill();
-  const Mesh& mesh = block.mesh();
-  const FeModel model = test::make_model(mesh, 3, Modelisation::Solid3D, ElasticMaterial{2.0e11, 0.3, 0.0});
-  const DofMap dofs(mesh, model.volume_cells(), 3);
-  std::vector<Triplet> t;
-  assemble_stiffness(model, dofs, t);
-  for (int node = 0; node < mesh.n_nodes(); ++node)
-    if (mesh.node(node)[2] == 0.0)
-      for (int c = 0; c < 3; ++c) t.emplace_back(dofs.dof(node, c), dofs.dof(node, c), 1e13);
-  SparseMatrix k(dofs.n_dofs(), dofs.n_dofs());
-  k.setFromTriplets(t.begin(), t.end());
-  auto cholmod = make_linear_solver(SolverKind::Cholmod);
-  auto umfpack = make_linear_solver(SolverKind::Umfpack);
-  cholmod->factorize(k, MatrixKind::SymmetricPositiveDefinite);
-  umfpack->factorize(k, MatrixKind::General);
-  for (int shift = 0; shift < 3; ++shift) {
-    Vector f = rhs(dofs.n_dofs());
-    for (int i = 0; i < f.size(); ++i) f[i] *= 1.0 + shift * std::cos(0.3 * i);
-    const Vector x = cholmod->solve(f), ref = umfpack->solve(f);
-    EXPECT_LT((k * x - f).norm(), 1e-12 * (k * x).cwiseAbs().sum()) << "right-hand side " << shift;
-    EXPECT_LT((x - ref).norm(), 1e-9 * ref.norm()) << "right-hand side " << shift;
-  }
+  expect_cholmod_solves_as_umfpack(block_on_springs(CellType::Hexa8, 8, 0.2, 2.0e11, 1e13), 1e-12, 1e-9);
 }
 
 TEST(Solvers, CholmodSolvesOnTwoThreadsAgreeWithUmfpack) {
@@ -541,29 +562,7 @@ TEST(Solvers, CholmodSolvesOnTwoThreadsAgreeWithUmfpack) {
   // entries) is swept by two threads over disjoint subtrees of the elimination tree, the
   // ancestors they share after (forward) or before (backward). Any update lost or counted
   // twice in that hand-over moves the solution far beyond the tolerance.
-  const int side = 300, n = side * side;
-  std::vector<Triplet> t;
-  for (int i = 0; i < side; ++i)
-    for (int j = 0; j < side; ++j) {
-      const int p = i * side + j;
-      const double cx = 1.0 + 0.5 * std::sin(0.1 * i), cy = 1.0 + 0.5 * std::cos(0.07 * j);
-      t.emplace_back(p, p, 2.0 * (cx + cy) + 1e-3);
-      if (j + 1 < side) t.emplace_back(p, p + 1, -cx), t.emplace_back(p + 1, p, -cx);
-      if (i + 1 < side) t.emplace_back(p, p + side, -cy), t.emplace_back(p + side, p, -cy);
-    }
-  SparseMatrix a(n, n);
-  a.setFromTriplets(t.begin(), t.end());
-  auto cholmod = make_linear_solver(SolverKind::Cholmod);
-  auto umfpack = make_linear_solver(SolverKind::Umfpack);
-  cholmod->factorize(a, MatrixKind::SymmetricPositiveDefinite);
-  umfpack->factorize(a, MatrixKind::General);
-  for (int shift = 0; shift < 3; ++shift) {
-    Vector f = rhs(n);
-    for (int i = 0; i < n; ++i) f[i] *= 1.0 + shift * std::cos(0.01 * i);
-    const Vector x = cholmod->solve(f), ref = umfpack->solve(f);
-    EXPECT_LT((a * x - f).norm(), 1e-12 * f.norm()) << "right-hand side " << shift;
-    EXPECT_LT((x - ref).norm(), 1e-10 * ref.norm()) << "right-hand side " << shift;
-  }
+  expect_cholmod_solves_as_umfpack(five_point_operator(300), 1e-14, 1e-10);
 }
 
 /// A solver that factorises A + shift * diag(A) instead of A: each solve is off by a
@@ -663,19 +662,8 @@ TEST(Solvers, LargeFactorsOnHugePagesSolveAsSmallOnes) {
   // A 5-point Laplacian on a 250 x 250 grid: CHOLMOD's factor and workspace are blocks of
   // over 4 MB, which the solver libraries' allocator places on huge pages (engine/solver/
   // blas.cpp). UMFPACK's blocks go the same way.
-  const int side = 250, n = side * side;
-  std::vector<Triplet> t;
-  for (int i = 0; i < side; ++i)
-    for (int j = 0; j < side; ++j) {
-      const int p = i * side + j;
-      t.emplace_back(p, p, 4.0 + 1e-3 * (p % 7));
-      if (j + 1 < side) t.emplace_back(p, p + 1, -1.0), t.emplace_back(p + 1, p, -1.0);
-      if (i + 1 < side) t.emplace_back(p, p + side, -1.0), t.emplace_back(p + side, p, -1.0);
-    }
-  SparseMatrix a(n, n);
-  a.setFromTriplets(t.begin(), t.end());
-  a.makeCompressed();
-  const Vector b = rhs(n);
+  const SparseMatrix a = five_point_operator(250);
+  const Vector b = rhs(static_cast<int>(a.rows()));
   for (const SolverKind kind : {SolverKind::Cholmod, SolverKind::Umfpack}) {
     auto s = make_linear_solver(kind);
     s->factorize(a, kind == SolverKind::Cholmod ? MatrixKind::SymmetricPositiveDefinite : MatrixKind::General);
