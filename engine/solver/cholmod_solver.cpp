@@ -38,6 +38,8 @@ struct SweepPlan {
 };
 SweepPlan plan_sweeps(const cholmod_factor* f);
 Vector supernodal_solve(const cholmod_factor* f, const SweepPlan& plan, const Vector& b);
+void forward_sweep(const cholmod_factor* f, const SweepPlan& plan, Vector& x);
+void backward_sweep(const cholmod_factor* f, const SweepPlan& plan, Vector& x);
 
 class CholmodSolver final : public LinearSolver {
  public:
@@ -322,42 +324,61 @@ SweepPlan plan_sweeps(const cholmod_factor* factor) {
   return plan;
 }
 
-/// x = A^-1 b from a supernodal LL^T factor of P A P^T, supernode by supernode with Eigen's
-/// dense kernels: in each sweep a supernode is one small triangular solve and one product
-/// with its rows below. cholmod_solve makes the same two BLAS calls per supernode through
-/// OpenBLAS, whose per-call set-up (argument checks, a locked buffer) weighs on the many
-/// small supernodes of a 2D factor. A solve is BLAS-2 and memory-bound: with a plan, two
-/// threads sweep disjoint subtrees at once. Forward, the second thread works on its own
-/// copy of x (its updates to the shared ancestors are added after); backward, the ancestors
-/// are done first and then only read.
-Vector supernodal_solve(const cholmod_factor* factor, const SweepPlan& plan, const Vector& b) {
+/// L y = x in place for a supernodal LL^T factor (x in the factor's order), supernode by
+/// supernode with Eigen's dense kernels: one small triangular solve and one product with the
+/// rows below each. cholmod_solve makes the same two calls per supernode through OpenBLAS,
+/// whose per-call set-up (argument checks, a locked buffer) weighs on the many small
+/// supernodes of a 2D factor. A sweep is BLAS-2 and memory-bound: with a plan, two threads
+/// sweep disjoint subtrees at once, the second on its own copy of x, whose updates to the
+/// shared ancestors are added before the ancestors are swept.
+void forward_sweep(const cholmod_factor* factor, const SweepPlan& plan, Vector& x) {
   const Supernodes f(factor);
-  Vector x(f.n);
-  for (int k = 0; k < f.n; ++k) x[k] = b[f.perm ? f.perm[k] : k];
   const Eigen::Index scratch = static_cast<Eigen::Index>(factor->maxesize);
   Vector t(scratch);
   if (plan.subtrees[0].empty()) {
     for (int s = 0; s < f.count; ++s) forward(f, s, x, t);
-    for (int s = f.count - 1; s >= 0; --s) backward(f, s, x, t);
-  } else {
-    Vector y = x;  // the second thread's forward copy
-    run_two_workers([&](int w, size_t&) {
-      Vector scratch_w(scratch);
-      for (int s : plan.subtrees[w]) forward(f, s, w == 0 ? x : y, scratch_w);
-    });
-    for (int s : plan.subtrees[1])
-      for (int k = f.super[s]; k < f.super[s + 1]; ++k) x[k] = y[k];
-    for (int k : plan.top_columns) x[k] += y[k] - b[f.perm ? f.perm[k] : k];
-    for (int s : plan.top) forward(f, s, x, t);
-    for (auto s = plan.top.rbegin(); s != plan.top.rend(); ++s) backward(f, *s, x, t);
-    run_two_workers([&](int w, size_t&) {
-      Vector scratch_w(scratch);
-      const auto& mine = plan.subtrees[w];
-      for (auto s = mine.rbegin(); s != mine.rend(); ++s) backward(f, *s, x, scratch_w);
-    });
+    return;
   }
-  Vector out(f.n);
-  for (int k = 0; k < f.n; ++k) out[f.perm ? f.perm[k] : k] = x[k];
+  const Vector start = x;
+  Vector y = x;  // the second thread's copy
+  run_two_workers([&](int w, size_t&) {
+    Vector scratch_w(scratch);
+    for (int s : plan.subtrees[w]) forward(f, s, w == 0 ? x : y, scratch_w);
+  });
+  for (int s : plan.subtrees[1])
+    for (int k = f.super[s]; k < f.super[s + 1]; ++k) x[k] = y[k];
+  for (int k : plan.top_columns) x[k] += y[k] - start[k];  // the second thread's updates
+  for (int s : plan.top) forward(f, s, x, t);
+}
+
+/// L^T z = y in place: the ancestors first, then the two threads' subtrees at once (each
+/// reads the ancestors' values and writes its own).
+void backward_sweep(const cholmod_factor* factor, const SweepPlan& plan, Vector& x) {
+  const Supernodes f(factor);
+  const Eigen::Index scratch = static_cast<Eigen::Index>(factor->maxesize);
+  Vector t(scratch);
+  if (plan.subtrees[0].empty()) {
+    for (int s = f.count - 1; s >= 0; --s) backward(f, s, x, t);
+    return;
+  }
+  for (auto s = plan.top.rbegin(); s != plan.top.rend(); ++s) backward(f, *s, x, t);
+  run_two_workers([&](int w, size_t&) {
+    Vector scratch_w(scratch);
+    const auto& mine = plan.subtrees[w];
+    for (auto s = mine.rbegin(); s != mine.rend(); ++s) backward(f, *s, x, scratch_w);
+  });
+}
+
+/// x = A^-1 b from a supernodal LL^T factor of P A P^T.
+Vector supernodal_solve(const cholmod_factor* factor, const SweepPlan& plan, const Vector& b) {
+  const int n = static_cast<int>(factor->n);
+  const auto* perm = static_cast<const int*>(factor->Perm);
+  Vector x(n);
+  for (int k = 0; k < n; ++k) x[k] = b[perm ? perm[k] : k];
+  forward_sweep(factor, plan, x);
+  backward_sweep(factor, plan, x);
+  Vector out(n);
+  for (int k = 0; k < n; ++k) out[perm ? perm[k] : k] = x[k];
   return out;
 }
 
@@ -476,16 +497,11 @@ class CholmodInterfaceSolver final : public InterfaceSolver {
   const std::vector<int>& interface() const override { return interface_; }
 
  private:
-  cholmod_dense* apply(int system, cholmod_dense* b) const {
-    cholmod_dense* x = cholmod_solve(system, factor_, b, &common_);
-    if (!x) throw SolveError("CHOLMOD: solve failed");
-    return x;
-  }
-
   std::vector<int> interface_;
   std::vector<int> slot_;  ///< per equation: its index in the interface (its order in L), -1 inside
   mutable cholmod_common common_{};
   cholmod_factor* factor_ = nullptr;
+  SweepPlan plan_;        ///< how the solves share the factor's supernodes
   Eigen::MatrixXd l_ii_;  ///< trailing block of L (lower triangle)
   Eigen::MatrixXd g_;     ///< L_II L_II^T - R_II
   Eigen::MatrixXd s_;     ///< the last factorised Schur complement, as dsytrf left it
@@ -551,6 +567,7 @@ void CholmodInterfaceSolver::factorize_reference(SparseMatrix& r) {
                      std::to_string(common_.status) + ")");
   }
   restore();
+  plan_ = plan_sweeps(factor_);
   // L_II from the supernodes holding the last m columns.
   const auto* super = static_cast<const int*>(factor_->super);
   const auto* pi = static_cast<const int*>(factor_->pi);
@@ -602,30 +619,18 @@ void CholmodInterfaceSolver::factorize(const SparseMatrix& a, MatrixKind /*kind*
 Vector CholmodInterfaceSolver::solve(const Vector& b) const {
   if (!ready_) throw InternalError("interface solver: solve called without a valid factorisation");
   const int n = static_cast<int>(b.size()), m = static_cast<int>(interface_.size());
-  cholmod_dense rhs{};
-  rhs.nrow = rhs.nzmax = rhs.d = b.size();
-  rhs.ncol = 1;
-  rhs.x = const_cast<double*>(b.data());
-  rhs.xtype = CHOLMOD_REAL;
-  rhs.dtype = CHOLMOD_DOUBLE;
-  cholmod_dense* pb = apply(CHOLMOD_P, &rhs);
-  cholmod_dense* y = apply(CHOLMOD_L, pb);
-  cholmod_free_dense(&pb, &common_);
-  Eigen::Map<Vector> yv(static_cast<double*>(y->x), n);
-  Vector x_i = l_ii_.triangularView<Eigen::Lower>() * yv.tail(m);
+  const auto* perm = static_cast<const int*>(factor_->Perm);
+  Vector y(n);
+  for (int k = 0; k < n; ++k) y[k] = b[perm[k]];
+  forward_sweep(factor_, plan_, y);
+  Vector x_i = l_ii_.triangularView<Eigen::Lower>() * y.tail(m);
   int info = 0, one = 1;
   dsytrs_("L", &m, &one, s_.data(), &m, pivots_.data(), x_i.data(), &m, &info, 1);
-  if (info != 0) {
-    cholmod_free_dense(&y, &common_);
-    throw InternalError("dsytrs: argument " + std::to_string(-info));
-  }
-  yv.tail(m) = l_ii_.transpose().triangularView<Eigen::Upper>() * x_i;
-  cholmod_dense* z = apply(CHOLMOD_Lt, y);
-  cholmod_free_dense(&y, &common_);
-  cholmod_dense* x = apply(CHOLMOD_Pt, z);
-  cholmod_free_dense(&z, &common_);
-  Vector out = Eigen::Map<const Vector>(static_cast<const double*>(x->x), n);
-  cholmod_free_dense(&x, &common_);
+  if (info != 0) throw InternalError("dsytrs: argument " + std::to_string(-info));
+  y.tail(m) = l_ii_.transpose().triangularView<Eigen::Upper>() * x_i;
+  backward_sweep(factor_, plan_, y);
+  Vector out(n);
+  for (int k = 0; k < n; ++k) out[perm[k]] = y[k];
   return out;
 }
 }  // namespace

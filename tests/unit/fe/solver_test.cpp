@@ -565,6 +565,34 @@ TEST(Solvers, CholmodSolvesOnTwoThreadsAgreeWithUmfpack) {
   expect_cholmod_solves_as_umfpack(five_point_operator(300), 1e-14, 1e-10);
 }
 
+TEST(InterfaceSolver, SweepsOnTwoThreadsAroundTheSchurComplement) {
+  // The 300 x 300 operator with its middle grid row as the interface: a factor large enough
+  // for the two-thread sweeps on both sides of the interface's dense Schur complement. The
+  // contact terms (a penalty on the row and between neighbours) give K + C, solved directly.
+  SparseMatrix k = five_point_operator(300);
+  k.makeCompressed();
+  const int side = 300, n = side * side;
+  std::vector<int> interface;
+  for (int j = 0; j < side; ++j) interface.push_back(150 * side + j);
+  std::vector<Triplet> t;
+  for (int j = 0; j < side; ++j) {
+    const int p = interface[j];
+    t.emplace_back(p, p, 10.0 + j % 3);
+    if (j + 1 < side) t.emplace_back(p, p + 1, -2.0), t.emplace_back(p + 1, p, -2.0);
+  }
+  SparseMatrix c(n, n);
+  c.setFromTriplets(t.begin(), t.end());
+  auto solver = make_interface_solver(interface);
+  solver->factorize_reference(k);
+  solver->factorize(c, MatrixKind::SymmetricIndefinite);
+  const SparseMatrix a = k + c;
+  auto umfpack = make_linear_solver(SolverKind::Umfpack);
+  umfpack->factorize(a, MatrixKind::General);
+  const Vector f = rhs(n), x = solver->solve(f), ref = umfpack->solve(f);
+  EXPECT_LT((a * x - f).norm(), 1e-12 * f.norm());
+  EXPECT_LT((x - ref).norm(), 1e-10 * ref.norm());
+}
+
 /// A solver that factorises A + shift * diag(A) instead of A: each solve is off by a
 /// relative error of about `shift`, as a direct solver is on an ill-conditioned system.
 class InexactSolver final : public LinearSolver {
