@@ -9,13 +9,27 @@
 #include <cstddef>
 #include <cstdlib>
 #include <cstring>
+#include <thread>
 
 #include "engine/core/memory.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::engine {
 namespace {
 
 bool has_env(const char* name) { return std::getenv(name) != nullptr; }
+
+/// The user set OpenBLAS's thread count through its environment: that count stands.
+bool threads_from_environment() {
+  return has_env("OPENBLAS_NUM_THREADS") || has_env("GOTO_NUM_THREADS") || has_env("OMP_NUM_THREADS");
+}
+
+/// Stops OpenBLAS's idle workers (each would spin in sched_yield before sleeping); OpenBLAS
+/// starts them again when a later call asks for more than one thread.
+void stop_blas_workers() {
+  using Shutdown = int (*)();
+  if (const auto stop = reinterpret_cast<Shutdown>(dlsym(RTLD_DEFAULT, "blas_thread_shutdown_"))) stop();
+}
 
 /// Debian 12's OpenBLAS (0.3.21, built for every x86-64 core and choosing at
 /// load time) does not know CPUs released after it (Intel family 6 model 0xCF,
@@ -61,16 +75,14 @@ void configure_blas() {
   static const bool done = [] {
     select_openblas_kernels();
     // OpenBLAS reads these itself when it is loaded; an explicit count would override them.
-    if (!has_env("OPENBLAS_NUM_THREADS") && !has_env("GOTO_NUM_THREADS") && !has_env("OMP_NUM_THREADS")) {
+    if (!threads_from_environment()) {
       openblas_set_num_threads(kBlasThreads);
       // Loaded without a count, OpenBLAS started a worker per further core, and each spins in
       // sched_yield for about 2^28 cycles before sleeping: 0.13 s of CPU, half of it system
       // time, beside the first 0.15 s of every run (perf on the glued k = 16 deck). One
       // thread never uses them, so stop them; OpenBLAS starts them again if a later
       // openblas_set_num_threads asks for more (its server restarts on demand).
-      using Shutdown = int (*)();
-      if (kBlasThreads == 1)
-        if (const auto stop = reinterpret_cast<Shutdown>(dlsym(RTLD_DEFAULT, "blas_thread_shutdown_"))) stop();
+      if (kBlasThreads == 1) stop_blas_workers();
     }
     // CHOLMOD's and UMFPACK's large blocks on transparent huge pages (where the kernel offers
     // them on request): the glued k = 16 deck went from 56,000 to 24,000 page faults and
@@ -92,6 +104,18 @@ void configure_blas() {
 }
 
 int blas_threads() { return openblas_get_num_threads(); }
+
+WideBlas::WideBlas(bool wide) {
+  active_ = wide && kBlasThreads == 1 && !threads_from_environment() && parallel::size() == 1 &&
+            std::thread::hardware_concurrency() >= 2;
+  if (active_) openblas_set_num_threads(2);
+}
+
+WideBlas::~WideBlas() {
+  if (!active_) return;
+  openblas_set_num_threads(kBlasThreads);
+  stop_blas_workers();
+}
 
 std::string blas_core() { return openblas_get_corename(); }
 

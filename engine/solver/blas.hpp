@@ -24,6 +24,23 @@ void configure_blas();
 /// Threads OpenBLAS uses for one call.
 int blas_threads();
 
+/// Two OpenBLAS threads while it lives, for one call whose dense kernels are large (a 3D
+/// supernodal factorisation: its big supernodes' dgemm and dsyrk scale; the small ones of a
+/// 2D factor do not, and between calls the second thread only spins). Then one thread
+/// again, its worker stopped. Nothing when `wide` is false, when the user's environment
+/// sets OpenBLAS's thread count, under an MPI run of several ranks (they share the cores)
+/// or on one core.
+class WideBlas {
+ public:
+  explicit WideBlas(bool wide);
+  ~WideBlas();
+  WideBlas(const WideBlas&) = delete;
+  WideBlas& operator=(const WideBlas&) = delete;
+
+ private:
+  bool active_ = false;
+};
+
 /// OpenBLAS's kernel family ("SkylakeX", "Haswell", ...).
 std::string blas_core();
 

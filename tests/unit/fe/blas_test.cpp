@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include <cstdlib>
 #include <string>
+#include <thread>
 
 #include "engine/solver/blas.hpp"
 #include "engine/solver/linear_solver.hpp"
@@ -62,6 +63,34 @@ MatrixXd random(int r, int c, int seed) {
   for (int j = 0; j < c; ++j)
     for (int i = 0; i < r; ++i) m(i, j) = std::sin(0.37 * i + 1.3 * j + seed) + 0.01 * seed;
   return m;
+}
+
+TEST_F(Blas, TwoThreadsForAWideCallThenOneAgain) {
+  // A 3D supernodal factorisation runs its dense kernels on two threads (WideBlas), and the
+  // run goes back to one thread after it, whose dgemm gives the same product as before.
+  if (std::getenv("OPENBLAS_NUM_THREADS") || std::getenv("GOTO_NUM_THREADS") || std::getenv("OMP_NUM_THREADS"))
+    GTEST_SKIP() << "thread count given by the environment";
+  if (std::thread::hardware_concurrency() < 2) GTEST_SKIP() << "one core";
+  using lunaster::engine::blas_threads;
+  const MatrixXd a = random(300, 300, 1), b = random(300, 300, 2), ref = a * b;
+  auto gemm = [&] {
+    MatrixXd c = MatrixXd::Zero(300, 300);
+    const int n = 300;
+    const double one = 1.0, zero = 0.0;
+    dgemm_("N", "N", &n, &n, &n, &one, a.data(), &n, b.data(), &n, &zero, c.data(), &n);
+    return (c - ref).norm() / ref.norm();
+  };
+  {
+    const lunaster::engine::WideBlas wide(false);
+    EXPECT_EQ(blas_threads(), 1);
+  }
+  {
+    const lunaster::engine::WideBlas wide(true);
+    EXPECT_EQ(blas_threads(), 2);
+    EXPECT_LT(gemm(), 1e-14);
+  }
+  EXPECT_EQ(blas_threads(), 1);
+  EXPECT_LT(gemm(), 1e-14);
 }
 
 TEST_F(Blas, GemmAllTransposes) {
