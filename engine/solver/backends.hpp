@@ -1,6 +1,7 @@
 #pragma once
 /// Backend constructors behind make_linear_solver (internal to lunaster_fe).
 #include <memory>
+#include <vector>
 
 #include "engine/solver/linear_solver.hpp"
 
@@ -14,6 +15,11 @@ std::unique_ptr<LinearSolver> make_umfpack_solver();
 std::unique_ptr<LinearSolver> make_mumps_solver();
 /// PETSc Krylov solver and preconditioner, from the module loaded on first use.
 std::unique_ptr<LinearSolver> make_petsc_solver(const IterativeSettings& settings);
+
+/// Nested dissection (METIS) of the graph of a's nodes (runs of consecutive columns with one
+/// pattern): perm[k] is the column eliminated k-th. `a`: compressed, both triangles. Empty
+/// where the columns form no such runs or METIS fails.
+std::vector<int> nested_dissection_ordering(const SparseMatrix& a);
 
 /// Pivot-ratio threshold used to call a factorisation singular: a pivot that
 /// lost more than this relative size against its matrix diagonal (about 10
