@@ -606,6 +606,32 @@ TEST(Solvers, NestedDissectionOfThe3dNodeGraphBeatsMinimumDegree) {
   expect_cholmod_solves_as_umfpack(k, 1e-12, 1e-9);
 }
 
+TEST(Solvers, MumpsOnTheNestedDissectionOrderAgreesWithUmfpackIn3d) {
+  // A 3D saddle-point system of over 1e4 equations with 3D rows: MUMPS's LDL^T takes the
+  // nested dissection of the node graph as its given order (ICNTL(7) = 1). The stiffness of
+  // a 14 x 14 x 14 HEXA8 block and 225 multipliers, each holding one displacement.
+  const SparseMatrix k = block_on_springs(CellType::Hexa8, 14, 0.2, 2.0e11, 1e13);
+  const int n = static_cast<int>(k.rows()), side = 15;
+  std::vector<Triplet> t;
+  for (int j = 0; j < k.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(k, j); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
+  int m = 0;
+  for (int node = side * side * (side - 1); node < side * side * side; ++node, ++m) {
+    const int held = 3 * node + 2;
+    t.emplace_back(n + m, held, 1e11), t.emplace_back(held, n + m, 1e11);
+  }
+  SparseMatrix a(n + m, n + m);
+  a.setFromTriplets(t.begin(), t.end());
+  auto mumps = make_linear_solver(SolverKind::Mumps);
+  auto umfpack = make_linear_solver(SolverKind::Umfpack);
+  mumps->factorize(a, MatrixKind::SymmetricIndefinite);
+  umfpack->factorize(a, MatrixKind::General);
+  const Vector f = rhs(n + m);
+  const Vector x = mumps->solve(f), ref = umfpack->solve(f);
+  EXPECT_LT((a * x - f).norm(), 1e-12 * (a * x).cwiseAbs().sum());
+  EXPECT_LT((x - ref).norm(), 1e-9 * ref.norm());
+}
+
 TEST(Solvers, CholmodSolvesOnTwoThreadsAgreeWithUmfpack) {
   // A 5-point operator on a 300 x 300 grid with varying coefficients: its factor (over 2e6
   // entries) is swept by two threads over disjoint subtrees of the elimination tree, the
