@@ -157,8 +157,12 @@ RefinedSolve solve_with_refinement(const LinearSolver& solver, const MatrixProdu
   out.raw_residual = out.residual = residual_of(x, r);
   auto backward_stable = [&] {
     if (!abs_product || !std::isfinite(out.residual) || out.residual > accept) return false;
-    const double scale = (*abs_product)(x).cwiseAbs().maxCoeff() + b.cwiseAbs().maxCoeff();
-    return r.cwiseAbs().maxCoeff() <= kBackwardStable * scale;
+    // Row by row: a row whose terms are small (a multiplier's, beside penalty-sized
+    // stiffness rows) must meet its own round-off, not the largest row's.
+    const Vector scale = (*abs_product)(x) + b.cwiseAbs();
+    for (Eigen::Index i = 0; i < r.size(); ++i)
+      if (std::abs(r[i]) > kBackwardStable * scale[i]) return false;
+    return true;
   };
   while (out.steps < max_steps && std::isfinite(out.residual) && out.residual > refine_above && !backward_stable()) {
     Vector refined = x - solver.solve(r);

@@ -761,6 +761,52 @@ TEST(Refinement, ABackwardStableSolveIsNotRefined) {
   EXPECT_EQ(rejected.steps, plain.steps);
 }
 
+/// CHOLMOD's solution with a relative error `error` on the last entry.
+class LastEntryOffSolver final : public LinearSolver {
+ public:
+  explicit LastEntryOffSolver(double error) : error_(error) {}
+  void factorize(const SparseMatrix& a, MatrixKind kind) override { inner_->factorize(a, kind); }
+  Vector solve(const Vector& b) const override {
+    Vector x = inner_->solve(b);
+    x[x.size() - 1] *= 1.0 + error_;
+    return x;
+  }
+  std::string name() const override { return "CHOLMOD, last entry off"; }
+
+ private:
+  double error_;
+  std::unique_ptr<LinearSolver> inner_ = make_linear_solver(SolverKind::Cholmod);
+};
+
+TEST(Refinement, ARowFarFromItsOwnRoundOffIsRefined) {
+  // Rows 0 and 1 as in ABackwardStableSolveIsNotRefined (terms of 1e8 cancelling to b = 1),
+  // row 2 alone: x2 = 1, solved with an error of 1e-9. Against the largest row's terms that
+  // error is round-off (1e-9 <= 1e-14 * 2e8); against row 2's own (|A| |x| + |b| = 2) it is
+  // not, and x2 is what a contact multiplier would be. Refinement takes it to round-off.
+  SparseMatrix a(3, 3);
+  a.insert(0, 0) = 1.0;
+  a.insert(1, 1) = 1.0;
+  a.insert(0, 1) = 1.0 - 1e-8;
+  a.insert(1, 0) = 1.0 - 1e-8;
+  a.insert(2, 2) = 1.0;
+  a.makeCompressed();
+  Vector b(3);
+  b << 1.0, -1.0, 1.0;
+  const MatrixProduct product = [&a](const Vector& x) -> Vector { return a * x; };
+  const MatrixProduct abs_product = [&a](const Vector& x) -> Vector {
+    Vector y = Vector::Zero(x.size());
+    add_abs_product(a, x, y);
+    return y;
+  };
+  LastEntryOffSolver s(1e-9);
+  s.factorize(a, MatrixKind::SymmetricPositiveDefinite);
+  Vector x;
+  const RefinedSolve refined = solve_with_refinement(s, product, b, x, 3, 1e-10, &abs_product);
+  EXPECT_GT(refined.raw_residual, 1e-10);
+  EXPECT_GE(refined.steps, 1);
+  EXPECT_NEAR(x[2], 1.0, 1e-15);
+}
+
 TEST(Solvers, LargeFactorsOnHugePagesSolveAsSmallOnes) {
   // A 5-point Laplacian on a 250 x 250 grid: CHOLMOD's factor and workspace are blocks of
   // over 4 MB, which the solver libraries' allocator places on huge pages (engine/solver/
