@@ -14,14 +14,12 @@
 #include <cstddef>
 
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <Eigen/Dense>
 
 #include "engine/core/error.hpp"
 #include "engine/core/two_workers.hpp"
-#include "engine/parallel/mpi_runtime.hpp"
 #include "engine/solver/backends.hpp"
 #include "engine/solver/blas.hpp"
 #include "engine/solver/interface_solver.hpp"
@@ -401,39 +399,27 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   const std::uint64_t fingerprint = pattern_fingerprint(*m);
   if (!same_pattern(*m, fingerprint)) {
     if (factor_) cholmod_free_factor(&factor_, &common_);
-    // On 3D rows (over 40 entries a column) and wherever AMD's factor is over 10 times A,
-    // nested dissection (METIS on the same node graph) is tried too and the factor with fewer
-    // operations kept. On the SSNP121 3D benchmarks it needs 1.7 to 2.4 times fewer (elastic
-    // 2.7e9 against 4.5e9, mortar 6.1e9 against 1.5e10). Its METIS ordering (0.08 to 0.14 s
-    // there) runs on a second thread beside AMD's analysis. 2D meshes stay with AMD: METIS
-    // gains 6 % of the glued k = 16 factorisation's operations and costs more time (0.48 s)
-    // than that factorisation's whole analysis.
-    const double per_column = static_cast<double>(m->nonZeros()) / static_cast<double>(std::max<Eigen::Index>(1, m->cols()));
-    const bool three_d = per_column > 40.0 && m->cols() >= 10000;
-    std::vector<int> nd;
-    std::thread dissection;
-    struct Join {
-      std::thread& t;
-      ~Join() {
-        if (t.joinable()) t.join();
-      }
-    } join_on_exit{dissection};
-    if (three_d && parallel::size() == 1 && std::thread::hardware_concurrency() >= 2) {
-      dissection = std::thread([&nd, m] { nd = nested_dissection_ordering(*m); });
-    }
     std::vector<int> perm = node_graph_ordering(*m, &common_, false);
     if (!perm.empty()) {
       common_.nmethods = 1;
       common_.method[0].ordering = CHOLMOD_GIVEN;
       factor_ = cholmod_analyze_p(&s, perm.data(), nullptr, 0, &common_);
+      // Where AMD's factorisation of a 3D system (over 40 entries a column) needs over 5e9
+      // operations, or its factor is over 10 times A, nested dissection (METIS on the same
+      // node graph) is tried too and the factor with fewer operations kept: on the SSNP121
+      // mortar 3D benchmark 6.1e9 operations against AMD's 1.5e10, for 0.14 s of METIS.
+      // Below that, METIS costs about what it saves (the elastic 3D benchmark: 2.7e9 against
+      // 4.5e9 for 0.08 s), and on 2D meshes it gains little (6 % of the glued k = 16 mesh's
+      // operations) for more time (0.48 s) than the whole factorisation's analysis.
       const double fl_amd = common_.fl;
-      if (dissection.joinable()) dissection.join();
-      else if (factor_ && (three_d || common_.lnz > 10.0 * static_cast<double>(m->nonZeros())))
-        nd = node_graph_ordering(*m, &common_, true);
-      if (factor_ && !nd.empty()) {
-        cholmod_factor* other = cholmod_analyze_p(&s, nd.data(), nullptr, 0, &common_);
-        if (other && common_.fl < fl_amd) std::swap(factor_, other);
-        if (other) cholmod_free_factor(&other, &common_);
+      const double per_column = static_cast<double>(m->nonZeros()) / static_cast<double>(std::max<Eigen::Index>(1, m->cols()));
+      if (factor_ && ((per_column > 40.0 && fl_amd > 5e9) || common_.lnz > 10.0 * static_cast<double>(m->nonZeros()))) {
+        std::vector<int> nd = node_graph_ordering(*m, &common_, true);
+        if (!nd.empty()) {
+          cholmod_factor* other = cholmod_analyze_p(&s, nd.data(), nullptr, 0, &common_);
+          if (other && common_.fl < fl_amd) std::swap(factor_, other);
+          if (other) cholmod_free_factor(&other, &common_);
+        }
       }
     } else {
       common_.nmethods = 0;  // CHOLMOD's default strategy (AMD, then METIS if AMD fills badly)
