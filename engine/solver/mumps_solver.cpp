@@ -15,6 +15,7 @@
 #include "engine/core/error.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 #include "engine/solver/backends.hpp"
+#include "engine/solver/blas.hpp"
 #include "engine/solver/mumps_entries.hpp"
 
 namespace lunaster::engine {
@@ -68,6 +69,7 @@ class MumpsSolver final : public LinearSolver {
   std::vector<MUMPS_INT> perm_in_;  ///< ICNTL(7) = 1: each equation's place in the given order
   int failed_ = -1;
   bool distributed_ = false;  ///< the matrices given are this rank's columns (ICNTL(18) = 3)
+  bool wide_ = false;         ///< factorised with two BLAS threads (per analysis)
 };
 
 void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
@@ -91,6 +93,7 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   if (same_pattern) {
     hand_over();
     id_.job = 2;  // factorisation with the analysis kept
+    const WideBlas threads(wide_);
     dmumps_c(&id_);
   } else {
     release();
@@ -135,8 +138,17 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     id_.icntl[17] = distributed_ ? 3 : 0;  // ICNTL(18): distributed assembled entries, pattern and values
     id_.n = static_cast<MUMPS_INT>(a.rows());
     hand_over();
-    id_.job = 4;  // analysis + factorisation
+    id_.job = 1;  // analysis
     dmumps_c(&id_);
+    // A factorisation estimated at over 5e10 operations (RINFOG(1): the refined 3D CONTINUE
+    // benchmark's 2.0e12) has fronts large enough for two BLAS threads; the CONTINUE 3D
+    // benchmark's (1.0e10) ran no faster on two.
+    wide_ = id_.infog[0] >= 0 && id_.rinfog[0] > 5e10;
+    if (id_.infog[0] >= 0) {
+      id_.job = 2;  // factorisation
+      const WideBlas threads(wide_);
+      dmumps_c(&id_);
+    }
   }
   // -8/-9/-14/-15/-17/-20: a workspace sized from the analysis' estimate was too small
   // (off-diagonal pivoting on contact systems grows the factors): factorise again with
@@ -144,6 +156,7 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   for (int retry = 0; retry < 3 && workspace_too_small(id_.infog[0]); ++retry) {
     id_.icntl[13] = 2 * std::max(20, id_.icntl[13]);
     id_.job = 2;  // factorisation again, same analysis
+    const WideBlas threads(wide_);
     dmumps_c(&id_);
   }
   analysed_ = id_.infog[0] >= 0;  // reuse an analysis only after a good factorisation
