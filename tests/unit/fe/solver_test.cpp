@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <vector>
 
+#include <Eigen/CholmodSupport>
 #include <Eigen/Dense>
 #include <SuiteSparse_config.h>
 #include <cholmod.h>
@@ -569,18 +571,8 @@ double factor_operations(const SparseMatrix& a, const std::vector<int>& perm) {
   common.method[0].ordering = perm.empty() ? CHOLMOD_AMD : CHOLMOD_GIVEN;
   SparseMatrix upper = a.triangularView<Eigen::Upper>();
   upper.makeCompressed();
-  cholmod_sparse view{};
-  view.nrow = view.ncol = upper.rows();
-  view.nzmax = upper.nonZeros();
-  view.p = upper.outerIndexPtr();
-  view.i = upper.innerIndexPtr();
-  view.x = upper.valuePtr();
+  cholmod_sparse view = Eigen::viewAsCholmod(upper);
   view.stype = 1;
-  view.itype = CHOLMOD_INT;
-  view.xtype = CHOLMOD_REAL;
-  view.dtype = CHOLMOD_DOUBLE;
-  view.sorted = 1;
-  view.packed = 1;
   std::vector<int> p = perm;
   cholmod_factor* f = cholmod_analyze_p(&view, p.empty() ? nullptr : p.data(), nullptr, 0, &common);
   const double fl = f ? common.fl : -1.0;
@@ -694,45 +686,60 @@ class UselessSolver final : public LinearSolver {
   std::string name() const override { return "useless"; }
 };
 
-/// CHOLMOD's solution moved by `eps` times its size along (1, ..., 1): a backward-stable
-/// solve whose error is set here, not left to the round-off of one machine and compiler
-/// (an exact x made A x - b exactly zero in a -O1 build).
-class BackwardStableSolver final : public LinearSolver {
+/// CHOLMOD's solution with an error set here, not left to the round-off of one machine and
+/// compiler (an exact x made A x - b exactly zero in a -O1 build).
+class PerturbedCholmod final : public LinearSolver {
  public:
-  explicit BackwardStableSolver(double eps) : eps_(eps) {}
+  explicit PerturbedCholmod(std::function<void(Vector&)> perturb) : perturb_(std::move(perturb)) {}
   void factorize(const SparseMatrix& a, MatrixKind kind) override { inner_->factorize(a, kind); }
   Vector solve(const Vector& b) const override {
     Vector x = inner_->solve(b);
-    const double shift = eps_ * x.cwiseAbs().maxCoeff();
-    return (x.array() + shift).matrix();
+    perturb_(x);
+    return x;
   }
-  std::string name() const override { return "backward-stable CHOLMOD"; }
+  std::string name() const override { return "perturbed CHOLMOD"; }
 
  private:
-  double eps_;
+  std::function<void(Vector&)> perturb_;
   std::unique_ptr<LinearSolver> inner_ = make_linear_solver(SolverKind::Cholmod);
 };
+
+/// A backward-stable solve: x moved by `eps` times its size along (1, ..., 1).
+std::function<void(Vector&)> shifted_by(double eps) {
+  return [eps](Vector& x) { x.array() += eps * x.cwiseAbs().maxCoeff(); };
+}
+
+/// Rows 0 and 1: [1, 1 - 1e-8; 1 - 1e-8, 1] (eigenvalues 2 and 1e-8); the others: identity.
+SparseMatrix nearly_singular_pair(int n) {
+  SparseMatrix a(n, n);
+  for (int i = 0; i < n; ++i) a.insert(i, i) = 1.0;
+  a.insert(0, 1) = 1.0 - 1e-8;
+  a.insert(1, 0) = 1.0 - 1e-8;
+  a.makeCompressed();
+  return a;
+}
+MatrixProduct product_of(const SparseMatrix& a) {
+  return [&a](const Vector& x) -> Vector { return a * x; };
+}
+/// |A| |x|, entry by entry.
+MatrixProduct abs_product_of(const SparseMatrix& a) {
+  return [&a](const Vector& x) -> Vector {
+    Vector y = Vector::Zero(x.size());
+    add_abs_product(a, x, y);
+    return y;
+  };
+}
 
 TEST(Refinement, ABackwardStableSolveIsNotRefined) {
   // b along A's smallest eigenvector (eigenvalue 1e-8): x = (1e8, -1e8) and A x cancels to
   // b = (1, -1). An error of 4 eps |x| along the largest eigenvector (eigenvalue 2) leaves
   // a relative residual of about 8e-8 |x| eps / |b| = 8e-8, while the backward error
   // |A x - b| / (|A| |x| + |b|) stays about 4e-16.
-  SparseMatrix a(2, 2);
-  a.insert(0, 0) = 1.0;
-  a.insert(1, 1) = 1.0;
-  a.insert(0, 1) = 1.0 - 1e-8;
-  a.insert(1, 0) = 1.0 - 1e-8;
-  a.makeCompressed();
+  const SparseMatrix a = nearly_singular_pair(2);
   Vector b(2);
   b << 1.0, -1.0;
-  const MatrixProduct product = [&a](const Vector& x) -> Vector { return a * x; };
-  const MatrixProduct abs_product = [&a](const Vector& x) -> Vector {
-    Vector y = Vector::Zero(x.size());
-    add_abs_product(a, x, y);
-    return y;
-  };
-  BackwardStableSolver s(4e-16);
+  const MatrixProduct product = product_of(a), abs_product = abs_product_of(a);
+  PerturbedCholmod s(shifted_by(4e-16));
   s.factorize(a, MatrixKind::SymmetricPositiveDefinite);
   Vector x_plain, x_backward;
   const RefinedSolve plain = solve_with_refinement(s, product, b, x_plain);
@@ -745,12 +752,7 @@ TEST(Refinement, ABackwardStableSolveIsNotRefined) {
   const SparseMatrix big = spd_matrix(40);
   InexactSolver inexact(1e-6);
   inexact.factorize(big, MatrixKind::SymmetricPositiveDefinite);
-  const MatrixProduct big_product = [&big](const Vector& x) -> Vector { return big * x; };
-  const MatrixProduct big_abs = [&big](const Vector& x) -> Vector {
-    Vector y = Vector::Zero(x.size());
-    add_abs_product(big, x, y);
-    return y;
-  };
+  const MatrixProduct big_product = product_of(big), big_abs = abs_product_of(big);
   Vector x;
   const RefinedSolve refined = solve_with_refinement(inexact, big_product, rhs(40), x, 3, 1e-10, &big_abs);
   EXPECT_GT(refined.steps, 0);
@@ -761,44 +763,16 @@ TEST(Refinement, ABackwardStableSolveIsNotRefined) {
   EXPECT_EQ(rejected.steps, plain.steps);
 }
 
-/// CHOLMOD's solution with a relative error `error` on the last entry.
-class LastEntryOffSolver final : public LinearSolver {
- public:
-  explicit LastEntryOffSolver(double error) : error_(error) {}
-  void factorize(const SparseMatrix& a, MatrixKind kind) override { inner_->factorize(a, kind); }
-  Vector solve(const Vector& b) const override {
-    Vector x = inner_->solve(b);
-    x[x.size() - 1] *= 1.0 + error_;
-    return x;
-  }
-  std::string name() const override { return "CHOLMOD, last entry off"; }
-
- private:
-  double error_;
-  std::unique_ptr<LinearSolver> inner_ = make_linear_solver(SolverKind::Cholmod);
-};
-
 TEST(Refinement, ARowFarFromItsOwnRoundOffIsRefined) {
   // Rows 0 and 1 as in ABackwardStableSolveIsNotRefined (terms of 1e8 cancelling to b = 1),
   // row 2 alone: x2 = 1, solved with an error of 1e-9. Against the largest row's terms that
   // error is round-off (1e-9 <= 1e-14 * 2e8); against row 2's own (|A| |x| + |b| = 2) it is
   // not, and x2 is what a contact multiplier would be. Refinement takes it to round-off.
-  SparseMatrix a(3, 3);
-  a.insert(0, 0) = 1.0;
-  a.insert(1, 1) = 1.0;
-  a.insert(0, 1) = 1.0 - 1e-8;
-  a.insert(1, 0) = 1.0 - 1e-8;
-  a.insert(2, 2) = 1.0;
-  a.makeCompressed();
+  const SparseMatrix a = nearly_singular_pair(3);
   Vector b(3);
   b << 1.0, -1.0, 1.0;
-  const MatrixProduct product = [&a](const Vector& x) -> Vector { return a * x; };
-  const MatrixProduct abs_product = [&a](const Vector& x) -> Vector {
-    Vector y = Vector::Zero(x.size());
-    add_abs_product(a, x, y);
-    return y;
-  };
-  LastEntryOffSolver s(1e-9);
+  const MatrixProduct product = product_of(a), abs_product = abs_product_of(a);
+  PerturbedCholmod s([](Vector& x) { x[x.size() - 1] *= 1.0 + 1e-9; });
   s.factorize(a, MatrixKind::SymmetricPositiveDefinite);
   Vector x;
   const RefinedSolve refined = solve_with_refinement(s, product, b, x, 3, 1e-10, &abs_product);
