@@ -99,7 +99,19 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                integer("NMAX_ITER", "Largest number of Krylov iterations per solve; 0: no limit but 10,000")
                    .def(0LL)
                    .range(0, std::nullopt)},
-              {}}}),
+              {}},
+                        Block{"METHODE",
+                              {"MUMPS"},
+                              {text("RENUM",
+                                    "MUMPS's fill-reducing ordering: AUTO chooses (AMD on 2D rows; on 3D rows "
+                                    "METIS's nested dissection of the mesh's node graph in a process alone, "
+                                    "MUMPS's own choice under mpirun); METIS that nested dissection (not under "
+                                    "mpirun, where each rank holds only its rows); AMD, AMF, QAMD and PORD "
+                                    "MUMPS's own. SCOTCH, PTSCOTCH and PARMETIS are not in Debian's MUMPS build. "
+                                    "The log names the ordering used when RENUM is given")
+                                   .into_values({"AUTO", "METIS", "AMD", "AMF", "QAMD", "PORD"})
+                                   .def("AUTO")},
+                              {}}}),
       integer("INFO", "Amount of printed information: 1 normal; 2 also prints each Krylov iteration's relative "
                       "residual when SOLVEUR METHODE='PETSC'")
           .into_values({1LL, 2LL})

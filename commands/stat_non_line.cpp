@@ -7,6 +7,7 @@
 #include "commands/failures.hpp"
 #include "engine/contact/contact_factory.hpp"
 #include "engine/io/med_writer.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::cmd {
 
@@ -85,6 +86,23 @@ void read_petsc(const Args& solveur, engine::IterativeSettings& settings) {
                                                   : S::Preconditioner::LdltSp;
   settings.relative_residual = solveur.real("RESI_RELA");
   settings.max_iterations = static_cast<int>(solveur.integer("NMAX_ITER"));
+}
+
+/// SOLVEUR METHODE='MUMPS': the fill-reducing ordering, by code_aster's names.
+void read_renum(const Args& solveur, engine::NewtonOptions& options) {
+  using O = engine::FactorOrdering;
+  const std::string renum = solveur.text("RENUM");
+  if (renum == "METIS" && engine::parallel::size() > 1)
+    throw solveur.error("RENUM",
+                        "'AUTO', 'AMD', 'AMF', 'QAMD' or 'PORD' under mpirun (METIS orders the whole matrix in one "
+                        "process; under mpirun each rank holds only its rows)",
+                        "'METIS'");
+  options.ordering = renum == "METIS" ? O::Metis
+                     : renum == "AMD" ? O::Amd
+                     : renum == "AMF" ? O::Amf
+                     : renum == "QAMD" ? O::Qamd
+                     : renum == "PORD" ? O::Pord
+                                       : O::Auto;
 }
 
 /// NEWTON: which matrix Newton factorises, and how often (engine's matrix policy).
@@ -185,6 +203,7 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
   options.solver = solver_kind(args.factor("SOLVEUR").text("METHODE"));
   options.auto_solver = args.factor("SOLVEUR").text("METHODE") == "AUTO";
   if (options.solver == engine::SolverKind::Petsc) read_petsc(args.factor("SOLVEUR"), options.iterative);
+  if (options.solver == engine::SolverKind::Mumps) read_renum(args.factor("SOLVEUR"), options);
   options.krylov_history = args.integer("INFO") >= 2;
   read_newton(args.factor("NEWTON"), contact != nullptr, options);
   const std::vector<double> times = instants(args.factor("INCREMENT"), options);

@@ -991,6 +991,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
                                                         [this](const std::string& line) { log_.info(line); });
         else
           backend_solver = make_linear_solver(backend, settings);
+        backend_solver->set_ordering(options_.ordering);
       }
       LinearSolver* const solver = via_interface ? interface_.get() : backend_solver.get();
       const bool iterative = solver->iterative();
@@ -1053,6 +1054,10 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           throw diagnose(cons, err, t);
         }
         ++stats_.factorisations;
+        if (options_.ordering != FactorOrdering::Auto && solver->ordering_used() != ordering_logged_) {
+          ordering_logged_ = solver->ordering_used();
+          log_.info("  " + solver->name() + " ordering: " + ordering_logged_);
+        }
         if (via_interface)
           log_.info("  linear solve: Schur complement of the " + std::to_string(interface_->interface().size()) +
                     " surface equations factorised on the kept elastic factorisation");

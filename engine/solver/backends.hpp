@@ -17,8 +17,8 @@ std::unique_ptr<LinearSolver> make_mumps_solver();
 std::unique_ptr<LinearSolver> make_petsc_solver(const IterativeSettings& settings);
 
 /// Nested dissection (METIS) of the graph of a's nodes (runs of consecutive columns with one
-/// pattern): perm[k] is the column eliminated k-th. `a`: compressed, both triangles. Empty
-/// where the columns form no such runs or METIS fails.
+/// pattern), or of its equations where they form no such runs: perm[k] is the column
+/// eliminated k-th. `a`: compressed, both triangles. Empty where METIS fails.
 std::vector<int> nested_dissection_ordering(const SparseMatrix& a);
 
 /// Pivot-ratio threshold used to call a factorisation singular: a pivot that

@@ -653,6 +653,13 @@ std::vector<int> nested_dissection_ordering(const SparseMatrix& a) {
   cholmod_start(&common);
   common.print = 0;
   std::vector<int> perm = node_graph_ordering(a, &common, true);
+  if (perm.empty() && a.cols() > 0) {
+    // No node runs: the graph of the equations themselves.
+    std::vector<int> upper_count;
+    cholmod_sparse view = upper_view(a, upper_count);
+    perm.resize(a.cols());
+    if (!cholmod_metis(&view, nullptr, 0, 0, perm.data(), &common)) perm.clear();
+  }
   cholmod_finish(&common);
   return perm;
 }

@@ -60,6 +60,12 @@ struct SystemLayout {
   bool distributed() const { return !owner.empty(); }
 };
 
+/// Fill-reducing ordering of a MUMPS factorisation (code_aster's SOLVEUR RENUM). Auto: AMD
+/// on 2D rows, METIS's nested dissection of the node graph on 3D rows of a process alone,
+/// PORD otherwise; Metis: that nested dissection always (a process alone); Amd, Amf, Qamd,
+/// Pord: MUMPS's own (ICNTL(7) = 0, 2, 6, 4).
+enum class FactorOrdering { Auto, Metis, Amd, Amf, Qamd, Pord };
+
 /// Direct solver: factorise once, solve for many right-hand sides.
 class LinearSolver {
  public:
@@ -95,6 +101,11 @@ class LinearSolver {
   virtual bool multiply(const Vector& /*x*/, Vector& /*y*/) const { return false; }
   /// Krylov iterations of the last solve (0 for a direct backend).
   virtual int iterations() const { return 0; }
+  /// The fill-reducing ordering of the next analyses (MUMPS; the others choose their own).
+  virtual void set_ordering(FactorOrdering /*ordering*/) {}
+  /// The ordering the last analysis used, as MUMPS names it ("METIS (given)", "PORD", ...);
+  /// empty for the backends that do not say.
+  virtual std::string ordering_used() const { return {}; }
 };
 
 /// Builds a backend. Never returns null. `iterative` is read by SolverKind::Petsc only.

@@ -33,6 +33,8 @@ class MumpsSolver final : public LinearSolver {
   std::string name() const override { return "MUMPS"; }
   int failed_column() const override { return failed_; }
   void set_layout(SystemLayout layout) override { distributed_ = layout.distributed(); }
+  void set_ordering(FactorOrdering ordering) override { ordering_ = ordering; }
+  std::string ordering_used() const override;
   bool takes_distributed() const override { return true; }
 
  private:
@@ -70,6 +72,7 @@ class MumpsSolver final : public LinearSolver {
   int failed_ = -1;
   bool distributed_ = false;  ///< the matrices given are this rank's columns (ICNTL(18) = 3)
   bool wide_ = false;         ///< factorised with two BLAS threads (per analysis)
+  FactorOrdering ordering_ = FactorOrdering::Auto;
 };
 
 void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
@@ -123,11 +126,25 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     // On 3D rows of a process alone, nested dissection of the node graph (METIS, the ordering
     // CHOLMOD uses there) is given instead (ICNTL(7) = 1): fewer operations than PORD on the
     // SSNP121 3D contact systems (CONTINUE 3D benchmark 1.0e10 against 1.2e10; the refined
-    // case 2.03e12 against 2.43e12).
+    // case 2.03e12 against 2.43e12). An ordering asked for (RENUM) replaces the choice.
     perm_in_.clear();
-    if (sym != 0 && entries_per_row >= 40.0 && !distributed_ && parallel::size() == 1 && a.rows() >= 10000 &&
-        a.isCompressed()) {
-      const std::vector<int> perm = nested_dissection_ordering(a);
+    bool metis = sym != 0 && entries_per_row >= 40.0 && a.rows() >= 10000;
+    switch (ordering_) {
+      case FactorOrdering::Auto: break;
+      case FactorOrdering::Metis: metis = true; break;
+      case FactorOrdering::Amd: metis = false, id_.icntl[6] = 0; break;
+      case FactorOrdering::Amf: metis = false, id_.icntl[6] = 2; break;
+      case FactorOrdering::Qamd: metis = false, id_.icntl[6] = 6; break;
+      case FactorOrdering::Pord: metis = false, id_.icntl[6] = 4; break;
+    }
+    if (ordering_ == FactorOrdering::Metis && (distributed_ || parallel::size() > 1))
+      throw SolveError("MUMPS: the METIS ordering needs the whole matrix in one process; under mpirun "
+                       "MUMPS orders with AMD, AMF, QAMD or PORD");
+    if (metis && !distributed_ && parallel::size() == 1) {
+      SparseMatrix compressed;
+      const SparseMatrix* m = &a;
+      if (!a.isCompressed()) compressed = a, compressed.makeCompressed(), m = &compressed;
+      const std::vector<int> perm = nested_dissection_ordering(*m);
       if (!perm.empty()) {
         perm_in_.resize(perm.size());
         for (size_t k = 0; k < perm.size(); ++k) perm_in_[perm[k]] = static_cast<MUMPS_INT>(k + 1);
@@ -174,6 +191,20 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     release();
     throw SolveError("MUMPS: singular matrix" + (failed_ >= 0 ? " at equation " + std::to_string(failed_) : std::string()),
                      {"check the boundary conditions (rigid-body modes) and the contact definition"});
+  }
+}
+
+std::string MumpsSolver::ordering_used() const {
+  if (!initialised_) return {};
+  switch (id_.infog[6]) {  // INFOG(7): the ordering the analysis used
+    case 0: return "AMD";
+    case 1: return "METIS (nested dissection of the node graph, given)";
+    case 2: return "AMF";
+    case 3: return "SCOTCH";
+    case 4: return "PORD";
+    case 5: return "METIS";
+    case 6: return "QAMD";
+    default: return "ICNTL(7) = " + std::to_string(id_.infog[6]);
   }
 }
 

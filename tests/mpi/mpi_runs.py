@@ -11,7 +11,8 @@ usage: mpi_runs.py CASE LUNASTER MESHGEN SOURCE_DIR SCRATCH_DIR
                 MED fields equal to 1e-8 (h5py), the report printed once; rank 1 prints nothing and
                 writes nothing (run as MPMD: rank 1 gets an --out folder of its own, which must not
                 appear)
-  errors        must-fail decks under mpirun -np 2 (a deck error, a singular MUMPS factorisation):
+  errors        must-fail decks under mpirun -np 2 (a deck error, a singular MUMPS factorisation,
+                SOLVEUR RENUM='METIS', which needs the whole matrix in one process):
                 the error once with file:line, the exit status of the deck; `lunaster verify` under
                 mpirun refuses; verify --np without mpirun on the PATH says so; budgets under
                 verify --np 2 (TIMEOUT, OUT_OF_MEMORY); a launcher that outlives the time limit
@@ -268,9 +269,11 @@ def expectations(deck):
 
 def errors(exe, source, scratch):
     scratch.mkdir(parents=True)
-    for deck, want in (("misspelt_keyword.lua", 2), ("singular_free_body_mumps.lua", 3),
-                       ("singular_free_direction_mumps.lua", 3)):
-        path = source / "testcases" / "errors" / deck
+    errors_dir = source / "testcases" / "errors"
+    # renum_metis.lua runs serially and fails under mpirun only: it lives beside this script.
+    for folder, deck, want in ((errors_dir, "misspelt_keyword.lua", 2), (errors_dir, "singular_free_body_mumps.lua", 3),
+                               (errors_dir, "singular_free_direction_mumps.lua", 3), (HERE, "renum_metis.lua", 2)):
+        path = folder / deck
         patterns, status = expectations(path)
         check(status == want, f"{deck}: the deck expects exit status {want}")
         logs = scratch / f"{path.stem}.logs"
@@ -285,6 +288,11 @@ def errors(exe, source, scratch):
         check(rank_output(logs, 1) == "", f"{deck}: rank 1 prints nothing")
         if "mumps" in deck:  # METHODE='MUMPS': the model is shared, the diagnosis is the serial one
             check("model shared among 2 ranks" in text, f"{deck}: the model is shared among the ranks")
+
+    # The deck refused under mpirun runs serially, MUMPS ordered by METIS.
+    code, out, err, _ = run([exe, "run", HERE / "renum_metis.lua", "--out", "serial"], scratch)
+    check(code == 0 and "MUMPS ordering: METIS" in out + err,
+          f"renum_metis.lua runs serially with METIS's order (exit {code})")
 
     code, out, err, _ = run([mpirun(), "-np", 2, exe, "verify", source / "testcases" / "patch_2d.lua"], scratch)
     check(code == 2 and (out + err).count("lunaster verify --np N") == 1,

@@ -598,10 +598,9 @@ TEST(Solvers, NestedDissectionOfThe3dNodeGraphBeatsMinimumDegree) {
   expect_cholmod_solves_as_umfpack(k, 1e-12, 1e-9);
 }
 
-TEST(Solvers, MumpsOnTheNestedDissectionOrderAgreesWithUmfpackIn3d) {
-  // A 3D saddle-point system of over 1e4 equations with 3D rows: MUMPS's LDL^T takes the
-  // nested dissection of the node graph as its given order (ICNTL(7) = 1). The stiffness of
-  // a 14 x 14 x 14 HEXA8 block and 225 multipliers, each holding one displacement.
+/// The stiffness of a 14 x 14 x 14 HEXA8 block and 225 multipliers, each holding one
+/// displacement: a 3D saddle-point system of over 1e4 equations with 3D rows.
+SparseMatrix saddle_block() {
   const SparseMatrix k = block_on_springs(CellType::Hexa8, 14, 0.2, 2.0e11, 1e13);
   const int n = static_cast<int>(k.rows()), side = 15;
   std::vector<Triplet> t;
@@ -614,14 +613,34 @@ TEST(Solvers, MumpsOnTheNestedDissectionOrderAgreesWithUmfpackIn3d) {
   }
   SparseMatrix a(n + m, n + m);
   a.setFromTriplets(t.begin(), t.end());
-  auto mumps = make_linear_solver(SolverKind::Mumps);
+  return a;
+}
+
+TEST(Solvers, MumpsTakesTheOrderingAskedForAndAgreesWithUmfpackIn3d) {
+  // MUMPS's LDL^T with each fill-reducing ordering (SOLVEUR RENUM): the ordering MUMPS
+  // reports having used (INFOG(7)) is the one asked for, and every solution is UMFPACK's.
+  // AUTO on these 3D rows in a process alone: the nested dissection of the node graph.
+  const SparseMatrix a = saddle_block();
   auto umfpack = make_linear_solver(SolverKind::Umfpack);
-  mumps->factorize(a, MatrixKind::SymmetricIndefinite);
   umfpack->factorize(a, MatrixKind::General);
-  const Vector f = rhs(n + m);
-  const Vector x = mumps->solve(f), ref = umfpack->solve(f);
-  EXPECT_LT((a * x - f).norm(), 1e-12 * (a * x).cwiseAbs().sum());
-  EXPECT_LT((x - ref).norm(), 1e-9 * ref.norm());
+  const Vector f = rhs(static_cast<int>(a.rows()));
+  const Vector ref = umfpack->solve(f);
+  const std::pair<FactorOrdering, std::string> cases[] = {
+      {FactorOrdering::Auto, "METIS (nested dissection of the node graph, given)"},
+      {FactorOrdering::Metis, "METIS (nested dissection of the node graph, given)"},
+      {FactorOrdering::Amd, "AMD"},
+      {FactorOrdering::Amf, "AMF"},
+      {FactorOrdering::Qamd, "QAMD"},
+      {FactorOrdering::Pord, "PORD"}};
+  for (const auto& [ordering, name] : cases) {
+    auto mumps = make_linear_solver(SolverKind::Mumps);
+    mumps->set_ordering(ordering);
+    mumps->factorize(a, MatrixKind::SymmetricIndefinite);
+    EXPECT_EQ(mumps->ordering_used(), name);
+    const Vector x = mumps->solve(f);
+    EXPECT_LT((a * x - f).norm(), 1e-12 * (a * x).cwiseAbs().sum()) << name;
+    EXPECT_LT((x - ref).norm(), 1e-9 * ref.norm()) << name;
+  }
 }
 
 TEST(Solvers, CholmodSolvesOnTwoThreadsAgreeWithUmfpack) {
