@@ -45,6 +45,13 @@ class MumpsSolver final : public LinearSolver {
     initialised_ = false;
     analysed_ = false;
   }
+  /// MUMPS's numeric factorisation (job 2) on the analysis in id_, with two BLAS threads where
+  /// the analysis estimated a large one (wide_).
+  void factorise_numerically() {
+    id_.job = 2;
+    const WideBlas threads(wide_);
+    dmumps_c(&id_);
+  }
   static bool workspace_too_small(int infog1) {
     return infog1 == -8 || infog1 == -9 || infog1 == -14 || infog1 == -15 || infog1 == -17 || infog1 == -20;
   }
@@ -95,9 +102,7 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   auto hand_over = [this] { give_mumps_entries(id_, distributed_, irn_, jcn_, val_); };
   if (same_pattern) {
     hand_over();
-    id_.job = 2;  // factorisation with the analysis kept
-    const WideBlas threads(wide_);
-    dmumps_c(&id_);
+    factorise_numerically();  // the analysis kept
   } else {
     release();
     id_ = DMUMPS_STRUC_C{};
@@ -161,20 +166,14 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     // benchmark's 2.0e12) has fronts large enough for two BLAS threads; the CONTINUE 3D
     // benchmark's (1.0e10) ran no faster on two.
     wide_ = id_.infog[0] >= 0 && id_.rinfog[0] > 5e10;
-    if (id_.infog[0] >= 0) {
-      id_.job = 2;  // factorisation
-      const WideBlas threads(wide_);
-      dmumps_c(&id_);
-    }
+    if (id_.infog[0] >= 0) factorise_numerically();
   }
   // -8/-9/-14/-15/-17/-20: a workspace sized from the analysis' estimate was too small
   // (off-diagonal pivoting on contact systems grows the factors): factorise again with
   // twice the relaxation ICNTL(14), three times at most, before calling it out of memory.
   for (int retry = 0; retry < 3 && workspace_too_small(id_.infog[0]); ++retry) {
     id_.icntl[13] = 2 * std::max(20, id_.icntl[13]);
-    id_.job = 2;  // factorisation again, same analysis
-    const WideBlas threads(wide_);
-    dmumps_c(&id_);
+    factorise_numerically();  // again, same analysis
   }
   analysed_ = id_.infog[0] >= 0;  // reuse an analysis only after a good factorisation
   if (id_.infog[0] == -10 && sym == 1) {
