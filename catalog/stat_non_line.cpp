@@ -111,6 +111,26 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                     "The log names the ordering used when RENUM is given")
                                    .into_values({"AUTO", "METIS", "AMD", "AMF", "QAMD", "PORD"})
                                    .def("AUTO")},
+                              {}},
+                        Block{"METHODE",
+                              {"MULT_FRONT"},
+                              {text("RENUM",
+                                    "Fill-reducing ordering of the factorisation (CHOLMOD, or MUMPS/UMFPACK for an "
+                                    "indefinite system): METIS the nested dissection of the mesh's node graph; MDA "
+                                    "approximate minimum degree (AMD); MD the same AMD (no exact minimum degree "
+                                    "here). Absent: lunaster's choice (AMD, and METIS too where it pays on 3D "
+                                    "systems). The log names the ordering used")
+                                   .into_values({"METIS", "MD", "MDA"})},
+                              {}},
+                        Block{"METHODE",
+                              {"LDLT"},
+                              {text("RENUM",
+                                    "Ordering of the factorisation (CHOLMOD, or MUMPS/UMFPACK for an indefinite "
+                                    "system): RCMK reverse Cuthill-McKee of the mesh's node graph (a profile "
+                                    "ordering, as code_aster's LDLT: much more fill than AMD on large models); SANS "
+                                    "the equations' own order. Absent: lunaster's choice (AMD, and METIS too where "
+                                    "it pays on 3D systems). The log names the ordering used")
+                                   .into_values({"RCMK", "SANS"})},
                               {}}}),
       integer("INFO", "Amount of printed information: 1 normal; 2 also prints each Krylov iteration's relative "
                       "residual when SOLVEUR METHODE='PETSC'")

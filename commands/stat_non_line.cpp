@@ -88,9 +88,20 @@ void read_petsc(const Args& solveur, engine::IterativeSettings& settings) {
   settings.max_iterations = static_cast<int>(solveur.integer("NMAX_ITER"));
 }
 
-/// SOLVEUR METHODE='MUMPS': the fill-reducing ordering, by code_aster's names.
+/// SOLVEUR RENUM: the fill-reducing ordering, by code_aster's names for each METHODE.
 void read_renum(const Args& solveur, engine::NewtonOptions& options) {
   using O = engine::FactorOrdering;
+  const std::string methode = solveur.text("METHODE");
+  if (methode == "MULT_FRONT" || methode == "LDLT") {
+    if (!solveur.has("RENUM")) return;  // lunaster's choice
+    const std::string renum = solveur.text("RENUM");
+    options.ordering = renum == "METIS"  ? O::Metis
+                       : renum == "RCMK" ? O::Rcm
+                       : renum == "SANS" ? O::Natural
+                                         : O::Amd;  // MD, MDA
+    return;
+  }
+  if (methode != "MUMPS") return;
   const std::string renum = solveur.text("RENUM");
   if (renum == "METIS" && engine::parallel::size() > 1)
     throw solveur.error("RENUM",
@@ -203,7 +214,7 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
   options.solver = solver_kind(args.factor("SOLVEUR").text("METHODE"));
   options.auto_solver = args.factor("SOLVEUR").text("METHODE") == "AUTO";
   if (options.solver == engine::SolverKind::Petsc) read_petsc(args.factor("SOLVEUR"), options.iterative);
-  if (options.solver == engine::SolverKind::Mumps) read_renum(args.factor("SOLVEUR"), options);
+  read_renum(args.factor("SOLVEUR"), options);
   options.krylov_history = args.integer("INFO") >= 2;
   read_newton(args.factor("NEWTON"), contact != nullptr, options);
   const std::vector<double> times = instants(args.factor("INCREMENT"), options);

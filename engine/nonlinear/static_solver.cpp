@@ -1054,9 +1054,10 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           throw diagnose(cons, err, t);
         }
         ++stats_.factorisations;
-        if (options_.ordering != FactorOrdering::Auto && solver->ordering_used() != ordering_logged_) {
-          ordering_logged_ = solver->ordering_used();
-          log_.info("  " + solver->name() + " ordering: " + ordering_logged_);
+        if (options_.ordering != FactorOrdering::Auto) {
+          const std::string line = "  " + solver->name() + " ordering: " + solver->ordering_used();
+          if (line != ordering_logged_) log_.info(line);
+          ordering_logged_ = line;
         }
         if (via_interface)
           log_.info("  linear solve: Schur complement of the " + std::to_string(interface_->interface().size()) +

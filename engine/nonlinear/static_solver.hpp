@@ -40,7 +40,7 @@ struct NewtonOptions {
   bool elastic_matrix = false;
   /// SolverKind::Petsc: the Krylov method, preconditioner and tolerance.
   IterativeSettings iterative;
-  /// SolverKind::Mumps: the fill-reducing ordering.
+  /// The direct backends' fill-reducing ordering (SOLVEUR RENUM).
   FactorOrdering ordering = FactorOrdering::Auto;
   /// Print each Krylov iteration's residual in the log (code_aster's INFO=2).
   bool krylov_history = false;
@@ -197,7 +197,7 @@ class StaticSolver {
   /// complement. interface_use_: 0 not decided yet, 1 used, -1 not (decided at the first solve).
   std::unique_ptr<InterfaceSolver> interface_;
   int interface_use_ = 0;
-  std::string ordering_logged_;  ///< the last fill-reducing ordering the log named (FactorOrdering given)
+  std::string ordering_logged_;  ///< the last ordering line of the log (an ordering asked for)
   long interface_reference_ = -1;  ///< elastic generation of the factorised reference
   SystemState interface_state_;
   std::vector<char> on_interface_;  ///< per free equation: on the interface

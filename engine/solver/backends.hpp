@@ -21,6 +21,18 @@ std::unique_ptr<LinearSolver> make_petsc_solver(const IterativeSettings& setting
 /// eliminated k-th. `a`: compressed, both triangles. Empty where METIS fails.
 std::vector<int> nested_dissection_ordering(const SparseMatrix& a);
 
+/// The elimination order `ordering` gives a (Metis, Amd, Rcm or Natural; the graph of a's
+/// nodes where its columns form node runs, of its equations otherwise): perm[k] is the column
+/// eliminated k-th. `a`: compressed, both triangles. Empty where the ordering fails or is
+/// not one of these four.
+std::vector<int> given_ordering(const SparseMatrix& a, FactorOrdering ordering);
+
+/// Reverse Cuthill-McKee of a symmetric graph given by its adjacency lists (xadj, adj:
+/// the neighbours of v are adj[xadj[v] .. xadj[v+1]), both directions, no self loops):
+/// breadth-first from a pseudo-peripheral vertex of each connected component, neighbours by
+/// increasing degree, the whole order reversed. order[k] is the vertex placed k-th.
+std::vector<int> reverse_cuthill_mckee(const std::vector<int>& xadj, const std::vector<int>& adj);
+
 /// Pivot-ratio threshold used to call a factorisation singular: a pivot that
 /// lost more than this relative size against its matrix diagonal (about 10
 /// significant digits) marks a rigid-body mode or a missing boundary condition.

@@ -59,6 +59,15 @@ class CholmodSolver final : public LinearSolver {
   Vector solve(const Vector& b) const override;
   std::string name() const override { return "CHOLMOD"; }
   int failed_column() const override { return failed_; }
+  void set_ordering(FactorOrdering ordering) override {
+    LUNASTER_ASSERT(ordering == FactorOrdering::Auto || ordering == FactorOrdering::Metis ||
+                        ordering == FactorOrdering::Amd || ordering == FactorOrdering::Rcm ||
+                        ordering == FactorOrdering::Natural,
+                    "CHOLMOD orders by AMD, METIS, reverse Cuthill-McKee or not at all");
+    if (ordering != ordering_ && factor_) cholmod_free_factor(&factor_, &common_);  // analyse again
+    ordering_ = ordering;
+  }
+  std::string ordering_used() const override { return ordering_used_; }
 
  private:
   bool same_pattern(const SparseMatrix& a, std::uint64_t fingerprint) const {
@@ -74,6 +83,8 @@ class CholmodSolver final : public LinearSolver {
   std::vector<int> upper_count_;    ///< rows of each column up to the diagonal (the view's nz)
   SweepPlan plan_;                  ///< how the solves share the factor's supernodes (per analysis)
   bool wide_ = false;               ///< factorised with two BLAS threads (per analysis)
+  FactorOrdering ordering_ = FactorOrdering::Auto;
+  std::string ordering_used_;       ///< of the last analysis
   int failed_ = -1;
   bool ready_ = false;
 };
@@ -124,7 +135,24 @@ std::uint64_t pattern_fingerprint(const SparseMatrix& a) {
 /// matrix has no such runs or AMD fails (CHOLMOD then chooses itself). With `last`, the
 /// equations it flags come after all the others (constrained AMD, CAMD; a node's
 /// equations share a pattern, so they share their flag).
-std::vector<int> node_graph_ordering(const SparseMatrix& a, cholmod_common* common, bool nested_dissection,
+enum class GraphOrdering { Amd, Metis, Rcm };
+
+/// Reverse Cuthill-McKee of the graph whose upper triangle (diagonal included or not) is
+/// the pattern qp/qi of ng vertices.
+std::vector<int> rcm_of_upper(int ng, const std::vector<int>& qp, const std::vector<int>& qi) {
+  std::vector<int> xadj(ng + 1, 0);
+  for (int g = 0; g < ng; ++g)
+    for (int k = qp[g]; k < qp[g + 1]; ++k)
+      if (qi[k] != g) ++xadj[g + 1], ++xadj[qi[k] + 1];
+  for (int g = 0; g < ng; ++g) xadj[g + 1] += xadj[g];
+  std::vector<int> adj(xadj[ng]), fill(xadj.begin(), xadj.end() - 1);
+  for (int g = 0; g < ng; ++g)
+    for (int k = qp[g]; k < qp[g + 1]; ++k)
+      if (qi[k] != g) adj[fill[g]++] = qi[k], adj[fill[qi[k]]++] = g;
+  return reverse_cuthill_mckee(xadj, adj);
+}
+
+std::vector<int> node_graph_ordering(const SparseMatrix& a, cholmod_common* common, GraphOrdering ordering,
                                      const std::vector<char>* last = nullptr) {
   const int n = static_cast<int>(a.cols());
   const int* p = a.outerIndexPtr();
@@ -136,7 +164,7 @@ std::vector<int> node_graph_ordering(const SparseMatrix& a, cholmod_common* comm
     group_of[j] = static_cast<int>(start.size()) - 1;
   }
   const int ng = static_cast<int>(start.size());
-  if (ng > n / 2 + n / 4) return {};  // little to gain
+  if (ng > n / 2 + n / 4 && ordering != GraphOrdering::Rcm) return {};  // little to gain
   start.push_back(n);
   std::vector<int> qp(ng + 1, 0), qi;
   qi.reserve(a.nonZeros() / 4 + ng);
@@ -161,7 +189,9 @@ std::vector<int> node_graph_ordering(const SparseMatrix& a, cholmod_common* comm
   q.sorted = 1;
   q.packed = 1;
   std::vector<int> gperm(ng);
-  if (nested_dissection) {
+  if (ordering == GraphOrdering::Rcm) {
+    gperm = rcm_of_upper(ng, qp, qi);
+  } else if (ordering == GraphOrdering::Metis) {
     // The graph as it is (stype 1: CHOLMOD adds the other triangle). An unsymmetric copy
     // would be ordered as the graph of A A^T, whose nodes are linked to their neighbours'
     // neighbours: twice the operations of this ordering on 3D meshes.
@@ -399,8 +429,15 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   const std::uint64_t fingerprint = pattern_fingerprint(*m);
   if (!same_pattern(*m, fingerprint)) {
     if (factor_) cholmod_free_factor(&factor_, &common_);
-    std::vector<int> perm = node_graph_ordering(*m, &common_, false);
-    if (!perm.empty()) {
+    if (ordering_ != FactorOrdering::Auto) {
+      // The ordering asked for (SOLVEUR RENUM), whatever it costs.
+      const std::vector<int> given = given_ordering(*m, ordering_);
+      if (given.empty()) throw SolveError("CHOLMOD: the " + ordering_name(ordering_) + " ordering failed");
+      common_.nmethods = 1;
+      common_.method[0].ordering = CHOLMOD_GIVEN;
+      factor_ = cholmod_analyze_p(&s, const_cast<int*>(given.data()), nullptr, 0, &common_);
+      ordering_used_ = ordering_name(ordering_);
+    } else if (std::vector<int> perm = node_graph_ordering(*m, &common_, GraphOrdering::Amd); !perm.empty()) {
       common_.nmethods = 1;
       common_.method[0].ordering = CHOLMOD_GIVEN;
       factor_ = cholmod_analyze_p(&s, perm.data(), nullptr, 0, &common_);
@@ -413,17 +450,22 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
       // operations) for more time (0.48 s) than the whole factorisation's analysis.
       const double fl_amd = common_.fl;
       const double per_column = static_cast<double>(m->nonZeros()) / static_cast<double>(std::max<Eigen::Index>(1, m->cols()));
+      ordering_used_ = ordering_name(FactorOrdering::Amd);
       if (factor_ && ((per_column > 40.0 && fl_amd > 5e9) || common_.lnz > 10.0 * static_cast<double>(m->nonZeros()))) {
-        std::vector<int> nd = node_graph_ordering(*m, &common_, true);
+        std::vector<int> nd = node_graph_ordering(*m, &common_, GraphOrdering::Metis);
         if (!nd.empty()) {
           cholmod_factor* other = cholmod_analyze_p(&s, nd.data(), nullptr, 0, &common_);
-          if (other && common_.fl < fl_amd) std::swap(factor_, other);
+          if (other && common_.fl < fl_amd) {
+            std::swap(factor_, other);
+            ordering_used_ = ordering_name(FactorOrdering::Metis);
+          }
           if (other) cholmod_free_factor(&other, &common_);
         }
       }
     } else {
       common_.nmethods = 0;  // CHOLMOD's default strategy (AMD, then METIS if AMD fills badly)
       factor_ = cholmod_analyze(&s, &common_);
+      ordering_used_ = "CHOLMOD's own";
     }
     if (!factor_ && common_.status == CHOLMOD_OUT_OF_MEMORY)
       throw SolveError::out_of_memory("CHOLMOD", m->rows(), "symbolic analysis");
@@ -540,7 +582,7 @@ void CholmodInterfaceSolver::factorize_reference(SparseMatrix& r) {
   cholmod_sparse view = upper_view(r, upper_count);
   std::vector<char> on_interface(n, 0);
   for (int eq : interface_) on_interface[eq] = 1;
-  std::vector<int> perm = node_graph_ordering(r, &common_, false, &on_interface);
+  std::vector<int> perm = node_graph_ordering(r, &common_, GraphOrdering::Amd, &on_interface);
   if (perm.empty()) {
     perm.resize(n);
     std::vector<int> cmember(n);
@@ -652,13 +694,92 @@ std::vector<int> nested_dissection_ordering(const SparseMatrix& a) {
   cholmod_common common;
   cholmod_start(&common);
   common.print = 0;
-  std::vector<int> perm = node_graph_ordering(a, &common, true);
+  std::vector<int> perm = node_graph_ordering(a, &common, GraphOrdering::Metis);
   if (perm.empty() && a.cols() > 0) {
     // No node runs: the graph of the equations themselves.
     std::vector<int> upper_count;
     cholmod_sparse view = upper_view(a, upper_count);
     perm.resize(a.cols());
     if (!cholmod_metis(&view, nullptr, 0, 0, perm.data(), &common)) perm.clear();
+  }
+  cholmod_finish(&common);
+  return perm;
+}
+
+std::vector<int> reverse_cuthill_mckee(const std::vector<int>& xadj, const std::vector<int>& adj) {
+  const int n = static_cast<int>(xadj.size()) - 1;
+  auto degree = [&xadj](int v) { return xadj[v + 1] - xadj[v]; };
+  std::vector<int> by_degree(n);
+  std::iota(by_degree.begin(), by_degree.end(), 0);
+  std::stable_sort(by_degree.begin(), by_degree.end(), [&](int x, int y) { return degree(x) < degree(y); });
+  std::vector<int> order, level(n, -1), queue;
+  std::vector<char> placed(n, 0);
+  order.reserve(n);
+  queue.reserve(n);
+  // Breadth-first levels from r over the vertices not yet placed; returns the last level's
+  // vertex of least degree and the number of levels.
+  auto sweep = [&](int r, int& far) {
+    queue.assign(1, r);
+    level[r] = 0;
+    int depth = 0;
+    far = r;
+    for (size_t h = 0; h < queue.size(); ++h) {
+      const int v = queue[h];
+      if (level[v] > depth || (level[v] == depth && degree(v) < degree(far))) depth = level[v], far = v;
+      for (int k = xadj[v]; k < xadj[v + 1]; ++k)
+        if (!placed[adj[k]] && level[adj[k]] < 0) level[adj[k]] = level[v] + 1, queue.push_back(adj[k]);
+    }
+    for (int v : queue) level[v] = -1;
+    return depth;
+  };
+  std::vector<int> next;
+  for (int seed : by_degree) {
+    if (placed[seed]) continue;
+    // A pseudo-peripheral start (George and Liu): move to the far end while the levels deepen.
+    int start = seed, far = seed, depth = sweep(start, far);
+    for (int tries = 0; tries < 8 && far != start; ++tries) {
+      int far2 = far;
+      const int d = sweep(far, far2);
+      if (d <= depth) break;
+      start = far, depth = d, far = far2;
+    }
+    const size_t first = order.size();
+    order.push_back(start);
+    placed[start] = 1;
+    for (size_t h = first; h < order.size(); ++h) {
+      const int v = order[h];
+      next.clear();
+      for (int k = xadj[v]; k < xadj[v + 1]; ++k)
+        if (!placed[adj[k]]) placed[adj[k]] = 1, next.push_back(adj[k]);
+      std::stable_sort(next.begin(), next.end(), [&](int x, int y) { return degree(x) < degree(y); });
+      order.insert(order.end(), next.begin(), next.end());
+    }
+  }
+  std::reverse(order.begin(), order.end());
+  return order;
+}
+
+std::vector<int> given_ordering(const SparseMatrix& a, FactorOrdering ordering) {
+  const int n = static_cast<int>(a.cols());
+  std::vector<int> perm;
+  if (ordering == FactorOrdering::Natural) {
+    perm.resize(n);
+    std::iota(perm.begin(), perm.end(), 0);
+    return perm;
+  }
+  if (ordering == FactorOrdering::Metis) return nested_dissection_ordering(a);
+  if (ordering != FactorOrdering::Amd && ordering != FactorOrdering::Rcm) return {};
+  cholmod_common common;
+  cholmod_start(&common);
+  common.print = 0;
+  const bool rcm = ordering == FactorOrdering::Rcm;
+  perm = node_graph_ordering(a, &common, rcm ? GraphOrdering::Rcm : GraphOrdering::Amd);
+  if (perm.empty() && n > 0 && !rcm) {
+    // No node runs: the graph of the equations themselves.
+    std::vector<int> upper_count;
+    cholmod_sparse view = upper_view(a, upper_count);
+    perm.resize(n);
+    if (!cholmod_amd(&view, nullptr, 0, perm.data(), &common)) perm.clear();
   }
   cholmod_finish(&common);
   return perm;

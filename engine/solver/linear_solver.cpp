@@ -12,6 +12,20 @@
 
 namespace lunaster::engine {
 
+std::string ordering_name(FactorOrdering ordering) {
+  switch (ordering) {
+    case FactorOrdering::Auto: return "the backend's choice";
+    case FactorOrdering::Metis: return "METIS (nested dissection of the node graph)";
+    case FactorOrdering::Amd: return "AMD (approximate minimum degree)";
+    case FactorOrdering::Amf: return "AMF (approximate minimum fill)";
+    case FactorOrdering::Qamd: return "QAMD";
+    case FactorOrdering::Pord: return "PORD";
+    case FactorOrdering::Rcm: return "reverse Cuthill-McKee";
+    case FactorOrdering::Natural: return "natural (the equations' own order)";
+  }
+  return "?";
+}
+
 std::unique_ptr<LinearSolver> make_linear_solver(SolverKind kind, const IterativeSettings& iterative) {
   configure_blas();
   switch (kind) {

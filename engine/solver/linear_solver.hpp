@@ -60,11 +60,18 @@ struct SystemLayout {
   bool distributed() const { return !owner.empty(); }
 };
 
-/// Fill-reducing ordering of a MUMPS factorisation (code_aster's SOLVEUR RENUM). Auto: AMD
-/// on 2D rows, METIS's nested dissection of the node graph on 3D rows of a process alone,
-/// PORD otherwise; Metis: that nested dissection always (a process alone); Amd, Amf, Qamd,
-/// Pord: MUMPS's own (ICNTL(7) = 0, 2, 6, 4).
-enum class FactorOrdering { Auto, Metis, Amd, Amf, Qamd, Pord };
+/// Fill-reducing ordering of a factorisation (code_aster's SOLVEUR RENUM). Auto: the
+/// backend's choice (MUMPS: AMD on 2D rows, METIS's nested dissection of the node graph on
+/// 3D rows of a process alone, PORD otherwise; CHOLMOD: AMD on the node graph, METIS too
+/// where AMD fills a 3D factor badly); Metis: that nested dissection; Amd: approximate
+/// minimum degree; Rcm: reverse Cuthill-McKee of the node graph (a profile ordering, as
+/// code_aster's LDLT); Natural: the equations' own order. Amf, Qamd, Pord: MUMPS's own
+/// (ICNTL(7) = 2, 6, 4), for MUMPS only. Metis, Rcm and Natural need the whole matrix in
+/// one place (MUMPS: not a distributed one).
+enum class FactorOrdering { Auto, Metis, Amd, Amf, Qamd, Pord, Rcm, Natural };
+
+/// The name the log gives an ordering asked for ("METIS", "reverse Cuthill-McKee", ...).
+std::string ordering_name(FactorOrdering ordering);
 
 /// Direct solver: factorise once, solve for many right-hand sides.
 class LinearSolver {
@@ -101,10 +108,10 @@ class LinearSolver {
   virtual bool multiply(const Vector& /*x*/, Vector& /*y*/) const { return false; }
   /// Krylov iterations of the last solve (0 for a direct backend).
   virtual int iterations() const { return 0; }
-  /// The fill-reducing ordering of the next analyses (MUMPS; the others choose their own).
+  /// The fill-reducing ordering of the next analyses (the direct backends; PETSc has none).
   virtual void set_ordering(FactorOrdering /*ordering*/) {}
-  /// The ordering the last analysis used, as MUMPS names it ("METIS (given)", "PORD", ...);
-  /// empty for the backends that do not say.
+  /// The ordering the last analysis used ("METIS (nested dissection of the node graph,
+  /// given)", "PORD", ...); empty for the backends that do not say.
   virtual std::string ordering_used() const { return {}; }
 };
 

@@ -80,6 +80,7 @@ class MumpsSolver final : public LinearSolver {
   bool distributed_ = false;  ///< the matrices given are this rank's columns (ICNTL(18) = 3)
   bool wide_ = false;         ///< factorised with two BLAS threads (per analysis)
   FactorOrdering ordering_ = FactorOrdering::Auto;
+  FactorOrdering given_ = FactorOrdering::Auto;  ///< the ordering given to the last analysis (ICNTL(7) = 1)
 };
 
 void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
@@ -132,29 +133,40 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     // CHOLMOD uses there) is given instead (ICNTL(7) = 1): fewer operations than PORD on the
     // SSNP121 3D contact systems (CONTINUE 3D benchmark 1.0e10 against 1.2e10; the refined
     // case 2.03e12 against 2.43e12). An ordering asked for (RENUM) replaces the choice.
+    // METIS, reverse Cuthill-McKee and the natural order are computed here and given
+    // (ICNTL(7) = 1, PERM_IN): they need the whole matrix, which a distributed one is not.
     perm_in_.clear();
-    bool metis = sym != 0 && entries_per_row >= 40.0 && a.rows() >= 10000;
+    given_ = FactorOrdering::Auto;
+    FactorOrdering give = FactorOrdering::Auto;
     switch (ordering_) {
-      case FactorOrdering::Auto: break;
-      case FactorOrdering::Metis: metis = true; break;
-      case FactorOrdering::Amd: metis = false, id_.icntl[6] = 0; break;
-      case FactorOrdering::Amf: metis = false, id_.icntl[6] = 2; break;
-      case FactorOrdering::Qamd: metis = false, id_.icntl[6] = 6; break;
-      case FactorOrdering::Pord: metis = false, id_.icntl[6] = 4; break;
+      case FactorOrdering::Auto:
+        if (sym != 0 && entries_per_row >= 40.0 && a.rows() >= 10000 && !distributed_ && parallel::size() == 1)
+          give = FactorOrdering::Metis;
+        break;
+      case FactorOrdering::Metis:
+      case FactorOrdering::Rcm:
+      case FactorOrdering::Natural: give = ordering_; break;
+      case FactorOrdering::Amd: id_.icntl[6] = 0; break;
+      case FactorOrdering::Amf: id_.icntl[6] = 2; break;
+      case FactorOrdering::Qamd: id_.icntl[6] = 6; break;
+      case FactorOrdering::Pord: id_.icntl[6] = 4; break;
     }
-    if (ordering_ == FactorOrdering::Metis && (distributed_ || parallel::size() > 1))
-      throw SolveError("MUMPS: the METIS ordering needs the whole matrix in one process; under mpirun "
-                       "MUMPS orders with AMD, AMF, QAMD or PORD");
-    if (metis && !distributed_ && parallel::size() == 1) {
+    if (give != FactorOrdering::Auto && distributed_)
+      throw SolveError("MUMPS: the " + ordering_name(give) + " ordering needs the whole matrix in one process; "
+                       "a matrix shared among the ranks is ordered by AMD, AMF, QAMD or PORD");
+    if (give != FactorOrdering::Auto) {
       SparseMatrix compressed;
       const SparseMatrix* m = &a;
       if (!a.isCompressed()) compressed = a, compressed.makeCompressed(), m = &compressed;
-      const std::vector<int> perm = nested_dissection_ordering(*m);
+      const std::vector<int> perm = given_ordering(*m, give);
       if (!perm.empty()) {
         perm_in_.resize(perm.size());
         for (size_t k = 0; k < perm.size(); ++k) perm_in_[perm[k]] = static_cast<MUMPS_INT>(k + 1);
         id_.perm_in = perm_in_.data();
         id_.icntl[6] = 1;
+        given_ = give;
+      } else if (ordering_ != FactorOrdering::Auto) {
+        throw SolveError("MUMPS: the " + ordering_name(give) + " ordering failed");
       }
     }
     id_.icntl[17] = distributed_ ? 3 : 0;  // ICNTL(18): distributed assembled entries, pattern and values
@@ -197,7 +209,7 @@ std::string MumpsSolver::ordering_used() const {
   if (!initialised_) return {};
   switch (id_.infog[6]) {  // INFOG(7): the ordering the analysis used
     case 0: return "AMD";
-    case 1: return "METIS (nested dissection of the node graph, given)";
+    case 1: return ordering_name(given_) + ", given";
     case 2: return "AMF";
     case 3: return "SCOTCH";
     case 4: return "PORD";

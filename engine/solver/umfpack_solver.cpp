@@ -26,6 +26,19 @@ class UmfpackSolver final : public LinearSolver {
   Vector solve(const Vector& b) const override;
   std::string name() const override { return "UMFPACK"; }
   int failed_column() const override { return failed_; }
+  void set_ordering(FactorOrdering ordering) override {
+    LUNASTER_ASSERT(ordering == FactorOrdering::Auto || ordering == FactorOrdering::Metis ||
+                        ordering == FactorOrdering::Amd || ordering == FactorOrdering::Rcm ||
+                        ordering == FactorOrdering::Natural,
+                    "UMFPACK orders by AMD, METIS, reverse Cuthill-McKee or not at all");
+    ordering_ = ordering;
+    release();  // analyse again
+    control_[UMFPACK_ORDERING] = ordering == FactorOrdering::Metis     ? UMFPACK_ORDERING_METIS
+                                 : ordering == FactorOrdering::Natural ? UMFPACK_ORDERING_NONE
+                                 : ordering == FactorOrdering::Rcm     ? UMFPACK_ORDERING_GIVEN
+                                                                       : UMFPACK_DEFAULT_ORDERING;
+  }
+  std::string ordering_used() const override;
 
  private:
   void release() {
@@ -44,8 +57,21 @@ class UmfpackSolver final : public LinearSolver {
   void* symbolic_ = nullptr;
   void* numeric_ = nullptr;
   SparseMatrix a_;
+  FactorOrdering ordering_ = FactorOrdering::Auto;
+  int ordering_used_ = -1;  ///< Info[UMFPACK_ORDERING_USED] of the last symbolic analysis
   int failed_ = -1;
 };
+
+std::string UmfpackSolver::ordering_used() const {
+  if (!symbolic_) return {};
+  switch (ordering_used_) {
+    case UMFPACK_ORDERING_AMD: return "AMD or COLAMD";
+    case UMFPACK_ORDERING_METIS: return "METIS (UMFPACK's, on the graph of the equations)";
+    case UMFPACK_ORDERING_NONE: return ordering_name(FactorOrdering::Natural);
+    case UMFPACK_ORDERING_GIVEN: return ordering_name(ordering_) + ", given";
+    default: return "UMFPACK ordering " + std::to_string(ordering_used_);
+  }
+}
 
 /// Column (original numbering) of the smallest |U_kk|, if it is negligible.
 int UmfpackSolver::zero_pivot_column() const {
@@ -78,8 +104,17 @@ void UmfpackSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   const int n = static_cast<int>(a_.rows());
   int status = UMFPACK_OK;
   if (!keep_symbolic) {
-    status = umfpack_di_symbolic(n, n, a_.outerIndexPtr(), a_.innerIndexPtr(), a_.valuePtr(), &symbolic_, control_,
-                                 info_);
+    if (ordering_ == FactorOrdering::Rcm) {
+      // Reverse Cuthill-McKee of the node graph, given as the column pre-ordering.
+      std::vector<int> q = given_ordering(a_, ordering_);
+      if (q.empty()) throw SolveError("UMFPACK: the " + ordering_name(ordering_) + " ordering failed");
+      status = umfpack_di_qsymbolic(n, n, a_.outerIndexPtr(), a_.innerIndexPtr(), a_.valuePtr(), q.data(), &symbolic_,
+                                    control_, info_);
+    } else {
+      status = umfpack_di_symbolic(n, n, a_.outerIndexPtr(), a_.innerIndexPtr(), a_.valuePtr(), &symbolic_, control_,
+                                   info_);
+    }
+    ordering_used_ = static_cast<int>(info_[UMFPACK_ORDERING_USED]);
     if (status == UMFPACK_ERROR_out_of_memory)
       throw SolveError::out_of_memory("UMFPACK", n, "symbolic analysis, status -1");
     if (status != UMFPACK_OK) throw SolveError("UMFPACK: symbolic analysis failed (status " + std::to_string(status) + ")");
