@@ -103,12 +103,12 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                         Block{"METHODE",
                               {"MUMPS"},
                               {text("RENUM",
-                                    "MUMPS's fill-reducing ordering: AUTO chooses (AMD on 2D rows; on 3D rows "
-                                    "METIS's nested dissection of the mesh's node graph in a process alone, "
-                                    "MUMPS's own choice under mpirun); METIS that nested dissection (not under "
-                                    "mpirun, where each rank holds only its rows); AMD, AMF, QAMD and PORD "
-                                    "MUMPS's own. SCOTCH, PTSCOTCH and PARMETIS are not in Debian's MUMPS build. "
-                                    "The log names the ordering used when RENUM is given")
+                                    "MUMPS's fill-reducing ordering: AUTO chooses (AMD on 2D rows, METIS's nested "
+                                    "dissection of the mesh's node graph on 3D rows); METIS that nested dissection "
+                                    "(under mpirun computed by rank 0 from the pattern the ranks send it, as "
+                                    "MUMPS's own analysis does); AMD, AMF, QAMD and PORD MUMPS's own. SCOTCH, "
+                                    "PTSCOTCH and PARMETIS are not in Debian's MUMPS build. The log names the "
+                                    "ordering used when RENUM is given")
                                    .into_values({"AUTO", "METIS", "AMD", "AMF", "QAMD", "PORD"})
                                    .def("AUTO")},
                               {}},

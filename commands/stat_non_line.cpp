@@ -103,11 +103,6 @@ void read_renum(const Args& solveur, engine::NewtonOptions& options) {
   }
   if (methode != "MUMPS") return;
   const std::string renum = solveur.text("RENUM");
-  if (renum == "METIS" && engine::parallel::size() > 1)
-    throw solveur.error("RENUM",
-                        "'AUTO', 'AMD', 'AMF', 'QAMD' or 'PORD' under mpirun (METIS orders the whole matrix in one "
-                        "process; under mpirun each rank holds only its rows)",
-                        "'METIS'");
   options.ordering = renum == "METIS" ? O::Metis
                      : renum == "AMD" ? O::Amd
                      : renum == "AMF" ? O::Amf

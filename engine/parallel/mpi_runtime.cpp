@@ -153,6 +153,18 @@ std::vector<int> gather_all(const std::vector<int>& mine) {
   return all;
 }
 
+std::vector<int> gather_to_root(const std::vector<int>& mine) {
+  if (size() == 1) return mine;
+  const int ranks = size();
+  std::vector<int> counts(ranks), offsets(ranks + 1, 0);
+  const int count = static_cast<int>(mine.size());
+  MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  for (int r = 0; r < ranks; ++r) offsets[r + 1] = offsets[r] + counts[r];
+  std::vector<int> all(rank() == 0 ? offsets[ranks] : 0);
+  MPI_Gatherv(mine.data(), count, MPI_INT, all.data(), counts.data(), offsets.data(), MPI_INT, 0, MPI_COMM_WORLD);
+  return all;
+}
+
 void finalise() {
   int finalised = 0;
   MPI_Finalized(&finalised);

@@ -62,12 +62,12 @@ struct SystemLayout {
 
 /// Fill-reducing ordering of a factorisation (code_aster's SOLVEUR RENUM). Auto: the
 /// backend's choice (MUMPS: AMD on 2D rows, METIS's nested dissection of the node graph on
-/// 3D rows of a process alone, PORD otherwise; CHOLMOD: AMD on the node graph, METIS too
+/// 3D rows; CHOLMOD: AMD on the node graph, METIS too
 /// where AMD fills a 3D factor badly); Metis: that nested dissection; Amd: approximate
 /// minimum degree; Rcm: reverse Cuthill-McKee of the node graph (a profile ordering, as
 /// code_aster's LDLT); Natural: the equations' own order. Amf, Qamd, Pord: MUMPS's own
-/// (ICNTL(7) = 2, 6, 4), for MUMPS only. Metis, Rcm and Natural need the whole matrix in
-/// one place (MUMPS: not a distributed one).
+/// (ICNTL(7) = 2, 6, 4), for MUMPS only. Metis, Rcm and Natural are computed from the whole
+/// pattern (a matrix shared among MUMPS's ranks sends its columns' patterns to rank 0).
 enum class FactorOrdering { Auto, Metis, Amd, Amf, Qamd, Pord, Rcm, Natural };
 
 /// The name the log gives an ordering asked for ("METIS", "reverse Cuthill-McKee", ...).
@@ -110,8 +110,8 @@ class LinearSolver {
   virtual int iterations() const { return 0; }
   /// The fill-reducing ordering of the next analyses (the direct backends; PETSc has none).
   virtual void set_ordering(FactorOrdering /*ordering*/) {}
-  /// The ordering the last analysis used ("METIS (nested dissection of the node graph,
-  /// given)", "PORD", ...); empty for the backends that do not say.
+  /// The ordering the last analysis used ("METIS (nested dissection of the node graph),
+  /// given", "PORD", ...); empty for the backends that do not say.
   virtual std::string ordering_used() const { return {}; }
 };
 

@@ -21,6 +21,55 @@
 namespace lunaster::engine {
 namespace {
 
+/// The ordering `give` (given_ordering) of a matrix shared among the ranks, each holding its
+/// own columns complete: every rank sends its columns' patterns to rank 0, which orders the
+/// whole pattern. Collective; the order on rank 0, empty on the others.
+std::vector<int> shared_matrix_ordering(const SparseMatrix& mine, FactorOrdering give) {
+  std::vector<int> packed;  // per non-empty column: its index, its number of rows, the rows
+  packed.reserve(static_cast<size_t>(mine.nonZeros()) + 2 * static_cast<size_t>(mine.cols()));
+  for (int c = 0; c < mine.outerSize(); ++c) {
+    const int begin = mine.outerIndexPtr()[c];
+    const int end = mine.isCompressed() ? mine.outerIndexPtr()[c + 1] : begin + mine.innerNonZeroPtr()[c];
+    if (end == begin) continue;
+    packed.push_back(c);
+    packed.push_back(end - begin);
+    packed.insert(packed.end(), mine.innerIndexPtr() + begin, mine.innerIndexPtr() + end);
+  }
+  const std::vector<int> all = parallel::gather_to_root(packed);
+  std::vector<int>().swap(packed);
+  if (parallel::rank() != 0) return {};
+  const int n = static_cast<int>(mine.cols());
+  // The whole pattern, column by column (a column sent by two ranks: the union of its rows).
+  std::vector<int> count(n + 1, 0);
+  for (size_t k = 0; k < all.size(); k += 2 + static_cast<size_t>(all[k + 1])) count[all[k] + 1] += all[k + 1];
+  for (int c = 0; c < n; ++c) count[c + 1] += count[c];
+  SparseMatrix whole(n, n);
+  whole.resizeNonZeros(count[n]);
+  std::copy(count.begin(), count.end(), whole.outerIndexPtr());
+  std::vector<int> fill(count.begin(), count.end() - 1);
+  for (size_t k = 0; k < all.size(); k += 2 + static_cast<size_t>(all[k + 1]))
+    fill[all[k]] = static_cast<int>(std::copy(all.begin() + static_cast<long>(k) + 2,
+                                              all.begin() + static_cast<long>(k) + 2 + all[k + 1],
+                                              whole.innerIndexPtr() + fill[all[k]]) -
+                                    whole.innerIndexPtr());
+  std::fill(whole.valuePtr(), whole.valuePtr() + count[n], 1.0);
+  bool merged = false;
+  for (int c = 0; c < n; ++c) {
+    int* first = whole.innerIndexPtr() + count[c];
+    int* last = whole.innerIndexPtr() + count[c + 1];
+    if (!std::is_sorted(first, last) || std::adjacent_find(first, last) != last) merged = true;
+  }
+  if (merged) {
+    // Rebuilt through triplets: sorted columns, each row once.
+    std::vector<Triplet> t;
+    t.reserve(static_cast<size_t>(count[n]));
+    for (int c = 0; c < n; ++c)
+      for (int k = count[c]; k < count[c + 1]; ++k) t.emplace_back(whole.innerIndexPtr()[k], c, 1.0);
+    whole.setFromTriplets(t.begin(), t.end(), [](double x, double) { return x; });
+  }
+  return given_ordering(whole, give);
+}
+
 class MumpsSolver final : public LinearSolver {
  public:
   MumpsSolver() = default;
@@ -129,19 +178,19 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     if (distributed_) parallel::sum_over_ranks(&entries, 1);
     const double entries_per_row = 2.0 * entries / std::max<double>(1.0, static_cast<double>(a.rows()));
     id_.icntl[6] = sym != 0 && entries_per_row < 40.0 ? 0 : 7;
-    // On 3D rows of a process alone, nested dissection of the node graph (METIS, the ordering
-    // CHOLMOD uses there) is given instead (ICNTL(7) = 1): fewer operations than PORD on the
-    // SSNP121 3D contact systems (CONTINUE 3D benchmark 1.0e10 against 1.2e10; the refined
-    // case 2.03e12 against 2.43e12). An ordering asked for (RENUM) replaces the choice.
-    // METIS, reverse Cuthill-McKee and the natural order are computed here and given
-    // (ICNTL(7) = 1, PERM_IN): they need the whole matrix, which a distributed one is not.
+    // On 3D rows, nested dissection of the node graph (METIS, the ordering CHOLMOD uses there)
+    // is given instead (ICNTL(7) = 1): fewer operations than PORD on the SSNP121 3D contact
+    // systems (CONTINUE 3D benchmark 1.0e10 against 1.2e10; the refined case 2.03e12 against
+    // 2.43e12). An ordering asked for (RENUM) replaces the choice. METIS, reverse
+    // Cuthill-McKee and the natural order are computed on the host and given (PERM_IN), from
+    // the whole matrix's pattern: a matrix shared among the ranks sends its columns' patterns
+    // to the host for it, as MUMPS's own (sequential) analysis gathers them there.
     perm_in_.clear();
     given_ = FactorOrdering::Auto;
     FactorOrdering give = FactorOrdering::Auto;
     switch (ordering_) {
       case FactorOrdering::Auto:
-        if (sym != 0 && entries_per_row >= 40.0 && a.rows() >= 10000 && !distributed_ && parallel::size() == 1)
-          give = FactorOrdering::Metis;
+        if (sym != 0 && entries_per_row >= 40.0 && a.rows() >= 10000) give = FactorOrdering::Metis;
         break;
       case FactorOrdering::Metis:
       case FactorOrdering::Rcm:
@@ -151,18 +200,21 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
       case FactorOrdering::Qamd: id_.icntl[6] = 6; break;
       case FactorOrdering::Pord: id_.icntl[6] = 4; break;
     }
-    if (give != FactorOrdering::Auto && distributed_)
-      throw SolveError("MUMPS: the " + ordering_name(give) + " ordering needs the whole matrix in one process; "
-                       "a matrix shared among the ranks is ordered by AMD, AMF, QAMD or PORD");
     if (give != FactorOrdering::Auto) {
       SparseMatrix compressed;
       const SparseMatrix* m = &a;
       if (!a.isCompressed()) compressed = a, compressed.makeCompressed(), m = &compressed;
-      const std::vector<int> perm = given_ordering(*m, give);
-      if (!perm.empty()) {
-        perm_in_.resize(perm.size());
-        for (size_t k = 0; k < perm.size(); ++k) perm_in_[perm[k]] = static_cast<MUMPS_INT>(k + 1);
-        id_.perm_in = perm_in_.data();
+      std::vector<int> perm;
+      if (distributed_) perm = shared_matrix_ordering(*m, give);  // collective; empty but on the host
+      else if (parallel::rank() == 0) perm = given_ordering(*m, give);
+      int ok = perm.empty() ? 0 : 1;
+      if (parallel::size() > 1) parallel::broadcast(&ok, 1);  // the host's verdict, on every rank
+      if (ok) {
+        if (parallel::rank() == 0) {
+          perm_in_.resize(perm.size());
+          for (size_t k = 0; k < perm.size(); ++k) perm_in_[perm[k]] = static_cast<MUMPS_INT>(k + 1);
+          id_.perm_in = perm_in_.data();
+        }
         id_.icntl[6] = 1;
         given_ = give;
       } else if (ordering_ != FactorOrdering::Auto) {

@@ -270,9 +270,8 @@ def expectations(deck):
 def errors(exe, source, scratch):
     scratch.mkdir(parents=True)
     errors_dir = source / "testcases" / "errors"
-    # renum_metis.lua runs serially and fails under mpirun only: it lives beside this script.
     for folder, deck, want in ((errors_dir, "misspelt_keyword.lua", 2), (errors_dir, "singular_free_body_mumps.lua", 3),
-                               (errors_dir, "singular_free_direction_mumps.lua", 3), (HERE, "renum_metis.lua", 2)):
+                               (errors_dir, "singular_free_direction_mumps.lua", 3)):
         path = folder / deck
         patterns, status = expectations(path)
         check(status == want, f"{deck}: the deck expects exit status {want}")
@@ -289,10 +288,11 @@ def errors(exe, source, scratch):
         if "mumps" in deck:  # METHODE='MUMPS': the model is shared, the diagnosis is the serial one
             check("model shared among 2 ranks" in text, f"{deck}: the model is shared among the ranks")
 
-    # The deck refused under mpirun runs serially, MUMPS ordered by METIS.
-    code, out, err, _ = run([exe, "run", HERE / "renum_metis.lua", "--out", "serial"], scratch)
-    check(code == 0 and "MUMPS ordering: METIS" in out + err,
-          f"renum_metis.lua runs serially with METIS's order (exit {code})")
+    # RENUM='METIS' on a model shared among the ranks: rank 0 orders the gathered pattern.
+    code, out, err, _ = run([mpirun(), "-np", 2, exe, "run", HERE / "renum_metis.lua", "--out", "shared"], scratch)
+    text = out + err
+    check(code == 0 and "model shared among 2 ranks" in text and "MUMPS ordering: METIS" in text,
+          f"renum_metis.lua runs on a shared model with METIS's order (exit {code})")
 
     code, out, err, _ = run([mpirun(), "-np", 2, exe, "verify", source / "testcases" / "patch_2d.lua"], scratch)
     check(code == 2 and (out + err).count("lunaster verify --np N") == 1,

@@ -1,10 +1,8 @@
--- Must fail under mpirun only (tests/mpi/mpi_runs.py, errors): SOLVEUR RENUM='METIS' orders
--- the whole matrix in one process, and under mpirun each rank holds only its rows. The run
--- stops at STAT_NON_LINE naming the keyword, what is accepted and what was given. Serially the
--- same deck runs (MUMPS ordered by METIS).
--- EXPECT_STATUS: 2
--- EXPECT_ERROR: renum_metis\.lua:17: STAT_NON_LINE: SOLVEUR\.RENUM: expected
--- EXPECT_ERROR: 'AUTO', 'AMD', 'AMF', 'QAMD' or 'PORD' under mpirun .*got 'METIS'
+-- SOLVEUR RENUM='METIS' under mpirun (tests/mpi/mpi_runs.py, errors case): the model is shared
+-- among the ranks, each holding its own columns; they send their patterns to rank 0, which
+-- orders the whole matrix by METIS and gives the order to MUMPS. The log names the ordering, and
+-- the run gives the serial run's result. Plane strain block under a pressure, NU = 0: DY at the
+-- top = -p H / E.
 DEBUT()
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = '../../testcases/meshes/patch_quad4.med' }
 MA = MODI_MAILLAGE{ reuse = MA, MAILLAGE = MA, ORIE_PEAU_2D = _F{ GROUP_MA = 'TOP' } }
@@ -16,4 +14,8 @@ LOAD = AFFE_CHAR_MECA{ MODELE = MO, DDL_IMPO = _F{ GROUP_NO = 'BOTTOM', DX = 0.0
 L = DEFI_LIST_REEL{ DEBUT = 0.0, INTERVALLE = _F{ JUSQU_A = 1.0, NOMBRE = 1 } }
 R = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CM, EXCIT = _F{ CHARGE = LOAD }, COMPORTEMENT = _F{ RELATION = 'ELAS' },
                    SOLVEUR = _F{ METHODE = 'MUMPS', RENUM = 'METIS' }, INCREMENT = _F{ LIST_INST = L } }
+TEST_RESU{ RESU = { _F{ RESULTAT = R, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', NOM_CMP = 'DY', TYPE_TEST = 'MIN', GROUP_NO = 'TOP',
+                        REFERENCE = 'ANALYTIQUE', VALE_REFE = -5.0e-3, PRECISION = 1.0e-10 },
+                    _F{ RESULTAT = R, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', NOM_CMP = 'DY', TYPE_TEST = 'MAX', GROUP_NO = 'TOP',
+                        REFERENCE = 'ANALYTIQUE', VALE_REFE = -5.0e-3, PRECISION = 1.0e-10 } } }
 FIN()
