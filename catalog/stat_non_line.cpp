@@ -110,6 +110,14 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                     "PTSCOTCH and PARMETIS are not in Debian's MUMPS build. The log names the "
                                     "ordering used when RENUM is given")
                                    .into_values({"AUTO", "METIS", "AMD", "AMF", "QAMD", "PORD"})
+                                   .def("AUTO"),
+                               text("GESTION_MEMOIRE",
+                                    "Where MUMPS keeps its factors: IN_CORE in memory; OUT_OF_CORE on disk (in "
+                                    "$TMPDIR, else /tmp; memory then holds the fronts being factorised, each solve "
+                                    "reads the factors back); AUTO in memory unless MUMPS's analysis estimates "
+                                    "more than 80 % of the memory available to the process (the log says so). "
+                                    "code_aster's EVAL is not offered")
+                                   .into_values({"AUTO", "IN_CORE", "OUT_OF_CORE"})
                                    .def("AUTO")},
                               {}},
                         Block{"METHODE",

@@ -88,7 +88,8 @@ void read_petsc(const Args& solveur, engine::IterativeSettings& settings) {
   settings.max_iterations = static_cast<int>(solveur.integer("NMAX_ITER"));
 }
 
-/// SOLVEUR RENUM: the fill-reducing ordering, by code_aster's names for each METHODE.
+/// SOLVEUR RENUM (the fill-reducing ordering, by code_aster's names for each METHODE) and,
+/// for MUMPS, GESTION_MEMOIRE.
 void read_renum(const Args& solveur, engine::NewtonOptions& options) {
   using O = engine::FactorOrdering;
   const std::string methode = solveur.text("METHODE");
@@ -102,6 +103,10 @@ void read_renum(const Args& solveur, engine::NewtonOptions& options) {
     return;
   }
   if (methode != "MUMPS") return;
+  const std::string memory = solveur.text("GESTION_MEMOIRE");
+  options.memory = memory == "IN_CORE"       ? engine::FactorMemory::InCore
+                   : memory == "OUT_OF_CORE" ? engine::FactorMemory::OutOfCore
+                                             : engine::FactorMemory::Auto;
   const std::string renum = solveur.text("RENUM");
   options.ordering = renum == "METIS" ? O::Metis
                      : renum == "AMD" ? O::Amd

@@ -992,6 +992,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         else
           backend_solver = make_linear_solver(backend, settings);
         backend_solver->set_ordering(options_.ordering);
+        backend_solver->set_memory(options_.memory);
       }
       LinearSolver* const solver = via_interface ? interface_.get() : backend_solver.get();
       const bool iterative = solver->iterative();
@@ -1058,6 +1059,11 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           const std::string line = "  " + solver->name() + " ordering: " + solver->ordering_used();
           if (line != ordering_logged_) log_.info(line);
           ordering_logged_ = line;
+        }
+        if (const std::string memory = solver->memory_used(); !memory.empty()) {
+          const std::string line = "  " + solver->name() + " factors: " + memory;
+          if (line != memory_logged_) log_.info(line);
+          memory_logged_ = line;
         }
         if (via_interface)
           log_.info("  linear solve: Schur complement of the " + std::to_string(interface_->interface().size()) +

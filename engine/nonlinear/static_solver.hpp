@@ -42,6 +42,8 @@ struct NewtonOptions {
   IterativeSettings iterative;
   /// The direct backends' fill-reducing ordering (SOLVEUR RENUM).
   FactorOrdering ordering = FactorOrdering::Auto;
+  /// Where MUMPS keeps its factors (SOLVEUR GESTION_MEMOIRE).
+  FactorMemory memory = FactorMemory::Auto;
   /// Print each Krylov iteration's residual in the log (code_aster's INFO=2).
   bool krylov_history = false;
   int subdivide_levels = 0;  ///< on a Newton failure, split the step this many times at most
@@ -198,6 +200,7 @@ class StaticSolver {
   std::unique_ptr<InterfaceSolver> interface_;
   int interface_use_ = 0;
   std::string ordering_logged_;  ///< the last ordering line of the log (an ordering asked for)
+  std::string memory_logged_;    ///< the last line of the log on where the factors are
   long interface_reference_ = -1;  ///< elastic generation of the factorised reference
   SystemState interface_state_;
   std::vector<char> on_interface_;  ///< per free equation: on the interface

@@ -73,6 +73,12 @@ enum class FactorOrdering { Auto, Metis, Amd, Amf, Qamd, Pord, Rcm, Natural };
 /// The name the log gives an ordering asked for ("METIS", "reverse Cuthill-McKee", ...).
 std::string ordering_name(FactorOrdering ordering);
 
+/// Where a MUMPS factorisation keeps its factors (code_aster's SOLVEUR GESTION_MEMOIRE):
+/// InCore in memory; OutOfCore on disk (ICNTL(22) = 1, in $TMPDIR or /tmp), memory then holding
+/// the fronts being factorised; Auto in memory unless the analysis' estimate of the in-core
+/// factorisation exceeds 80 % of the memory available to this process.
+enum class FactorMemory { Auto, InCore, OutOfCore };
+
 /// Direct solver: factorise once, solve for many right-hand sides.
 class LinearSolver {
  public:
@@ -110,6 +116,11 @@ class LinearSolver {
   virtual int iterations() const { return 0; }
   /// The fill-reducing ordering of the next analyses (the direct backends; PETSc has none).
   virtual void set_ordering(FactorOrdering /*ordering*/) {}
+  /// Where the next factorisations keep their factors (MUMPS; the others in memory).
+  virtual void set_memory(FactorMemory /*memory*/) {}
+  /// How the last factorisation held its factors, when it was not simply in memory as
+  /// usual ("out of core: ..."); empty otherwise.
+  virtual std::string memory_used() const { return {}; }
   /// The ordering the last analysis used ("METIS (nested dissection of the node graph),
   /// given", "PORD", ...); empty for the backends that do not say.
   virtual std::string ordering_used() const { return {}; }

@@ -6,7 +6,11 @@
 /// holds its own columns): then each rank passes the entries of its columns (ICNTL(18) = 3),
 /// and no rank ever holds the whole matrix. Null-pivot detection (ICNTL(24) = 1) reports singular matrices and
 /// the first null pivot's equation.
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <dmumps_c.h>
 
 #include <string>
@@ -84,6 +88,8 @@ class MumpsSolver final : public LinearSolver {
   void set_layout(SystemLayout layout) override { distributed_ = layout.distributed(); }
   void set_ordering(FactorOrdering ordering) override { ordering_ = ordering; }
   std::string ordering_used() const override;
+  void set_memory(FactorMemory memory) override { memory_ = memory; }
+  std::string memory_used() const override { return memory_note_; }
   bool takes_distributed() const override { return true; }
 
  private:
@@ -101,6 +107,7 @@ class MumpsSolver final : public LinearSolver {
     const WideBlas threads(wide_);
     dmumps_c(&id_);
   }
+  void choose_memory();
   static bool workspace_too_small(int infog1) {
     return infog1 == -8 || infog1 == -9 || infog1 == -14 || infog1 == -15 || infog1 == -17 || infog1 == -20;
   }
@@ -130,7 +137,49 @@ class MumpsSolver final : public LinearSolver {
   bool wide_ = false;         ///< factorised with two BLAS threads (per analysis)
   FactorOrdering ordering_ = FactorOrdering::Auto;
   FactorOrdering given_ = FactorOrdering::Auto;  ///< the ordering given to the last analysis (ICNTL(7) = 1)
+  FactorMemory memory_ = FactorMemory::Auto;
+  std::string memory_note_;  ///< memory_used() of the last analysis
 };
+
+/// Memory this process may still take, in MB: the machine's MemAvailable shared among the ranks
+/// that Open MPI says run on it. Negative when unknown.
+double available_megabytes() {
+  std::FILE* f = std::fopen("/proc/meminfo", "r");
+  if (!f) return -1.0;
+  char line[256];
+  double kb = -1.0;
+  while (std::fgets(line, sizeof line, f))
+    if (std::sscanf(line, "MemAvailable: %lf kB", &kb) == 1) break;
+  std::fclose(f);
+  if (kb < 0.0) return -1.0;
+  int local = 1;
+  if (const char* v = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE")) local = std::max(1, std::atoi(v));
+  return kb / 1024.0 / local;
+}
+
+void MumpsSolver::choose_memory() {
+  // After the analysis, before the factorisation: INFOG(16) is the largest per-process
+  // estimate of the in-core factorisation (MB), INFOG(26) the same out of core.
+  memory_note_.clear();
+  bool out = memory_ == FactorMemory::OutOfCore;
+  double available = -1.0;
+  if (memory_ == FactorMemory::Auto) {
+    available = available_megabytes();
+    double short_of_memory = available > 0.0 && id_.infog[15] > 0.8 * available ? 1.0 : 0.0;
+    if (parallel::size() > 1) short_of_memory = parallel::max_over_ranks(short_of_memory);  // every rank alike
+    out = short_of_memory > 0.0;
+  }
+  id_.icntl[21] = out ? 1 : 0;  // ICNTL(22)
+  if (!out) return;
+  const char* tmp = std::getenv("TMPDIR");
+  const std::string dir = tmp && *tmp ? tmp : "/tmp";
+  const std::string prefix = "lunaster_" + std::to_string(static_cast<long>(::getpid())) + "_";
+  std::snprintf(id_.ooc_tmpdir, sizeof id_.ooc_tmpdir, "%s", dir.c_str());
+  std::snprintf(id_.ooc_prefix, sizeof id_.ooc_prefix, "%s", prefix.c_str());
+  memory_note_ = "out of core, factors in " + dir + " (estimated " + std::to_string(id_.infog[25]) +
+                 " MB a process, against " + std::to_string(id_.infog[15]) + " MB in core" +
+                 (available > 0.0 ? ", " + std::to_string(static_cast<long>(available)) + " MB available)" : ")");
+}
 
 void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   failed_ = -1;
@@ -230,7 +279,10 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     // benchmark's 2.0e12) has fronts large enough for two BLAS threads; the CONTINUE 3D
     // benchmark's (1.0e10) ran no faster on two.
     wide_ = id_.infog[0] >= 0 && id_.rinfog[0] > 5e10;
-    if (id_.infog[0] >= 0) factorise_numerically();
+    if (id_.infog[0] >= 0) {
+      choose_memory();
+      factorise_numerically();
+    }
   }
   // -8/-9/-14/-15/-17/-20: a workspace sized from the analysis' estimate was too small
   // (off-diagonal pivoting on contact systems grows the factors): factorise again with

@@ -721,6 +721,32 @@ TEST(Solvers, MumpsTakesTheOrderingAskedForAndAgreesWithUmfpackIn3d) {
   }
 }
 
+TEST(Solvers, MumpsOutOfCoreAgreesWithInCore) {
+  // GESTION_MEMOIRE: the same LDL^T with its factors on disk (ICNTL(22) = 1) solves as in memory,
+  // and says where they went; in memory, or left to AUTO with memory to spare, it says nothing.
+  const SparseMatrix a = saddle_block();
+  const Vector f = rhs(static_cast<int>(a.rows()));
+  Vector in_core;
+  for (FactorMemory memory : {FactorMemory::InCore, FactorMemory::Auto, FactorMemory::OutOfCore}) {
+    auto mumps = make_linear_solver(SolverKind::Mumps);
+    mumps->set_memory(memory);
+    mumps->factorize(a, MatrixKind::SymmetricIndefinite);
+    const Vector x = mumps->solve(f);
+    if (memory == FactorMemory::OutOfCore) {
+      EXPECT_EQ(mumps->memory_used().rfind("out of core, factors in ", 0), 0u) << mumps->memory_used();
+      EXPECT_LT((x - in_core).norm(), 1e-12 * in_core.norm());
+      // A second factorisation of the same pattern (the analysis kept) writes its factors again.
+      mumps->factorize(a, MatrixKind::SymmetricIndefinite);
+      EXPECT_LT((mumps->solve(f) - in_core).norm(), 1e-12 * in_core.norm());
+    } else {
+      EXPECT_EQ(mumps->memory_used(), "");
+      if (in_core.size() == 0) in_core = x;
+      else EXPECT_LT((x - in_core).norm(), 1e-12 * in_core.norm());
+    }
+    EXPECT_LT((a * x - f).norm(), 1e-12 * (a * x).cwiseAbs().sum());
+  }
+}
+
 TEST(Solvers, CholmodAndUmfpackTakeTheOrderingAskedFor) {
   // SOLVEUR RENUM with MULT_FRONT and LDLT: CHOLMOD (an SPD system) and UMFPACK (an
   // indefinite one) order as asked and say so; every ordering gives the same solution.
