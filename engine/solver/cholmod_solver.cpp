@@ -127,14 +127,6 @@ std::uint64_t pattern_fingerprint(const SparseMatrix& a) {
   return h;
 }
 
-/// Fill-reducing ordering computed by AMD on the quotient graph whose
-/// vertices are runs of consecutive columns with identical patterns (the DOFs
-/// of one node), expanded back to columns. Ordering the node graph instead of
-/// the DOF graph is several times cheaper for the same fill; on the SSNP121 2D
-/// family AMD beat METIS (136k unknowns: 0.68 s vs 1.00 s user in total). Empty if the
-/// matrix has no such runs or AMD fails (CHOLMOD then chooses itself). With `last`, the
-/// equations it flags come after all the others (constrained AMD, CAMD; a node's
-/// equations share a pattern, so they share their flag).
 enum class GraphOrdering { Amd, Metis, Rcm };
 
 /// Reverse Cuthill-McKee of the graph whose upper triangle (diagonal included or not) is
@@ -152,6 +144,13 @@ std::vector<int> rcm_of_upper(int ng, const std::vector<int>& qp, const std::vec
   return reverse_cuthill_mckee(xadj, adj);
 }
 
+/// Fill-reducing ordering computed by AMD, METIS or reverse Cuthill-McKee (`ordering`) on the
+/// quotient graph whose vertices are runs of consecutive columns with identical patterns (the
+/// DOFs of one node), expanded back to columns. Ordering the node graph instead of the DOF
+/// graph is several times cheaper for the same fill. Empty if the ordering fails, or, for AMD
+/// and METIS, if the matrix has few such runs (the caller then orders the equations). With
+/// `last` (AMD only), the equations it flags come after all the others (constrained AMD, CAMD;
+/// a node's equations share a pattern, so they share their flag).
 std::vector<int> node_graph_ordering(const SparseMatrix& a, cholmod_common* common, GraphOrdering ordering,
                                      const std::vector<char>* last = nullptr) {
   const int n = static_cast<int>(a.cols());
