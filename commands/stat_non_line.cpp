@@ -7,7 +7,6 @@
 #include "commands/failures.hpp"
 #include "engine/contact/contact_factory.hpp"
 #include "engine/io/med_writer.hpp"
-#include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::cmd {
 
@@ -90,7 +89,7 @@ void read_petsc(const Args& solveur, engine::IterativeSettings& settings) {
 
 /// SOLVEUR RENUM (the fill-reducing ordering, by code_aster's names for each METHODE) and,
 /// for MUMPS, GESTION_MEMOIRE.
-void read_renum(const Args& solveur, engine::NewtonOptions& options) {
+void read_direct_solver(const Args& solveur, engine::NewtonOptions& options) {
   using O = engine::FactorOrdering;
   const std::string methode = solveur.text("METHODE");
   if (methode == "MULT_FRONT" || methode == "LDLT") {
@@ -214,7 +213,7 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
   options.solver = solver_kind(args.factor("SOLVEUR").text("METHODE"));
   options.auto_solver = args.factor("SOLVEUR").text("METHODE") == "AUTO";
   if (options.solver == engine::SolverKind::Petsc) read_petsc(args.factor("SOLVEUR"), options.iterative);
-  read_renum(args.factor("SOLVEUR"), options);
+  read_direct_solver(args.factor("SOLVEUR"), options);
   options.krylov_history = args.integer("INFO") >= 2;
   read_newton(args.factor("NEWTON"), contact != nullptr, options);
   const std::vector<double> times = instants(args.factor("INCREMENT"), options);
