@@ -141,8 +141,21 @@ class MumpsSolver final : public LinearSolver {
   std::string memory_note_;  ///< memory_used() of the last analysis
 };
 
-/// Memory this process may still take, in MB: the machine's MemAvailable shared among the ranks
-/// that Open MPI says run on it. Negative when unknown.
+/// The first number in a file (a cgroup's limit or usage, in bytes), negative when there is none
+/// ("max", no such file).
+double number_in(const char* path) {
+  std::FILE* f = std::fopen(path, "r");
+  if (!f) return -1.0;
+  double value = -1.0;
+  if (std::fscanf(f, "%lf", &value) != 1) value = -1.0;
+  std::fclose(f);
+  return value;
+}
+
+/// Memory this process may still take, in MB: the machine's MemAvailable, or less where the
+/// process's memory cgroup (v1 or v2, as /proc/self/cgroup names it) leaves less under its limit
+/// (a container), shared among the ranks that Open MPI says run on this machine. Negative when
+/// unknown.
 double available_megabytes() {
   std::FILE* f = std::fopen("/proc/meminfo", "r");
   if (!f) return -1.0;
@@ -152,9 +165,33 @@ double available_megabytes() {
     if (std::sscanf(line, "MemAvailable: %lf kB", &kb) == 1) break;
   std::fclose(f);
   if (kb < 0.0) return -1.0;
+  double bytes = kb * 1024.0;
+  // The process's cgroup, from /proc/self/cgroup: "0::/path" (v2) or "N:...memory...:/path" (v1).
+  std::string v2, v1;
+  if (std::FILE* g = std::fopen("/proc/self/cgroup", "r")) {
+    while (std::fgets(line, sizeof line, g)) {
+      std::string entry(line);
+      if (!entry.empty() && entry.back() == '\n') entry.pop_back();
+      const size_t first = entry.find(':'), second = entry.find(':', first + 1);
+      if (first == std::string::npos || second == std::string::npos) continue;
+      const std::string controllers = entry.substr(first + 1, second - first - 1), path = entry.substr(second + 1);
+      if (controllers.empty()) v2 = path;
+      else if (("," + controllers + ",").find(",memory,") != std::string::npos) v1 = path;
+    }
+    std::fclose(g);
+  }
+  double limit = -1.0, used = -1.0;
+  if (!v1.empty()) {
+    limit = number_in(("/sys/fs/cgroup/memory" + v1 + "/memory.limit_in_bytes").c_str());
+    used = number_in(("/sys/fs/cgroup/memory" + v1 + "/memory.usage_in_bytes").c_str());
+  } else if (!v2.empty()) {
+    limit = number_in(("/sys/fs/cgroup" + v2 + "/memory.max").c_str());
+    used = number_in(("/sys/fs/cgroup" + v2 + "/memory.current").c_str());
+  }
+  if (limit > 0.0 && limit < 1e18 && used >= 0.0) bytes = std::min(bytes, std::max(0.0, limit - used));
   int local = 1;
   if (const char* v = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE")) local = std::max(1, std::atoi(v));
-  return kb / 1024.0 / local;
+  return bytes / (1024.0 * 1024.0) / local;
 }
 
 void MumpsSolver::choose_memory() {
