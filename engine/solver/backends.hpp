@@ -16,15 +16,10 @@ std::unique_ptr<LinearSolver> make_mumps_solver();
 /// PETSc Krylov solver and preconditioner, from the module loaded on first use.
 std::unique_ptr<LinearSolver> make_petsc_solver(const IterativeSettings& settings);
 
-/// Nested dissection (METIS) of the graph of a's nodes (runs of consecutive columns with one
-/// pattern), or of its equations where they form no such runs: perm[k] is the column
-/// eliminated k-th. `a`: compressed, both triangles. Empty where METIS fails.
-std::vector<int> nested_dissection_ordering(const SparseMatrix& a);
-
-/// The elimination order `ordering` gives a (Metis, Amd, Rcm or Natural; the graph of a's
-/// nodes where its columns form node runs, of its equations otherwise): perm[k] is the column
-/// eliminated k-th. `a`: compressed, both triangles. Empty where the ordering fails or is
-/// not one of these four.
+/// The elimination order `ordering` gives a (Metis: nested dissection, Amd, Rcm or Natural;
+/// the graph of a's nodes, runs of consecutive columns with one pattern, where its columns
+/// form such runs, of its equations otherwise): perm[k] is the column eliminated k-th. `a`:
+/// compressed, both triangles. Empty where the ordering fails or is not one of these four.
 std::vector<int> given_ordering(const SparseMatrix& a, FactorOrdering ordering);
 
 /// Reverse Cuthill-McKee of a symmetric graph given by its adjacency lists (xadj, adj:

@@ -60,10 +60,7 @@ class CholmodSolver final : public LinearSolver {
   std::string name() const override { return "CHOLMOD"; }
   int failed_column() const override { return failed_; }
   void set_ordering(FactorOrdering ordering) override {
-    LUNASTER_ASSERT(ordering == FactorOrdering::Auto || ordering == FactorOrdering::Metis ||
-                        ordering == FactorOrdering::Amd || ordering == FactorOrdering::Rcm ||
-                        ordering == FactorOrdering::Natural,
-                    "CHOLMOD orders by AMD, METIS, reverse Cuthill-McKee or not at all");
+    LUNASTER_ASSERT(any_backend_orders_by(ordering), "CHOLMOD orders by AMD, METIS, reverse Cuthill-McKee or not at all");
     if (ordering != ordering_ && factor_) cholmod_free_factor(&factor_, &common_);  // analyse again
     ordering_ = ordering;
   }
@@ -428,18 +425,21 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   const std::uint64_t fingerprint = pattern_fingerprint(*m);
   if (!same_pattern(*m, fingerprint)) {
     if (factor_) cholmod_free_factor(&factor_, &common_);
-    if (ordering_ != FactorOrdering::Auto) {
-      // The ordering asked for (SOLVEUR RENUM), whatever it costs.
-      const std::vector<int> given = given_ordering(*m, ordering_);
-      if (given.empty()) throw SolveError("CHOLMOD: the " + ordering_name(ordering_) + " ordering failed");
-      common_.nmethods = 1;
-      common_.method[0].ordering = CHOLMOD_GIVEN;
-      factor_ = cholmod_analyze_p(&s, const_cast<int*>(given.data()), nullptr, 0, &common_);
-      ordering_used_ = ordering_name(ordering_);
-    } else if (std::vector<int> perm = node_graph_ordering(*m, &common_, GraphOrdering::Amd); !perm.empty()) {
+    // The ordering asked for (SOLVEUR RENUM) whatever it costs, else AMD on the node graph.
+    const bool asked = ordering_ != FactorOrdering::Auto;
+    std::vector<int> perm = asked ? given_ordering(*m, ordering_) : node_graph_ordering(*m, &common_, GraphOrdering::Amd);
+    if (asked && perm.empty()) throw SolveError("CHOLMOD: the " + ordering_name(ordering_) + " ordering failed");
+    if (perm.empty()) {
+      common_.nmethods = 0;  // CHOLMOD's default strategy (AMD, then METIS if AMD fills badly)
+      factor_ = cholmod_analyze(&s, &common_);
+      ordering_used_ = "CHOLMOD's own";
+    } else {
       common_.nmethods = 1;
       common_.method[0].ordering = CHOLMOD_GIVEN;
       factor_ = cholmod_analyze_p(&s, perm.data(), nullptr, 0, &common_);
+      ordering_used_ = ordering_name(asked ? ordering_ : FactorOrdering::Amd);
+    }
+    if (!asked && !perm.empty()) {
       // Where AMD's factorisation of a 3D system (over 40 entries a column) needs over 5e9
       // operations, or its factor is over 10 times A, nested dissection (METIS on the same
       // node graph) is tried too and the factor with fewer operations kept: on the SSNP121
@@ -449,7 +449,6 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
       // operations) for more time (0.48 s) than the whole factorisation's analysis.
       const double fl_amd = common_.fl;
       const double per_column = static_cast<double>(m->nonZeros()) / static_cast<double>(std::max<Eigen::Index>(1, m->cols()));
-      ordering_used_ = ordering_name(FactorOrdering::Amd);
       if (factor_ && ((per_column > 40.0 && fl_amd > 5e9) || common_.lnz > 10.0 * static_cast<double>(m->nonZeros()))) {
         std::vector<int> nd = node_graph_ordering(*m, &common_, GraphOrdering::Metis);
         if (!nd.empty()) {
@@ -461,10 +460,6 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
           if (other) cholmod_free_factor(&other, &common_);
         }
       }
-    } else {
-      common_.nmethods = 0;  // CHOLMOD's default strategy (AMD, then METIS if AMD fills badly)
-      factor_ = cholmod_analyze(&s, &common_);
-      ordering_used_ = "CHOLMOD's own";
     }
     if (!factor_ && common_.status == CHOLMOD_OUT_OF_MEMORY)
       throw SolveError::out_of_memory("CHOLMOD", m->rows(), "symbolic analysis");
@@ -689,22 +684,6 @@ Vector CholmodInterfaceSolver::solve(const Vector& b) const {
 }
 }  // namespace
 
-std::vector<int> nested_dissection_ordering(const SparseMatrix& a) {
-  cholmod_common common;
-  cholmod_start(&common);
-  common.print = 0;
-  std::vector<int> perm = node_graph_ordering(a, &common, GraphOrdering::Metis);
-  if (perm.empty() && a.cols() > 0) {
-    // No node runs: the graph of the equations themselves.
-    std::vector<int> upper_count;
-    cholmod_sparse view = upper_view(a, upper_count);
-    perm.resize(a.cols());
-    if (!cholmod_metis(&view, nullptr, 0, 0, perm.data(), &common)) perm.clear();
-  }
-  cholmod_finish(&common);
-  return perm;
-}
-
 std::vector<int> reverse_cuthill_mckee(const std::vector<int>& xadj, const std::vector<int>& adj) {
   const int n = static_cast<int>(xadj.size()) - 1;
   auto degree = [&xadj](int v) { return xadj[v + 1] - xadj[v]; };
@@ -766,19 +745,22 @@ std::vector<int> given_ordering(const SparseMatrix& a, FactorOrdering ordering) 
     std::iota(perm.begin(), perm.end(), 0);
     return perm;
   }
-  if (ordering == FactorOrdering::Metis) return nested_dissection_ordering(a);
-  if (ordering != FactorOrdering::Amd && ordering != FactorOrdering::Rcm) return {};
+  if (ordering != FactorOrdering::Metis && ordering != FactorOrdering::Amd && ordering != FactorOrdering::Rcm) return {};
+  const GraphOrdering graph = ordering == FactorOrdering::Metis ? GraphOrdering::Metis
+                              : ordering == FactorOrdering::Amd ? GraphOrdering::Amd
+                                                                : GraphOrdering::Rcm;
   cholmod_common common;
   cholmod_start(&common);
   common.print = 0;
-  const bool rcm = ordering == FactorOrdering::Rcm;
-  perm = node_graph_ordering(a, &common, rcm ? GraphOrdering::Rcm : GraphOrdering::Amd);
-  if (perm.empty() && n > 0 && !rcm) {
-    // No node runs: the graph of the equations themselves.
+  perm = node_graph_ordering(a, &common, graph);
+  if (perm.empty() && n > 0 && graph != GraphOrdering::Rcm) {
+    // Few node runs: the graph of the equations themselves.
     std::vector<int> upper_count;
     cholmod_sparse view = upper_view(a, upper_count);
     perm.resize(n);
-    if (!cholmod_amd(&view, nullptr, 0, perm.data(), &common)) perm.clear();
+    const int ok = graph == GraphOrdering::Metis ? cholmod_metis(&view, nullptr, 0, 0, perm.data(), &common)
+                                                 : cholmod_amd(&view, nullptr, 0, perm.data(), &common);
+    if (!ok) perm.clear();
   }
   cholmod_finish(&common);
   return perm;

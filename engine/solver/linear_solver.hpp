@@ -72,6 +72,11 @@ enum class FactorOrdering { Auto, Metis, Amd, Amf, Qamd, Pord, Rcm, Natural };
 
 /// The name the log gives an ordering asked for ("METIS", "reverse Cuthill-McKee", ...).
 std::string ordering_name(FactorOrdering ordering);
+/// Whether every direct backend applies `ordering` (Auto, and the four we compute ourselves:
+/// Metis, Amd, Rcm, Natural); Amf, Qamd and Pord are MUMPS's own.
+inline bool any_backend_orders_by(FactorOrdering ordering) {
+  return ordering != FactorOrdering::Amf && ordering != FactorOrdering::Qamd && ordering != FactorOrdering::Pord;
+}
 
 /// Where a MUMPS factorisation keeps its factors (code_aster's SOLVEUR GESTION_MEMOIRE):
 /// InCore in memory; OutOfCore on disk (ICNTL(22) = 1, in $TMPDIR or /tmp), memory then holding

@@ -43,34 +43,29 @@ std::vector<int> shared_matrix_ordering(const SparseMatrix& mine, FactorOrdering
   std::vector<int>().swap(packed);
   if (parallel::rank() != 0) return {};
   const int n = static_cast<int>(mine.cols());
-  // The whole pattern, column by column (a column sent by two ranks: the union of its rows).
+  // The whole pattern, column by column; a column sent by two ranks gets the union of its
+  // rows (sorted, each once).
   std::vector<int> count(n + 1, 0);
   for (size_t k = 0; k < all.size(); k += 2 + static_cast<size_t>(all[k + 1])) count[all[k] + 1] += all[k + 1];
   for (int c = 0; c < n; ++c) count[c + 1] += count[c];
-  SparseMatrix whole(n, n);
-  whole.resizeNonZeros(count[n]);
-  std::copy(count.begin(), count.end(), whole.outerIndexPtr());
-  std::vector<int> fill(count.begin(), count.end() - 1);
+  std::vector<int> rows(static_cast<size_t>(count[n])), fill(count.begin(), count.end() - 1);
   for (size_t k = 0; k < all.size(); k += 2 + static_cast<size_t>(all[k + 1]))
     fill[all[k]] = static_cast<int>(std::copy(all.begin() + static_cast<long>(k) + 2,
                                               all.begin() + static_cast<long>(k) + 2 + all[k + 1],
-                                              whole.innerIndexPtr() + fill[all[k]]) -
-                                    whole.innerIndexPtr());
-  std::fill(whole.valuePtr(), whole.valuePtr() + count[n], 1.0);
-  bool merged = false;
+                                              rows.begin() + fill[all[k]]) -
+                                    rows.begin());
+  SparseMatrix whole(n, n);
+  whole.resizeNonZeros(count[n]);
+  int kept = 0;
   for (int c = 0; c < n; ++c) {
-    int* first = whole.innerIndexPtr() + count[c];
-    int* last = whole.innerIndexPtr() + count[c + 1];
-    if (!std::is_sorted(first, last) || std::adjacent_find(first, last) != last) merged = true;
+    const auto first = rows.begin() + count[c], last = rows.begin() + count[c + 1];
+    std::sort(first, last);
+    whole.outerIndexPtr()[c] = kept;
+    kept = static_cast<int>(std::unique_copy(first, last, whole.innerIndexPtr() + kept) - whole.innerIndexPtr());
   }
-  if (merged) {
-    // Rebuilt through triplets: sorted columns, each row once.
-    std::vector<Triplet> t;
-    t.reserve(static_cast<size_t>(count[n]));
-    for (int c = 0; c < n; ++c)
-      for (int k = count[c]; k < count[c + 1]; ++k) t.emplace_back(whole.innerIndexPtr()[k], c, 1.0);
-    whole.setFromTriplets(t.begin(), t.end(), [](double x, double) { return x; });
-  }
+  whole.outerIndexPtr()[n] = kept;
+  whole.resizeNonZeros(kept);  // keeps the first `kept` entries
+  std::fill(whole.valuePtr(), whole.valuePtr() + kept, 1.0);
   return given_ordering(whole, give);
 }
 

@@ -27,10 +27,7 @@ class UmfpackSolver final : public LinearSolver {
   std::string name() const override { return "UMFPACK"; }
   int failed_column() const override { return failed_; }
   void set_ordering(FactorOrdering ordering) override {
-    LUNASTER_ASSERT(ordering == FactorOrdering::Auto || ordering == FactorOrdering::Metis ||
-                        ordering == FactorOrdering::Amd || ordering == FactorOrdering::Rcm ||
-                        ordering == FactorOrdering::Natural,
-                    "UMFPACK orders by AMD, METIS, reverse Cuthill-McKee or not at all");
+    LUNASTER_ASSERT(any_backend_orders_by(ordering), "UMFPACK orders by AMD, METIS, reverse Cuthill-McKee or not at all");
     ordering_ = ordering;
     release();  // analyse again
     control_[UMFPACK_ORDERING] = ordering == FactorOrdering::Metis     ? UMFPACK_ORDERING_METIS
