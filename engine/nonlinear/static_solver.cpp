@@ -1055,16 +1055,15 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           throw diagnose(cons, err, t);
         }
         ++stats_.factorisations;
-        if (options_.ordering != FactorOrdering::Auto) {
-          const std::string line = "  " + solver->name() + " ordering: " + solver->ordering_used();
-          if (line != ordering_logged_) log_.info(line);
-          ordering_logged_ = line;
-        }
-        if (const std::string memory = solver->memory_used(); !memory.empty()) {
-          const std::string line = "  " + solver->name() + " factors: " + memory;
-          if (line != memory_logged_) log_.info(line);
-          memory_logged_ = line;
-        }
+        // What an asked-for ordering and out-of-core factors came to, said once while it holds.
+        const auto say_once = [this](const std::string& line, std::string& said) {
+          if (line != said) log_.info(line);
+          said = line;
+        };
+        if (options_.ordering != FactorOrdering::Auto)
+          say_once("  " + solver->name() + " ordering: " + solver->ordering_used(), ordering_logged_);
+        if (const std::string memory = solver->memory_used(); !memory.empty())
+          say_once("  " + solver->name() + " factors: " + memory, memory_logged_);
         if (via_interface)
           log_.info("  linear solve: Schur complement of the " + std::to_string(interface_->interface().size()) +
                     " surface equations factorised on the kept elastic factorisation");
