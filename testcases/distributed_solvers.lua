@@ -10,10 +10,14 @@
 --      sum their parts.
 --   2. The thick-walled cylinder of axis_thick_cylinder.lua (AXIS QUAD8, Lame solution) with MUMPS:
 --      u_r at the inner and outer radius to 1e-4 (the mesh's own error, as in that deck).
---   3. Contact with MUMPS (under mpirun every rank pairs the whole surfaces and keeps the contact
---      terms of its own columns): SSNP121 A (ssnp121a.lua: CONTINUE, contact multipliers, a saddle
+--      Under mpirun, the pressure is computed by the rank owning each face's first node and the
+--      ranks sum their parts.
+--   3. Contact with MUMPS: SSNP121 A (ssnp121a.lua: CONTINUE, contact multipliers, a saddle
 --      point) at code_aster's 1 %, and SSNP121 I with mortar contact (ssnp121i_mortar.lua: the
---      active slave displacements eliminated) at 1e-8.
+--      active slave displacements eliminated) at 1e-8. Under mpirun the ranks share the pairing
+--      (each projects a block of the points, or integrates the mortar overlaps of a block of
+--      slave cells, and they exchange the results) and each keeps the contact terms of its own
+--      columns.
 -- Reference: analytical. VALE_CALC: lunaster's own values from a real run (non-regression).
 -- Runtime label: fast, 3D, solver.
 DEBUT()

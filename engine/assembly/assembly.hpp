@@ -37,8 +37,11 @@ void assemble_internal_forces(const FeModel& model, const DofMap& dofs, const Ve
 /// pushes against the boundary cell's normal, as PRES_REP) on boundary cells
 /// (SEG2/SEG3 in 2D, TRIA3/6 and QUAD4/8 in 3D) to `f_ext`. Cell normals follow
 /// the cell's node order (ORIE_PEAU makes them outward). `axisymmetric` (AXIS model, x = r):
-/// the surface measure is r dl, per radian like the AXIS stiffness.
+/// the surface measure is r dl, per radian like the AXIS stiffness. With `node_owner` (a shared
+/// model's owner rank per node), only the cells whose first node is this rank's are added (a
+/// node of no rank counts as rank 0's): the ranks' vectors sum to the whole one.
 void assemble_pressure(const Mesh& mesh, int dim, const std::vector<int>& cells, double pressure,
-                       const DofMap& dofs, Vector& f_ext, bool axisymmetric = false);
+                       const DofMap& dofs, Vector& f_ext, bool axisymmetric = false,
+                       const std::vector<int>* node_owner = nullptr);
 
 }  // namespace lunaster::engine

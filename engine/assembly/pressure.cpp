@@ -9,10 +9,12 @@
 /// segment lying on the axis (r = 0) has no area and receives no force.
 #include "engine/assembly/assembly.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "engine/core/error.hpp"
 #include "engine/fe/reference_element.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::engine {
 namespace {
@@ -20,6 +22,12 @@ namespace {
 bool is_boundary_type(CellType type, int dim) {
   if (dim == 2) return type == CellType::Seg2 || type == CellType::Seg3;
   return type == CellType::Tria3 || type == CellType::Tria6 || type == CellType::Quad4 || type == CellType::Quad8;
+}
+
+[[noreturn]] void unmodelled_node(const Mesh& mesh, int node) {
+  const std::string name =
+      node < static_cast<int>(mesh.node_names.size()) ? mesh.node_names[node] : "#" + std::to_string(node + 1);
+  throw DeckError("pressure on node " + name + ", which belongs to no modelled cell");
 }
 
 /// Adds the pressure forces of one boundary cell.
@@ -57,12 +65,7 @@ void cell_pressure(const Mesh& mesh, int dim, int cell, double pressure, bool ax
       const double s = -pressure * n[a] * re.weight[q] * radius;
       for (int k = 0; k < dim; ++k) {
         const int eq = dofs.dof(nodes[a], k);
-        if (eq < 0) {
-          const std::string name = nodes[a] < static_cast<int>(mesh.node_names.size())
-                                       ? mesh.node_names[nodes[a]]
-                                       : "#" + std::to_string(nodes[a] + 1);
-          throw DeckError("pressure on node " + name + ", which belongs to no modelled cell");
-        }
+        if (eq < 0) unmodelled_node(mesh, nodes[a]);
         f_ext(eq) += s * ns[k];
       }
     }
@@ -72,14 +75,24 @@ void cell_pressure(const Mesh& mesh, int dim, int cell, double pressure, bool ax
 }  // namespace
 
 void assemble_pressure(const Mesh& mesh, int dim, const std::vector<int>& cells, double pressure,
-                       const DofMap& dofs, Vector& f_ext, bool axisymmetric) {
+                       const DofMap& dofs, Vector& f_ext, bool axisymmetric, const std::vector<int>* node_owner) {
   if (f_ext.size() != dofs.n_dofs()) f_ext = Vector::Zero(dofs.n_dofs());
+  const int me = node_owner ? parallel::rank() : 0;
   for (int cell : cells) {
     if (!is_boundary_type(mesh.cell_types[cell], dim)) {
       const std::string name = cell < static_cast<int>(mesh.cell_names.size()) ? mesh.cell_names[cell]
                                                                                   : "#" + std::to_string(cell + 1);
       throw DeckError("pressure on cell " + name + ": expected a boundary cell (" +
                       std::string(dim == 2 ? "SEG2/SEG3" : "TRIA3/TRIA6/QUAD4/QUAD8") + ")");
+    }
+    if (node_owner) {
+      // Every rank checks every cell (an error stops them all alike); the rank owning the
+      // cell's first node integrates it.
+      const int* nodes = mesh.cell(cell);
+      for (int a = 0; a < mesh.cell_n_nodes(cell); ++a)
+        for (int k = 0; k < dim; ++k)
+          if (dofs.dof(nodes[a], k) < 0) unmodelled_node(mesh, nodes[a]);
+      if (std::max(0, (*node_owner)[nodes[0]]) != me) continue;
     }
     cell_pressure(mesh, dim, cell, pressure, axisymmetric, dofs, f_ext);
   }

@@ -9,6 +9,7 @@
 #include "engine/contact/surface_element.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/two_workers.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::engine::contact {
 
@@ -181,18 +182,39 @@ MatrixKind ContactProblem::matrix_kind() const {
   return MatrixKind::SymmetricPositiveDefinite;
 }
 
+void ContactProblem::share_among_ranks(const std::vector<int>& node_owner) {
+  shared_ = parallel::size() > 1;
+  point_rank_.assign(points_.size(), 0);
+  if (!shared_) return;
+  // The projections go to the ranks in equal consecutive blocks of points, whatever the
+  // partition (which often puts a whole slave surface on one rank: two bodies, two ranks).
+  const size_t n = points_.size(), parts = static_cast<size_t>(parallel::size());
+  for (size_t i = 0; i < n; ++i) point_rank_[i] = static_cast<int>(i * parts / std::max<size_t>(n, 1));
+  owned_ = std::vector<char>(node_owner.size(), 0);
+  for (size_t v = 0; v < node_owner.size(); ++v) owned_[v] = node_owner[v] == parallel::rank();
+}
+
 void ContactProblem::pair(const Vector& u) {
   const std::vector<double> xyz = current_coordinates(mesh_, dofs_, dim_, u);
   for (auto& m : masters_) m->update(xyz);
   recovery_->ready = false;
   ++pattern_version_;
+  std::vector<int> which;
+  which.reserve(points_.size());
+  for (size_t i = 0; i < points_.size(); ++i)
+    if (!shared_ || point_rank_[i] == parallel::rank()) which.push_back(static_cast<int>(i));
+  pair_points(xyz, which);
+  if (shared_) share_pairing();
+}
+
+void ContactProblem::pair_points(const std::vector<double>& xyz, const std::vector<int>& which) {
   // Each point is paired on its own (the surfaces are only read): two threads share the
   // points when there are many (32,400 Simpson points on the 3D benchmark).
-  auto pair_points = [&](size_t begin, size_t end, size_t& failed_at) {
+  auto pair_range = [&](size_t begin, size_t end, size_t& failed_at) {
     double slave_xyz[3 * kMaxSurfaceNodes];
     for (size_t q = begin; q < end; ++q) {
       failed_at = q;
-      ContactPoint& p = points_[q];
+      ContactPoint& p = points_[which[q]];
       double x[3];
       bool regular = true;
       if (p.slave_cell >= 0) {
@@ -225,23 +247,69 @@ void ContactProblem::pair(const Vector& u) {
       p.master_cell = mp.cell;
       p.xi_master[0] = mp.xi[0], p.xi_master[1] = mp.xi[1];
       std::copy(mp.normal, mp.normal + 3, p.normal);
-      const int k = master.local_index(mp.cell);
-      double nm[kMaxSurfaceNodes];
-      surface_shape(master.geometry_type(k), mp.xi, nm, nullptr, nullptr);
-      const auto& mnodes = master.cell_nodes(k);
-      p.gap = make_linear_gap(mesh_.coords, dofs_, dim_, p.slave_nodes, p.phi, p.n_slave, mnodes.data(), nm,
-                              static_cast<int>(mnodes.size()), p.normal);
+      set_gap(p);
     }
     failed_at = SIZE_MAX;
   };
   constexpr size_t kPointsForTwoThreads = 2000;
-  const size_t n = points_.size();
+  const size_t n = which.size();
   if (n < kPointsForTwoThreads) {
     size_t failed_at = SIZE_MAX;
-    pair_points(0, n, failed_at);
+    pair_range(0, n, failed_at);
     return;
   }
-  run_two_workers([&](int w, size_t& failed_at) { pair_points(w == 0 ? 0 : n / 2, w == 0 ? n / 2 : n, failed_at); });
+  run_two_workers([&](int w, size_t& failed_at) { pair_range(w == 0 ? 0 : n / 2, w == 0 ? n / 2 : n, failed_at); });
+}
+
+void ContactProblem::set_gap(ContactPoint& p) const {
+  const MasterSurface& master = *masters_[p.zone];
+  const int k = master.local_index(p.master_cell);
+  double nm[kMaxSurfaceNodes];
+  surface_shape(master.geometry_type(k), p.xi_master, nm, nullptr, nullptr);
+  const auto& mnodes = master.cell_nodes(k);
+  p.gap = make_linear_gap(mesh_.coords, dofs_, dim_, p.slave_nodes, p.phi, p.n_slave, mnodes.data(), nm,
+                          static_cast<int>(mnodes.size()), p.normal);
+}
+
+void ContactProblem::share_pairing() {
+  // What a projection found, per point, from the rank that paired it (the others send
+  // zeros, so the sum is that rank's value exactly); each rank then builds the gaps of the
+  // other ranks' points, which costs little beside the projections.
+  constexpr int kValues = 8;  // paired, master cell, xi_master (2), normal (3), wjac
+  const int me = parallel::rank();
+  std::vector<double> v(kValues * points_.size(), 0.0);
+  for (size_t i = 0; i < points_.size(); ++i) {
+    if (point_rank_[i] != me) continue;
+    const ContactPoint& p = points_[i];
+    double* x = &v[kValues * i];
+    x[0] = p.paired ? 1.0 : 0.0, x[1] = p.master_cell;
+    x[2] = p.xi_master[0], x[3] = p.xi_master[1];
+    x[4] = p.normal[0], x[5] = p.normal[1], x[6] = p.normal[2], x[7] = p.wjac;
+  }
+  parallel::sum_over_ranks(v.data(), static_cast<long long>(v.size()));
+  touches_mine_.assign(points_.size(), 0);
+  for (size_t i = 0; i < points_.size(); ++i) {
+    ContactPoint& p = points_[i];
+    if (point_rank_[i] != me) {
+      const double* x = &v[kValues * i];
+      p.paired = x[0] != 0.0;
+      p.master_cell = static_cast<int>(x[1]);
+      p.xi_master[0] = x[2], p.xi_master[1] = x[3];
+      p.normal[0] = x[4], p.normal[1] = x[5], p.normal[2] = x[6];
+      p.wjac = x[7];
+      p.gap = LinearGap{};
+      if (p.paired) {
+        set_gap(p);
+      } else {
+        p.active = false;
+        p.master_cell = -1;
+      }
+    }
+    char mine = 0;
+    for (int a = 0; a < p.n_slave && !mine; ++a) mine = owned_[p.slave_nodes[a]];
+    for (int k = 0; k < p.gap.n && !mine; ++k) mine = owned_[dofs_.node_of(p.gap.eq[k])];
+    touches_mine_[i] = mine;
+  }
 }
 
 void ContactProblem::pair_and_record(const Vector& u) {
@@ -408,6 +476,7 @@ void ContactProblem::add_to_system(const Vector& u, std::vector<Triplet>& tangen
     const double lambda = multiplier(u, p);
     const double g = p.gap.value(u);
     add_point_residual(p, c, lambda, g, residual);
+    if (shared_ && !touches_mine_[i]) continue;  // the driver would drop every term of it
     // Every entry the pairing allows is emitted, zeros included (flush emits the whole block):
     // the pattern then depends on the pairing only, not on the statuses.
     local.add_outer(p.gap, p.gap, c.beta);

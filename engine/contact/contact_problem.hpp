@@ -30,6 +30,7 @@ class ContactProblem final : public ContactHook {
 
   void set_dirichlet(const std::vector<DirichletValue>& dirichlet) override;
   void add_dofs(DofMap& dofs) override;
+  void share_among_ranks(const std::vector<int>& node_owner) override;
   void begin_step(const Vector& u, const Log& log) override;
   void add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) override;
   bool add_residual(const Vector& u, Vector& residual) override;
@@ -64,6 +65,13 @@ class ContactProblem final : public ContactHook {
   /// True when an active point couples LAGS_C to the displacements (no condensation).
   bool coupled() const;
   void pair(const Vector& u);
+  /// Pairs points_[i] for i in `which` at the coordinates xyz (two threads when many).
+  void pair_points(const std::vector<double>& xyz, const std::vector<int>& which);
+  /// A shared model: the pairing of every point from the rank that paired it, and which
+  /// points touch this rank's columns.
+  void share_pairing();
+  /// The gap of a paired point from its master cell, xi_master and normal.
+  void set_gap(ContactPoint& p) const;
   void pair_and_record(const Vector& u);
   void init_statuses(const Vector& u, const Log& log);
   int update_statuses(const Vector& u);
@@ -94,6 +102,13 @@ class ContactProblem final : public ContactHook {
   // Condensed multipliers: (sum kappa phi phi^T) LAGS_C = sum sigma g phi, factorised once per pairing.
   struct Recovery;
   std::shared_ptr<Recovery> recovery_;
+
+  // A model shared among MPI ranks (share_among_ranks): the rank pairing each point, and per
+  // point whether one of its nodes is this rank's.
+  bool shared_ = false;
+  std::vector<int> point_rank_;
+  std::vector<char> touches_mine_;
+  std::vector<char> owned_;  ///< per mesh node: its equations are this rank's
 
   Vector u_at_pairing_;
   bool first_step_ = true;

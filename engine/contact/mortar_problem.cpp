@@ -11,6 +11,7 @@
 #include "engine/contact/mortar_integration.hpp"
 #include "engine/contact/surface_element.hpp"
 #include "engine/core/error.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::engine::contact {
 
@@ -172,6 +173,31 @@ double MortarProblem::complementarity(int zone) const {
   return def_.zones[zone].coef_cont * e / h_[zone];
 }
 
+void MortarProblem::share_among_ranks(const std::vector<int>& /*node_owner*/) { shared_ = parallel::size() > 1; }
+
+void MortarProblem::share_overlaps(std::vector<double>& d, std::vector<std::vector<std::pair<int, double>>>& m,
+                                   int& n_whole_cell) {  // of one zone
+  // D sums over the ranks (each holds its cells' part); M goes round as (row, master node,
+  // value) triples, added in rank order, so that a row's master nodes come in the order of
+  // the cells that name them, as in one process.
+  parallel::sum_over_ranks(d.data(), static_cast<long long>(d.size()));
+  double whole = n_whole_cell;
+  parallel::sum_over_ranks(&whole, 1);
+  n_whole_cell = static_cast<int>(whole);
+  std::vector<double> mine;
+  for (size_t j = 0; j < m.size(); ++j)
+    for (const auto& [node, v] : m[j]) mine.insert(mine.end(), {static_cast<double>(j), static_cast<double>(node), v});
+  const std::vector<double> all = parallel::gather_all(mine);
+  for (auto& mj : m) mj.clear();
+  for (size_t k = 0; k + 2 < all.size(); k += 3) {
+    auto& mj = m[static_cast<size_t>(all[k])];
+    const int node = static_cast<int>(all[k + 1]);
+    auto it = std::find_if(mj.begin(), mj.end(), [&](const auto& e) { return e.first == node; });
+    if (it == mj.end()) mj.emplace_back(node, all[k + 2]);
+    else it->second += all[k + 2];
+  }
+}
+
 std::vector<MortarRow> MortarProblem::build_rows(const Vector& u,
                                                  std::vector<std::vector<std::pair<int, double>>>& masters,
                                                  int& n_whole_cell) const {
@@ -238,6 +264,15 @@ std::vector<MortarRow> MortarProblem::build_rows(const Vector& u,
     }
     std::vector<int> stamp(nm, -1);
     double sx[3 * kMaxSurfaceNodes], mx[3 * kMaxSurfaceNodes];
+    // A shared model: each rank integrates the overlaps of one consecutive block of the slave
+    // cells (the costly part: search, clipping, dual basis) and the ranks then share D and M;
+    // the nodes are numbered first, in the cells' order, so that every rank numbers them alike.
+    const size_t n_slaves = slaves.size(), parts = shared_ ? static_cast<size_t>(parallel::size()) : 1;
+    const size_t me = shared_ ? static_cast<size_t>(parallel::rank()) : 0;
+    const size_t first_mine = me * n_slaves / parts, end_mine = (me + 1) * n_slaves / parts;
+    for (const OrientedCell& sc : slaves)
+      for (int a = 0; a < sc.n; ++a) index(sc.nodes[a]);
+    const int whole_before = n_whole_cell;
     for (size_t s = 0; s < slaves.size(); ++s) {
       const OrientedCell& sc = slaves[s];
       coords(sc, sx);
@@ -263,6 +298,7 @@ std::vector<MortarRow> MortarProblem::build_rows(const Vector& u,
         const int j = index(sc.nodes[a]);
         for (int k = 0; k < 3; ++k) normal[3 * j + k] += sp.n[k];
       }
+      if (s < first_mine || s >= end_mine) continue;  // another rank's overlaps
       double b[6] = {1e300, 1e300, 1e300, -1e300, -1e300, -1e300};
       for (int a = 0; a < sc.n; ++a)
         for (int k = 0; k < 3; ++k) b[k] = std::min(b[k], sx[3 * a + k]), b[3 + k] = std::max(b[3 + k], sx[3 * a + k]);
@@ -324,6 +360,11 @@ std::vector<MortarRow> MortarProblem::build_rows(const Vector& u,
           }
         }
       }
+    }
+    if (shared_) {
+      int zone_whole = n_whole_cell - whole_before;
+      share_overlaps(d, m, zone_whole);
+      n_whole_cell = whole_before + zone_whole;
     }
     // Rows of the zone, vertices before mid-edge nodes (their relations name the vertices').
     const double d_min = 1e-10 * std::pow(h_[z], dim_ - 1);

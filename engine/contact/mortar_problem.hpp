@@ -76,6 +76,7 @@ class MortarProblem final : public ContactHook {
 
   void set_dirichlet(const std::vector<DirichletValue>& dirichlet) override;
   void add_dofs(DofMap& dofs) override;
+  void share_among_ranks(const std::vector<int>& node_owner) override;
   void begin_step(const Vector& u, const Log& log) override;
   void add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) override;
   const std::vector<Elimination>& eliminations() const override { return eliminations_; }
@@ -103,6 +104,10 @@ class MortarProblem final : public ContactHook {
   /// Builds the rows from the configuration u (statuses kept for nodes still paired).
   std::vector<MortarRow> build_rows(const Vector& u, std::vector<std::vector<std::pair<int, double>>>& masters,
                                     int& n_whole_cell) const;
+  /// A shared model: D, M and the count of whole-cell dual bases of a zone, each rank having
+  /// integrated its own slave cells, made whole on every rank (collective).
+  static void share_overlaps(std::vector<double>& d, std::vector<std::vector<std::pair<int, double>>>& m,
+                             int& n_whole_cell);
   void pair(const Vector& u, const Log* log);
   /// Makes `rows` the current pairing (statuses kept node by node) and checks them.
   void adopt(const Vector& u, std::vector<MortarRow> rows, std::vector<std::vector<std::pair<int, double>>> masters,
@@ -128,6 +133,7 @@ class MortarProblem final : public ContactHook {
   std::vector<int> row_of_node_;           ///< per mesh node, its row or -1
   std::vector<double> lambda_;             ///< per row, Pa, >= 0 in compression
   std::vector<Elimination> eliminations_;
+  bool shared_ = false;                    ///< a model shared among MPI ranks (share_among_ranks)
   bool first_iteration_ = true;            ///< the next add_to_system is the first of an instant
   bool first_step_ = true;
   bool changed_in_newton_ = false;

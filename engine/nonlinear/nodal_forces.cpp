@@ -1,5 +1,6 @@
 #include "engine/nonlinear/nodal_forces.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "engine/assembly/assembly.hpp"
@@ -33,18 +34,22 @@ Vector internal_forces(const FeModel& model, const DofMap& dofs, const Vector& u
 
 }  // namespace
 
-Vector external_forces(const FeModel& model, const DofMap& dofs, const MechanicalLoads& loads, double t) {
+Vector external_forces(const FeModel& model, const DofMap& dofs, const MechanicalLoads& loads, double t,
+                       const std::vector<int>* node_owner) {
   Vector f = Vector::Zero(dofs.n_dofs());
   for (const auto& p : loads.pressures)
     assemble_pressure(*model.mesh, model.dim, p.cells, p.pressure * loads.multipliers.at(p.load)(t), dofs, f,
-                      model.axisymmetric());
+                      model.axisymmetric(), node_owner);
+  const int me = node_owner ? parallel::rank() : 0;
   for (const auto& fn : loads.forces) {
     const int eq = dofs.dof(fn.node, fn.component);
     if (eq < 0)
       throw DeckError("nodal force " + std::string(component_name(fn.component)) + " on node " +
                       model.mesh->node_names[fn.node] + ", which carries no such unknown in the model");
+    if (node_owner && std::max(0, (*node_owner)[fn.node]) != me) continue;
     f[eq] += fn.value * loads.multipliers.at(fn.load)(t);
   }
+  if (node_owner) parallel::sum_over_ranks(f.data(), static_cast<long long>(f.size()));
   return f;
 }
 

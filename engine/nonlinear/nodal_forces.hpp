@@ -11,8 +11,11 @@ namespace lunaster::engine {
 
 /// External nodal forces at instant t (N): consistent pressure forces and nodal forces,
 /// each scaled by its load multiplier. DeckError for a nodal force on a node without that
-/// displacement unknown.
-Vector external_forces(const FeModel& model, const DofMap& dofs, const MechanicalLoads& loads, double t);
+/// displacement unknown. With `node_owner` (a shared model's owner rank per node) each rank
+/// computes the pressure cells and nodal forces of its own nodes and the ranks sum
+/// (collective): every rank ends with the whole vector.
+Vector external_forces(const FeModel& model, const DofMap& dofs, const MechanicalLoads& loads, double t,
+                       const std::vector<int>* node_owner = nullptr);
 
 /// Internal nodal forces B^T sigma (N, or N per unit thickness in 2D) of displacement `u`,
 /// assembled by the same element kernels as the solver's internal forces, as a nodal

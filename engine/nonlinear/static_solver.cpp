@@ -207,6 +207,7 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
       node_owner_ = part.node_owner;
       cell_rank_.assign(mesh.n_cells(), -1);
       for (size_t i = 0; i < cells.size(); ++i) cell_rank_[cells[i]] = part.cell_part[i];
+      if (contact_) contact_->share_among_ranks(node_owner_);
       owned_nodes_.assign(mesh.n_nodes(), 0);
       std::vector<int> nodes_of(part.parts, 0), cells_of(part.parts, 0);
       for (int v = 0; v < mesh.n_nodes(); ++v)
@@ -218,7 +219,9 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
       log_.info("model shared among " + std::to_string(part.parts) + " ranks (Scotch): cells / nodes per rank " +
                 counts + "; " + std::to_string(part.interface_nodes) +
                 " nodes on interfaces; each rank assembles the stiffness of its own nodes" +
-                (contact_ ? std::string(" and keeps their contact terms") : std::string()));
+                (contact_ ? std::string(", pairs its share of the contact points and builds the contact terms "
+                                        "of its own columns")
+                          : std::string()));
     }
     SparseMatrix k = assemble_stiffness_matrix(model_, dofs_, distributed_ ? &owned_nodes_ : nullptr);
     split_matrix(k, constrained, elastic_);
@@ -808,7 +811,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
   log_.info("instant " + sci(t));
   const Constraints cons = build_constraints(dofs_, loads_, t, *model_.mesh);
   for (size_t i = 0; i < cons.constrained.size(); ++i) u[cons.constrained[i]] = cons.values[i];
-  const Vector f_ext = external_forces(model_, dofs_, loads_, t);
+  const Vector f_ext = external_forces(model_, dofs_, loads_, t, distributed_ ? &node_owner_ : nullptr);
   stats_.n_free = std::max(stats_.n_free, cons.n_free);
   if (contact_) {
     Stopwatch watch(stats_.contact_seconds);
@@ -898,8 +901,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         eliminated_eqs = eliminate(cons, eliminated, residual, k_contact, r_free);
       }
       if (distributed_) {
-        // Every rank computed every contact term (the pairing sees the whole surfaces): it
-        // keeps those of its own columns.
+        // The hook built the terms of the points that touch this rank's columns, which also
+        // reach other ranks' columns: this rank keeps its own.
         k_contact.erase(std::remove_if(k_contact.begin(), k_contact.end(),
                                        [this](const Triplet& tr) { return !owned_nodes_[dofs_.node_of(tr.col())]; }),
                         k_contact.end());

@@ -173,9 +173,10 @@ class StaticSolver {
   /// deck that takes a distributed system: MUMPS or PETSc). The volume cells are partitioned
   /// (Scotch); each rank assembles the complete columns of the nodes it owns
   /// (owned_nodes_), so elastic_ and the system hold only those, and products with them are
-  /// summed over the ranks. Contact is computed whole on every rank (pairing sees the whole
-  /// surfaces) and each rank keeps the terms of its own columns. Everything else (mesh,
-  /// vectors, results) is whole on every rank.
+  /// summed over the ranks. The contact hook shares its pairing among the ranks and builds
+  /// the terms of the points touching this rank's columns (share_among_ranks); each rank
+  /// keeps the terms of its own columns. Pressures and nodal forces are computed by the rank
+  /// of their node and summed. Everything else (mesh, vectors, results) is whole on every rank.
   bool distributed_ = false;
   /// With a shared model and contact eliminations: the whole columns of K at the eliminated
   /// equations' nodes (every rank computes them, a band along the contact surface), for the

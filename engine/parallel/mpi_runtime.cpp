@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <thread>
+#include <type_traits>
 
 namespace lunaster::engine::parallel {
 namespace {
@@ -144,25 +145,29 @@ double max_over_ranks(double value) {
 namespace {
 
 /// Every rank's `mine` concatenated in rank order, on every rank or on rank 0 only.
-std::vector<int> gather(const std::vector<int>& mine, bool everywhere) {
+template <typename T>
+std::vector<T> gather(const std::vector<T>& mine, bool everywhere) {
   if (size() == 1) return mine;
+  const MPI_Datatype type = std::is_same_v<T, double> ? MPI_DOUBLE : MPI_INT;
   const int ranks = size();
   std::vector<int> counts(ranks), offsets(ranks + 1, 0);
   const int count = static_cast<int>(mine.size());
   if (everywhere) MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
   else MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
   for (int r = 0; r < ranks; ++r) offsets[r + 1] = offsets[r] + counts[r];
-  std::vector<int> all(everywhere || rank() == 0 ? offsets[ranks] : 0);
+  std::vector<T> all(everywhere || rank() == 0 ? offsets[ranks] : 0);
   if (everywhere)
-    MPI_Allgatherv(mine.data(), count, MPI_INT, all.data(), counts.data(), offsets.data(), MPI_INT, MPI_COMM_WORLD);
+    MPI_Allgatherv(mine.data(), count, type, all.data(), counts.data(), offsets.data(), type, MPI_COMM_WORLD);
   else
-    MPI_Gatherv(mine.data(), count, MPI_INT, all.data(), counts.data(), offsets.data(), MPI_INT, 0, MPI_COMM_WORLD);
+    MPI_Gatherv(mine.data(), count, type, all.data(), counts.data(), offsets.data(), type, 0, MPI_COMM_WORLD);
   return all;
 }
 
 }  // namespace
 
 std::vector<int> gather_all(const std::vector<int>& mine) { return gather(mine, true); }
+
+std::vector<double> gather_all(const std::vector<double>& mine) { return gather(mine, true); }
 
 std::vector<int> gather_to_root(const std::vector<int>& mine) { return gather(mine, false); }
 

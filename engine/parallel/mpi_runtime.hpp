@@ -45,6 +45,7 @@ void sum_over_ranks(double* data, long long n);
 double max_over_ranks(double value);
 /// Every rank's `mine` concatenated in rank order, on every rank.
 std::vector<int> gather_all(const std::vector<int>& mine);
+std::vector<double> gather_all(const std::vector<double>& mine);
 /// Every rank's `mine` concatenated in rank order, on rank 0 only (empty elsewhere).
 std::vector<int> gather_to_root(const std::vector<int>& mine);
 

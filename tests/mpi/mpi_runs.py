@@ -244,6 +244,9 @@ def outputs(exe, source, scratch):
         serial_checks[name] = len(test_lines(out_s))
         check(len(test_lines(out_m)) == serial_checks[name] > 0,
               f"{name}: the TEST_RESU lines printed once each ({len(test_lines(out_m))}, serially {serial_checks[name]})")
+        if name == "distributed_solvers":  # contact on a shared model: the ranks share the pairing
+            check("pairs its share of the contact points" in out_m,
+                  f"{name}: the log says the ranks share the contact pairing")
         if deck.suffix == ".export":
             check((rank0_out / "study.mess").read_text() == out_m + err_m,
                   "the .export's message file (rank 0's) holds what the run printed")

@@ -277,7 +277,7 @@ void PetscSolver::number_rows(int n_equations) {
   } else {
     PetscInt local_groups = PETSC_DECIDE, all = groups;
     check(PetscSplitOwnership(PETSC_COMM_WORLD, &local_groups, &all), "PetscSplitOwnership");
-    std::vector<int> counts = parallel::gather_all({static_cast<int>(local_groups)});
+    std::vector<int> counts = parallel::gather_all(std::vector<int>{static_cast<int>(local_groups)});
     for (PetscInt g = 0, r = 0, left = counts[0]; g < groups; ++g) {
       while (left == 0) left = counts[++r];
       owner_of[g] = static_cast<int>(r), --left;
