@@ -216,7 +216,8 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
       std::string counts;
       for (int r = 0; r < part.parts; ++r)
         counts += (r ? ", " : "") + std::to_string(cells_of[r]) + " / " + std::to_string(nodes_of[r]);
-      log_.info("model shared among " + std::to_string(part.parts) + " ranks (Scotch): cells / nodes per rank " +
+      log_.info("model shared among " + std::to_string(part.parts) + " ranks, " +
+                std::to_string(parallel::ranks_on_this_machine()) + " on this machine (Scotch): cells / nodes per rank " +
                 counts + "; " + std::to_string(part.interface_nodes) +
                 " nodes on interfaces; each rank assembles the stiffness of its own nodes" +
                 (contact_ ? std::string(", pairs its share of the contact points and builds the contact terms "

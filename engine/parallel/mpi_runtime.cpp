@@ -25,6 +25,7 @@ void mca_default(const char* name, const char* value) { setenv(name, value, 0); 
 std::atomic<bool> known{false};
 std::atomic<int> the_rank{0};
 std::atomic<int> the_size{1};
+std::atomic<int> the_local_size{1};  ///< ranks of the run on this machine (shared memory)
 /// The end-of-run agreement's own communicator (a duplicate of MPI_COMM_WORLD, several ranks only).
 MPI_Comm end_comm = MPI_COMM_NULL;
 /// Standard error as it was before silence_other_ranks(), -1 if it was not redirected.
@@ -76,7 +77,18 @@ void ensure_initialised() {
   the_rank = r;
   the_size = s;
   // Collective: every rank of an mpirun run initialises first thing in main, together.
-  if (s > 1) MPI_Comm_dup(MPI_COMM_WORLD, &end_comm);
+  if (s > 1) {
+    MPI_Comm_dup(MPI_COMM_WORLD, &end_comm);
+    // The ranks that share this machine's memory, whatever launched them (MPI-3).
+    MPI_Comm local = MPI_COMM_NULL;
+    int local_size = 1;
+    if (MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, r, MPI_INFO_NULL, &local) == MPI_SUCCESS &&
+        local != MPI_COMM_NULL) {
+      MPI_Comm_size(local, &local_size);
+      MPI_Comm_free(&local);
+    }
+    the_local_size = std::max(1, local_size);
+  }
   known = true;
 }
 
@@ -93,6 +105,8 @@ int size() {
   MPI_Comm_size(MPI_COMM_WORLD, &s);
   return s;
 }
+
+int ranks_on_this_machine() { return known ? the_local_size.load() : 1; }
 
 int fortran_comm_world() {
   ensure_initialised();

@@ -27,6 +27,9 @@ bool initialised();
 /// initialised and in a run without launcher.
 int rank();
 int size();
+/// Ranks of the run on this machine (those sharing its memory, MPI_COMM_TYPE_SHARED), this one
+/// included; 1 outside an MPI run.
+int ranks_on_this_machine();
 
 /// Rank 0 of the run writes files and prints; the others compute only.
 inline bool writes_output() { return rank() == 0; }

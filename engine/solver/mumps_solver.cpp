@@ -149,8 +149,7 @@ double number_in(const char* path) {
 
 /// Memory this process may still take, in MB: the machine's MemAvailable, or less where the
 /// process's memory cgroup (v1 or v2, as /proc/self/cgroup names it) leaves less under its limit
-/// (a container), shared among the ranks that Open MPI says run on this machine. Negative when
-/// unknown.
+/// (a container), shared among the ranks of the run on this machine. Negative when unknown.
 double available_megabytes() {
   std::FILE* f = std::fopen("/proc/meminfo", "r");
   if (!f) return -1.0;
@@ -184,9 +183,7 @@ double available_megabytes() {
     used = number_in(("/sys/fs/cgroup" + v2 + "/memory.current").c_str());
   }
   if (limit > 0.0 && limit < 1e18 && used >= 0.0) bytes = std::min(bytes, std::max(0.0, limit - used));
-  int local = 1;
-  if (const char* v = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE")) local = std::max(1, std::atoi(v));
-  return bytes / (1024.0 * 1024.0) / local;
+  return bytes / (1024.0 * 1024.0) / parallel::ranks_on_this_machine();
 }
 
 void MumpsSolver::choose_memory() {

@@ -122,7 +122,7 @@ def verify_suite(exe, source, scratch):
     # METHODE='MUMPS' or 'PETSC' without contact: the model is shared among the ranks, each
     # assembling its own nodes' stiffness (its values are among those compared above).
     shared = "testcases/distributed_solvers.lua"
-    n_shared = b[shared]["output"].count("model shared among 2 ranks (Scotch)")
+    n_shared = b[shared]["output"].count("model shared among 2 ranks, 2 on this machine (Scotch)")
     check(n_shared == 11, f"{shared}: each of its 11 solves (2 with contact) shares the model among the 2 ranks ({n_shared})")
     check("model shared" not in a[shared]["output"], f"{shared}: a serial run shares nothing")
     # Its CALC_CHAMP (SIGM_NOEU, REAC_NODA) computes each cell on the rank that held it.
@@ -247,6 +247,8 @@ def outputs(exe, source, scratch):
         if name == "distributed_solvers":  # contact on a shared model: the ranks share the pairing
             check("pairs its share of the contact points" in out_m,
                   f"{name}: the log says the ranks share the contact pairing")
+            check("model shared among 2 ranks, 2 on this machine" in out_m,
+                  f"{name}: the log counts the ranks on this machine (MPI_COMM_TYPE_SHARED)")
         if deck.suffix == ".export":
             check((rank0_out / "study.mess").read_text() == out_m + err_m,
                   "the .export's message file (rank 0's) holds what the run printed")
