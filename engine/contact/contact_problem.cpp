@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <unordered_map>
 
 #include <Eigen/SparseCholesky>
 
@@ -201,10 +202,78 @@ void ContactProblem::pair(const Vector& u) {
   ++pattern_version_;
   std::vector<int> which;
   which.reserve(points_.size());
-  for (size_t i = 0; i < points_.size(); ++i)
-    if (!shared_ || point_rank_[i] == parallel::rank()) which.push_back(static_cast<int>(i));
+  n_kept_ = 0;
+  for (size_t i = 0; i < points_.size(); ++i) {
+    if (shared_ && point_rank_[i] != parallel::rank()) continue;
+    if (moved_as_one(points_[i], u)) {
+      ++n_kept_;
+      continue;
+    }
+    which.push_back(static_cast<int>(i));
+  }
   pair_points(xyz, which);
-  if (shared_) share_pairing();
+  if (shared_) {
+    double kept = n_kept_;
+    parallel::sum_over_ranks(&kept, 1);
+    n_kept_ = static_cast<int>(kept);
+    share_pairing();
+  }
+  u_paired_ = u;
+}
+
+bool ContactProblem::moved_as_one(const ContactPoint& p, const Vector& u) {
+  // A paired point whose slave nodes, master cell and the master cells around it all moved
+  // by one vector since the last pairing (to 1e-10 of the smallest slave edge) keeps its
+  // pairing: a translation changes neither the projection (master cell, xi, normal) nor the
+  // gap, which is written in the reference coordinates. The cells around the master cell are
+  // those that could have come nearer.
+  if (!p.paired || u_paired_.size() != u.size()) return false;
+  const std::vector<int>& around = neighbourhood(p.zone, p.master_cell);
+  const double tol = 1e-10 * min_edge_[p.zone];
+  double ref[3] = {0.0, 0.0, 0.0};
+  for (int k = 0; k < dim_; ++k) {
+    const int eq = dofs_.dof(p.slave_nodes[0], k);
+    if (eq >= 0) ref[k] = u[eq] - u_paired_[eq];
+  }
+  auto same = [&](int node) {
+    for (int k = 0; k < dim_; ++k) {
+      const int eq = dofs_.dof(node, k);
+      const double d = eq >= 0 ? u[eq] - u_paired_[eq] : 0.0;
+      if (!(std::abs(d - ref[k]) <= tol)) return false;
+    }
+    return true;
+  };
+  // AXIS: the weight r dl follows the radius, which a radial translation changes.
+  if (def_.axisymmetric && !(std::abs(ref[0]) <= tol)) return false;
+  for (int a = 1; a < p.n_slave; ++a)
+    if (!same(p.slave_nodes[a])) return false;
+  for (int node : around)
+    if (!same(node)) return false;
+  return true;
+}
+
+const std::vector<int>& ContactProblem::neighbourhood(int zone, int master_cell) {
+  // Per zone, built once: the nodes of each master cell and of the master cells sharing a
+  // node with it.
+  if (neighbourhoods_.size() != masters_.size()) neighbourhoods_.assign(masters_.size(), {});
+  auto& per_cell = neighbourhoods_[zone];
+  const MasterSurface& master = *masters_[zone];
+  const int n_cells = static_cast<int>(master.cells().size());
+  if (per_cell.empty() && n_cells > 0) {
+    std::unordered_map<int, std::vector<int>> cells_of_node;
+    for (int k = 0; k < n_cells; ++k)
+      for (int node : master.cell_nodes(k)) cells_of_node[node].push_back(k);
+    per_cell.resize(n_cells);
+    for (int k = 0; k < n_cells; ++k) {
+      std::vector<int>& nodes = per_cell[k];
+      for (int node : master.cell_nodes(k))
+        for (int other : cells_of_node[node])
+          for (int m : master.cell_nodes(other)) nodes.push_back(m);
+      std::sort(nodes.begin(), nodes.end());
+      nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    }
+  }
+  return per_cell[master.local_index(master_cell)];
 }
 
 void ContactProblem::pair_points(const std::vector<double>& xyz, const std::vector<int>& which) {
@@ -427,7 +496,11 @@ bool ContactProblem::settle(const Vector& u, const Log& log) {
   ++n_geom_iter_;
   n_status_iter_ = 0;
   pair_and_record(u);
-  log.info("contact: new pairing (geometry iteration " + std::to_string(n_geom_iter_) + ")");
+  std::string kept;
+  if (n_kept_ > 0)
+    kept = "; " + std::to_string(n_kept_) + " of " + std::to_string(points_.size()) +
+           " points keep their pairing (they and the master cells around them moved as one)";
+  log.info("contact: new pairing (geometry iteration " + std::to_string(n_geom_iter_) + ")" + kept);
   return false;
 }
 

@@ -59,6 +59,8 @@ class ContactProblem final : public ContactHook {
   void allow_condensation(bool allow) { allow_condensation_ = allow; }
   int n_status_iterations() const { return n_status_iter_; }
   int n_pairings() const { return n_pairings_; }
+  /// Points whose last pairing kept the previous one (moved_as_one).
+  int n_kept() const { return n_kept_; }
 
  private:
   double rho(int zone) const { return rho_[zone]; }
@@ -72,6 +74,11 @@ class ContactProblem final : public ContactHook {
   void share_pairing();
   /// The gap of a paired point from its master cell, xi_master and normal.
   void set_gap(ContactPoint& p) const;
+  /// True when the point, its master cell and the master cells around it moved by one vector
+  /// since the last pairing (to round-off): its pairing then stands.
+  bool moved_as_one(const ContactPoint& p, const Vector& u);
+  /// The nodes of a master cell (a mesh cell of `zone`) and of the master cells sharing a node with it.
+  const std::vector<int>& neighbourhood(int zone, int master_cell);
   void pair_and_record(const Vector& u);
   void init_statuses(const Vector& u, const Log& log);
   int update_statuses(const Vector& u);
@@ -110,7 +117,10 @@ class ContactProblem final : public ContactHook {
   std::vector<char> touches_mine_;
   std::vector<char> owned_;  ///< per mesh node: its equations are this rank's
 
-  Vector u_at_pairing_;
+  Vector u_at_pairing_;  ///< u at the last pairing of the geometry loop (its residual)
+  Vector u_paired_;      ///< u at the last pairing, whichever loop asked for it
+  int n_kept_ = 0;       ///< points of the last pairing that kept the previous one
+  std::vector<std::vector<std::vector<int>>> neighbourhoods_;  ///< per zone, per master cell
   bool first_step_ = true;
   bool allow_condensation_ = true;
   long pattern_version_ = 0;

@@ -89,3 +89,66 @@ TEST(ContactSnapshot, RestoresTheStatusesOfTheStepStart) {
   p->begin_step(Vector::Zero(dofs.n_dofs()), quiet_log());
   EXPECT_EQ(p->n_active(), active);
 }
+
+namespace {
+
+/// The pairing of `p` against that of a problem paired afresh at u (same definition and mesh).
+void expect_fresh_pairing(const ContactProblem& p, const ContactDefinition& def, const TwoBlocks& tb, const Vector& u) {
+  auto fresh = problem(def, tb.mesh, true);
+  DofMap dofs(tb.mesh, make_model(tb.mesh, 2e6, 0.0).volume_cells(), 2);
+  fresh->add_dofs(dofs);
+  fresh->begin_step(u, quiet_log());
+  ASSERT_EQ(p.points().size(), fresh->points().size());
+  for (size_t i = 0; i < p.points().size(); ++i) {
+    const auto &a = p.points()[i], &b = fresh->points()[i];
+    ASSERT_EQ(a.paired, b.paired) << "point " << i;
+    if (!a.paired) continue;
+    EXPECT_EQ(a.master_cell, b.master_cell) << "point " << i;
+    EXPECT_NEAR(a.xi_master[0], b.xi_master[0], 1e-12) << "point " << i;
+    EXPECT_NEAR(a.wjac, b.wjac, 1e-14) << "point " << i;
+    EXPECT_NEAR(a.gap.value(u), b.gap.value(u), 1e-14) << "point " << i;
+  }
+}
+
+}  // namespace
+
+TEST(ContactPairing, KeepsThePairingOfPointsThatMovedAsOneAndOnlyThose) {
+  const TwoBlocks tb = make_two_blocks(4, 3, false);  // non-matching: 4 cells on 3
+  const ContactDefinition def = zone_ab_on_ef(tb, ContactMethod::Continuous, ContactInit::Yes);
+  auto p = problem(def, tb.mesh, true);
+  DofMap dofs(tb.mesh, make_model(tb.mesh, 2e6, 0.0).volume_cells(), 2);
+  p->add_dofs(dofs);
+  const int upper_nodes = 5 * 5;  // the upper block's nodes come first
+  auto moved = [&](double ux_up, double uy_up, double ux_low, double uy_low) {
+    Vector u = Vector::Zero(dofs.n_dofs());
+    for (int node = 0; node < tb.mesh.n_nodes(); ++node) {
+      const bool up = node < upper_nodes;
+      u[dofs.dof(node, DX)] = up ? ux_up : ux_low;
+      u[dofs.dof(node, DY)] = up ? uy_up : uy_low;
+    }
+    return u;
+  };
+  p->begin_step(Vector::Zero(dofs.n_dofs()), quiet_log());
+  EXPECT_EQ(p->n_kept(), 0);  // nothing to keep at the first pairing
+  const int n_points = static_cast<int>(p->points().size());
+  ASSERT_GT(n_points, 0);
+  // Both blocks translated together: every point keeps its pairing, which is the fresh one.
+  const Vector together = moved(0.13, -0.02, 0.13, -0.02);
+  p->begin_step(together, quiet_log());
+  EXPECT_EQ(p->n_kept(), n_points);
+  expect_fresh_pairing(*p, def, tb, together);
+  // The upper block slid along the interface: no point keeps its pairing, every one is
+  // projected again (a point sliding by a fifth of a master cell changes cell or xi).
+  const Vector slid = moved(0.13 + 0.1, -0.02, 0.13, -0.02);
+  p->begin_step(slid, quiet_log());
+  EXPECT_EQ(p->n_kept(), 0);
+  expect_fresh_pairing(*p, def, tb, slid);
+  // One lower node moved alone: the points whose master neighbourhood holds it are projected
+  // again, the others keep their pairing; all equal the fresh pairing.
+  Vector bumped = slid;
+  bumped[dofs.dof(tb.node_e, DY)] += 1e-3;
+  p->begin_step(bumped, quiet_log());
+  EXPECT_GT(p->n_kept(), 0);
+  EXPECT_LT(p->n_kept(), n_points);
+  expect_fresh_pairing(*p, def, tb, bumped);
+}
