@@ -427,6 +427,7 @@ void MortarProblem::pair(const Vector& u, const Log* log) {
   std::vector<std::vector<std::pair<int, double>>> masters;
   int n_whole_cell = 0;
   std::vector<MortarRow> rows = build_rows(u, masters, n_whole_cell);
+  ++n_row_builds_;
   adopt(u, std::move(rows), std::move(masters), n_whole_cell, log);
 }
 
@@ -666,10 +667,14 @@ bool MortarProblem::settle(const Vector& u, const Log& log) {
   const double resi = geometric_residual(geometry_nodes_, dofs_, dim_, u, u_at_pairing_);
   if (resi <= def_.resi_geom) return true;
   // Otherwise pair again in the converged configuration; a pairing that gives the same rows
-  // (a translation, small strain) leaves everything as it is.
+  // (a translation, small strain) leaves everything as it is. The rows of surfaces that all
+  // moved by one vector (to 1e-10 of the smallest slave edge; on an AXIS model, along the
+  // axis: r dl follows the radius) are those of the last pairing, without integrating them.
+  if (moved_as_one(u)) return true;
   std::vector<std::vector<std::pair<int, double>>> masters;
   int n_whole_cell = 0;
   std::vector<MortarRow> rows = build_rows(u, masters, n_whole_cell);
+  ++n_row_builds_;
   // Same rows: same nodes, and coefficients equal to 1e-10 of the row's largest (a term at
   // round-off level, e.g. a zero-length overlap at coincident nodes, counts as zero).
   bool same = rows.size() == rows_.size();
@@ -699,6 +704,22 @@ bool MortarProblem::settle(const Vector& u, const Log& log) {
   adopt(u, std::move(rows), std::move(masters), n_whole_cell, nullptr);
   log.info("mortar contact: new pairing (geometry iteration " + std::to_string(n_geom_iter_) + ")");
   return false;
+}
+
+bool MortarProblem::moved_as_one(const Vector& u) const {
+  if (geometry_nodes_.empty() || u_at_pairing_.size() != u.size()) return false;
+  const double tol = 1e-10 * *std::min_element(h_.begin(), h_.end());
+  auto motion = [&](int node, int k) {
+    const int eq = dofs_.dof(node, k);
+    return eq >= 0 ? u[eq] - u_at_pairing_[eq] : 0.0;
+  };
+  double ref[3] = {0.0, 0.0, 0.0};
+  for (int k = 0; k < dim_; ++k) ref[k] = motion(geometry_nodes_[0], k);
+  if (def_.axisymmetric && !(std::abs(ref[0]) <= tol)) return false;
+  for (int node : geometry_nodes_)
+    for (int k = 0; k < dim_; ++k)
+      if (!(std::abs(motion(node, k) - ref[k]) <= tol)) return false;
+  return true;
 }
 
 unsigned long long MortarProblem::status_key() const {

@@ -97,6 +97,8 @@ class MortarProblem final : public ContactHook {
   /// Master-side coefficient M_jl of every row (node, value), from the last pairing (tests).
   const std::vector<std::vector<std::pair<int, double>>>& master_terms() const { return master_terms_; }
   int n_pairings() const { return n_pairings_; }
+  /// Times the rows were integrated (a pairing, or a re-pairing checked against the last).
+  int n_row_builds() const { return n_row_builds_; }
   int n_status_changes() const { return n_status_changes_; }
 
  private:
@@ -112,6 +114,9 @@ class MortarProblem final : public ContactHook {
   /// Makes `rows` the current pairing (statuses kept node by node) and checks them.
   void adopt(const Vector& u, std::vector<MortarRow> rows, std::vector<std::vector<std::pair<int, double>>> masters,
              int n_whole_cell, const Log* log);
+  /// True when every node of the contact surfaces moved by one vector since the last pairing
+  /// (to round-off): the rows of a new pairing would be the same.
+  bool moved_as_one(const Vector& u) const;
   void update_pressures(const Vector& residual);
   int update_statuses(const Vector& u);
   void build_eliminations(const Vector& u);
@@ -138,7 +143,7 @@ class MortarProblem final : public ContactHook {
   bool first_step_ = true;
   bool changed_in_newton_ = false;
   long pattern_version_ = 0;
-  int n_pairings_ = 0, n_status_changes_ = 0, n_geom_iter_ = 0;
+  int n_pairings_ = 0, n_status_changes_ = 0, n_geom_iter_ = 0, n_row_builds_ = 0;
 };
 
 }  // namespace lunaster::engine::contact

@@ -207,4 +207,38 @@ TEST(MortarProblem, ActiveSetMovesInsideNewtonAndSettles) {
   EXPECT_EQ(run.stats.contact_passes, 1) << run.log;
 }
 
+TEST(MortarProblem, SurfacesThatMovedAsOneKeepTheirRowsWithoutIntegratingThem) {
+  const TwoBlocks tb = make_two_blocks(4, 3, false);
+  ContactDefinition def = mortar_definition(tb, ContactMethod::MortarLagrange, ContactInit::Yes, 100.0);
+  def.reac_geom = GeometryUpdate::Automatic;
+  def.resi_geom = 1e-12;
+  MortarProblem hook(def, tb.mesh, 2);
+  DofMap dofs(tb.mesh, make_model(tb.mesh, 2e6, 0.0).volume_cells(), 2);
+  hook.add_dofs(dofs);
+  const int upper_nodes = 5 * 5;  // the upper block's nodes come first
+  auto moved = [&](double ux_up, double ux_low, double uy) {
+    Vector u = Vector::Zero(dofs.n_dofs());
+    for (int node = 0; node < tb.mesh.n_nodes(); ++node) {
+      u[dofs.dof(node, DX)] = node < upper_nodes ? ux_up : ux_low;
+      u[dofs.dof(node, DY)] = uy;
+    }
+    return u;
+  };
+  hook.begin_step(Vector::Zero(dofs.n_dofs()), quiet_log());
+  ASSERT_EQ(hook.n_row_builds(), 1);
+  const auto rows = hook.rows();
+  // Both surfaces translated together: settled, the rows kept, nothing integrated.
+  EXPECT_TRUE(hook.settle(moved(0.13, 0.13, -0.02), quiet_log()));
+  EXPECT_EQ(hook.n_row_builds(), 1);
+  ASSERT_EQ(hook.rows().size(), rows.size());
+  for (size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_EQ(hook.rows()[i].node, rows[i].node);
+    EXPECT_EQ(hook.rows()[i].coef, rows[i].coef);
+  }
+  // The upper block slid along the interface: the rows are integrated again, and change.
+  EXPECT_FALSE(hook.settle(moved(0.23, 0.13, -0.02), quiet_log()));
+  EXPECT_EQ(hook.n_row_builds(), 2);
+  EXPECT_EQ(hook.n_pairings(), 2);
+}
+
 }  // namespace
