@@ -123,10 +123,18 @@ MortarProblem::MortarProblem(const ContactDefinition& definition, const Mesh& me
     : def_(definition), mesh_(mesh), dim_(dim) {
   LUNASTER_ASSERT(dim == 2 || dim == 3, "contact: dimension must be 2 or 3");
   LUNASTER_ASSERT(lagrange() || def_.method == ContactMethod::MortarPenalty, "not a mortar method");
+  // The volume cells around the nodes of the contact surfaces alone (the whole mesh's lists
+  // took 1.8 % of the samples of the 2D k = 16 mortar benchmark, these 0.3 %).
+  std::vector<char> on_surface(mesh.n_nodes(), 0);
+  for (const ContactZone& zone : def_.zones)
+    for (const auto* cells : {&zone.slave_cells, &zone.master_cells})
+      for (int c : *cells)
+        for (int a = 0; a < mesh.cell_n_nodes(c); ++a) on_surface[mesh.cell(c)[a]] = 1;
   std::vector<std::vector<int>> volumes_of_node(mesh.n_nodes());
   for (int c = 0; c < mesh.n_cells(); ++c)
     if (topological_dim(mesh.cell_types[c]) == dim)
-      for (int a = 0; a < mesh.cell_n_nodes(c); ++a) volumes_of_node[mesh.cell(c)[a]].push_back(c);
+      for (int a = 0; a < mesh.cell_n_nodes(c); ++a)
+        if (on_surface[mesh.cell(c)[a]]) volumes_of_node[mesh.cell(c)[a]].push_back(c);
   std::vector<int> zone_of_slave(mesh.n_nodes(), -1);
   for (size_t z = 0; z < def_.zones.size(); ++z) {
     const ContactZone& zone = def_.zones[z];
