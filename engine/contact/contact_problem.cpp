@@ -199,7 +199,6 @@ void ContactProblem::pair(const Vector& u) {
   const std::vector<double> xyz = current_coordinates(mesh_, dofs_, dim_, u);
   for (auto& m : masters_) m->update(xyz);
   recovery_->ready = false;
-  ++pattern_version_;
   std::vector<int> which;
   which.reserve(points_.size());
   n_kept_ = 0;
@@ -219,6 +218,8 @@ void ContactProblem::pair(const Vector& u) {
     share_pairing();
   }
   u_paired_ = u;
+  // Every point kept: the same pairing, so the same positions and values of the terms.
+  if (n_kept_ < static_cast<int>(points_.size()) || points_.empty()) ++pattern_version_;
 }
 
 bool ContactProblem::moved_as_one(const ContactPoint& p, const Vector& u) {

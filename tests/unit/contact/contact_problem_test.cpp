@@ -134,14 +134,17 @@ TEST(ContactPairing, KeepsThePairingOfPointsThatMovedAsOneAndOnlyThose) {
   ASSERT_GT(n_points, 0);
   // Both blocks translated together: every point keeps its pairing, which is the fresh one.
   const Vector together = moved(0.13, -0.02, 0.13, -0.02);
+  const long version = p->pattern_version();
   p->begin_step(together, quiet_log());
   EXPECT_EQ(p->n_kept(), n_points);
+  EXPECT_EQ(p->pattern_version(), version);  // the same terms: the driver keeps its system
   expect_fresh_pairing(*p, def, tb, together);
   // The upper block slid along the interface: no point keeps its pairing, every one is
   // projected again (a point sliding by a fifth of a master cell changes cell or xi).
   const Vector slid = moved(0.13 + 0.1, -0.02, 0.13, -0.02);
   p->begin_step(slid, quiet_log());
   EXPECT_EQ(p->n_kept(), 0);
+  EXPECT_GT(p->pattern_version(), version);
   expect_fresh_pairing(*p, def, tb, slid);
   // One lower node moved alone: the points whose master neighbourhood holds it are projected
   // again, the others keep their pairing; all equal the fresh pairing.
