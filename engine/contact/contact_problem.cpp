@@ -183,7 +183,7 @@ MatrixKind ContactProblem::matrix_kind() const {
   return MatrixKind::SymmetricPositiveDefinite;
 }
 
-void ContactProblem::share_among_ranks(const std::vector<int>& node_owner) {
+void ContactProblem::share_among_ranks(const std::vector<char>& owned_nodes) {
   shared_ = parallel::size() > 1;
   point_rank_.assign(points_.size(), 0);
   if (!shared_) return;
@@ -191,8 +191,7 @@ void ContactProblem::share_among_ranks(const std::vector<int>& node_owner) {
   // partition (which often puts a whole slave surface on one rank: two bodies, two ranks).
   const size_t n = points_.size(), parts = static_cast<size_t>(parallel::size());
   for (size_t i = 0; i < n; ++i) point_rank_[i] = static_cast<int>(i * parts / std::max<size_t>(n, 1));
-  owned_ = std::vector<char>(node_owner.size(), 0);
-  for (size_t v = 0; v < node_owner.size(); ++v) owned_[v] = node_owner[v] == parallel::rank();
+  owned_ = owned_nodes;
 }
 
 void ContactProblem::pair(const Vector& u) {
@@ -202,6 +201,7 @@ void ContactProblem::pair(const Vector& u) {
   std::vector<int> which;
   which.reserve(points_.size());
   n_kept_ = 0;
+  for (auto& known : motion_known_) std::fill(known.begin(), known.end(), 0);  // since the last pairing
   for (size_t i = 0; i < points_.size(); ++i) {
     if (shared_ && point_rank_[i] != parallel::rank()) continue;
     if (moved_as_one(points_[i], u)) {
@@ -229,7 +229,6 @@ bool ContactProblem::moved_as_one(const ContactPoint& p, const Vector& u) {
   // gap, which is written in the reference coordinates. The cells around the master cell are
   // those that could have come nearer.
   if (!p.paired || u_paired_.size() != u.size()) return false;
-  const std::vector<int>& around = neighbourhood(p.zone, p.master_cell);
   const double tol = 1e-10 * min_edge_[p.zone];
   double ref[3] = {0.0, 0.0, 0.0};
   for (int k = 0; k < dim_; ++k) {
@@ -248,9 +247,36 @@ bool ContactProblem::moved_as_one(const ContactPoint& p, const Vector& u) {
   if (def_.axisymmetric && !(std::abs(ref[0]) <= tol)) return false;
   for (int a = 1; a < p.n_slave; ++a)
     if (!same(p.slave_nodes[a])) return false;
-  for (int node : around)
-    if (!same(node)) return false;
+  // Every node around the master cell within tol of ref: the bounds of their motions are
+  // (computed once per cell and pairing, the points of a cell sharing them).
+  const CellMotion& m = cell_motion(p.zone, p.master_cell, u);
+  for (int k = 0; k < dim_; ++k)
+    if (!(m.hi[k] - ref[k] <= tol) || !(ref[k] - m.lo[k] <= tol)) return false;
   return true;
+}
+
+const ContactProblem::CellMotion& ContactProblem::cell_motion(int zone, int master_cell, const Vector& u) {
+  const std::vector<int>& around = neighbourhood(zone, master_cell);
+  const int k = masters_[zone]->local_index(master_cell);
+  if (motion_known_.size() != masters_.size()) {
+    motion_known_.assign(masters_.size(), {});
+    motions_.assign(masters_.size(), {});
+  }
+  if (motion_known_[zone].empty()) {
+    motion_known_[zone].assign(masters_[zone]->cells().size(), 0);
+    motions_[zone].resize(masters_[zone]->cells().size());
+  }
+  CellMotion& m = motions_[zone][k];
+  if (motion_known_[zone][k]) return m;
+  for (int c = 0; c < 3; ++c) m.lo[c] = 1e300, m.hi[c] = -1e300;
+  for (int node : around)
+    for (int c = 0; c < dim_; ++c) {
+      const int eq = dofs_.dof(node, c);
+      const double d = eq >= 0 ? u[eq] - u_paired_[eq] : 0.0;
+      m.lo[c] = std::min(m.lo[c], d), m.hi[c] = std::max(m.hi[c], d);
+    }
+  motion_known_[zone][k] = 1;
+  return m;
 }
 
 const std::vector<int>& ContactProblem::neighbourhood(int zone, int master_cell) {

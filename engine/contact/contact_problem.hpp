@@ -30,7 +30,7 @@ class ContactProblem final : public ContactHook {
 
   void set_dirichlet(const std::vector<DirichletValue>& dirichlet) override;
   void add_dofs(DofMap& dofs) override;
-  void share_among_ranks(const std::vector<int>& node_owner) override;
+  void share_among_ranks(const std::vector<char>& owned_nodes) override;
   void begin_step(const Vector& u, const Log& log) override;
   void add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) override;
   bool add_residual(const Vector& u, Vector& residual) override;
@@ -79,6 +79,12 @@ class ContactProblem final : public ContactHook {
   bool moved_as_one(const ContactPoint& p, const Vector& u);
   /// The nodes of a master cell (a mesh cell of `zone`) and of the master cells sharing a node with it.
   const std::vector<int>& neighbourhood(int zone, int master_cell);
+  /// Smallest and largest motion, per component, of a master cell's neighbourhood since the
+  /// last pairing (once per cell and pairing).
+  struct CellMotion {
+    double lo[3], hi[3];
+  };
+  const CellMotion& cell_motion(int zone, int master_cell, const Vector& u);
   void pair_and_record(const Vector& u);
   void init_statuses(const Vector& u, const Log& log);
   int update_statuses(const Vector& u);
@@ -121,6 +127,8 @@ class ContactProblem final : public ContactHook {
   Vector u_paired_;      ///< u at the last pairing, whichever loop asked for it
   int n_kept_ = 0;       ///< points of the last pairing that kept the previous one
   std::vector<std::vector<std::vector<int>>> neighbourhoods_;  ///< per zone, per master cell
+  std::vector<std::vector<CellMotion>> motions_;               ///< per zone, per master cell
+  std::vector<std::vector<char>> motion_known_;                ///< motions_ computed this pairing
   bool first_step_ = true;
   bool allow_condensation_ = true;
   long pattern_version_ = 0;

@@ -181,7 +181,7 @@ double MortarProblem::complementarity(int zone) const {
   return def_.zones[zone].coef_cont * e / h_[zone];
 }
 
-void MortarProblem::share_among_ranks(const std::vector<int>& /*node_owner*/) { shared_ = parallel::size() > 1; }
+void MortarProblem::share_among_ranks(const std::vector<char>& /*owned_nodes*/) { shared_ = parallel::size() > 1; }
 
 void MortarProblem::share_overlaps(std::vector<double>& d, std::vector<std::vector<std::pair<int, double>>>& m,
                                    int& n_whole_cell) {  // of one zone

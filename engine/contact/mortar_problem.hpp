@@ -76,7 +76,7 @@ class MortarProblem final : public ContactHook {
 
   void set_dirichlet(const std::vector<DirichletValue>& dirichlet) override;
   void add_dofs(DofMap& dofs) override;
-  void share_among_ranks(const std::vector<int>& node_owner) override;
+  void share_among_ranks(const std::vector<char>& owned_nodes) override;
   void begin_step(const Vector& u, const Log& log) override;
   void add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) override;
   const std::vector<Elimination>& eliminations() const override { return eliminations_; }

@@ -43,13 +43,13 @@ class ContactHook {
   virtual void set_dirichlet(const std::vector<DirichletValue>& /*dirichlet*/) {}
   /// Adds contact unknowns (LAGS_C ...) to the numbering, once, before any step.
   virtual void add_dofs(DofMap& dofs) = 0;
-  /// A model shared among the ranks of an MPI run, once after add_dofs: `node_owner` gives
-  /// the rank owning each node's equations (-1: none). The hook may then share its pairing
+  /// A model shared among the ranks of an MPI run, once after add_dofs: `owned_nodes` flags,
+  /// per mesh node, the nodes whose equations are this rank's. The hook may then share its pairing
   /// among the ranks (each projects some points and receives the others') and build the
   /// tangent terms of the points that touch this rank's columns only (the driver keeps those
   /// columns). Its residual stays whole on every rank. Collective from then on: every rank
   /// calls begin_step, settle and add_to_system alike.
-  virtual void share_among_ranks(const std::vector<int>& /*node_owner*/) {}
+  virtual void share_among_ranks(const std::vector<char>& /*owned_nodes*/) {}
   /// Start of an instant, with the converged displacement of the previous one.
   virtual void begin_step(const Vector& u, const Log& log) = 0;
   /// Adds the contact tangent and residual at iterate u (residual = internal - external).

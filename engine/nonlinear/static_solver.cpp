@@ -207,11 +207,11 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
       node_owner_ = part.node_owner;
       cell_rank_.assign(mesh.n_cells(), -1);
       for (size_t i = 0; i < cells.size(); ++i) cell_rank_[cells[i]] = part.cell_part[i];
-      if (contact_) contact_->share_among_ranks(node_owner_);
       owned_nodes_.assign(mesh.n_nodes(), 0);
       std::vector<int> nodes_of(part.parts, 0), cells_of(part.parts, 0);
       for (int v = 0; v < mesh.n_nodes(); ++v)
         if (node_owner_[v] >= 0) ++nodes_of[node_owner_[v]], owned_nodes_[v] = node_owner_[v] == parallel::rank();
+      if (contact_) contact_->share_among_ranks(owned_nodes_);
       for (int p : part.cell_part) ++cells_of[p];
       std::string counts;
       for (int r = 0; r < part.parts; ++r)
