@@ -6,6 +6,7 @@
 #include <dlfcn.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdlib>
 #include <cstring>
@@ -69,7 +70,44 @@ void* large_pages_malloc(std::size_t size) {
   return p;
 }
 
+/// The OpenMP environment asks for threads of its own: OpenMP is then left as the user set it.
+bool openmp_from_environment() { return has_env("OMP_MAX_ACTIVE_LEVELS") || has_env("OMP_THREAD_LIMIT"); }
+
+std::atomic<long> inlined_regions{0};
+
 }  // namespace
+
+}  // namespace lunaster::engine
+
+/// GCC's entry point for `#pragma omp parallel`, as libgomp exports it (GOMP_4.0), defined here so
+/// that the solver libraries' parallel regions bind to it: the executable comes first in the
+/// dynamic linker's search order. CHOLMOD's supernodal factorisation (the only OpenMP user
+/// among the libraries of a serial run) opens several regions per supernode for its scatter
+/// loops. This project runs them on the calling thread (configure_blas), and libgomp still
+/// built a team of one for each and woke its barrier with a system call on leaving: 120,000
+/// futex calls in the glued 2D k = 16 solve, a third of its system time. A region asked of us
+/// runs `fn` here, outside any team, where omp_get_num_threads() is 1 and
+/// omp_get_thread_num() 0, as in a team of one (worksharing, single and task constructs
+/// without a team run on the one thread, as libgomp documents for orphaned constructs).
+/// When the OpenMP environment asks for threads, or inside a region of libgomp's, the region
+/// goes to libgomp's own entry point.
+extern "C" void GOMP_parallel(void (*fn)(void*), void* data, unsigned num_threads, unsigned flags) {
+  using Entry = void (*)(void (*)(void*), void*, unsigned, unsigned);
+  using Level = int (*)();
+  static const Entry libgomp = reinterpret_cast<Entry>(dlsym(RTLD_NEXT, "GOMP_parallel"));
+  static const Level level = reinterpret_cast<Level>(dlsym(RTLD_NEXT, "omp_get_level"));
+  static const bool inline_regions = !lunaster::engine::openmp_from_environment();
+  if (libgomp && (!inline_regions || (level && level() > 0))) {
+    libgomp(fn, data, num_threads, flags);
+    return;
+  }
+  lunaster::engine::inlined_regions.fetch_add(1, std::memory_order_relaxed);
+  fn(data);
+}
+
+namespace lunaster::engine {
+
+long openmp_regions_inlined() { return inlined_regions.load(std::memory_order_relaxed); }
 
 void configure_blas() {
   static const bool done = [] {
@@ -95,8 +133,10 @@ void configure_blas() {
     // the calling thread unless the OpenMP environment says otherwise.
     // libcholmod brings the OpenMP runtime (libgomp); looked up at run time, as
     // lunaster itself has no OpenMP code.
+    // GOMP_parallel above runs them without a team; this covers a library that enters
+    // libgomp another way.
     using SetLevels = void (*)(int);
-    if (!has_env("OMP_MAX_ACTIVE_LEVELS") && !has_env("OMP_THREAD_LIMIT"))
+    if (!openmp_from_environment())
       if (const auto set = reinterpret_cast<SetLevels>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"))) set(0);
     return true;
   }();

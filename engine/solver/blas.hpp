@@ -24,6 +24,10 @@ void configure_blas();
 /// Threads OpenBLAS uses for one call.
 int blas_threads();
 
+/// OpenMP parallel regions (CHOLMOD's) this process ran on the calling thread without
+/// making a team of one (GOMP_parallel in blas.cpp).
+long openmp_regions_inlined();
+
 /// Two OpenBLAS threads while it lives, for one call whose dense kernels are large (a 3D
 /// supernodal factorisation: its big supernodes' dgemm and dsyrk scale; the small ones of a
 /// 2D factor do not, and between calls the second thread only spins). Then one thread

@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <Eigen/Sparse>
 #include <cstdlib>
 #include <string>
+#include <vector>
 #include <thread>
 
 #include "engine/solver/blas.hpp"
@@ -56,6 +58,33 @@ TEST_F(Blas, ThreadCountIsSetOnce) {
   EXPECT_EQ(lunaster::engine::blas_threads(), lunaster::engine::kBlasThreads);
   (void)lunaster::engine::make_linear_solver(lunaster::engine::SolverKind::Cholmod);  // configures again: no change
   EXPECT_EQ(lunaster::engine::blas_threads(), lunaster::engine::kBlasThreads);
+}
+
+TEST_F(Blas, CholmodRegionsRunWithoutATeam) {
+  // CHOLMOD's supernodal factorisation opens OpenMP regions around its scatter loops; they bind
+  // to lunaster's GOMP_parallel, which runs them on the calling thread, and the factor is right.
+  if (std::getenv("OMP_MAX_ACTIVE_LEVELS") || std::getenv("OMP_THREAD_LIMIT"))
+    GTEST_SKIP() << "OpenMP set by the environment";
+  const int n = 40, size = n * n * n;  // 3D Laplacian: large supernodes
+  auto at = [n](int i, int j, int k) { return (k * n + j) * n + i; };
+  std::vector<Eigen::Triplet<double>> t;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int r = at(i, j, k);
+        t.emplace_back(r, r, 6.1);
+        if (i + 1 < n) t.emplace_back(r, at(i + 1, j, k), -1.0), t.emplace_back(at(i + 1, j, k), r, -1.0);
+        if (j + 1 < n) t.emplace_back(r, at(i, j + 1, k), -1.0), t.emplace_back(at(i, j + 1, k), r, -1.0);
+        if (k + 1 < n) t.emplace_back(r, at(i, j, k + 1), -1.0), t.emplace_back(at(i, j, k + 1), r, -1.0);
+      }
+  lunaster::engine::SparseMatrix a(size, size);
+  a.setFromTriplets(t.begin(), t.end());
+  const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(size, -1.0, 2.0), b = a * x;
+  const long before = lunaster::engine::openmp_regions_inlined();
+  auto solver = lunaster::engine::make_linear_solver(lunaster::engine::SolverKind::Cholmod);
+  solver->factorize(a, lunaster::engine::MatrixKind::SymmetricPositiveDefinite);
+  EXPECT_GT(lunaster::engine::openmp_regions_inlined(), before);
+  EXPECT_LT((solver->solve(b) - x).norm(), 1e-12 * x.norm());
 }
 
 MatrixXd random(int r, int c, int seed) {
