@@ -62,9 +62,13 @@ std::vector<Keyword> keywords(bool meca_non_line) {
       factor("SOLVEUR",
              {text("METHODE",
                    "Linear solver. AUTO, CHOLMOD, LDLT and MULT_FRONT factorise with CHOLMOD (sparse Cholesky) "
-                   "when the system is symmetric positive definite and with MUMPS otherwise (contact "
-                   "multipliers, mid-side ties, continuous penalty; the log says so once), or UMFPACK below "
-                   "10,000 unknowns in a run without mpirun (no MPI start-up); AUTO also gives 3D "
+                   "when the system is symmetric positive definite. A symmetric indefinite system (contact "
+                   "multipliers, mid-side ties; the log says so once) goes, in a run without mpirun, to the "
+                   "Schur complement of its multipliers (penalised by 1e-6 of their rows' scale, SPD, "
+                   "factorised by CHOLMOD) with GMRES on the true system to a direct solve's accuracy, except "
+                   "3D systems of more than 100,000 unknowns; where that gives way (the log says why), under "
+                   "mpirun, and for a non-symmetric system, MUMPS factorises it, or UMFPACK below 10,000 "
+                   "unknowns in a run without mpirun (no MPI start-up). AUTO also gives 3D "
                    "SPD systems of more than 100,000 unknowns to PETSc's CG with BoomerAMG (relative residual 1e-12; MUMPS "
                    "factorises the system if CG fails, and under mpirun), and "
                    "solves contact (DEFI_CONTACT) with the elastic stiffness factorised once by CHOLMOD, the "

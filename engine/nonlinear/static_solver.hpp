@@ -213,6 +213,7 @@ class StaticSolver {
   double k_scale_ = 0.0;
   bool rigid_checked_ = false;  ///< elastic part proven free of rigid-body modes
   bool backend_note_logged_ = false;  ///< the Cholmod -> Mumps substitution was logged in this run
+  bool saddle_ = false;  ///< indefinite systems go to the saddle-point backend (backend_for)
 
   const FeModel& model_;
   const MechanicalLoads& loads_;
