@@ -140,7 +140,10 @@ class SaddleSolver final : public LinearSolver {
     memory_ = memory;
     if (direct_) direct_->set_memory(memory);
   }
-  void set_layout(SystemLayout layout) override { direct().set_layout(std::move(layout)); }
+  void set_layout(SystemLayout layout) override {  // the direct backend's (S has no use for it)
+    if (direct_) direct_->set_layout(std::move(layout));
+    else layout_ = std::move(layout), has_layout_ = true;
+  }
   std::string memory_used() const override { return split_ || !direct_ ? std::string() : direct_->memory_used(); }
   std::string ordering_used() const override {
     return split_ ? split_data_->schur->ordering_used() : direct_ ? direct_->ordering_used() : std::string();
@@ -152,6 +155,7 @@ class SaddleSolver final : public LinearSolver {
       direct_ = make_linear_solver(direct_kind_);
       direct_->set_ordering(ordering_);
       direct_->set_memory(memory_);
+      if (has_layout_) direct_->set_layout(std::move(layout_)), has_layout_ = false;
     }
     return *direct_;
   }
@@ -274,6 +278,8 @@ class SaddleSolver final : public LinearSolver {
   std::function<void(const std::string&)> note_;
   FactorOrdering ordering_ = FactorOrdering::Auto;
   FactorMemory memory_ = FactorMemory::Auto;
+  mutable SystemLayout layout_;  ///< given before the direct backend existed
+  mutable bool has_layout_ = false;
   std::unique_ptr<Split> split_data_ = std::make_unique<Split>();
   SparseMatrix schur_;
   double norm_a_ = 0.0;
