@@ -28,14 +28,15 @@ constexpr double kBackwardError = 1e-14;
 /// GMRES failures (on different factorisations) after which the direct backend stays.
 constexpr int kFailuresToGiveUp = 2;
 
-/// The system split into displacements (u) and multipliers (l), and the preconditioner
-/// [A B^T; B -D]^-1 applied through S's factorisation.
+/// The system split into displacements (u) and multipliers (l), and the preconditioner:
+/// u from S's factorisation (the multipliers eliminated with D), then the multipliers from
+/// their own rows with C whole.
 class Split final : public LinearSolver {
  public:
   std::vector<int> u_eqs, l_eqs;
   SparseMatrix b;          ///< n_l x n_u, column-major: the constraint rows
   Vector d_inv;            ///< 1 / D
-  Eigen::SimplicialLDLT<SparseMatrix> multipliers;  ///< E - C (SPD), E = D - diag(-C)
+  Eigen::SimplicialLDLT<SparseMatrix> multipliers;  ///< E - C, SPD (E: kDelta times each row's scale)
   std::unique_ptr<LinearSolver> schur = make_linear_solver(SolverKind::Cholmod);
 
   void factorize(const SparseMatrix&, MatrixKind) override {

@@ -8,12 +8,14 @@
 /// 1.0e10 operations at about 7 GFlop/s, where CHOLMOD's supernodal Cholesky of an SPD
 /// system of the same size runs about 2.5 times faster per operation.
 ///
-/// This backend factorises instead the nearby system [A B^T; B -D], D a positive diagonal,
-/// through its Schur complement S = A + B^T D^-1 B, which is SPD (CHOLMOD), and solves the
-/// true system by GMRES right-preconditioned with it. D holds C's own diagonal (made
-/// positive) plus delta times each constraint row's scale, sum_j B_ij^2 / A_jj: the
-/// preconditioned operator is the identity up to O(delta) on the constraint rows and up to
-/// the gap between C and its diagonal on the others, so GMRES converges in a few iterations.
+/// This backend factorises instead S = A + B^T D^-1 B, the Schur complement of the nearby
+/// system [A B^T; B -D], D a positive diagonal: S is SPD (CHOLMOD). D is E minus C's
+/// diagonal, E being delta (1e-6) times each constraint row's scale sum_j B_ij^2 / A_jj. The
+/// preconditioner takes u from S and then the multipliers from their own rows with C whole,
+/// (C - E) l = r_l - B u (a sparse LDL^T of the multipliers alone); GMRES on the true
+/// system, right-preconditioned by it, converges in a few iterations: the preconditioned
+/// operator is the identity up to O(delta) on the constraint rows and exact on the rows of
+/// multipliers without a constraint (an inactive point's).
 ///
 /// The multipliers are the equations whose diagonal is not positive (a displacement's
 /// stiffness always is). When there are none, too many (over a quarter of the equations),

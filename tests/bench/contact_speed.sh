@@ -19,6 +19,8 @@
 #   mortar2d_k16 / mortar2d_k32    the cont2d meshes with mortar contact (DEFI_CONT, LAGRANGIEN, CONTACT_INIT='OUI')
 #   mortar2d_k16_init_non          the same with CONTACT_INIT='NON' (a first solve without contact)
 #   mortar3d      the cont3d mesh with mortar contact (CONTACT_INIT='OUI')
+#   elas3d_r3 / cont3d_r3   elas3d and cont3d one refinement down (HEXA8 15x15x3 under HEXA20
+#                  12x12x3, 8.4e3 free unknowns with contact: below MUMPS's 1e4)
 set -euo pipefail
 runs=3; cases="glued2d_k16,cont2d_k16,elas3d,cont3d"
 while getopts "r:c:" opt; do case $opt in r) runs=$OPTARG ;; c) cases=$OPTARG ;; *) exit 2 ;; esac; done
@@ -63,8 +65,8 @@ TEST_RESU{ RESU = _F{ RESULTAT = R, NUME_ORDRE = $4, NOM_CHAM = 'DEPL', GROUP_NO
 FIN()
 LUA
 }
-deck3d() {  # name contact(0/1/mortar)
-  local bc="" contact="" excit="EXCIT = _F{ CHARGE = CH }"
+deck3d() {  # name contact(0/1/mortar) [mesh, default mesh3d]
+  local bc="" contact="" excit="EXCIT = _F{ CHARGE = CH }" mesh=${3:-mesh3d}
   if [ "$2" = mortar ]; then
     contact="CONT = DEFI_CONT{ MODELE = MO, ZONE = _F{ APPARIEMENT = 'MORTAR', GROUP_MA_ESCL = 'SURESC',
              GROUP_MA_MAIT = 'SURMAI', ALGO_CONT = 'LAGRANGIEN', CONTACT_INIT = 'OUI' } }"
@@ -79,7 +81,7 @@ deck3d() {  # name contact(0/1/mortar)
   fi
   cat > "$work/$1.lua" <<LUA
 DEBUT()
-MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'mesh3d.med' }
+MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = '$mesh.med' }
 MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = '3D' } }
 MAT = DEFI_MATERIAU{ ELAS = _F{ E = 2.0e6, NU = 0.0 } }
 CM = AFFE_MATERIAU{ MAILLAGE = MA, AFFE = _F{ GROUP_MA = { 'V1', 'V2' }, MATER = MAT } }
@@ -110,6 +112,8 @@ for c in "${list[@]}"; do
     mortar2d_k16_init_non) mesh2d c16 --upper quad4:12 --lower quad4:11 --refine 16; deck2d "$c" c16 mortar_non 1 ;;
     mortar2d_k32) mesh2d c32 --upper quad4:12 --lower quad4:11 --refine 32; deck2d "$c" c32 mortar 1 ;;
     mortar3d) mesh2d mesh3d --v1 hexa8:5x5x1 --v2 hexa20:4x4x1 --refine 4; deck3d "$c" mortar ;;
+    elas3d_r3) mesh2d mesh3d_r3 --v1 hexa8:5x5x1 --v2 hexa20:4x4x1 --refine 3; deck3d "$c" 0 mesh3d_r3 ;;
+    cont3d_r3) mesh2d mesh3d_r3 --v1 hexa8:5x5x1 --v2 hexa20:4x4x1 --refine 3; deck3d "$c" 1 mesh3d_r3 ;;
     *) echo "$0: unknown case $c" >&2; exit 2 ;;
   esac
 done
