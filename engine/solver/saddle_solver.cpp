@@ -62,12 +62,11 @@ class Split final : public LinearSolver {
   std::string name() const override { return "CHOLMOD (the multipliers' Schur complement)"; }
 };
 
-/// max_i |r_i| / (|A| |x| + |b|)_i for a symmetric A (|A| |x| by columns); infinite when a
+/// max_i |r_i| / (|A| |x| + |b|)_i; infinite when a
 /// row with nothing on the right has a residual.
 double row_backward_error(const SparseMatrix& a, const Vector& x, const Vector& b, const Vector& r) {
   Vector scale = b.cwiseAbs();
-  for (Eigen::Index j = 0; j < a.outerSize(); ++j)
-    for (SparseMatrix::InnerIterator it(a, j); it; ++it) scale[it.row()] += std::abs(it.value() * x[j]);
+  add_abs_product(a, x, scale);
   double worst = 0.0;
   for (Eigen::Index i = 0; i < r.size(); ++i) {
     if (r[i] == 0.0) continue;
@@ -193,7 +192,7 @@ class SaddleSolver final : public LinearSolver {
     // that S's pattern follows a's alone (CHOLMOD keeps its analysis while it does not change).
     std::vector<int> b_outer(static_cast<size_t>(nu) + 1, 0), b_inner;
     std::vector<double> b_values;
-    std::vector<double> scale(static_cast<size_t>(nl), 0.0), c_diag(static_cast<size_t>(nl), 0.0);
+    std::vector<double> scale(static_cast<size_t>(nl), 0.0);
     for (int ju = 0; ju < nu; ++ju) {
       const int j = s.u_eqs[ju];
       for (SparseMatrix::InnerIterator it(a, j); it; ++it) {
@@ -205,7 +204,6 @@ class SaddleSolver final : public LinearSolver {
       }
       b_outer[ju + 1] = static_cast<int>(b_inner.size());
     }
-    for (int il = 0; il < nl; ++il) c_diag[il] = diag[s.l_eqs[il]];
     // E - C: the multipliers' block negated, plus kDelta times each row's scale.
     std::vector<Triplet> e_minus_c;
     for (int il = 0; il < nl; ++il) {
@@ -215,16 +213,13 @@ class SaddleSolver final : public LinearSolver {
     }
     s.b = Eigen::Map<const SparseMatrix>(nl, nu, static_cast<Eigen::Index>(b_inner.size()), b_outer.data(),
                                          b_inner.data(), b_values.data());
-    s.d_inv.resize(nl);
-    for (int il = 0; il < nl; ++il) {
-      const double d = kDelta * scale[il] + std::max(0.0, -c_diag[il]);
-      s.d_inv[il] = d > 0.0 ? 1.0 / d : 1.0;  // an empty row: the system is singular there anyway
-    }
     {
       SparseMatrix m(nl, nl);
       m.setFromTriplets(e_minus_c.begin(), e_minus_c.end());
       for (int il = 0; il < nl; ++il)  // an empty multiplier row: the system is singular there anyway
         if (m.coeff(il, il) <= 0.0) m.coeffRef(il, il) = 1.0;
+      // D is E - C's diagonal (C's diagonal is <= 0 on the multipliers): m's own diagonal.
+      s.d_inv = m.diagonal().cwiseInverse();
       s.multipliers.compute(m);
       if (s.multipliers.info() != Eigen::Success) return false;
     }
