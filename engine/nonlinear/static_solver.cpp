@@ -1122,6 +1122,13 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         // their own round-off.
         accuracy = solve_with_refinement(*solver, system_product, -r_free, du, 3, whole ? 1e-14 : 1e-10,
                                          whole ? &abs_product : nullptr, kSolveTolerance);
+        // A direct backend that iterates on a factorisation of another matrix (the
+        // multipliers' Schur complement) says how many iterations its last solve took.
+        if (const int its = solver->iterations(); its > 0) {
+          stats_.krylov_iterations += its;
+          log_.info("  linear solve: " + solver->name() + ", " + std::to_string(its) +
+                    " iteration(s), relative residual " + sci(accuracy.residual));
+        }
       }
       ++stats_.newton_iterations;
       stats_.refinement_steps += accuracy.steps;

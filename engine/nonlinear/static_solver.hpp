@@ -73,7 +73,7 @@ struct SolverStats {
   /// Equations of the contact surfaces when the contact passes were solved on the elastic
   /// factorisation kept for the run (their Schur complement factorised per pass); 0: not.
   int interface_equations = 0;
-  int krylov_iterations = 0;       ///< GMRES iterations preconditioned by a previous factorisation, or of an iterative solver
+  int krylov_iterations = 0;       ///< Krylov iterations: on a previous factorisation, of an iterative solver, or on the multipliers' Schur complement
   long system_entries = 0;         ///< stored entries of the last system matrix (this rank's columns)
   double resi_glob_rela = 0.0;     ///< RESI_GLOB_RELA reached at the last converged Newton iteration
 };
