@@ -13,6 +13,7 @@
 #include "engine/assembly/assembly.hpp"
 #include "engine/assembly/partition.hpp"
 #include "engine/core/error.hpp"
+#include "engine/core/memory.hpp"
 #include "engine/core/two_workers.hpp"
 #include "engine/nonlinear/nodal_forces.hpp"
 #include "engine/nonlinear/rigid_body.hpp"
@@ -736,6 +737,9 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     }
     if (changed > 0) {  // else K_ff's pattern is this one already
       a.resizeNonZeros(outer[nf]);
+      // Written once, as K_ff's arrays in assembly: on huge pages, one fault per 2 MB.
+      advise_huge_pages(a.innerIndexPtr(), sizeof(int) * static_cast<std::size_t>(outer[nf]));
+      advise_huge_pages(a.valuePtr(), sizeof(double) * static_cast<std::size_t>(outer[nf]));
       int* inner = a.innerIndexPtr();
       double* values = a.valuePtr();
       std::vector<int> contact_only;
