@@ -3,12 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <utility>
 #include <vector>
 
 #include <Eigen/SparseCholesky>
 
 #include "engine/core/error.hpp"
+#include "engine/core/memory.hpp"
 #include "engine/solver/krylov.hpp"
 
 namespace lunaster::engine {
@@ -262,6 +264,9 @@ class SaddleSolver final : public LinearSolver {
       outer[ju + 1] = outer[ju] + count;
     }
     schur_.resizeNonZeros(outer[nu]);
+    // Written once per factorisation: on huge pages, one fault per 2 MB (engine/core/memory.hpp).
+    advise_huge_pages(schur_.innerIndexPtr(), sizeof(int) * static_cast<std::size_t>(outer[nu]));
+    advise_huge_pages(schur_.valuePtr(), sizeof(double) * static_cast<std::size_t>(outer[nu]));
     int* inner = schur_.innerIndexPtr();
     double* values = schur_.valuePtr();
     for (int ju = 0; ju < nu; ++ju) {
