@@ -1,10 +1,12 @@
 /// Integration-point discretisation of the continuous formulation: the points of an
 /// integration rule on each slave cell (discretisation.hpp).
 #include <algorithm>
+#include <cstddef>
 
 #include "engine/contact/discretisation.hpp"
 #include "engine/contact/integration_rules.hpp"
 #include "engine/contact/surface_element.hpp"
+#include "engine/core/memory.hpp"
 
 namespace lunaster::engine::contact {
 
@@ -18,6 +20,13 @@ class IntegrationPoints final : public Discretisation {
 
   void build_points(const Mesh& mesh, int /*dim*/, int z, const ContactZone& zone,
                     std::vector<ContactPoint>& points) override {
+    // Sized once: a point is about 800 bytes (its linear gap), and growing the vector by
+    // doubling copied the 32,400 points of the 3D benchmark twice over onto fresh pages.
+    size_t count = points.size();
+    for (int c : zone.slave_cells)
+      count += contact_integration_rule(mesh.cell_types[c], zone.integration, zone.integration_order, zone.sub_elements).size();
+    points.reserve(count);
+    advise_huge_pages(points.data(), sizeof(ContactPoint) * count);
     for (int c : zone.slave_cells) {
       const CellType t = mesh.cell_types[c];
       for (const auto& q : contact_integration_rule(t, zone.integration, zone.integration_order, zone.sub_elements)) {

@@ -35,6 +35,7 @@ class NodeToSegment final : public Discretisation {
         for (int a = 0; a < nv; ++a) area[mesh.cell(c)[a]] += q.weight * sp.jacobian * radius * n[a];
       }
     }
+    points.reserve(points.size() + area.size());
     for (const auto& [node, a] : area) {
       ContactPoint p;
       p.zone = z;
