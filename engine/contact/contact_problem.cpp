@@ -9,6 +9,7 @@
 
 #include "engine/contact/surface_element.hpp"
 #include "engine/core/error.hpp"
+#include "engine/core/memory.hpp"
 #include "engine/core/two_workers.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 
@@ -580,7 +581,10 @@ void ContactProblem::add_to_system(const Vector& u, std::vector<Triplet>& tangen
       if (!reserved && i >= probe) {
         reserved = true;
         const size_t expected = first + (tangent.size() - first) * points_.size() / i * 9 / 8;
-        if (expected > tangent.capacity()) tangent.reserve(expected);
+        if (expected > tangent.capacity()) {
+          tangent.reserve(expected);
+          advise_huge_pages(tangent.data(), sizeof(Triplet) * expected);
+        }
       }
     }
     if (p.wjac == 0.0) continue;  // unpaired inactive points still hold their multiplier rows

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace lunaster::engine {
 
@@ -17,6 +18,17 @@ inline void advise_huge_pages(const void* p, std::size_t bytes) {
   const std::uintptr_t begin = (start + kHuge - 1) & ~(kHuge - 1);
   const std::uintptr_t end = (start + bytes) & ~(kHuge - 1);
   if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+}
+
+/// v.resize(n), with the part it newly allocates advised as huge pages before it is written
+/// (for vectors of several MB built once per pairing or factorisation).
+template <class T>
+void resize_on_huge_pages(std::vector<T>& v, std::size_t n) {
+  if (n > v.capacity()) {
+    v.reserve(n);
+    advise_huge_pages(v.data(), sizeof(T) * n);
+  }
+  v.resize(n);
 }
 
 }  // namespace lunaster::engine

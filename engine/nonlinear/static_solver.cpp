@@ -84,7 +84,7 @@ int position_in(const SparseMatrix& a, int i, int j) {
 void locate_triplets(const SparseMatrix& a, const std::vector<int>& free_index, const std::vector<Triplet>& contact,
                      std::vector<int>& pos) {
   const size_t n = contact.size();
-  pos.resize(n);
+  resize_on_huge_pages(pos, n);
   auto locate = [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
       const int i = free_index[contact[k].row()], j = free_index[contact[k].col()];
@@ -685,7 +685,7 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     }
     for (int j = 0; j < nf; ++j) start[j + 2] += mine(j);  // the diagonal
     for (int j = 0; j <= nf; ++j) start[j + 1] += start[j];
-    extra.resize(start[nf + 1]);
+    resize_on_huge_pages(extra, static_cast<size_t>(start[nf + 1]));
     for (const auto& tr : contact) {
       const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
       if (i >= 0 && j >= 0) extra[start[j + 1]++] = i;
