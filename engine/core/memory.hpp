@@ -20,14 +20,19 @@ inline void advise_huge_pages(const void* p, std::size_t bytes) {
   if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
 }
 
-/// v.resize(n), with the part it newly allocates advised as huge pages before it is written
-/// (for vectors of several MB built once per pairing or factorisation).
+/// v.reserve(n), a new allocation advised as huge pages before it is written (for vectors
+/// of several MB built once per pairing or factorisation).
+template <class T>
+void reserve_on_huge_pages(std::vector<T>& v, std::size_t n) {
+  if (n <= v.capacity()) return;
+  v.reserve(n);
+  advise_huge_pages(v.data(), sizeof(T) * n);
+}
+
+/// v.resize(n), its new allocation (if any) on huge pages as above.
 template <class T>
 void resize_on_huge_pages(std::vector<T>& v, std::size_t n) {
-  if (n > v.capacity()) {
-    v.reserve(n);
-    advise_huge_pages(v.data(), sizeof(T) * n);
-  }
+  reserve_on_huge_pages(v, n);
   v.resize(n);
 }
 

@@ -508,18 +508,22 @@ std::vector<int> StaticSolver::eliminate(const Constraints& cons, const std::vec
   // P_E as an m x n matrix (its rows at the eliminated equations), then A^T P_E.
   std::vector<Triplet> pe;
   for (int k = 0; k < p.outerSize(); ++k)
-    for (SparseMatrix::InnerIterator it(p, k); it; ++it) {
-      const int row = static_cast<int>(it.row());
-      if (index_of[row] >= 0) {
-        pe.emplace_back(index_of[row], k, it.value());
-      } else {
-        triplets.emplace_back(row, k, it.value());
-        triplets.emplace_back(k, row, it.value());
-      }
-    }
+    for (SparseMatrix::InnerIterator it(p, k); it; ++it)
+      if (index_of[it.row()] >= 0) pe.emplace_back(index_of[it.row()], k, it.value());
   SparseMatrix pe_m(m, n);
   pe_m.setFromTriplets(pe.begin(), pe.end());
   const SparseMatrix s = SparseMatrix(a.transpose()) * pe_m;
+  // The fill goes into triplets in one allocation (millions of terms in 3D: growing the
+  // vector by doubling copied it onto fresh pages several times over).
+  const std::size_t fill = 2 * (static_cast<std::size_t>(p.nonZeros()) - pe.size()) + static_cast<std::size_t>(s.nonZeros());
+  reserve_on_huge_pages(triplets, triplets.size() + fill);
+  for (int k = 0; k < p.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(p, k); it; ++it) {
+      const int row = static_cast<int>(it.row());
+      if (index_of[row] >= 0) continue;
+      triplets.emplace_back(row, k, it.value());
+      triplets.emplace_back(k, row, it.value());
+    }
   for (int k = 0; k < s.outerSize(); ++k)
     for (SparseMatrix::InnerIterator it(s, k); it; ++it) triplets.emplace_back(static_cast<int>(it.row()), k, it.value());
   return eqs;
@@ -757,7 +761,9 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
     locate_triplets(k, cons.free_index, contact, sys.contact_pos);
     sys.contact_unique.clear();
     {
-      std::vector<char> seen(static_cast<size_t>(k.nonZeros()), 0);  // no sort of millions of 3D positions
+      std::vector<char> seen;  // no sort of millions of 3D positions
+      resize_on_huge_pages(seen, static_cast<size_t>(k.nonZeros()));
+      reserve_on_huge_pages(sys.contact_unique, sys.contact_pos.size());
       for (int p : sys.contact_pos)
         if (p >= 0 && !seen[p]) seen[p] = 1, sys.contact_unique.push_back(p);
     }
