@@ -88,7 +88,7 @@ void read_petsc(const Args& solveur, engine::IterativeSettings& settings) {
 }
 
 /// SOLVEUR RENUM (the fill-reducing ordering, by code_aster's names for each METHODE) and,
-/// for MUMPS, GESTION_MEMOIRE.
+/// for MUMPS, GESTION_MEMOIRE and PCENT_PIVOT.
 void read_direct_solver(const Args& solveur, engine::NewtonOptions& options) {
   using O = engine::FactorOrdering;
   const std::string methode = solveur.text("METHODE");
@@ -106,6 +106,7 @@ void read_direct_solver(const Args& solveur, engine::NewtonOptions& options) {
   options.memory = memory == "IN_CORE"       ? engine::FactorMemory::InCore
                    : memory == "OUT_OF_CORE" ? engine::FactorMemory::OutOfCore
                                              : engine::FactorMemory::Auto;
+  if (solveur.has("PCENT_PIVOT")) options.workspace_relaxation = static_cast<int>(solveur.integer("PCENT_PIVOT"));
   const std::string renum = solveur.text("RENUM");
   options.ordering = renum == "METIS" ? O::Metis
                      : renum == "AMD" ? O::Amd

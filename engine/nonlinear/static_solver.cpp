@@ -1022,6 +1022,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           backend_solver = make_linear_solver(backend, settings);
         backend_solver->set_ordering(options_.ordering);
         backend_solver->set_memory(options_.memory);
+        backend_solver->set_workspace_relaxation(options_.workspace_relaxation);
       }
       LinearSolver* const solver = via_interface ? interface_.get() : backend_solver.get();
       const bool iterative = solver->iterative();

@@ -123,8 +123,14 @@ class LinearSolver {
   virtual void set_ordering(FactorOrdering /*ordering*/) {}
   /// Where the next factorisations keep their factors (MUMPS; the others in memory).
   virtual void set_memory(FactorMemory /*memory*/) {}
+  /// The working space the next factorisations start with, as a percentage added to the
+  /// analysis's estimate (MUMPS's ICNTL(14), code_aster's PCENT_PIVOT); 0: the backend's
+  /// default. MUMPS doubles it when a factorisation runs short, as before. The others size
+  /// their workspace exactly and ignore it.
+  virtual void set_workspace_relaxation(int /*percent*/) {}
   /// How the last factorisation held its factors, when it was not simply in memory as
-  /// usual ("out of core: ..."); empty otherwise.
+  /// usual ("out of core: ...", or what a workspace relaxation asked for came to); empty
+  /// otherwise.
   virtual std::string memory_used() const { return {}; }
   /// The ordering the last analysis used ("METIS (nested dissection of the node graph),
   /// given", "PORD", ...); empty for the backends that do not say.

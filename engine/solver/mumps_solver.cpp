@@ -84,6 +84,7 @@ class MumpsSolver final : public LinearSolver {
   void set_ordering(FactorOrdering ordering) override { ordering_ = ordering; }
   std::string ordering_used() const override;
   void set_memory(FactorMemory memory) override { memory_ = memory; }
+  void set_workspace_relaxation(int percent) override { relaxation_ = percent; }
   std::string memory_used() const override { return memory_note_; }
   bool takes_distributed() const override { return true; }
 
@@ -133,6 +134,7 @@ class MumpsSolver final : public LinearSolver {
   FactorOrdering ordering_ = FactorOrdering::Auto;
   FactorOrdering given_ = FactorOrdering::Auto;  ///< the ordering given to the last analysis (ICNTL(7) = 1)
   FactorMemory memory_ = FactorMemory::Auto;
+  int relaxation_ = 0;       ///< ICNTL(14) for the next analyses; 0: MUMPS's default
   std::string memory_note_;  ///< memory_used() of the last analysis
 };
 
@@ -246,6 +248,9 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     id_.icntl[2] = -1;
     id_.icntl[3] = 0;
     id_.icntl[23] = 1;  // ICNTL(24): null pivot detection
+    // ICNTL(14): the working space beyond the analysis's estimate (PCENT_PIVOT). MUMPS's own
+    // default unless one was asked for (5.5 on one process: 5 % for SYM = 1, 20 % otherwise).
+    if (relaxation_ > 0) id_.icntl[13] = relaxation_;
     // ICNTL(7): the fill-reducing ordering. On sparse rows (2D meshes: 18 to 26 entries a row
     // for QUAD4/QUAD8) AMD beat the automatic choice (PORD's nested dissection: Debian 12's
     // MUMPS 5.5 is built without METIS and SCOTCH, and says so when asked for them), whose
@@ -320,6 +325,11 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     id_.icntl[13] = 2 * std::max(20, id_.icntl[13]);
     factorise_numerically();  // again, same analysis
   }
+  // An asked-for relaxation: what the factorisation allocated with it, in memory (INFOG(18), the
+  // largest process's MB), and the relaxation it ended with (doubled if it ran short).
+  if (relaxation_ > 0 && id_.infog[0] >= 0 && id_.icntl[21] == 0)
+    memory_note_ = "in memory, " + std::to_string(id_.infog[17]) + " MB a process (working space: the analysis's "
+                   "estimate + " + std::to_string(id_.icntl[13]) + " %)";
   analysed_ = id_.infog[0] >= 0;  // reuse an analysis only after a good factorisation
   if (id_.infog[0] == -10 && sym == 1) {
     // LDL^T without pivoting met a zero/negative pivot: redo as symmetric

@@ -148,6 +148,10 @@ class SaddleSolver final : public LinearSolver {
     memory_ = memory;
     if (direct_) direct_->set_memory(memory);
   }
+  void set_workspace_relaxation(int percent) override {
+    relaxation_ = percent;
+    if (direct_) direct_->set_workspace_relaxation(percent);
+  }
   void set_layout(SystemLayout layout) override {  // the direct backend's (S has no use for it)
     if (direct_) direct_->set_layout(std::move(layout));
     else layout_ = std::move(layout), has_layout_ = true;
@@ -163,6 +167,7 @@ class SaddleSolver final : public LinearSolver {
       direct_ = make_linear_solver(direct_kind_);
       direct_->set_ordering(ordering_);
       direct_->set_memory(memory_);
+      direct_->set_workspace_relaxation(relaxation_);
       if (has_layout_) direct_->set_layout(std::move(layout_)), has_layout_ = false;
     }
     return *direct_;
@@ -285,6 +290,7 @@ class SaddleSolver final : public LinearSolver {
   std::function<void(const std::string&)> note_;
   FactorOrdering ordering_ = FactorOrdering::Auto;
   FactorMemory memory_ = FactorMemory::Auto;
+  int relaxation_ = 0;
   mutable SystemLayout layout_;  ///< given before the direct backend existed
   mutable bool has_layout_ = false;
   std::unique_ptr<Split> split_data_ = std::make_unique<Split>();

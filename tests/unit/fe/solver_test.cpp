@@ -747,6 +747,32 @@ TEST(Solvers, MumpsOutOfCoreAgreesWithInCore) {
   }
 }
 
+TEST(Solvers, MumpsWorkspaceRelaxationIsAllocatedAndSaid) {
+  // SOLVEUR PCENT_PIVOT (ICNTL(14)): the factorisation allocates the analysis's estimate plus
+  // that percentage, says so, and solves as without it. Not given: MUMPS's default, nothing said.
+  const SparseMatrix a = saddle_block();
+  const Vector f = rhs(static_cast<int>(a.rows()));
+  auto plain = make_linear_solver(SolverKind::Mumps);
+  plain->factorize(a, MatrixKind::SymmetricIndefinite);
+  EXPECT_EQ(plain->memory_used(), "");
+  const Vector ref = plain->solve(f);
+  long megabytes[2] = {0, 0};
+  const int percents[2] = {20, 400};
+  for (int k = 0; k < 2; ++k) {
+    auto mumps = make_linear_solver(SolverKind::Mumps);
+    mumps->set_workspace_relaxation(percents[k]);
+    mumps->factorize(a, MatrixKind::SymmetricIndefinite);
+    const std::string note = mumps->memory_used();
+    const std::string tail = " MB a process (working space: the analysis's estimate + " + std::to_string(percents[k]) + " %)";
+    ASSERT_EQ(note.rfind("in memory, ", 0), 0u) << note;
+    ASSERT_NE(note.find(tail), std::string::npos) << note;
+    megabytes[k] = std::stol(note.substr(11));
+    EXPECT_LT((mumps->solve(f) - ref).norm(), 1e-12 * ref.norm());
+  }
+  // Five times the estimate against 1.2 times it: the allocation grows with it.
+  EXPECT_GT(megabytes[1], 2 * megabytes[0]) << megabytes[0] << " MB with 20 %, " << megabytes[1] << " MB with 400 %";
+}
+
 TEST(Solvers, CholmodAndUmfpackTakeTheOrderingAskedFor) {
   // SOLVEUR RENUM with MULT_FRONT and LDLT: CHOLMOD (an SPD system) and UMFPACK (an
   // indefinite one) order as asked and say so; every ordering gives the same solution.
