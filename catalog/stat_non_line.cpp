@@ -128,7 +128,7 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                        "Working space of MUMPS's factorisation beyond its analysis's estimate, in "
                                        "percent (ICNTL(14)): room for the pivots an indefinite system delays. "
                                        "When a factorisation runs short it is doubled and the factorisation "
-                                       "redone, three times at most, as code_aster does. Given, the log says what "
+                                       "redone (three times at most). Given, the log says what "
                                        "the factorisation allocated with it. Absent: MUMPS's default (MUMPS 5.5 "
                                        "on one process: 5 % for an SPD system, 20 % otherwise)")
                                    .range(1, std::nullopt)},
