@@ -120,7 +120,8 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                     "$TMPDIR, else /tmp; memory then holds the fronts being factorised, each solve "
                                     "reads the factors back); AUTO in memory unless MUMPS's analysis estimates "
                                     "more than 80 % of the memory available to the process (the machine's, or its memory "
-                                    "cgroup's limit, shared among the MPI ranks on the machine; the log says so). "
+                                    "cgroup's limit, shared among the MPI ranks on the machine, and no more than "
+                                    "the run's memory limit leaves: memory_limit, --memory-limit; the log says so). "
                                     "code_aster's EVAL is not offered")
                                    .into_values({"AUTO", "IN_CORE", "OUT_OF_CORE"})
                                    .def("AUTO"),

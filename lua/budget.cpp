@@ -1,6 +1,5 @@
 #include "lua/budget.hpp"
 
-#include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
 #include <unistd.h>
@@ -16,6 +15,7 @@
 
 #include "catalog/args.hpp"
 #include "engine/core/error.hpp"
+#include "engine/core/memory.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 #include "lua/bridge.hpp"
 
@@ -194,18 +194,7 @@ double default_memory_budget_mb() {
   return std::floor(static_cast<double>(pages) * static_cast<double>(page_size) / kMegabyte / 2.0);
 }
 
-std::size_t resident_bytes() {
-  const int fd = open("/proc/self/statm", O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return 0;
-  char buffer[256];
-  const ssize_t n = read(fd, buffer, sizeof buffer - 1);
-  close(fd);
-  if (n <= 0) return 0;
-  buffer[n] = '\0';
-  unsigned long long size = 0, resident = 0;
-  if (std::sscanf(buffer, "%llu %llu", &size, &resident) != 2) return 0;
-  return static_cast<std::size_t>(resident) * static_cast<std::size_t>(sysconf(_SC_PAGE_SIZE));
-}
+std::size_t resident_bytes() { return engine::resident_bytes(); }
 
 BudgetGuard::BudgetGuard(const Budget& budget, std::string deck)
     : budget_(budget), deck_(std::move(deck)), deck_thread_(pthread_self()) {
@@ -218,6 +207,7 @@ BudgetGuard::BudgetGuard(const Budget& budget, std::string deck)
     // The Lua heap may take the process up to the budget from where it stands now.
     const std::size_t now = resident_bytes();
     lua_cap_ = memory_bytes_ > now ? memory_bytes_ - now : 0;
+    engine::set_memory_budget(memory_bytes_);  // what the solvers may plan for (MUMPS's AUTO)
   }
   if (budget_.seconds || budget_.megabytes) watchdog_ = std::thread([this] { watch(); });
 }
@@ -231,6 +221,7 @@ void BudgetGuard::stop() {
   }
   wake_.notify_all();
   if (watchdog_.joinable()) watchdog_.join();
+  if (budget_.megabytes) engine::set_memory_budget(0);
   // A deck that ends past its deadline (the last command finished during the grace) is over budget.
   if (budget_.seconds && std::chrono::steady_clock::now() >= deadline_) time_up_ = true;
 }

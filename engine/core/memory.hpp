@@ -1,5 +1,5 @@
 #pragma once
-/// Page-level advice for large arrays.
+/// Page-level advice for large arrays; the process's resident memory and the run's budget.
 #include <sys/mman.h>
 
 #include <cstddef>
@@ -35,5 +35,15 @@ void resize_on_huge_pages(std::vector<T>& v, std::size_t n) {
   reserve_on_huge_pages(v, n);
   v.resize(n);
 }
+
+/// Resident set size of this process in bytes (/proc/self/statm), 0 if unknown.
+std::size_t resident_bytes();
+
+/// The resident memory this process may reach, in bytes: the deck's memory budget
+/// (`memory_limit` in its header or .export, `--memory-limit`), set by the runner while the
+/// deck runs (lua/budget.hpp), 0 when there is none. Choices made from the memory available
+/// (MUMPS's GESTION_MEMOIRE='AUTO') keep within it.
+void set_memory_budget(std::size_t bytes);
+std::size_t memory_budget();
 
 }  // namespace lunaster::engine

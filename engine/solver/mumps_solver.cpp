@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "engine/core/error.hpp"
+#include "engine/core/memory.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 #include "engine/solver/backends.hpp"
 #include "engine/solver/blas.hpp"
@@ -151,7 +152,9 @@ double number_in(const char* path) {
 
 /// Memory this process may still take, in MB: the machine's MemAvailable, or less where the
 /// process's memory cgroup (v1 or v2, as /proc/self/cgroup names it) leaves less under its limit
-/// (a container), shared among the ranks of the run on this machine. Negative when unknown.
+/// (a container), shared among the ranks of the run on this machine; and no more than the run's
+/// memory budget leaves this process (engine/core/memory.hpp: a budget is per process). Negative
+/// when unknown.
 double available_megabytes() {
   std::FILE* f = std::fopen("/proc/meminfo", "r");
   if (!f) return -1.0;
@@ -185,7 +188,10 @@ double available_megabytes() {
     used = number_in(("/sys/fs/cgroup" + v2 + "/memory.current").c_str());
   }
   if (limit > 0.0 && limit < 1e18 && used >= 0.0) bytes = std::min(bytes, std::max(0.0, limit - used));
-  return bytes / (1024.0 * 1024.0) / parallel::ranks_on_this_machine();
+  bytes /= parallel::ranks_on_this_machine();
+  if (const std::size_t budget = memory_budget(); budget > 0)
+    bytes = std::min(bytes, std::max(0.0, static_cast<double>(budget) - static_cast<double>(resident_bytes())));
+  return bytes / (1024.0 * 1024.0);
 }
 
 void MumpsSolver::choose_memory() {
@@ -196,7 +202,7 @@ void MumpsSolver::choose_memory() {
   double available = -1.0;
   if (memory_ == FactorMemory::Auto) {
     available = available_megabytes();
-    double short_of_memory = available > 0.0 && id_.infog[15] > 0.8 * available ? 1.0 : 0.0;
+    double short_of_memory = available >= 0.0 && id_.infog[15] > 0.8 * available ? 1.0 : 0.0;
     if (parallel::size() > 1) short_of_memory = parallel::max_over_ranks(short_of_memory);  // every rank alike
     out = short_of_memory > 0.0;
   }
@@ -209,7 +215,9 @@ void MumpsSolver::choose_memory() {
   std::snprintf(id_.ooc_prefix, sizeof id_.ooc_prefix, "%s", prefix.c_str());
   memory_note_ = "out of core, factors in " + dir + " (estimated " + std::to_string(id_.infog[25]) +
                  " MB a process, against " + std::to_string(id_.infog[15]) + " MB in core" +
-                 (available > 0.0 ? ", " + std::to_string(static_cast<long>(available)) + " MB available)" : ")");
+                 (available >= 0.0 ? ", " + std::to_string(static_cast<long>(available)) + " MB available" +
+                                         (memory_budget() > 0 ? " under the run's memory limit)" : ")")
+                                   : ")");
 }
 
 void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {

@@ -15,6 +15,7 @@
 #include "engine/assembly/assembly.hpp"
 #include "engine/assembly/dof_map.hpp"
 #include "engine/core/error.hpp"
+#include "engine/core/memory.hpp"
 #include "engine/solver/backends.hpp"
 #include "engine/solver/interface_solver.hpp"
 #include "engine/solver/linear_solver.hpp"
@@ -745,6 +746,30 @@ TEST(Solvers, MumpsOutOfCoreAgreesWithInCore) {
     }
     EXPECT_LT((a * x - f).norm(), 1e-12 * (a * x).cwiseAbs().sum());
   }
+}
+
+TEST(Solvers, MumpsAutoGoesOutOfCoreWithinTheRunsMemoryLimit) {
+  // GESTION_MEMOIRE='AUTO' with a memory limit that leaves this process 1 MB (less than the
+  // in-core estimate): the factors go to disk, the note says why, the solution is the same.
+  const SparseMatrix a = saddle_block();
+  const Vector f = rhs(static_cast<int>(a.rows()));
+  auto in_core = make_linear_solver(SolverKind::Mumps);
+  in_core->factorize(a, MatrixKind::SymmetricIndefinite);  // AUTO, no limit: this machine has room
+  EXPECT_EQ(in_core->memory_used(), "");
+  const Vector ref = in_core->solve(f);
+  auto limited = make_linear_solver(SolverKind::Mumps);
+  set_memory_budget(resident_bytes() + (std::size_t{1} << 20));
+  try {
+    limited->factorize(a, MatrixKind::SymmetricIndefinite);
+  } catch (...) {
+    set_memory_budget(0);
+    throw;
+  }
+  set_memory_budget(0);
+  const std::string note = limited->memory_used();
+  EXPECT_EQ(note.rfind("out of core, factors in ", 0), 0u) << note;
+  EXPECT_NE(note.find(" MB available under the run's memory limit)"), std::string::npos) << note;
+  EXPECT_LT((limited->solve(f) - ref).norm(), 1e-12 * ref.norm());
 }
 
 TEST(Solvers, MumpsWorkspaceRelaxationIsAllocatedAndSaid) {

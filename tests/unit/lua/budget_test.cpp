@@ -12,6 +12,7 @@
 #include <sstream>
 #include <vector>
 
+#include "engine/core/memory.hpp"
 #include "lua/budget.hpp"
 #include "lua/runner.hpp"
 
@@ -130,6 +131,24 @@ TEST(BudgetHeader, CommandLineValuesOverrideTheHeader) {
   EXPECT_EQ(lua::budget_text(0.25), "0.25");
   EXPECT_GT(lua::default_memory_budget_mb(), 0.0);
   EXPECT_GT(lua::resident_bytes(), 0u);
+}
+
+TEST(Budget, MemoryLimitIsWhatTheSolversPlanForWhileTheDeckRuns) {
+  // MUMPS's GESTION_MEMOIRE='AUTO' reads the budget from the engine: set while a guard with a
+  // memory limit lives, cleared when it stops; a time limit alone sets none.
+  ASSERT_EQ(engine::memory_budget(), 0u);
+  {
+    lua::Budget budget;
+    budget.megabytes = 300;
+    lua::BudgetGuard guard(budget, "deck.lua");
+    EXPECT_EQ(engine::memory_budget(), std::size_t{300} << 20);
+    guard.stop();
+    EXPECT_EQ(engine::memory_budget(), 0u);
+  }
+  lua::Budget time_only;
+  time_only.seconds = 60;
+  lua::BudgetGuard guard(time_only, "deck.lua");
+  EXPECT_EQ(engine::memory_budget(), 0u);
 }
 
 TEST(BudgetRun, LuaLoopIsStoppedAtTheDeckLineAndPcallCannotCatchIt) {
