@@ -194,8 +194,6 @@ double default_memory_budget_mb() {
   return std::floor(static_cast<double>(pages) * static_cast<double>(page_size) / kMegabyte / 2.0);
 }
 
-std::size_t resident_bytes() { return engine::resident_bytes(); }
-
 BudgetGuard::BudgetGuard(const Budget& budget, std::string deck)
     : budget_(budget), deck_(std::move(deck)), deck_thread_(pthread_self()) {
   using clock = std::chrono::steady_clock;
@@ -205,7 +203,7 @@ BudgetGuard::BudgetGuard(const Budget& budget, std::string deck)
   if (budget_.megabytes) {
     memory_bytes_ = static_cast<std::size_t>(*budget_.megabytes * kMegabyte);
     // The Lua heap may take the process up to the budget from where it stands now.
-    const std::size_t now = resident_bytes();
+    const std::size_t now = engine::resident_bytes();
     lua_cap_ = memory_bytes_ > now ? memory_bytes_ - now : 0;
     engine::set_memory_budget(memory_bytes_);  // what the solvers may plan for (MUMPS's AUTO)
   }
@@ -286,7 +284,7 @@ void BudgetGuard::watch() {
       if (now >= grace_end) hard_stop(static_cast<int>(ErrorKind::TimeLimit), time_message());
     }
     if (budget_.megabytes) {
-      const std::size_t resident = resident_bytes();
+      const std::size_t resident = engine::resident_bytes();
       if (resident > memory_bytes_) {
         memory_exceeded_ = true;
         hard_stop(static_cast<int>(ErrorKind::OutOfMemory),

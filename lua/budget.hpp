@@ -41,9 +41,6 @@ std::optional<double> parse_budget_value(const std::string& text);
 std::string budget_text(double value);
 /// Half of the machine's physical memory, in MB: `lunaster verify`'s default memory budget.
 double default_memory_budget_mb();
-/// Resident set size of this process in bytes (/proc/self/statm), 0 if unknown.
-std::size_t resident_bytes();
-
 /// Enforces a budget on this process while one deck runs.
 ///
 /// Time: at the deadline a watchdog thread raises a flag and signals the deck's thread,

@@ -44,7 +44,8 @@ struct NewtonOptions {
   FactorOrdering ordering = FactorOrdering::Auto;
   /// Where MUMPS keeps its factors (SOLVEUR GESTION_MEMOIRE).
   FactorMemory memory = FactorMemory::Auto;
-  int workspace_relaxation = 0;  ///< SOLVEUR PCENT_PIVOT (MUMPS's ICNTL(14), %); 0: MUMPS's default
+  /// MUMPS's working space beyond its estimate, in % (SOLVEUR PCENT_PIVOT, ICNTL(14)); 0: its default.
+  int workspace_relaxation = 0;
   /// Print each Krylov iteration's residual in the log (code_aster's INFO=2).
   bool krylov_history = false;
   int subdivide_levels = 0;  ///< on a Newton failure, split the step this many times at most

@@ -130,7 +130,7 @@ TEST(BudgetHeader, CommandLineValuesOverrideTheHeader) {
   EXPECT_EQ(lua::budget_text(300), "300");
   EXPECT_EQ(lua::budget_text(0.25), "0.25");
   EXPECT_GT(lua::default_memory_budget_mb(), 0.0);
-  EXPECT_GT(lua::resident_bytes(), 0u);
+  EXPECT_GT(engine::resident_bytes(), 0u);
 }
 
 TEST(Budget, MemoryLimitIsWhatTheSolversPlanForWhileTheDeckRuns) {
