@@ -207,8 +207,16 @@ class StaticSolver {
   long interface_reference_ = -1;  ///< elastic generation of the factorised reference
   SystemState interface_state_;
   std::vector<char> on_interface_;  ///< per free equation: on the interface
-  /// Decides interface_use_ for this run (first contact solve).
-  void choose_interface(const Constraints& cons);
+  /// With an interface of the components the contact terms reach (choose_interface): terms
+  /// at most this large count for nothing when it is chosen and checked (kNegligibleTerm of
+  /// the largest term of the first contact solve), and the share of the reference's
+  /// factorisation its dense one may cost. Both 0 with the whole surfaces.
+  double interface_floor_ = 0.0;
+  double interface_dense_share_ = 0.0;
+  static constexpr double kNegligibleTerm = 1e-12;
+  /// Decides interface_use_ for this run (first contact solve), from the contact terms of
+  /// that solve (`contact`).
+  void choose_interface(const Constraints& cons, const std::vector<Triplet>& contact);
   /// Factorises the interface solver's reference from K_ff (once per run); on failure the
   /// interface solver is dropped and the whole system is solved from then on.
   void factorize_interface_reference(SystemCache& sys);

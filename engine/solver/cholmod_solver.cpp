@@ -19,6 +19,7 @@
 #include <Eigen/Dense>
 
 #include "engine/core/error.hpp"
+#include "engine/core/memory.hpp"
 #include "engine/core/two_workers.hpp"
 #include "engine/solver/backends.hpp"
 #include "engine/solver/blas.hpp"
@@ -147,7 +148,8 @@ std::vector<int> rcm_of_upper(int ng, const std::vector<int>& qp, const std::vec
 /// graph is several times cheaper for the same fill. Empty if the ordering fails, or, for AMD
 /// and METIS, if the matrix has few such runs (the caller then orders the equations). With
 /// `last` (AMD only), the equations it flags come after all the others (constrained AMD, CAMD;
-/// a node's equations share a pattern, so they share their flag).
+/// a run of equations is split where the flag changes: a node may have only its normal
+/// component on the interface).
 std::vector<int> node_graph_ordering(const SparseMatrix& a, cholmod_common* common, GraphOrdering ordering,
                                      const std::vector<char>* last = nullptr) {
   const int n = static_cast<int>(a.cols());
@@ -155,7 +157,8 @@ std::vector<int> node_graph_ordering(const SparseMatrix& a, cholmod_common* comm
   const int* i = a.innerIndexPtr();
   std::vector<int> group_of(n), start;
   for (int j = 0; j < n; ++j) {
-    const bool same = j > 0 && p[j + 1] - p[j] == p[j] - p[j - 1] && std::equal(i + p[j], i + p[j + 1], i + p[j - 1]);
+    const bool same = j > 0 && p[j + 1] - p[j] == p[j] - p[j - 1] && std::equal(i + p[j], i + p[j + 1], i + p[j - 1]) &&
+                      (!last || (*last)[j] == (*last)[j - 1]);
     if (!same) start.push_back(j);
     group_of[j] = static_cast<int>(start.size()) - 1;
   }
@@ -192,7 +195,7 @@ std::vector<int> node_graph_ordering(const SparseMatrix& a, cholmod_common* comm
     // would be ordered as the graph of A A^T, whose nodes are linked to their neighbours'
     // neighbours: twice the operations of this ordering on 3D meshes.
     if (!cholmod_metis(&q, nullptr, 0, 0, gperm.data(), common)) return {};
-  } else if (last) {
+  } else if (last && ordering == GraphOrdering::Amd) {
     // CAMD: the groups of `last` equations after all the others.
     std::vector<int> cmember(ng);
     for (int g = 0; g < ng; ++g) cmember[g] = (*last)[start[g]] ? 1 : 0;
@@ -539,7 +542,7 @@ class CholmodInterfaceSolver final : public InterfaceSolver {
   CholmodInterfaceSolver(const CholmodInterfaceSolver&) = delete;
   CholmodInterfaceSolver& operator=(const CholmodInterfaceSolver&) = delete;
 
-  void factorize_reference(SparseMatrix& r) override;
+  bool factorize_reference(SparseMatrix& r, double max_dense_share) override;
   void factorize(const SparseMatrix& a, MatrixKind kind) override;
   Vector solve(const Vector& b) const override;
   std::string name() const override { return "CHOLMOD with the contact interface condensed"; }
@@ -551,24 +554,32 @@ class CholmodInterfaceSolver final : public InterfaceSolver {
   mutable cholmod_common common_{};
   cholmod_factor* factor_ = nullptr;
   SweepPlan plan_;        ///< how the solves share the factor's supernodes
-  Eigen::MatrixXd l_ii_;  ///< trailing block of L (lower triangle)
-  Eigen::MatrixXd g_;     ///< L_II L_II^T - R_II
-  Eigen::MatrixXd s_;     ///< the last factorised Schur complement, as dsytrf left it
+  // m x m, column-major, on huge pages (each is 23 MB on the CONTINUE 3D benchmark, whose
+  // first touch of 4 kB pages cost more than filling them).
+  std::vector<double> l_ii_;  ///< trailing block of L (lower triangle)
+  std::vector<double> g_;     ///< L_II L_II^T - R_II (lower triangle)
+  std::vector<double> s_;     ///< the last factorised Schur complement, as dsytrf left it
   std::vector<int> pivots_;
+  bool wide_ = false;  ///< two BLAS threads for the factorisations (a 3D-sized factor)
   bool ready_ = false;
+  Eigen::Map<const Eigen::MatrixXd> l_ii() const {
+    const auto m = static_cast<Eigen::Index>(interface_.size());
+    return {l_ii_.data(), m, m};
+  }
 };
 
-void CholmodInterfaceSolver::factorize_reference(SparseMatrix& r) {
+bool CholmodInterfaceSolver::factorize_reference(SparseMatrix& r, double max_dense_share) {
   ready_ = false;
   if (factor_) cholmod_free_factor(&factor_, &common_);
-  l_ii_.resize(0, 0);
-  g_.resize(0, 0);
+  std::vector<double>().swap(l_ii_);
+  std::vector<double>().swap(g_);
   LUNASTER_ASSERT(r.isCompressed() && r.rows() == r.cols(), "interface solver: a square compressed reference");
   const int n = static_cast<int>(r.cols()), m = static_cast<int>(interface_.size());
   slot_.assign(n, -1);
   // The interface last, the interior before it, both in constrained AMD's order (CAMD on the
-  // node graph). CAMD's order is a postorder of its own elimination tree: CHOLMOD's postorder
-  // would interleave the interface with the subtrees hanging from it, so none is asked for.
+  // node graph), except for 3D systems (below). CAMD's order is a postorder of its own
+  // elimination tree: CHOLMOD's postorder would interleave the interface with the subtrees
+  // hanging from it, so none is asked for.
   // On the 2D contact benchmark at k = 32 this factor needs 2.1e10 operations, fewer than
   // AMD's for the glued mesh of the same size (2.4e10); AMD's order with the interface moved
   // last needed 3.1e10.
@@ -576,16 +587,37 @@ void CholmodInterfaceSolver::factorize_reference(SparseMatrix& r) {
   cholmod_sparse view = upper_view(r, upper_count);
   std::vector<char> on_interface(n, 0);
   for (int eq : interface_) on_interface[eq] = 1;
-  std::vector<int> perm = node_graph_ordering(r, &common_, GraphOrdering::Amd, &on_interface);
-  if (perm.empty()) {
-    perm.resize(n);
-    std::vector<int> cmember(n);
-    for (int eq = 0; eq < n; ++eq) cmember[eq] = on_interface[eq];
-    if (!cholmod_camd(&view, nullptr, 0, cmember.data(), perm.data(), &common_))
-      throw SolveError("CHOLMOD: CAMD ordering failed");
+  auto interface_last = [&](const std::vector<int>& order) {
+    if (order.size() != static_cast<std::size_t>(n)) return false;
+    for (int k = n - m; k < n; ++k)
+      if (!on_interface[order[k]]) return false;
+    return true;
+  };
+  // A 3D system (over 40 entries a column): nested dissection of the node graph (METIS), the
+  // interface then moved last. On the SSNP121 CONTINUE 3D benchmark, the normal components
+  // of the contact surfaces last, 5.4e9 operations against CAMD's 8.8e9, for 0.07 s of METIS;
+  // in 2D CAMD's order is the better one and METIS slow (CholmodSolver::factorize).
+  std::vector<int> perm;
+  if (static_cast<double>(r.nonZeros()) > 40.0 * static_cast<double>(n)) {
+    perm = node_graph_ordering(r, &common_, GraphOrdering::Metis, &on_interface);
+    std::stable_partition(perm.begin(), perm.end(), [&on_interface](int eq) { return !on_interface[eq]; });
   }
-  for (int k = n - m; k < n; ++k)
-    if (!on_interface[perm[k]]) throw SolveError("CHOLMOD: CAMD did not order the interface last");
+  if (!interface_last(perm)) {
+    perm = node_graph_ordering(r, &common_, GraphOrdering::Amd, &on_interface);
+    if (perm.empty()) {
+      perm.resize(n);
+      std::vector<int> cmember(n);
+      for (int eq = 0; eq < n; ++eq) cmember[eq] = on_interface[eq];
+      if (!cholmod_camd(&view, nullptr, 0, cmember.data(), perm.data(), &common_))
+        throw SolveError("CHOLMOD: CAMD ordering failed");
+    }
+    if (!interface_last(perm)) throw SolveError("CHOLMOD: CAMD did not order the interface last");
+  }
+  factor_ = cholmod_analyze_p(&view, perm.data(), nullptr, 0, &common_);
+  if (factor_ && max_dense_share > 0.0 && static_cast<double>(m) * m * m / 3.0 > max_dense_share * common_.fl) {
+    cholmod_free_factor(&factor_, &common_);
+    return false;
+  }
   for (int k = n - m; k < n; ++k) slot_[perm[k]] = k - (n - m);
   // Unit diagonals where K has none (multipliers), restored below.
   std::vector<std::pair<double*, double>> saved;
@@ -601,7 +633,12 @@ void CholmodInterfaceSolver::factorize_reference(SparseMatrix& r) {
   auto restore = [&saved] {
     for (auto& [where, value] : saved) *where = value;
   };
-  factor_ = cholmod_analyze_p(&view, perm.data(), nullptr, 0, &common_);
+  // Two BLAS threads for a factor of 3D size (CholmodSolver::factorize's rule), for the
+  // factorisation and the dense interface products below.
+  constexpr double kWideEntries = 2e6, kWideColumn = 200.0;
+  const double entries = factor_ ? static_cast<double>(factor_->xsize) : 0.0;
+  wide_ = factor_ && factor_->is_super && entries > kWideEntries && entries > kWideColumn * static_cast<double>(n);
+  const WideBlas threads(wide_);
   const int ok = factor_ ? cholmod_factorize(&view, factor_, &common_) : 0;
   // A pivot that lost 10 digits is a rigid-body mode (the driver's check, which this
   // factorisation replaces).
@@ -626,38 +663,52 @@ void CholmodInterfaceSolver::factorize_reference(SparseMatrix& r) {
   const auto* fperm = static_cast<const int*>(factor_->Perm);
   LUNASTER_ASSERT(factor_->is_super && factor_->is_ll, "interface solver: a supernodal LL^T factor");
   for (int k = n - m; k < n; ++k) LUNASTER_ASSERT(slot_[fperm[k]] == k - (n - m), "interface solver: the interface is not last");
-  l_ii_ = Eigen::MatrixXd::Zero(m, m);
+  const auto mm = static_cast<std::size_t>(m) * static_cast<std::size_t>(m);
+  resize_on_huge_pages(l_ii_, mm);
   const int first = n - m;
   for (size_t sn = 0; sn < factor_->nsuper; ++sn) {
     if (super[sn + 1] <= first) continue;
     const int nsrow = pi[sn + 1] - pi[sn];
     for (int c = std::max(super[sn], first); c < super[sn + 1]; ++c) {
       const double* col = lx + px[sn] + static_cast<std::ptrdiff_t>(c - super[sn]) * nsrow;
-      for (int k = c - super[sn]; k < nsrow; ++k) l_ii_(ls[pi[sn] + k] - first, c - first) = col[k];
+      double* to = l_ii_.data() + static_cast<std::size_t>(c - first) * m;
+      for (int k = c - super[sn]; k < nsrow; ++k) to[ls[pi[sn] + k] - first] = col[k];
     }
   }
-  // G = L_II L_II^T - D_II: L_II^T, multiplied from the left by the triangle L_II (dtrmm).
-  g_ = l_ii_.transpose();
-  cblas_dtrmm(CblasColMajor, CblasLeft, CblasLower, CblasNoTrans, CblasNonUnit, m, m, 1.0, l_ii_.data(), m,
-              g_.data(), m);
-  for (int eq : unit_diagonal) g_(slot_[eq], slot_[eq]) -= 1.0;
+  // G = L_II L_II^T - D_II, its lower triangle, a panel of columns of L_II at a time: the
+  // panel from column k0 is zero above row k0, so it adds to G's trailing block only
+  // (dsyrk; OpenBLAS's dtrmm ran at a third of its speed on the 1,715 equations above).
+  resize_on_huge_pages(g_, mm);
+  constexpr int kPanel = 128;
+  for (int k0 = 0; k0 < m; k0 += kPanel) {
+    const int width = std::min(kPanel, m - k0);
+    const std::size_t at = static_cast<std::size_t>(k0) * m + k0;
+    cblas_dsyrk(CblasColMajor, CblasLower, CblasNoTrans, m - k0, width, 1.0, l_ii_.data() + at, m, 1.0,
+                g_.data() + at, m);
+  }
+  for (int eq : unit_diagonal) g_[static_cast<std::size_t>(slot_[eq]) * (m + 1)] -= 1.0;
+  return true;
 }
 
 void CholmodInterfaceSolver::factorize(const SparseMatrix& a, MatrixKind /*kind*/) {
   ready_ = false;
   if (!factor_) throw InternalError("interface solver: factorize called before factorize_reference");
   const int m = static_cast<int>(interface_.size());
-  s_ = g_;
+  if (s_.size() != g_.size()) resize_on_huge_pages(s_, g_.size());
+  std::copy(g_.begin(), g_.end(), s_.begin());
   for (int eq : interface_)
     for (SparseMatrix::InnerIterator it(a, eq); it; ++it)
-      if (slot_[it.row()] >= 0) s_(slot_[it.row()], slot_[eq]) += it.value();
+      if (slot_[it.row()] >= slot_[eq]) s_[static_cast<std::size_t>(slot_[eq]) * m + slot_[it.row()]] += it.value();
   pivots_.assign(std::max(m, 1), 0);
   int info = 0, lwork = -1;
   double query = 0.0;
   dsytrf_("L", &m, s_.data(), &m, pivots_.data(), &query, &lwork, &info, 1);
   lwork = std::max(1, static_cast<int>(query));
   std::vector<double> work(lwork);
-  dsytrf_("L", &m, s_.data(), &m, pivots_.data(), work.data(), &lwork, &info, 1);
+  {
+    const WideBlas threads(wide_);
+    dsytrf_("L", &m, s_.data(), &m, pivots_.data(), work.data(), &lwork, &info, 1);
+  }
   if (info > 0)
     throw SolveError("the contact interface's Schur complement is singular (LAPACK dsytrf: zero pivot " +
                      std::to_string(info) + " of " + std::to_string(m) + ")");
@@ -672,11 +723,11 @@ Vector CholmodInterfaceSolver::solve(const Vector& b) const {
   Vector y(n);
   for (int k = 0; k < n; ++k) y[k] = b[perm[k]];
   forward_sweep(factor_, plan_, y);
-  Vector x_i = l_ii_.triangularView<Eigen::Lower>() * y.tail(m);
+  Vector x_i = l_ii().triangularView<Eigen::Lower>() * y.tail(m);
   int info = 0, one = 1;
   dsytrs_("L", &m, &one, s_.data(), &m, pivots_.data(), x_i.data(), &m, &info, 1);
   if (info != 0) throw InternalError("dsytrs: argument " + std::to_string(-info));
-  y.tail(m) = l_ii_.transpose().triangularView<Eigen::Upper>() * x_i;
+  y.tail(m) = l_ii().transpose().triangularView<Eigen::Upper>() * x_i;
   backward_sweep(factor_, plan_, y);
   Vector out(n);
   for (int k = 0; k < n; ++k) out[perm[k]] = y[k];

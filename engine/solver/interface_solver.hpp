@@ -31,7 +31,10 @@ class InterfaceSolver : public LinearSolver {
   /// diagonals (multipliers) count as 1: `k`'s values are changed for the call and restored.
   /// Throws SolveError when K is not positive definite on its other equations (a body held by
   /// contact alone); the caller then solves without this solver.
-  virtual void factorize_reference(SparseMatrix& k) = 0;
+  /// Returns false, without factorising, when the interface's dense factorisation (m^3 / 3
+  /// operations per contact pass, m equations) would cost more than `max_dense_share` times
+  /// the reference's sparse one (as CHOLMOD's analysis counts it); 0: no such limit.
+  virtual bool factorize_reference(SparseMatrix& k, double max_dense_share) = 0;
   /// factorize(c, kind) takes the contact terms C alone (A = K + C), zero outside the
   /// interface's rows and columns: only C_II is read.
   /// Equations of the interface (sorted; the system's own numbering).

@@ -120,7 +120,7 @@ TEST(InterfaceSolver, ContactPassesOnTheKeptElasticFactorisation) {
       if (it.row() >= n || c >= n) it.valueRef() = 0.0;
   const SparseMatrix k_before = k;
   auto solver = make_interface_solver(interface);
-  solver->factorize_reference(k);
+  EXPECT_TRUE(solver->factorize_reference(k, 0.0));
   EXPECT_EQ((k - k_before).norm(), 0.0);  // the unit diagonals were given back
   // Each pass gets the contact terms alone, C = A - K.
   solver->factorize(a - k, MatrixKind::SymmetricIndefinite);
@@ -147,7 +147,7 @@ TEST(InterfaceSolver, AReferenceThatIsNotPositiveDefiniteIsRefused) {
   SparseMatrix k = spd_matrix(12);
   k.coeffRef(11, 11) = -1.0;  // an interior equation breaks positivity
   auto solver = make_interface_solver({0, 1});
-  EXPECT_THROW(solver->factorize_reference(k), SolveError);
+  EXPECT_THROW(solver->factorize_reference(k, 0.0), SolveError);
   EXPECT_THROW(solver->factorize(k, MatrixKind::SymmetricIndefinite), InternalError);
 }
 
@@ -860,7 +860,7 @@ TEST(InterfaceSolver, SweepsOnTwoThreadsAroundTheSchurComplement) {
   SparseMatrix c(n, n);
   c.setFromTriplets(t.begin(), t.end());
   auto solver = make_interface_solver(interface);
-  solver->factorize_reference(k);
+  EXPECT_TRUE(solver->factorize_reference(k, 0.0));
   solver->factorize(c, MatrixKind::SymmetricIndefinite);
   const SparseMatrix a = k + c;
   auto umfpack = make_linear_solver(SolverKind::Umfpack);
@@ -868,6 +868,100 @@ TEST(InterfaceSolver, SweepsOnTwoThreadsAroundTheSchurComplement) {
   const Vector f = rhs(n), x = solver->solve(f), ref = umfpack->solve(f);
   EXPECT_LT((a * x - f).norm(), 1e-12 * f.norm());
   EXPECT_LT((x - ref).norm(), 1e-10 * ref.norm());
+}
+
+/// An elasticity-like operator on a grid of side^dim nodes (dim 2 or 3): the 9- or 27-point
+/// stencil (coefficients varying in space) times a 3 x 3 SPD block, three equations per node
+/// numbered together: SPD, with the 27 or 81 entries a column of a QUAD4 or HEXA8 mesh's
+/// stiffness (three components in 2D too, as a node's equations with a multiplier may be).
+SparseMatrix vector_stencil_operator(int side, int dim) {
+  const double block[3][3] = {{2.0, 0.3, 0.1}, {0.3, 1.5, -0.2}, {0.1, -0.2, 1.8}};  // SPD
+  const int kside = dim == 3 ? side : 1, nodes = side * side * kside;
+  std::vector<Triplet> t;
+  auto node = [side, kside](int i, int j, int k) { return (i * side + j) * kside + k; };
+  const int dk_range = dim == 3 ? 1 : 0;
+  for (int i = 0; i < side; ++i)
+    for (int j = 0; j < side; ++j)
+      for (int k = 0; k < kside; ++k) {
+        const int p = node(i, j, k);
+        const double c = 1.0 + 0.3 * std::sin(0.4 * i + 0.2 * j + 0.1 * k);
+        double diagonal = 1e-2;
+        for (int di = -1; di <= 1; ++di)
+          for (int dj = -1; dj <= 1; ++dj)
+            for (int dk = -dk_range; dk <= dk_range; ++dk) {
+              if (di == 0 && dj == 0 && dk == 0) continue;
+              const int i2 = i + di, j2 = j + dj, k2 = k + dk;
+              diagonal += c;
+              if (i2 < 0 || j2 < 0 || k2 < 0 || i2 >= side || j2 >= side || k2 >= kside) continue;
+              const int q = node(i2, j2, k2);
+              if (q > p)
+                for (int a = 0; a < 3; ++a)
+                  for (int b = 0; b < 3; ++b) {
+                    const double v = -0.5 * c * block[a][b];
+                    t.emplace_back(3 * p + a, 3 * q + b, v), t.emplace_back(3 * q + b, 3 * p + a, v);
+                  }
+            }
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b) t.emplace_back(3 * p + a, 3 * p + b, diagonal * block[a][b]);
+      }
+  SparseMatrix k(3 * nodes, 3 * nodes);
+  k.setFromTriplets(t.begin(), t.end());
+  k.makeCompressed();
+  return k;
+}
+
+TEST(InterfaceSolver, OneComponentOfEachInterfaceNode) {
+  // The third component of the nodes of the middle row (2D) or plane (3D) is the interface
+  // (the normal one of a flat contact surface square to an axis): a node's equations are then
+  // partly interior, partly interface. In 2D (27 entries a column) constrained AMD orders the
+  // interface last, a node's equations split where the interface begins; in 3D (81) nested
+  // dissection orders the interior and the interface is moved last. Contact terms (a penalty
+  // coupling each interface equation to its neighbour) give K + C, solved as UMFPACK does.
+  for (const auto& [dim, side] : {std::pair{2, 40}, std::pair{3, 12}}) {
+    SCOPED_TRACE(dim);
+    SparseMatrix k = vector_stencil_operator(side, dim);
+    const int n = static_cast<int>(k.rows()), mid = side / 2, kside = dim == 3 ? side : 1;
+    std::vector<int> interface;
+    for (int j = 0; j < side; ++j)
+      for (int l = 0; l < kside; ++l) interface.push_back(3 * ((mid * side + j) * kside + l) + 2);
+    std::vector<Triplet> t;
+    for (std::size_t q = 0; q < interface.size(); ++q) {
+      t.emplace_back(interface[q], interface[q], 30.0 + q % 5);
+      if (q + 1 < interface.size())
+        t.emplace_back(interface[q], interface[q + 1], -4.0), t.emplace_back(interface[q + 1], interface[q], -4.0);
+    }
+    SparseMatrix c(n, n);
+    c.setFromTriplets(t.begin(), t.end());
+    auto solver = make_interface_solver(interface);
+    ASSERT_TRUE(solver->factorize_reference(k, 0.0));
+    solver->factorize(c, MatrixKind::SymmetricIndefinite);
+    const SparseMatrix a = k + c;
+    auto umfpack = make_linear_solver(SolverKind::Umfpack);
+    umfpack->factorize(a, MatrixKind::General);
+    const Vector f = rhs(n), x = solver->solve(f), ref = umfpack->solve(f);
+    EXPECT_LT((a * x - f).norm(), 1e-12 * f.norm());
+    EXPECT_LT((x - ref).norm(), 1e-10 * ref.norm());
+  }
+}
+
+TEST(InterfaceSolver, AnInterfaceTooLargeForItsShareOfTheFactorisationIsDeclined) {
+  // Every equation of two planes (288) against a small 3D operator: the dense Schur
+  // complement (8e6 operations a pass) costs more than the interior's factorisation allows at
+  // a share of 1e-3. The reference is then neither factorised nor changed, and the same
+  // interface with no limit is factorised.
+  const int side = 6;
+  SparseMatrix k = vector_stencil_operator(side, 3);
+  std::vector<int> interface;
+  for (int eq = 0; eq < 2 * 3 * side * side; ++eq) interface.push_back(eq);
+  const SparseMatrix before = k;
+  auto solver = make_interface_solver(interface);
+  EXPECT_FALSE(solver->factorize_reference(k, 1e-3));
+  EXPECT_EQ((k - before).norm(), 0.0);
+  EXPECT_THROW(solver->factorize(k, MatrixKind::SymmetricIndefinite), InternalError);
+  EXPECT_TRUE(solver->factorize_reference(k, 0.0));
+  solver->factorize(SparseMatrix(k.rows(), k.cols()), MatrixKind::SymmetricPositiveDefinite);
+  const Vector f = rhs(static_cast<int>(k.rows()));
+  EXPECT_LT((k * solver->solve(f) - f).norm(), 1e-12 * f.norm());
 }
 
 /// A solver that factorises A + shift * diag(A) instead of A: each solve is off by a
