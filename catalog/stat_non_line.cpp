@@ -73,7 +73,10 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                    "factorises the system if CG fails, and under mpirun), and "
                    "solves contact (DEFI_CONTACT) with the elastic stiffness factorised once by CHOLMOD, the "
                    "contact surfaces' equations ordered last, when they are at most 2,500 and a twentieth of "
-                   "the model: each contact pass then factorises their dense Schur complement only; MUMPS and "
+                   "the model, or else only the displacement components the contact terms reach (the normal one "
+                   "of a surface square to an axis) with the multipliers, when they are at most 2,500 and their "
+                   "dense factorisation costs at most half the elastic one: each contact pass then factorises "
+                   "their dense Schur complement only; MUMPS and "
                    "UMFPACK are used as asked; PETSC solves iteratively (a Krylov method and a preconditioner). "
                    "Under mpirun, MUMPS and PETSC share the model among the ranks (Scotch partition, each "
                    "rank assembling its own rows); the other methods give every rank the whole system")
