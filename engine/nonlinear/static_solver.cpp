@@ -79,17 +79,18 @@ int position_in(const SparseMatrix& a, int i, int j) {
   return static_cast<int>(std::lower_bound(inner + outer[j], inner + outer[j + 1], i) - inner);
 }
 
-/// Position in a of each contact triplet (free numbering), -1 for a constrained one. One
-/// binary search per triplet, most of them a cache miss: two threads share the triplets when
-/// there are many (1.3 million on the 3D CONTINUE benchmark).
+/// Position in a of each contact triplet (free numbering), -1 for a constrained one, and with
+/// `within` (per free equation) for one whose row or column it does not flag. One binary
+/// search per triplet, most of them a cache miss: two threads share the triplets when there
+/// are many (1.3 million on the 3D CONTINUE benchmark).
 void locate_triplets(const SparseMatrix& a, const std::vector<int>& free_index, const std::vector<Triplet>& contact,
-                     std::vector<int>& pos) {
+                     std::vector<int>& pos, const std::vector<char>* within = nullptr) {
   const size_t n = contact.size();
   resize_on_huge_pages(pos, n);
   auto locate = [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
       const int i = free_index[contact[k].row()], j = free_index[contact[k].col()];
-      pos[k] = i >= 0 && j >= 0 ? position_in(a, i, j) : -1;
+      pos[k] = i >= 0 && j >= 0 && (!within || ((*within)[i] && (*within)[j])) ? position_in(a, i, j) : -1;
     }
   };
   constexpr size_t kTripletsForTwoThreads = 100000;
@@ -672,19 +673,22 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
   if (interface_use_ == 1) {
     // The interface solver: a holds C alone, the contact terms and the condensed equations'
     // unit diagonals (K_ff has zeros there), in a pattern built once per contact pattern.
+    // Only the terms within the interface: the others are the round-off that an interface
+    // of some components leaves out (interface_floor_; the 1.3 million triplets of the
+    // CONTINUE 3D benchmark, of which its 1,715 equations hold a ninth).
     if (new_constraints || !sys.increment || version != sys.contact_version || contact.size() != sys.contact_pos.size()) {
       sys.a = SparseMatrix();
       std::vector<Triplet> pattern;
       pattern.reserve(contact.size() + interface_->interface().size());
       for (const auto& tr : contact) {
         const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
-        if (i >= 0 && j >= 0) pattern.emplace_back(i, j, 0.0);
+        if (i >= 0 && j >= 0 && on_interface_[i] && on_interface_[j]) pattern.emplace_back(i, j, 0.0);
       }
       for (int j : interface_->interface()) pattern.emplace_back(j, j, 0.0);
       SparseMatrix c(nf, nf);
       c.setFromTriplets(pattern.begin(), pattern.end());
       sys.a.swap(c);
-      locate_triplets(sys.a, cons.free_index, contact, sys.contact_pos);
+      locate_triplets(sys.a, cons.free_index, contact, sys.contact_pos, &on_interface_);
       sys.diagonal.assign(nf, -1);
       for (int j : interface_->interface()) sys.diagonal[j] = position_in(sys.a, j, j);
       sys.contact_version = version;
