@@ -95,3 +95,29 @@ TEST(ContactInterfaceSolve, TheNormalComponentsAloneWhereTheWholeSurfacesAreTooM
   expect_same(r, ref, "normal components");
   EXPECT_NEAR(lags_c(r, tb.node_a), -1e5, 1e5 * 1e-6);
 }
+
+TEST(ContactInterfaceSolve, ATermOnAnotherComponentLaterGivesTheInterfaceUp) {
+  // The same small geometry, CD pushed down by 0.08 to 0.12 m from one end to the other: the
+  // first pass (flat surfaces) reaches DY alone, so the interface is their DY and LAGS_C;
+  // the re-pairing on the tilted surfaces reaches DX too. The driver then gives the interface
+  // solver up and solves the whole system from that pass on, with the whole system's answer.
+  const TwoBlocks tb = make_two_blocks(8, 6, false);
+  const FeModel model = make_model(tb.mesh, kYoung, 0.0);
+  std::vector<Imposed> bcs;
+  for (int n : tb.cd_nodes) {
+    const double x = tb.mesh.coords[3 * static_cast<std::size_t>(n)];
+    bcs.push_back({n, DX, 0.0}), bcs.push_back({n, DY, -0.08 - 0.02 * x});
+  }
+  for (int n : tb.gh_nodes) bcs.push_back({n, DX, 0.0}), bcs.push_back({n, DY, 0.0});
+  const ContactDefinition def = zone_ab_on_ef(tb, ContactMethod::Continuous, ContactInit::Yes);
+  std::ostringstream out;
+  const lunaster::Log log(out, 1);
+  auto kept = make_contact_hook(def, tb.mesh, 2);
+  const SolveResult r = solve(model, bcs, {}, *kept, log, auto_solver());
+  auto whole = make_contact_hook(def, tb.mesh, 2);
+  const SolveResult ref = solve(model, bcs, {}, *whole, quiet_log(), whole_system());
+  EXPECT_NE(out.str().find("elastic system factorised with the 25 equations"), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("a contact term outside the surfaces' equations"), std::string::npos) << out.str();
+  EXPECT_EQ(r.stats.interface_equations, 0);
+  expect_same(r, ref, "interface given up");
+}
