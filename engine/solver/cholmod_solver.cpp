@@ -210,6 +210,21 @@ std::vector<int> node_graph_ordering(const SparseMatrix& a, cholmod_common* comm
   return perm;
 }
 
+/// A 3D mesh's system: over 40 stored entries a column (81 for HEXA8, 27 for QUAD4 with
+/// three components).
+bool three_d_pattern(const SparseMatrix& a) {
+  return static_cast<double>(a.nonZeros()) > 40.0 * static_cast<double>(std::max<Eigen::Index>(1, a.cols()));
+}
+
+/// A large factor with long columns (3D meshes: about 500 stored entries per column on the
+/// SSNP121 3D benchmarks, against 100 for the glued 2D k = 16 mesh) has supernodes large
+/// enough for two BLAS threads; a 2D factor's small ones run no faster on two.
+bool wide_factor(const cholmod_factor* factor, Eigen::Index n) {
+  constexpr double kWideEntries = 2e6, kWideColumn = 200.0;
+  const auto entries = static_cast<double>(factor->xsize);
+  return factor->is_super && entries > kWideEntries && entries > kWideColumn * static_cast<double>(n);
+}
+
 void CholmodSolver::fail(int column, const std::string& why) {
   failed_ = column;
   ready_ = false;
@@ -451,8 +466,7 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
       // 4.5e9 for 0.08 s), and on 2D meshes it gains little (6 % of the glued k = 16 mesh's
       // operations) for more time (0.48 s) than the whole factorisation's analysis.
       const double fl_amd = common_.fl;
-      const double per_column = static_cast<double>(m->nonZeros()) / static_cast<double>(std::max<Eigen::Index>(1, m->cols()));
-      if (factor_ && ((per_column > 40.0 && fl_amd > 5e9) || common_.lnz > 10.0 * static_cast<double>(m->nonZeros()))) {
+      if (factor_ && ((three_d_pattern(*m) && fl_amd > 5e9) || common_.lnz > 10.0 * static_cast<double>(m->nonZeros()))) {
         std::vector<int> nd = node_graph_ordering(*m, &common_, GraphOrdering::Metis);
         if (!nd.empty()) {
           cholmod_factor* other = cholmod_analyze_p(&s, nd.data(), nullptr, 0, &common_);
@@ -471,12 +485,7 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     nnz_ = m->nonZeros();
     fingerprint_ = fingerprint;
     plan_ = factor_->is_super ? plan_sweeps(factor_) : SweepPlan{};
-    // A large factor with long columns (3D meshes: about 500 stored entries per column on the
-    // SSNP121 3D benchmarks, against 100 for the glued 2D k = 16 mesh) has supernodes large
-    // enough for two BLAS threads; a 2D factor's small ones run no faster on two.
-    constexpr double kWideEntries = 2e6, kWideColumn = 200.0;
-    const auto entries = static_cast<double>(factor_->xsize);
-    wide_ = factor_->is_super && entries > kWideEntries && entries > kWideColumn * static_cast<double>(n_);
+    wide_ = wide_factor(factor_, n_);
   }
   const int ok = [&] {
     const WideBlas threads(wide_);
@@ -598,7 +607,7 @@ bool CholmodInterfaceSolver::factorize_reference(SparseMatrix& r, double max_den
   // of the contact surfaces last, 5.4e9 operations against CAMD's 8.8e9, for 0.07 s of METIS;
   // in 2D CAMD's order is the better one and METIS slow (CholmodSolver::factorize).
   std::vector<int> perm;
-  if (static_cast<double>(r.nonZeros()) > 40.0 * static_cast<double>(n)) {
+  if (three_d_pattern(r)) {
     perm = node_graph_ordering(r, &common_, GraphOrdering::Metis, &on_interface);
     std::stable_partition(perm.begin(), perm.end(), [&on_interface](int eq) { return !on_interface[eq]; });
   }
@@ -633,11 +642,9 @@ bool CholmodInterfaceSolver::factorize_reference(SparseMatrix& r, double max_den
   auto restore = [&saved] {
     for (auto& [where, value] : saved) *where = value;
   };
-  // Two BLAS threads for a factor of 3D size (CholmodSolver::factorize's rule), for the
-  // factorisation and the dense interface products below.
-  constexpr double kWideEntries = 2e6, kWideColumn = 200.0;
-  const double entries = factor_ ? static_cast<double>(factor_->xsize) : 0.0;
-  wide_ = factor_ && factor_->is_super && entries > kWideEntries && entries > kWideColumn * static_cast<double>(n);
+  // Two BLAS threads for a factor of 3D size, for the factorisation and the dense interface
+  // products below.
+  wide_ = factor_ && wide_factor(factor_, n);
   const WideBlas threads(wide_);
   const int ok = factor_ ? cholmod_factorize(&view, factor_, &common_) : 0;
   // A pivot that lost 10 digits is a rigid-body mode (the driver's check, which this

@@ -842,6 +842,20 @@ TEST(Solvers, CholmodSolvesOnTwoThreadsAgreeWithUmfpack) {
   expect_cholmod_solves_as_umfpack(five_point_operator(300), 1e-14, 1e-10);
 }
 
+/// The interface solver's answer for K + C (K its reference, C contact terms on the
+/// interface's equations) against UMFPACK's factorisation of K + C.
+void expect_interface_solves_as_umfpack(SparseMatrix& k, const std::vector<int>& interface, const SparseMatrix& c) {
+  auto solver = make_interface_solver(interface);
+  ASSERT_TRUE(solver->factorize_reference(k, 0.0));
+  solver->factorize(c, MatrixKind::SymmetricIndefinite);
+  const SparseMatrix a = k + c;
+  auto umfpack = make_linear_solver(SolverKind::Umfpack);
+  umfpack->factorize(a, MatrixKind::General);
+  const Vector f = rhs(static_cast<int>(a.rows())), x = solver->solve(f), ref = umfpack->solve(f);
+  EXPECT_LT((a * x - f).norm(), 1e-12 * f.norm());
+  EXPECT_LT((x - ref).norm(), 1e-10 * ref.norm());
+}
+
 TEST(InterfaceSolver, SweepsOnTwoThreadsAroundTheSchurComplement) {
   // The 300 x 300 operator with its middle grid row as the interface: a factor large enough
   // for the two-thread sweeps on both sides of the interface's dense Schur complement. The
@@ -859,15 +873,7 @@ TEST(InterfaceSolver, SweepsOnTwoThreadsAroundTheSchurComplement) {
   }
   SparseMatrix c(n, n);
   c.setFromTriplets(t.begin(), t.end());
-  auto solver = make_interface_solver(interface);
-  EXPECT_TRUE(solver->factorize_reference(k, 0.0));
-  solver->factorize(c, MatrixKind::SymmetricIndefinite);
-  const SparseMatrix a = k + c;
-  auto umfpack = make_linear_solver(SolverKind::Umfpack);
-  umfpack->factorize(a, MatrixKind::General);
-  const Vector f = rhs(n), x = solver->solve(f), ref = umfpack->solve(f);
-  EXPECT_LT((a * x - f).norm(), 1e-12 * f.norm());
-  EXPECT_LT((x - ref).norm(), 1e-10 * ref.norm());
+  expect_interface_solves_as_umfpack(k, interface, c);
 }
 
 /// An elasticity-like operator on a grid of side^dim nodes (dim 2 or 3): the 9- or 27-point
@@ -932,15 +938,7 @@ TEST(InterfaceSolver, OneComponentOfEachInterfaceNode) {
     }
     SparseMatrix c(n, n);
     c.setFromTriplets(t.begin(), t.end());
-    auto solver = make_interface_solver(interface);
-    ASSERT_TRUE(solver->factorize_reference(k, 0.0));
-    solver->factorize(c, MatrixKind::SymmetricIndefinite);
-    const SparseMatrix a = k + c;
-    auto umfpack = make_linear_solver(SolverKind::Umfpack);
-    umfpack->factorize(a, MatrixKind::General);
-    const Vector f = rhs(n), x = solver->solve(f), ref = umfpack->solve(f);
-    EXPECT_LT((a * x - f).norm(), 1e-12 * f.norm());
-    EXPECT_LT((x - ref).norm(), 1e-10 * ref.norm());
+    expect_interface_solves_as_umfpack(k, interface, c);
   }
 }
 
