@@ -549,8 +549,8 @@ void StaticSolver::choose_interface(const Constraints& cons, const std::vector<T
     // on the CONTINUE 3D benchmark). The contact terms may reach fewer displacement
     // components: one on an interface square to an axis (SSNP121's), whose other components
     // then stay with the interior (1,715 equations on that benchmark). Terms below
-    // kNegligibleTerm of the largest are the round-off of a normal (1e-15 of it there) and
-    // count for nothing. The dense factorisation must then cost at most kDenseShare of the
+    // kNegligibleTerm of the largest count for nothing: a normal's round-off that the gaps
+    // do not already leave out (make_linear_gap drops components below 1e-14). The dense factorisation must then cost at most kDenseShare of the
     // reference's (factorize_interface_reference), and a later term outside the interface
     // (statuses or a pairing that reach another component) makes solve_instant give the
     // interface solver up.
@@ -673,9 +673,8 @@ void StaticSolver::update_system(const Constraints& cons, const std::vector<Trip
   if (interface_use_ == 1) {
     // The interface solver: a holds C alone, the contact terms and the condensed equations'
     // unit diagonals (K_ff has zeros there), in a pattern built once per contact pattern.
-    // Only the terms within the interface: the others are the round-off that an interface
-    // of some components leaves out (interface_floor_; the 1.3 million triplets of the
-    // CONTINUE 3D benchmark, of which its 1,715 equations hold a ninth).
+    // Only the terms within the interface: outside it, an interface of some components has
+    // only terms below interface_floor_ (a normal's round-off), which it leaves out.
     if (new_constraints || !sys.increment || version != sys.contact_version || contact.size() != sys.contact_pos.size()) {
       sys.a = SparseMatrix();
       std::vector<Triplet> pattern;

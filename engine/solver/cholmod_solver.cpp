@@ -210,8 +210,7 @@ std::vector<int> node_graph_ordering(const SparseMatrix& a, cholmod_common* comm
   return perm;
 }
 
-/// A 3D mesh's system: over 40 stored entries a column (81 for HEXA8, 27 for QUAD4 with
-/// three components).
+/// A 3D mesh's system: over 40 stored entries a column (81 for HEXA8 meshes, 18 for QUAD4).
 bool three_d_pattern(const SparseMatrix& a) {
   return static_cast<double>(a.nonZeros()) > 40.0 * static_cast<double>(std::max<Eigen::Index>(1, a.cols()));
 }
