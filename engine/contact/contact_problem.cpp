@@ -179,6 +179,16 @@ std::vector<int> ContactProblem::surface_equations() const {
   return eqs;
 }
 
+std::array<bool, 3> ContactProblem::displacement_components() const {
+  // The QUAD8 ties relate every component of their nodes.
+  if (!relations_.empty()) return {true, true, true};
+  std::array<bool, 3> reached{};
+  for (const ContactPoint& p : points_)
+    if (p.paired)
+      for (int k = 0; k < dim_; ++k) reached[k] = reached[k] || std::abs(p.normal[k]) > kNormalRoundOff;
+  return reached;
+}
+
 MatrixKind ContactProblem::matrix_kind() const {
   if (coupled() || !relations_.empty()) return MatrixKind::SymmetricIndefinite;
   return MatrixKind::SymmetricPositiveDefinite;

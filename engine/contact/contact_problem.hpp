@@ -39,6 +39,7 @@ class ContactProblem final : public ContactHook {
   bool settle(const Vector& u, const Log& log) override;
   MatrixKind matrix_kind() const override;
   std::vector<int> surface_equations() const override;
+  std::array<bool, 3> displacement_components() const override;
   long pattern_version() const override { return pattern_version_; }
   unsigned long long status_key() const override;
   int n_active() const override;

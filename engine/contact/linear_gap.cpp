@@ -28,13 +28,10 @@ void add_node(LinearGap& gap, const std::vector<double>& coords, const DofMap& d
 LinearGap make_linear_gap(const std::vector<double>& coords, const DofMap& dofs, int dim, const int* slave,
                           const double* ws, int n_slave, const int* master, const double* wm, int n_master,
                           const double* normal) {
-  // A component below kRoundOff of the (unit) normal is the round-off of a face square to an
-  // axis: an isoparametric face whose nodes share z has dz/dxi = z sum_a dN_a/dxi, about 1e-16
-  // instead of 0 (QUAD8 master faces). Taken as 0, it adds no term to the gap, so the contact
-  // tangent reaches the normal component alone (8/9 fewer terms in 3D), as on a QUAD4 face.
-  constexpr double kRoundOff = 1e-14;
+  // A normal's round-off taken as 0 adds no term, so the contact tangent of a face square to
+  // an axis reaches the normal component alone (8/9 fewer terms in 3D).
   double n[3];
-  for (int k = 0; k < 3; ++k) n[k] = std::abs(normal[k]) <= kRoundOff ? 0.0 : normal[k];
+  for (int k = 0; k < 3; ++k) n[k] = std::abs(normal[k]) <= kNormalRoundOff ? 0.0 : normal[k];
   LinearGap gap;
   for (int a = 0; a < n_slave; ++a) add_node(gap, coords, dofs, dim, slave[a], ws[a], n);
   for (int b = 0; b < n_master; ++b) add_node(gap, coords, dofs, dim, master[b], -wm[b], n);

@@ -409,11 +409,9 @@ std::vector<MortarRow> MortarProblem::build_rows(const Vector& u,
         terms.emplace_back(mid_edges_[mid->second][1], kQuadraticAlpha * d[j] / s);
         terms.emplace_back(mid_edges_[mid->second][2], kQuadraticAlpha * d[j] / s);
       }
-      // A normal component at round-off level (1e-17 on a flat interface, 1e-13 after a solve)
-      // is no coupling: keeping it would make the pattern, and the cost, depend on round-off.
-      // (A tilt below 1e-10 rad moves the gap by less than 1e-10 of the cell size.)
+      // A normal component at round-off level is no coupling (kNormalRoundOff).
       for (int k = 0; k < 3; ++k)
-        if (std::abs(row.normal[k]) <= 1e-10) row.normal[k] = 0.0;
+        if (std::abs(row.normal[k]) <= kNormalRoundOff) row.normal[k] = 0.0;
       row.g0 = -dist * d[j];
       for (const auto& [node, c] : terms) {
         for (int k = 0; k < dim_; ++k) {

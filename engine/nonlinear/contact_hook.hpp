@@ -2,6 +2,7 @@
 /// The contact algorithm as the Newton driver (static_solver.hpp) sees it.
 /// Implemented in engine/contact (contact_problem.hpp); the driver knows no
 /// contact method, only this interface.
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -84,6 +85,10 @@ class ContactHook {
   /// then the elastic stiffness alone, and the driver may keep it factorised for the whole run
   /// (InterfaceSolver). Empty: not known.
   virtual std::vector<int> surface_equations() const { return {}; }
+  /// The displacement components (DX, DY, DZ) that the contact terms of the present pairing
+  /// may reach, active or not: a component that no normal has adds no term (the normal one
+  /// alone on a flat surface square to an axis). Default: every one.
+  virtual std::array<bool, 3> displacement_components() const { return {true, true, true}; }
   /// False when the contact conditions are not yet met at the last add_to_system (statuses
   /// changed there, or an active condition is violated): Newton goes on even if the residual
   /// is small (semi-smooth Newton on the statuses).
