@@ -552,9 +552,9 @@ void StaticSolver::choose_interface(const Constraints& cons, const std::vector<T
     // its pairing's normals reach, active or not (so also before any point is active); the
     // terms of this solve are checked too. Terms below kNegligibleTerm of the largest count
     // for nothing: a normal's round-off that the gaps do not already leave out
-    // (make_linear_gap drops components up to kNormalRoundOff). The dense factorisation must then cost
-    // at most kDenseShare of the reference's (factorize_interface_reference), and a later
-    // term outside the interface (a pairing that reaches another component) makes
+    // (make_linear_gap drops components up to kNormalRoundOff). The dense factorisation must
+    // then cost at most kDenseShare of the reference's (factorize_interface_reference), and a
+    // later term outside the interface (a pairing that reaches another component) makes
     // solve_instant give the interface solver up.
     constexpr double kDenseShare = 0.5;
     double largest = 0.0;
