@@ -183,9 +183,10 @@ std::array<bool, 3> ContactProblem::displacement_components() const {
   // The QUAD8 ties relate every component of their nodes.
   if (!relations_.empty()) return {true, true, true};
   // A slave cell with fewer integration points than nodes (GAUSS-3 on TRIA6) leaves some of
-  // its LAGS_C undetermined: the saddle-point backend's regularisation picks them (SSNP121 E:
-  // 0.6 % off), a dense LDL^T of the interface does not (700 % off). Every component then,
-  // so that no interface of some components is taken for it.
+  // its LAGS_C undetermined, and what a solver returns for them is arbitrary (make study,
+  // SSNP121 E: LAGS_C 0.6 % off before the gaps dropped a normal's round-off, 1,094 % after
+  // on the saddle-point backend, 707 % on the interface). Such zones keep the path they had:
+  // every component, so no interface of some components.
   std::unordered_map<int, int> points_of;
   for (const ContactPoint& p : points_)
     if (p.slave_cell >= 0) ++points_of[p.slave_cell];
