@@ -182,10 +182,10 @@ std::vector<int> ContactProblem::surface_equations() const {
 std::array<bool, 3> ContactProblem::displacement_components() const {
   // The QUAD8 ties relate every component of their nodes.
   if (!relations_.empty()) return {true, true, true};
-  // A slave cell with fewer integration points than nodes (GAUSS-3 on TRIA6) leaves some of
-  // its LAGS_C undetermined, and what a solver returns for them is arbitrary (make study,
-  // SSNP121 E: LAGS_C 0.6 % off before the gaps dropped a normal's round-off, 1,094 % after
-  // on the saddle-point backend, 707 % on the interface). Such zones keep the path they had:
+  // A slave cell with fewer integration points than nodes (GAUSS-3 on TRIA6, which
+  // DEFI_CONTACT warns of) leaves some of its LAGS_C undetermined, and what a solver returns
+  // for them is arbitrary (make study, SSNP121 E with GAUSS-3: LAGS_C 0.6 % off at ff5b5f4,
+  // 1,094 % with this rule, 707 % on an interface of some components). Such zones take
   // every component, so no interface of some components.
   std::unordered_map<int, int> points_of;
   for (const ContactPoint& p : points_)
