@@ -7,6 +7,7 @@
 
 #include <Eigen/SparseCholesky>
 
+#include "engine/contact/compatibility.hpp"
 #include "engine/contact/surface_element.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/memory.hpp"
@@ -182,16 +183,15 @@ std::vector<int> ContactProblem::surface_equations() const {
 std::array<bool, 3> ContactProblem::displacement_components() const {
   // The QUAD8 ties relate every component of their nodes.
   if (!relations_.empty()) return {true, true, true};
-  // A slave cell with fewer integration points than nodes (GAUSS-3 on TRIA6, which
-  // DEFI_CONTACT warns of) leaves some of its LAGS_C undetermined, and what a solver returns
-  // for them is arbitrary (make study, SSNP121 E with GAUSS-3: LAGS_C 0.6 % off at ff5b5f4,
+  // A rule with fewer points than a slave cell has nodes (GAUSS-3 on TRIA6, which
+  // DEFI_CONTACT warns of) leaves some LAGS_C undetermined, and what a solver returns for
+  // them is arbitrary (make study, SSNP121 E with GAUSS-3: LAGS_C 0.6 % off at ff5b5f4,
   // 1,094 % with this rule, 707 % on an interface of some components). Such zones take
   // every component, so no interface of some components.
-  std::unordered_map<int, int> points_of;
-  for (const ContactPoint& p : points_)
-    if (p.slave_cell >= 0) ++points_of[p.slave_cell];
-  for (const ContactPoint& p : points_)
-    if (p.slave_cell >= 0 && points_of[p.slave_cell] < p.n_slave) return {true, true, true};
+  const bool continuous = def_.method == ContactMethod::Continuous || def_.method == ContactMethod::ContinuousPenalty;
+  for (size_t z = 0; continuous && z < def_.zones.size(); ++z)
+    for (const IntegrationWarning& w : check_contact_zone_integration(mesh_, def_.zones[z], static_cast<int>(z)))
+      if (w.kind == IntegrationWarning::Kind::TooFewPoints) return {true, true, true};
   std::array<bool, 3> reached{};
   for (const ContactPoint& p : points_)
     if (p.paired)

@@ -538,8 +538,9 @@ void StaticSolver::choose_interface(const Constraints& cons, const std::vector<T
   // a large interior (the 2D SSNP121 geometries).
   constexpr int kMaxInterface = 2500, kInteriorPerInterface = 20;
   if (!contact_ || !options_.auto_solver || options_.solver != SolverKind::Cholmod || distributed_) return;
+  const std::vector<int> surface = contact_->surface_equations();
   std::vector<int> eqs;
-  for (int eq : contact_->surface_equations())
+  for (int eq : surface)
     if (cons.free_index[eq] >= 0) eqs.push_back(cons.free_index[eq]);
   interface_floor_ = 0.0;
   interface_dense_share_ = 0.0;
@@ -548,26 +549,22 @@ void StaticSolver::choose_interface(const Constraints& cons, const std::vector<T
     // Too many for the whole surfaces (a 3D surface of a few hundred nodes: 4,263 equations
     // on the CONTINUE 3D benchmark). The contact terms may reach fewer displacement
     // components: one on an interface square to an axis (SSNP121's), whose other components
-    // then stay with the interior (1,715 equations on that benchmark). The hook says which
-    // its pairing's normals reach, active or not (so also before any point is active); the
-    // terms of this solve are checked too. Terms below kNegligibleTerm of the largest count
-    // for nothing: a normal's round-off that the gaps do not already leave out
-    // (make_linear_gap drops components up to kNormalRoundOff). The dense factorisation must
-    // then cost at most kDenseShare of the reference's (factorize_interface_reference), and a
-    // later term outside the interface (a pairing that reaches another component) makes
-    // solve_instant give the interface solver up.
+    // then stay with the interior (1,715 equations on that benchmark): those that the
+    // pairing's normals reach, active or not (so also before any point is active), as the
+    // hook says. Terms below kNegligibleTerm of the largest count for nothing: a normal's
+    // round-off that the gaps do not already leave out (make_linear_gap drops components up
+    // to kNormalRoundOff). The dense factorisation must then cost at most kDenseShare of the
+    // reference's (factorize_interface_reference), and a term outside the interface, in this
+    // solve or a later one (a pairing that reaches another component), makes solve_instant
+    // give the interface solver up.
     constexpr double kDenseShare = 0.5;
     double largest = 0.0;
     for (const Triplet& tr : contact) largest = std::max(largest, std::abs(tr.value()));
     interface_floor_ = kNegligibleTerm * largest;
-    std::array<bool, 3> reached = contact_->displacement_components();
-    for (const Triplet& tr : contact)
-      if (std::abs(tr.value()) > interface_floor_)
-        for (int eq : {tr.row(), tr.col()})
-          if (is_displacement(dofs_.component_of(eq))) reached[dofs_.component_of(eq)] = true;
+    const std::array<bool, 3> reached = contact_->displacement_components();
     if (!reached[0] && !reached[1] && !reached[2]) return;  // nothing paired
     eqs.clear();
-    for (int eq : contact_->surface_equations()) {
+    for (int eq : surface) {
       const int c = dofs_.component_of(eq);
       if (cons.free_index[eq] >= 0 && (!is_displacement(c) || reached[c])) eqs.push_back(cons.free_index[eq]);
     }
