@@ -43,6 +43,24 @@ std::string header_error(const std::string& text) {
   return "";
 }
 
+/// A death test's child writes the moment its run starts here (steady_clock is the machine's
+/// monotonic clock, the same in both processes), so that the parent times the run itself and
+/// not the child's start-up (the re-executed test binary, slow under a sanitizer).
+fs::path child_start_file(const std::string& name) { return scratch() / (name + ".start"); }
+
+void record_child_start(const fs::path& file) {
+  std::ofstream(file) << std::chrono::steady_clock::now().time_since_epoch().count() << "\n";
+}
+
+/// Seconds from the child's recorded start to now.
+double seconds_since_child_start(const fs::path& file) {
+  std::ifstream in(file);
+  std::chrono::steady_clock::rep ticks = 0;
+  if (!(in >> ticks)) return -1.0;  // the child never started its run
+  const std::chrono::steady_clock::time_point start{std::chrono::steady_clock::duration(ticks)};
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 catalog::ConceptPtr no_op(const catalog::Args&, cmd::Session&) { return nullptr; }
 catalog::ConceptPtr spin_forever(const catalog::Args&, cmd::Session&) {
   volatile unsigned long long n = 0;
@@ -208,10 +226,18 @@ TEST(BudgetRun, AllocationFailuresInCommandsAreOutOfMemory) {
 TEST(BudgetRunDeathTest, LongCppCommandIsStoppedAfterTheGrace) {
   GTEST_FLAG_SET(death_test_style, "threadsafe");
   const auto deck = write_deck("spin.lua", "-- lunaster: time_limit=1\nDEBUT()\n");
-  const auto start = std::chrono::steady_clock::now();
-  EXPECT_EXIT(run(deck, {}, spin_forever), ::testing::ExitedWithCode(5),
-              "spin\\.lua: time limit of 1 s exceeded while running .*spin\\.lua:2: DEBUT; the run is stopped");
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const fs::path started = child_start_file("spin");
+  fs::remove(started);
+  EXPECT_EXIT(
+      {
+        record_child_start(started);
+        run(deck, {}, spin_forever);
+      },
+      ::testing::ExitedWithCode(5),
+      "spin\\.lua: time limit of 1 s exceeded while running .*spin\\.lua:2: DEBUT; the run is stopped");
+  // The budget (1 s) and the grace (0.5 s), measured from the run's start in the child.
+  const double seconds = seconds_since_child_start(started);
+  EXPECT_GE(seconds, 1.5);
   EXPECT_LT(seconds, 2.0);
 }
 
@@ -229,10 +255,19 @@ TEST(BudgetRunDeathTest, LongLuaLibraryCallIsStoppedAfterTheGrace) {
   // Backtracking inside string.find (C code of the Lua library, no instruction to hook).
   const auto deck = write_deck("backtrack.lua", "-- lunaster: time_limit=0.5\nlocal s = ('a'):rep(10000)\n"
                                                 "local found = s:find('.-.-.-.-b')\n");
-  const auto start = std::chrono::steady_clock::now();
-  EXPECT_EXIT(run(deck), ::testing::ExitedWithCode(5),
-              "backtrack\\.lua: time limit of 0\\.5 s exceeded in the deck's Lua code; the run is stopped");
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.5);
+  const fs::path started = child_start_file("backtrack");
+  fs::remove(started);
+  EXPECT_EXIT(
+      {
+        record_child_start(started);
+        run(deck);
+      },
+      ::testing::ExitedWithCode(5),
+      "backtrack\\.lua: time limit of 0\\.5 s exceeded in the deck's Lua code; the run is stopped");
+  // The budget (0.5 s) and the grace (0.5 s), measured from the run's start in the child.
+  const double seconds = seconds_since_child_start(started);
+  EXPECT_GE(seconds, 1.0);
+  EXPECT_LT(seconds, 1.5);
 }
 
 TEST(BudgetRunDeathTest, CppMemoryBeyondTheBudgetIsStopped) {
