@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# lunaster starts itself again with glibc's allocator tunables (lua/main.cpp, kAllocatorTunables)
+# unless GLIBC_TUNABLES is already set. Checked from outside, through /proc/PID/environ of a
+# running deck: the exec keeps the process id. (glibc writes into the original environment block
+# as it parses the tunables, so /proc shows the first of them only; the full string is what the
+# process itself and its children see.)
+# usage: allocator_settings.sh LUNASTER SCRATCH [sanitized]
+set -u
+lunaster=$(readlink -f "$1"); scratch=$2
+if [ "${3:-}" = sanitized ]; then echo "sanitizer build: its own allocator, no restart"; exit 77; fi
+rm -rf "$scratch"; mkdir -p "$scratch"; cd "$scratch" || exit 1
+# About half a second of Lua, long enough to read the environment of the running process.
+printf 'local x = 0\nfor i = 1, 3e8 do x = x + i end\n' > spin.lua
+
+# environment_of PID: the GLIBC_TUNABLES entry of the running process ("absent" if it has none),
+# once the process runs the deck (lunaster is past its start); "ended" if it ended first.
+environment_of() {
+  local pid=$1 i
+  for i in $(seq 1 100); do
+    [ -r "/proc/$pid/environ" ] || { echo ended; return; }
+    if [ "$(readlink "/proc/$pid/exe")" = "$lunaster" ] && [ "$i" -gt 4 ]; then
+      tr '\0' '\n' < "/proc/$pid/environ" | grep '^GLIBC_TUNABLES=' || echo absent
+      return
+    fi
+    sleep 0.05
+  done
+  echo "still starting"
+}
+
+fail=0
+# The arguments go through the new start: `run spin.lua` ends with 0, a lost argument with 2.
+env -u GLIBC_TUNABLES "$lunaster" run spin.lua -q & pid=$!
+seen=$(environment_of $pid); wait $pid; code=$?
+if [ "$seen" != "GLIBC_TUNABLES=glibc.malloc.hugetlb=1" ] || [ $code -ne 0 ]; then
+  echo "FAIL: started without GLIBC_TUNABLES, the run saw '$seen' and ended with $code"
+  fail=1
+fi
+GLIBC_TUNABLES= "$lunaster" run spin.lua -q & pid=$!
+seen=$(environment_of $pid); wait $pid; code=$?
+if [ "$seen" != "GLIBC_TUNABLES=" ] || [ $code -ne 0 ]; then
+  echo "FAIL: with GLIBC_TUNABLES set empty by the user, the run saw '$seen' and ended with $code"
+  fail=1
+fi
+[ $fail -eq 0 ] && echo "allocator settings: applied by default, the user's setting kept"
+exit $fail
