@@ -122,6 +122,23 @@ void configure_blas() {
       // openblas_set_num_threads asks for more (its server restarts on demand).
       if (kBlasThreads == 1) stop_blas_workers();
     }
+    // A worker that OpenBLAS starts for a wide factorisation (WideBlas) waits for its next task
+    // spinning in sched_yield for 2^28 cycles (about 0.1 s) before it sleeps: on the 3D contact
+    // benchmark that was 8 % of the run's CPU samples, each yield a system call (and on a
+    // virtual machine a hypervisor exit), between calls that come a few microseconds apart or
+    // not for the rest of the run. 2^24 cycles (a few milliseconds) keeps it awake through a
+    // factorisation's BLAS calls: `cont3d` 0.56 s against 0.72 s, system time 0.15 against
+    // 0.36 s; 2^20 gave 0.59 s; the elastic and mortar 3D runs unchanged (medians of 11,
+    // tests/bench/README.md). OpenBLAS reads the setting from its environment, at load
+    // and again when asked; the environment is then left as the user gave it.
+    if (!has_env("OPENBLAS_THREAD_TIMEOUT")) {
+      using ReadEnvironment = void (*)();
+      if (const auto read = reinterpret_cast<ReadEnvironment>(dlsym(RTLD_DEFAULT, "openblas_read_env"))) {
+        setenv("OPENBLAS_THREAD_TIMEOUT", "24", 1);
+        read();
+        unsetenv("OPENBLAS_THREAD_TIMEOUT");
+      }
+    }
     // CHOLMOD's and UMFPACK's large blocks on transparent huge pages (where the kernel offers
     // them on request): the glued k = 16 deck went from 56,000 to 24,000 page faults and
     // from 0.18 to 0.12 s of system time. Freed by free() as before.

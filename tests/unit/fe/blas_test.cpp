@@ -2,6 +2,7 @@
 // which library it is, which kernels it runs, and the kernels CHOLMOD and MUMPS
 // call against plain dense Eigen expressions, for every option combination,
 // including sizes large enough for OpenBLAS's blocked paths.
+#include <dlfcn.h>
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -58,6 +59,17 @@ TEST_F(Blas, ThreadCountIsSetOnce) {
   EXPECT_EQ(lunaster::engine::blas_threads(), lunaster::engine::kBlasThreads);
   (void)lunaster::engine::make_linear_solver(lunaster::engine::SolverKind::Cholmod);  // configures again: no change
   EXPECT_EQ(lunaster::engine::blas_threads(), lunaster::engine::kBlasThreads);
+}
+
+TEST_F(Blas, IdleWorkersSleepWithinMilliseconds) {
+  // OpenBLAS's default, 2^28 cycles of sched_yield before an idle worker sleeps, is replaced by
+  // 2^24 unless the environment names one; the environment is left as it was.
+  if (std::getenv("OPENBLAS_THREAD_TIMEOUT")) GTEST_SKIP() << "timeout given by the environment";
+  using Timeout = int (*)();
+  const auto timeout = reinterpret_cast<Timeout>(dlsym(RTLD_DEFAULT, "openblas_thread_timeout"));
+  if (!timeout) GTEST_SKIP() << "this OpenBLAS does not export openblas_thread_timeout";
+  EXPECT_EQ(timeout(), 24);
+  EXPECT_EQ(std::getenv("OPENBLAS_THREAD_TIMEOUT"), nullptr);
 }
 
 TEST_F(Blas, CholmodRegionsRunWithoutATeam) {
