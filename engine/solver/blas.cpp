@@ -126,15 +126,17 @@ void configure_blas() {
     // spinning in sched_yield for 2^28 cycles (about 0.1 s) before it sleeps: on the 3D contact
     // benchmark that was 8 % of the run's CPU samples, each yield a system call (and on a
     // virtual machine a hypervisor exit), between calls that come a few microseconds apart or
-    // not for the rest of the run. 2^24 cycles (a few milliseconds) keeps it awake through a
-    // factorisation's BLAS calls: `cont3d` 0.56 s against 0.72 s, system time 0.15 against
-    // 0.36 s; 2^20 gave 0.59 s; the elastic and mortar 3D runs unchanged (medians of 11,
-    // tests/bench/README.md). OpenBLAS reads the setting from its environment, at load
-    // and again when asked; the environment is then left as the user gave it.
+    // not for the rest of the run. 2^20 cycles (well under a millisecond) keeps it awake through
+    // a factorisation's BLAS calls: `cont3d` 0.59 s against 0.72 s (system time 0.16 against
+    // 0.36 s), 2^24 gave the same within the spread, the elastic and mortar 3D runs unchanged
+    // (medians of 11); on the refined CONTINUE deck's MUMPS factorisation 2^20 took the system
+    // time to 8 s, against 16-17 s with 2^24 and 26-27 s with OpenBLAS's default
+    // (tests/bench/README.md). OpenBLAS reads the setting from its environment, at load and
+    // again when asked; the environment is then left as the user gave it.
     if (!has_env("OPENBLAS_THREAD_TIMEOUT")) {
       using ReadEnvironment = void (*)();
       if (const auto read = reinterpret_cast<ReadEnvironment>(dlsym(RTLD_DEFAULT, "openblas_read_env"))) {
-        setenv("OPENBLAS_THREAD_TIMEOUT", "24", 1);
+        setenv("OPENBLAS_THREAD_TIMEOUT", "20", 1);
         read();
         unsetenv("OPENBLAS_THREAD_TIMEOUT");
       }
