@@ -379,8 +379,9 @@ int end_of_run(int code, const std::string& errors) {
 /// fault per 2 MB instead of 512, where the kernel offers huge pages on request), and freed
 /// blocks of up to 32 MB kept for reuse rather than unmapped and faulted in again. Each page
 /// fault costs a trap into the kernel, and on a virtual machine a hypervisor exit too: the
-/// glued 2D k = 16 deck went from 16,700 to 2,600 page faults, its system time from 0.10-0.27 s
-/// to 0.01-0.06 s (tests/bench/README.md). glibc reads them only when a process starts.
+/// glued 2D k = 16 deck went from 16,770 to 3,464 page faults (the second start's included),
+/// its system time from 0.15 to 0.11 s and its wall time from 0.51 to 0.41 s (medians of 9,
+/// tests/bench/README.md). glibc reads them only when a process starts.
 constexpr const char* kAllocatorTunables =
     "glibc.malloc.hugetlb=1:glibc.malloc.mmap_threshold=33554432:glibc.malloc.trim_threshold=134217728";
 
