@@ -53,7 +53,7 @@ const CommandSpec& defi_contact_spec() {
   static const CommandSpec spec = make_command(
       "DEFI_CONTACT", "char_contact", "Define frictionless contact zones (pass to STAT_NON_LINE CONTACT)", keywords, {},
       {Block{"FORMULATION", {"CONTINUE"}, {common::algo_reso_cont(false), continuous_zone()}, {}},
-       Block{"FORMULATION", {"DISCRETE"}, {common::algo_reso_cont(true), discrete_zone()}, {}}});
+       Block{"FORMULATION", {"DISCRETE"}, {common::algo_reso_cont(true), common::iter_cont_mult(), discrete_zone()}, {}}});
   return spec;
 }
 

@@ -31,11 +31,20 @@ void say_in_keywords(Error& err) {
       replace(" within " + limit + " iterations", " within ITER_GLOB_MAXI = " + limit + " iterations");
       break;
     case Failure::What::StatusLoop:
-      replace("after " + limit + " iterations:", "after " + limit + " iterations (ITER_CONT_MAXI):");
-      for (auto& h : hints)
+      if (f.per_point > 0)
+        replace("after " + limit + " iterations:", "after " + limit + " iterations (ITER_CONT_MULT = " +
+                                                        std::to_string(f.per_point) + " per contact point, " +
+                                                        std::to_string(f.limit / f.per_point) + " points):");
+      else
+        replace("after " + limit + " iterations:", "after " + limit + " iterations (ITER_CONT_MAXI):");
+      for (auto& h : hints) {
         if (h.rfind("points cycling", 0) == 0)
           h = "points cycling between contact and no contact: try ALGO_RESO_CONT='NEWTON', a different COEF_CONT, "
               "or a finer/compatible mesh";
+        else if (h.rfind("the active set changes one contact point", 0) == 0)
+          h = "the active set (discrete formulation) changes one contact point per iteration: raise ITER_CONT_MULT "
+              "or ITER_CONT_MAXI, or start with fewer points active (CONTACT_INIT)";
+      }
       break;
     case Failure::What::GeometryLoop:
       replace("after " + limit + " re-pairings:", "after " + limit + " iterations (ITER_GEOM_MAXI):");

@@ -74,7 +74,19 @@ CHA_DISC = AFFE_CHAR_MECA{ MODELE = MO, CONTACT = _F{ METHODE = 'PENALISATION', 
 RESU_DISC = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CHMAT, EXCIT = { _F{ CHARGE = CHA }, _F{ CHARGE = CHA_DISC } },
                            COMP_ELAS = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L_INST },
                            CONVERGENCE = _F{ ITER_GLOB_MAXI = 40 } }
+-- The seed's discrete CONTRAINTE (active set, exact multipliers) on the same scene: from every
+-- slave node active, the active set opens one node in tension per iteration, 41 iterations here.
+-- Its loop is bounded as code_aster's discrete formulation bounds it, by ITER_CONT_MULT (4) per
+-- contact point, not by the 30 iterations of ITER_CONT_MAXI (which stopped this run before).
+-- Node-to-segment as PENALISATION, and as far from p0 at O.
+CHA_CTR = AFFE_CHAR_MECA{ MODELE = MO, CONTACT = _F{ METHODE = 'CONTRAINTE', GROUP_MA_ESCL = 'BLOCK_TOP',
+                                                     GROUP_MA_MAIT = 'BALL_SURF', CONTACT_INIT = 'OUI' } }
+RESU_CTR = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CHMAT, EXCIT = { _F{ CHARGE = CHA }, _F{ CHARGE = CHA_CTR } },
+                          COMP_ELAS = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L_INST },
+                          CONVERGENCE = _F{ ITER_GLOB_MAXI = 40 } }
 TEST_RESU{ RESU = {
+  _F{ RESULTAT = RESU_CTR, NUME_ORDRE = 1, GROUP_NO = 'O_BLOCK', NOM_CHAM = 'CONT_NOEU', NOM_CMP = 'PRES',
+      VALE_CALC = -5.359482069e+06, REFERENCE = 'ANALYTIQUE', VALE_REFE = -P0, PRECISION = 3.0e-2 },
   _F{ RESULTAT = RESU_PEN, NUME_ORDRE = 1, GROUP_NO = 'O_BLOCK', NOM_CHAM = 'DEPL', NOM_CMP = 'LAGS_C',
       VALE_CALC = -5.494869802e+06, REFERENCE = 'ANALYTIQUE', VALE_REFE = -P0, PRECISION = 5.0e-3 },
   _F{ RESULTAT = RESU_DISC, NUME_ORDRE = 1, GROUP_NO = 'O_BLOCK', NOM_CHAM = 'CONT_NOEU', NOM_CMP = 'PRES',

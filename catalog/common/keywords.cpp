@@ -45,8 +45,18 @@ std::vector<Keyword> contact_loop_keywords() {
           .def(10LL)
           .range(1, std::nullopt),
       real("RESI_GEOM", "Relative geometry change below which the pairing has converged").def(0.01).range(0.0, std::nullopt),
-      integer("ITER_CONT_MAXI", "Maximum number of contact status iterations").def(30LL).range(1, std::nullopt),
+      integer("ITER_CONT_MAXI",
+              "Maximum number of contact status iterations (absent: 30; with the discrete methods, ITER_CONT_MULT "
+              "per contact point)")
+          .range(1, std::nullopt),
   };
+}
+
+Keyword iter_cont_mult() {
+  return integer("ITER_CONT_MULT",
+                 "Contact status iterations allowed per contact point (absent: 4, unless ITER_CONT_MAXI is given): "
+                 "the active set adds or removes one point per iteration")
+      .range(1, std::nullopt);
 }
 
 Keyword algo_reso_cont(bool discrete) {

@@ -29,6 +29,8 @@ std::vector<Keyword> contact_loop_keywords();
 /// ALGO_RESO_CONT: 'POINT_FIXE' or 'NEWTON' for the continuous formulation; the discrete
 /// one has no status update inside Newton, so it refuses 'NEWTON'.
 Keyword algo_reso_cont(bool discrete);
+/// ITER_CONT_MULT of the discrete formulation: status iterations allowed per contact point.
+Keyword iter_cont_mult();
 
 /// The two-tier check keywords of TEST_RESU (VALE_CALC, REFERENCE, VALE_REFE, ...).
 std::vector<Keyword> test_reference_keywords();

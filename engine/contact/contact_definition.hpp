@@ -43,6 +43,10 @@ struct ContactDefinition {
   FixedPointOrNewton geometry_loop = FixedPointOrNewton::FixedPoint;  ///< ALGO_RESO_GEOM
   GeometryUpdate reac_geom = GeometryUpdate::Automatic;
   int iter_cont_maxi = 30;
+  /// When > 0, the status loop may take this many iterations per contact point instead of
+  /// iter_cont_maxi (code_aster's ITER_CONT_MULT for the discrete formulation, whose active
+  /// set adds or removes one point per iteration).
+  int status_iterations_per_point = 0;
   int iter_geom_maxi = 10;
   int nb_iter_geom = 2;      ///< with REAC_GEOM='CONTROLE'
   double resi_geom = 0.01;

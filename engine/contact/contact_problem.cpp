@@ -503,14 +503,19 @@ bool ContactProblem::settle(const Vector& u, const Log& log) {
     std::ostringstream msg;
     msg << "contact: " << changed << " status change(s), status iteration " << n_status_iter_;
     log.info(msg.str());
-    if (n_status_iter_ > def_.iter_cont_maxi) {
-      ConvergenceError err("contact status loop did not settle after " + std::to_string(def_.iter_cont_maxi) +
-                               " iterations: " + std::to_string(changed) + " contact point(s) still change status",
-                           {"points cycling between contact and no contact: statuses updated inside Newton, another "
-                            "coefficient, or a finer/compatible mesh may settle them"});
+    const int per_point = def_.status_iterations_per_point;
+    const int limit = per_point > 0 ? per_point * static_cast<int>(points_.size()) : def_.iter_cont_maxi;
+    if (n_status_iter_ > limit) {
+      ConvergenceError err("contact status loop did not settle after " + std::to_string(limit) + " iterations: " +
+                               std::to_string(changed) + " contact point(s) still change status",
+                           {per_point > 0 ? "the active set changes one contact point per iteration: more iterations "
+                                            "per point, or fewer points active at the start, may settle it"
+                                          : "points cycling between contact and no contact: statuses updated inside "
+                                            "Newton, another coefficient, or a finer/compatible mesh may settle them"});
       err.failure().what = Failure::What::StatusLoop;
-      err.failure().limit = def_.iter_cont_maxi;
+      err.failure().limit = limit;
       err.failure().count = changed;
+      err.failure().per_point = per_point;
       throw err;
     }
     return false;

@@ -38,6 +38,7 @@ struct Failure {
   What what = What::Unspecified;
   int limit = 0;
   int count = 0;
+  int per_point = 0;                      ///< StatusLoop: `limit` is this many iterations per contact point
   double value = 0.0, tolerance = 0.0;
   bool residuals_known = false;           ///< relative/absolute below are the last Newton residuals
   double relative = 0.0, absolute = 0.0;

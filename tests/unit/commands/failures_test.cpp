@@ -40,6 +40,19 @@ TEST(FailureKeywords, ContactLoopsNameTheirLimits) {
   EXPECT_NE(text(status).find("after 30 iterations (ITER_CONT_MAXI): 4 contact point(s)"), std::string::npos) << text(status);
   EXPECT_NE(text(status).find("ALGO_RESO_CONT='NEWTON'"), std::string::npos) << text(status);
 
+  // The discrete formulation's loop, bounded per contact point (ITER_CONT_MULT).
+  SolveError discrete("contact status loop did not settle after 160 iterations: 1 contact point(s) still change status",
+                      {"the active set changes one contact point per iteration: more iterations per point, or fewer "
+                       "points active at the start, may settle it"});
+  discrete.failure().what = Failure::What::StatusLoop;
+  discrete.failure().limit = 160;
+  discrete.failure().per_point = 4;
+  lunaster::cmd::say_in_keywords(discrete);
+  EXPECT_EQ(discrete.message(), "contact status loop did not settle after 160 iterations (ITER_CONT_MULT = 4 per "
+                                "contact point, 40 points): 1 contact point(s) still change status");
+  EXPECT_NE(text(discrete).find("raise ITER_CONT_MULT or ITER_CONT_MAXI"), std::string::npos) << text(discrete);
+  EXPECT_EQ(text(discrete).find("ALGO_RESO_CONT='NEWTON'"), std::string::npos) << text(discrete);
+
   SolveError geom("contact geometry loop did not converge after 10 re-pairings: geometric residual 0.5 > tolerance 0.01",
                   {"more re-pairings, smaller load increments or pairing inside Newton may help"});
   geom.failure().what = Failure::What::GeometryLoop;
