@@ -43,7 +43,7 @@ void say_in_keywords(Error& err) {
               "or a finer/compatible mesh";
         else if (h.rfind("the active set changes one contact point", 0) == 0)
           h = "the active set (discrete formulation) changes one contact point per iteration: raise ITER_CONT_MULT "
-              "or ITER_CONT_MAXI, or start with fewer points active (CONTACT_INIT)";
+              "or ITER_CONT_MAXI, or start with fewer points active (CONTACT_INIT of AFFE_CHAR_MECA's CONTACT)";
       }
       break;
     case Failure::What::GeometryLoop:
