@@ -62,7 +62,10 @@ Keyword contact() {
              real("COEF_CONT", "Augmentation coefficient of the contact Lagrangian").above(0.0),
              common::algo_reso_cont(false)},
             {at_most_one({"COEF_REGU_CONT", "COEF_CONT"})}},
-      Block{"METHODE", {"CONTRAINTE", "PENALISATION"}, {common::algo_reso_cont(true), common::iter_cont_mult()}, {}},
+      Block{"METHODE",
+            {"CONTRAINTE", "PENALISATION"},
+            {common::algo_reso_cont(true), common::iter_cont_mult()},
+            {at_most_one({"ITER_CONT_MAXI", "ITER_CONT_MULT"})}},
       Block{"METHODE", {"PENALISATION"}, {real("E_N", "Normal penalty stiffness (Pa/m)").required().above(0.0)}, {}},
   };
   for (auto& block : common::ordre_int_blocks()) blocks.push_back(block);

@@ -53,7 +53,10 @@ const CommandSpec& defi_contact_spec() {
   static const CommandSpec spec = make_command(
       "DEFI_CONTACT", "char_contact", "Define frictionless contact zones (pass to STAT_NON_LINE CONTACT)", keywords, {},
       {Block{"FORMULATION", {"CONTINUE"}, {common::algo_reso_cont(false), continuous_zone()}, {}},
-       Block{"FORMULATION", {"DISCRETE"}, {common::algo_reso_cont(true), common::iter_cont_mult(), discrete_zone()}, {}}});
+       Block{"FORMULATION",
+             {"DISCRETE"},
+             {common::algo_reso_cont(true), common::iter_cont_mult(), discrete_zone()},
+             {at_most_one({"ITER_CONT_MAXI", "ITER_CONT_MULT"})}}});
   return spec;
 }
 

@@ -383,9 +383,9 @@ int end_of_run(int code, const std::string& errors) {
 /// its system time from 0.15 to 0.11 s and its wall time from 0.51 to 0.41 s (medians of 9,
 /// tests/bench/README.md). glibc reads them only when a process starts.
 constexpr const char* kAllocatorTunables =
-    "glibc.malloc.hugetlb=1:glibc.malloc.mmap_threshold=33554432:glibc.malloc.trim_threshold=134217728";
+    "GLIBC_TUNABLES=glibc.malloc.hugetlb=1:glibc.malloc.mmap_threshold=33554432:glibc.malloc.trim_threshold=134217728";
 
-/// Starts this program again with kAllocatorTunables in its environment, unless GLIBC_TUNABLES
+/// Starts this program again with kAllocatorTunables added to its environment, unless GLIBC_TUNABLES
 /// is already set (by the user, who may set it empty to keep glibc's defaults, or by an earlier
 /// start: the processes it launches, `verify`'s runs and mpirun's ranks, inherit it), under
 /// valgrind (the new program would run outside it) or a sanitizer (its own allocator). Called
@@ -399,7 +399,6 @@ void start_with_allocator_settings(int /*argc*/, char** argv, char** envp) {
 #else
   constexpr std::size_t kMaxVariables = 4096;
   static const char* environment[kMaxVariables + 2];
-  static char tunables[160];
   std::size_t n = 0;
   for (char** e = envp; e && *e; ++e) {
     if (std::strncmp(*e, "GLIBC_TUNABLES=", 15) == 0) return;
@@ -407,8 +406,7 @@ void start_with_allocator_settings(int /*argc*/, char** argv, char** envp) {
     if (n == kMaxVariables) return;
     environment[n++] = *e;
   }
-  std::snprintf(tunables, sizeof tunables, "GLIBC_TUNABLES=%s", kAllocatorTunables);
-  environment[n++] = tunables;
+  environment[n++] = kAllocatorTunables;
   environment[n] = nullptr;
   execve("/proc/self/exe", argv, const_cast<char* const*>(environment));
 #endif

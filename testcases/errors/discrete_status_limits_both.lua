@@ -1,7 +1,7 @@
 -- Must-fail deck: the discrete formulation's status loop is bounded either per contact point
 -- (ITER_CONT_MULT) or by a number of iterations (ITER_CONT_MAXI), not both.
--- EXPECT_ERROR: discrete_status_limits_both\.lua:10: DEFI_CONTACT: .*ITER_CONT_MULT
--- EXPECT_ERROR: either ITER_CONT_MAXI or ITER_CONT_MULT
+-- EXPECT_ERROR: discrete_status_limits_both\.lua:10: DEFI_CONTACT: expected at most one of ITER_CONT_MAXI, ITER_CONT_MULT
+-- EXPECT_ERROR: got ITER_CONT_MAXI and ITER_CONT_MULT
 -- EXPECT_STATUS: 2
 DEBUT()
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = '../ssnp121a.med' }
