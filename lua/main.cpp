@@ -17,6 +17,7 @@
 #include "catalog/doc.hpp"
 #include "commands/registry.hpp"
 #include "engine/io/atomic_file.hpp"
+#include "lua/allocator_settings.h"
 #include "lua/comm_convert.hpp"
 #include "lua/export_file.hpp"
 #include "lua/runner.hpp"
@@ -374,26 +375,17 @@ int end_of_run(int code, const std::string& errors) {
   return spread->highest;
 }
 
-/// glibc's allocator settings for this program's memory (arrays of megabytes, written once):
-/// transparent huge pages under the heap and the allocator's own mappings (hugetlb=1: one page
-/// fault per 2 MB instead of 512, where the kernel offers huge pages on request), and freed
-/// blocks of up to 32 MB kept for reuse rather than unmapped and faulted in again. Each page
-/// fault costs a trap into the kernel, and on a virtual machine a hypervisor exit too: the
-/// glued 2D k = 16 deck went from 16,770 to 3,464 page faults (the second start's included),
-/// its system time from 0.15 to 0.11 s and its wall time from 0.51 to 0.41 s (medians of 9,
-/// tests/bench/README.md). glibc reads them only when a process starts.
-constexpr const char* kAllocatorTunables =
-    "GLIBC_TUNABLES=glibc.malloc.hugetlb=1:glibc.malloc.mmap_threshold=33554432:glibc.malloc.trim_threshold=134217728";
-
-/// Starts this program again with kAllocatorTunables added to its environment, unless GLIBC_TUNABLES
-/// is already set (by the user, who may set it empty to keep glibc's defaults, or by an earlier
-/// start: the processes it launches, `verify`'s runs and mpirun's ranks, inherit it), under
-/// valgrind (the new program would run outside it) or a sanitizer (its own allocator). Called
-/// from the executable's pre-initialisation array, before the libraries' constructors (OpenBLAS
-/// starts its threads in its own), so that only the loading is done twice; it allocates
-/// nothing. If the new start fails the run goes on as it is.
+/// Starts this program again with glibc's allocator settings (lua/allocator_settings.h) added to
+/// its environment, when it was started directly rather than through the launcher (lunaster,
+/// lua/launcher.c, which sets them before this program's libraries are loaded). Not when
+/// GLIBC_TUNABLES is already set (by the launcher, by the user, who may set it empty to keep
+/// glibc's defaults, or by an earlier start: the processes it launches, `verify`'s runs and
+/// mpirun's ranks, inherit it), under valgrind (the new program would run outside it) or a
+/// sanitizer (its own allocator). Called from the executable's pre-initialisation array, before
+/// the libraries' constructors (OpenBLAS starts its threads in its own), so that only the
+/// loading is done twice; it allocates nothing. If the new start fails the run goes on as it is.
 void start_with_allocator_settings(int /*argc*/, char** argv, char** envp) {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if !LUNASTER_ALLOCATOR_SETTINGS
   (void)argv;
   (void)envp;
 #else
@@ -406,7 +398,7 @@ void start_with_allocator_settings(int /*argc*/, char** argv, char** envp) {
     if (n == kMaxVariables) return;
     environment[n++] = *e;
   }
-  environment[n++] = kAllocatorTunables;
+  environment[n++] = "GLIBC_TUNABLES=" LUNASTER_ALLOCATOR_TUNABLES;
   environment[n] = nullptr;
   execve("/proc/self/exe", argv, const_cast<char* const*>(environment));
 #endif
