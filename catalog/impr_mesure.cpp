@@ -27,7 +27,9 @@ const CommandSpec& impr_mesure_spec() {
       "Append one CSV row: the cost of a STAT_NON_LINE result (unknowns, iterations, wall time per phase since "
       "the previous IMPR_MESURE, peak memory), the accuracy of its solves (RESI_GLOB_RELA reached; largest "
       "relative residual of one linear solve before and after iterative refinement, and the refinement steps) "
-      "and its errors against exact values",
+      "and its errors against exact values. Each row starts a new peak-memory window: the process's peak "
+      "resident memory (Linux VmHWM) is reset, so a whole-process peak read from outside (/usr/bin/time) "
+      "covers only what followed the last IMPR_MESURE",
       {concept_kw("RESULTAT", {"evol_noli"},
                   "Result measured; without it (a run that failed under pcall) only your columns, the phase "
                   "times and t_total are written (other columns left empty)"),
