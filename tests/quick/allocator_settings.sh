@@ -18,7 +18,7 @@ if [ "${3:-}" != sanitized ] && [ "$needed" != "libc.so.6 " ]; then
   fail=1
 fi
 if [ "${3:-}" = sanitized ]; then echo "sanitizer build: its own allocator, no restart"; exit 77; fi
-rm -rf "$scratch"; mkdir -p "$scratch"; cd "$scratch" || exit 1
+rm -rf "$scratch"; mkdir -p "$scratch"; cd "$scratch" || exit 1; scratch=$(pwd -P)
 # About half a second of Lua, long enough to read the environment of the running process.
 printf 'local x = 0\nfor i = 1, 3e8 do x = x + i end\n' > spin.lua
 
@@ -54,6 +54,12 @@ env -u GLIBC_TUNABLES "$engine" run spin.lua -q & pid=$!
 seen=$(environment_of $pid); wait $pid; code=$?
 if [ "$seen" != "GLIBC_TUNABLES=glibc.malloc.hugetlb=1" ] || [ $code -ne 0 ]; then
   echo "FAIL: the engine started directly, without GLIBC_TUNABLES, saw '$seen' and ended with $code"
+  fail=1
+fi
+# A launcher without its engine says so, with the path it tried.
+cp "$lunaster" alone; ./alone run spin.lua -q > alone.out 2>&1; code=$?
+if [ $code -ne 127 ] || ! grep -q "cannot start the engine $scratch/lunaster-engine" alone.out; then
+  echo "FAIL: a launcher without its engine ended with $code: $(cat alone.out)"
   fail=1
 fi
 [ $fail -eq 0 ] && echo "allocator settings: applied by default (launcher or engine), the user's setting kept"
