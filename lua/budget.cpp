@@ -4,11 +4,13 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -194,11 +196,34 @@ double default_memory_budget_mb() {
   return std::floor(static_cast<double>(pages) * static_cast<double>(page_size) / kMegabyte / 2.0);
 }
 
-BudgetGuard::BudgetGuard(const Budget& budget, std::string deck)
+std::chrono::steady_clock::time_point process_start() {
+  const auto now = std::chrono::steady_clock::now();
+  std::ifstream stat("/proc/self/stat");
+  std::string text;
+  std::getline(stat, text);
+  const auto name_end = text.rfind(')');  // the command name, in parentheses, may hold blanks
+  if (name_end == std::string::npos) return now;
+  std::istringstream fields(text.substr(name_end + 1));
+  std::string skipped;
+  for (int field = 3; field < 22; ++field) fields >> skipped;  // state (3) to itrealvalue (21)
+  unsigned long long start_ticks = 0;  // field 22: clock ticks after boot (CLOCK_BOOTTIME)
+  timespec boot{};
+  const long ticks_per_second = sysconf(_SC_CLK_TCK);
+  if (!(fields >> start_ticks) || ticks_per_second <= 0 || clock_gettime(CLOCK_BOOTTIME, &boot) != 0) return now;
+  // The start is kept in whole ticks, rounded down: count from the tick's end, so that a limit
+  // never falls early (it may fall up to a tick late).
+  const double age = static_cast<double>(boot.tv_sec) + 1e-9 * static_cast<double>(boot.tv_nsec) -
+                     static_cast<double>(start_ticks + 1) / static_cast<double>(ticks_per_second);
+  if (!(age > -1.0) || age > 86400.0) return now;  // unreadable, or not this run's process
+  return now - std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                   std::chrono::duration<double>(std::max(age, 0.0)));
+}
+
+BudgetGuard::BudgetGuard(const Budget& budget, std::string deck, std::chrono::steady_clock::time_point start)
     : budget_(budget), deck_(std::move(deck)), deck_thread_(pthread_self()) {
   using clock = std::chrono::steady_clock;
   if (budget_.seconds)
-    deadline_ = clock::now() + std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(*budget_.seconds));
+    deadline_ = start + std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(*budget_.seconds));
   lua_cap_ = static_cast<std::size_t>(-1);
   if (budget_.megabytes) {
     memory_bytes_ = static_cast<std::size_t>(*budget_.megabytes * kMegabyte);

@@ -186,7 +186,8 @@ int run_command(const std::vector<std::string>& args) {
   session.deck_path = deck;
   session.output_dir = out;
   session.vale_calc_report = vale_calc_report;
-  int code = lua::run_deck(deck, session, cmd::find_handler, err_stream, budget, study ? &*study : nullptr);
+  int code =
+      lua::run_deck(deck, session, cmd::find_handler, err_stream, budget, study ? &*study : nullptr, lua::process_start());
   if (code <= 1) {
     int n_ok = 0;
     for (const auto& t : session.tests) n_ok += t.ok;

@@ -254,7 +254,7 @@ void apply_export(const ExportFile& study, cmd::Session& session) {
 }
 
 int run_deck(const std::filesystem::path& given, cmd::Session& session, HandlerLookup lookup, std::ostream& err,
-             const Budget& overrides, const ExportFile* read) {
+             const Budget& overrides, const ExportFile* read, std::chrono::steady_clock::time_point start) {
   Budget budget;
   std::filesystem::path deck = given;
   try {
@@ -274,7 +274,7 @@ int run_deck(const std::filesystem::path& given, cmd::Session& session, HandlerL
     return static_cast<int>(e.kind());
   }
   if (!budget.seconds && !budget.megabytes) return run_in(deck, session, std::move(lookup), err, nullptr);
-  BudgetGuard guard(budget, deck.string());
+  BudgetGuard guard(budget, deck.string(), start);
   int code = run_in(deck, session, std::move(lookup), err, &guard);
   guard.stop();
   const int time_limit = static_cast<int>(ErrorKind::TimeLimit);

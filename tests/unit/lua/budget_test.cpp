@@ -1,6 +1,8 @@
 // Deck budgets: the header comment, the command-line override, and their enforcement inside
 // the process (Lua hook and allocator, watchdog hard stop for C++ code that never returns).
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cstdlib>
@@ -11,6 +13,7 @@
 #include <new>
 #include <sstream>
 #include <vector>
+#include <thread>
 
 #include "engine/core/memory.hpp"
 #include "lua/budget.hpp"
@@ -167,6 +170,50 @@ TEST(Budget, MemoryLimitIsWhatTheSolversPlanForWhileTheDeckRuns) {
   time_only.seconds = 60;
   lua::BudgetGuard guard(time_only, "deck.lua");
   EXPECT_EQ(engine::memory_budget(), 0u);
+}
+
+TEST(Budget, ProcessStartIsWhenTheProcessWasCreated) {
+  // A child process 0.4 s old when it asks: process_start() lies about 0.4 s back (the kernel
+  // keeps the start to a clock tick, 10 ms), not at the moment of the call.
+  int fds[2];
+  ASSERT_EQ(pipe(fds), 0);
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(400));
+    const double age = std::chrono::duration<double>(std::chrono::steady_clock::now() - lua::process_start()).count();
+    const ssize_t written = write(fds[1], &age, sizeof age);
+    _exit(written == sizeof age ? 0 : 1);
+  }
+  close(fds[1]);
+  double age = -1.0;
+  ASSERT_EQ(read(fds[0], &age, sizeof age), static_cast<ssize_t>(sizeof age));
+  close(fds[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  EXPECT_GE(age, 0.38);
+  EXPECT_LT(age, 2.0);
+}
+
+TEST(BudgetRun, TheTimeLimitCountsFromTheStartGiven) {
+  // A run whose process started 0.4 s before the deck (as a slow start under load would):
+  // a 0.5 s limit leaves the deck 0.1 s, and it stops there, well before verify's kill at the
+  // limit plus one second.
+  const auto deck = write_deck("late.lua", "DEBUT()\nlocal i = 0\nwhile true do i = i + 1 end\n");
+  std::ostringstream out, err;
+  Log log(out, 0);
+  cmd::Session session(log);
+  lua::Budget budget;
+  budget.seconds = 0.5;
+  const auto now = std::chrono::steady_clock::now();
+  const int code = lua::run_deck(
+      deck, session, [](const std::string&) -> cmd::Handler { return no_op; }, err, budget, nullptr,
+      now - std::chrono::milliseconds(400));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - now).count();
+  EXPECT_EQ(code, 5) << err.str();
+  EXPECT_NE(err.str().find("late.lua:3: time limit of 0.5 s exceeded"), std::string::npos) << err.str();
+  EXPECT_GE(seconds, 0.09);
+  EXPECT_LT(seconds, 0.4);
 }
 
 TEST(BudgetRun, LuaLoopIsStoppedAtTheDeckLineAndPcallCannotCatchIt) {
