@@ -62,7 +62,8 @@ double default_memory_budget_mb();
 /// its 10 ms clock tick), or now if that cannot be read. `lunaster verify` counts a deck's time limit from the
 /// moment it starts the child, so the child counts its own from its creation too: its start
 /// (70 libraries to load, much slower under a sanitizer or on a loaded machine) is part of the
-/// run, and the run stops itself before verify's kill, one second past the limit.
+/// run, and the run stops itself before verify's kill, one second past the limit. (Not under
+/// mpirun: there verify gives mpirun's start-up a grace of its own.)
 std::chrono::steady_clock::time_point process_start();
 
 class BudgetGuard {

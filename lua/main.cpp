@@ -2,6 +2,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -186,8 +187,11 @@ int run_command(const std::vector<std::string>& args) {
   session.deck_path = deck;
   session.output_dir = out;
   session.vale_calc_report = vale_calc_report;
-  int code =
-      lua::run_deck(deck, session, cmd::find_handler, err_stream, budget, study ? &*study : nullptr, lua::process_start());
+  // A run's time limit counts from the process's creation, as verify counts it from the spawn;
+  // under mpirun, from the deck's start (verify gives mpirun's own start-up a grace of its own,
+  // kVerifyMpiKillGraceSeconds, and a rank cannot know when mpirun started).
+  const auto start = engine::parallel::launched_by_mpi() ? std::chrono::steady_clock::now() : lua::process_start();
+  int code = lua::run_deck(deck, session, cmd::find_handler, err_stream, budget, study ? &*study : nullptr, start);
   if (code <= 1) {
     int n_ok = 0;
     for (const auto& t : session.tests) n_ok += t.ok;
