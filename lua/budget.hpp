@@ -59,11 +59,11 @@ double default_memory_budget_mb();
 /// reserved arenas (OpenMP, OpenBLAS, malloc) and turns them into failed allocations deep
 /// inside libraries; the resident memory is what the budget protects.
 /// When this process was created, on the steady clock (the kernel's start time, at the end of
-/// its 10 ms clock tick), or now if that cannot be read. `lunaster verify` counts a deck's time limit from the
-/// moment it starts the child, so the child counts its own from its creation too: its start
-/// (70 libraries to load, much slower under a sanitizer or on a loaded machine) is part of the
-/// run, and the run stops itself before verify's kill, one second past the limit. (Not under
-/// mpirun: there verify gives mpirun's start-up a grace of its own.)
+/// its 10 ms clock tick), or now if that cannot be read. `lunaster verify` counts a deck's time
+/// limit from the moment it starts the child, so the child counts its own from its creation
+/// too: its start (70 libraries to load, much slower under a sanitizer or on a loaded machine)
+/// is part of the run, and the run stops itself before verify's kill, one second past the
+/// limit. (Not under mpirun: there verify gives mpirun's start-up a grace of its own.)
 std::chrono::steady_clock::time_point process_start();
 
 class BudgetGuard {
@@ -74,7 +74,7 @@ class BudgetGuard {
   static constexpr std::chrono::milliseconds kOtherRanksDelay{1000};
 
   /// Starts the watchdog for `budget`; `deck` names the deck in messages. The time limit
-  /// counts from `start` (a whole `lunaster run`: process_start()).
+  /// counts from `start` (`lunaster run`: process_start(), or the deck's start under mpirun).
   BudgetGuard(const Budget& budget, std::string deck,
               std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now());
   ~BudgetGuard();

@@ -93,7 +93,8 @@ void apply_export(const ExportFile& study, cmd::Session& session);
 /// The budget is the deck header's (read_budget_header) with the fields of
 /// `overrides` (the command line) replacing it; a hard stop ends the process.
 /// An .export the caller has already read (to open its message file) is passed as `read`.
-/// The time limit counts from `start` (`lunaster run`: the process's creation, process_start()).
+/// The time limit counts from `start` (`lunaster run`: the process's creation, process_start(),
+/// or the deck's start under mpirun).
 int run_deck(const std::filesystem::path& deck, cmd::Session& session, HandlerLookup lookup, std::ostream& err,
              const Budget& overrides = {}, const ExportFile* read = nullptr,
              std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now());
