@@ -89,13 +89,15 @@ void read_contact_loops(const catalog::Args& args, engine::ContactDefinition& de
   }
   if (opt(args, "NB_ITER_GEOM")) def.nb_iter_geom = static_cast<int>(args.integer("NB_ITER_GEOM"));
   if (opt(args, "ITER_GEOM_MAXI")) def.iter_geom_maxi = static_cast<int>(args.integer("ITER_GEOM_MAXI"));
-  // The discrete formulation's status loop is bounded per contact point (ITER_CONT_MULT, 4 by
-  // default, as code_aster's), unless ITER_CONT_MAXI names a number of iterations (the
-  // catalogue refuses both).
+  // The discrete formulation's status loop is bounded per contact point (ITER_CONT_MULT, whose
+  // default is code_aster's), unless ITER_CONT_MAXI names a number of iterations (the catalogue
+  // refuses both, so ITER_CONT_MULT has no catalogue default).
+  constexpr int kIterContMultDefault = 4;
   if (opt(args, "ITER_CONT_MAXI"))
     def.iter_cont_maxi = static_cast<int>(args.integer("ITER_CONT_MAXI"));
   else if (args.declares("ITER_CONT_MULT"))
-    def.status_iterations_per_point = opt(args, "ITER_CONT_MULT") ? static_cast<int>(args.integer("ITER_CONT_MULT")) : 4;
+    def.status_iterations_per_point =
+        opt(args, "ITER_CONT_MULT") ? static_cast<int>(args.integer("ITER_CONT_MULT")) : kIterContMultDefault;
   if (opt(args, "RESI_GEOM")) def.resi_geom = args.real("RESI_GEOM");
 }
 

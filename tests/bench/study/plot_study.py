@@ -388,8 +388,8 @@ def hertz_limits(rows):
     methods' pressure on the axis of the AXIS families, and the 3D-U meshes whose cell at O
     holds the whole contact zone."""
     lines = []
-    discrete = [r for r in hertz_ok(rows) if r["family"].startswith("AXIS") and not r["method"].startswith("CalculiX")
-                and r["method"].split("-")[0] in ("CONTRAINTE", "PENALISATION")]
+    discrete = [r for r in hertz_ok(rows)
+                if r["family"].startswith("AXIS") and r["method"].split("-")[0] in ("CONTRAINTE", "PENALISATION")]
     if discrete:
         errs = [num(r, "err_p0") for r in discrete]
         flat = sorted((r for r in hertz_ok(rows) if r["family"] == "D_PLAN" and r["method"] == "CONTRAINTE"),
@@ -407,7 +407,7 @@ def hertz_limits(rows):
     uniform = sorted((r for r in hertz_ok(rows) if r["family"] == "3D-U"), key=lambda r: float(r["k"]))
     coarse = [r for r in uniform if 1.0 / float(r["k"]) >= 0.1]  # h0 = R/k against a = R/10
     if coarse:
-        ks = sorted({r["k"] for r in coarse}, key=float)
+        ks = list(dict.fromkeys(r["k"] for r in coarse))  # coarse is sorted by k
         by_method = {}
         for r in coarse:
             by_method.setdefault(r["method"], []).append(f"k={r['k']} {pct(num(r, 'err_p0'))}")
