@@ -58,18 +58,32 @@ std::string body_name(const Mesh& mesh, const std::vector<int>& body) {
 /// holding nodes / body size)^2, a free one round-off.
 constexpr double kUnheldEigenvalue = 1e-12;
 
-SolveError rigid_body_error(const FeModel& model, const std::vector<int>& body, int node, int component, double t) {
+/// `pivot`: the factorisation's failure; a weak pivot (one that lost more digits than
+/// allowed, not a zero or negative one) carries the digits lost (value) and allowed (limit).
+SolveError rigid_body_error(const FeModel& model, const std::vector<int>& body, int node, int component, double t,
+                            const Failure& pivot = {}) {
   char inst[32];
   std::snprintf(inst, sizeof inst, "%.6e", t);
   const Mesh& mesh = *model.mesh;
-  SolveError err(
-      "the stiffness matrix is singular at instant " + std::string(inst) + ": " + body_name(mesh, body) +
-          " has a rigid-body mode (free to move along " + component_name(component) + ", detected at node " +
-          mesh.node_names[node] + ")",
-      {"nothing holds this body in that direction: impose a displacement on it,",
-       "or, if only contact holds it, make its contact active from the first iteration",
-       "so that the contact pressure carries the load from the start"});
+  std::string weak;
+  std::vector<std::string> hints = {"nothing holds this body in that direction: impose a displacement on it,",
+                                    "or, if only contact holds it, make its contact active from the first iteration",
+                                    "so that the contact pressure carries the load from the start"};
+  if (pivot.value > 0.0) {
+    char digits[96];
+    std::snprintf(digits, sizeof digits, "; a pivot lost %.1f significant digits, more than the %d allowed",
+                  pivot.value, pivot.limit);
+    weak = digits;
+    hints.push_back("if a much softer part holds it (a stiffness ratio near 1e-" + std::to_string(pivot.limit) +
+                    "), allow more digits or go on past singular pivots");
+  }
+  SolveError err("the stiffness matrix is singular at instant " + std::string(inst) + ": " + body_name(mesh, body) +
+                     " has a rigid-body mode (free to move along " + component_name(component) +
+                     ", detected at node " + mesh.node_names[node] + weak + ")",
+                 std::move(hints));
   err.failure().what = Failure::What::RigidBodyMode;
+  err.failure().value = pivot.value;
+  err.failure().limit = pivot.limit;
   return err;
 }
 
@@ -77,7 +91,7 @@ SolveError rigid_body_error(const FeModel& model, const std::vector<int>& body, 
 
 std::optional<SolveError> find_rigid_body_mode(const FeModel& model, const DofMap& dofs,
                                                const std::vector<int>& free_index,
-                                               const SparseMatrix& elastic, double t) {
+                                               const SparseMatrix& elastic, double t, SingularityTest test) {
   // Reduced elastic matrix on the free displacement equations only (`elastic` is on the
   // free equations, numbered by free_index).
   std::vector<int> reduced(elastic.cols(), -1), back;
@@ -88,15 +102,20 @@ std::optional<SolveError> find_rigid_body_mode(const FeModel& model, const DofMa
     }
   SparseMatrix k = restrict_matrix(elastic, reduced, static_cast<int>(back.size()));
   auto chol = make_linear_solver(SolverKind::Cholmod);
+  test.stop = true;
+  chol->set_singularity_test(test);
   int column = -1;
+  Failure pivot;
   try {
     chol->factorize(k, MatrixKind::SymmetricPositiveDefinite);
-  } catch (const SolveError&) {
+  } catch (const SolveError& err) {
     column = chol->failed_column();
+    pivot = err.failure();
   }
   if (column < 0 || column >= static_cast<int>(back.size())) return std::nullopt;
   const int eq = back[column];
-  return rigid_body_error(model, body_of_node(model, dofs.node_of(eq)), dofs.node_of(eq), dofs.component_of(eq), t);
+  return rigid_body_error(model, body_of_node(model, dofs.node_of(eq)), dofs.node_of(eq), dofs.component_of(eq), t,
+                          pivot);
 }
 
 std::optional<SolveError> find_unheld_body(const FeModel& model, const DofMap& dofs,
@@ -185,8 +204,9 @@ std::optional<SolveError> find_unheld_body(const FeModel& model, const DofMap& d
 }
 
 SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, const std::vector<int>& free_index,
-                                    const SparseMatrix& elastic, const SolveError& original, double t) {
-  if (auto rigid = find_rigid_body_mode(model, dofs, free_index, elastic, t)) return *rigid;
+                                    const SparseMatrix& elastic, const SolveError& original, double t,
+                                    SingularityTest test) {
+  if (auto rigid = find_rigid_body_mode(model, dofs, free_index, elastic, t, test)) return *rigid;
   char inst[32];
   std::snprintf(inst, sizeof inst, "%.6e", t);
   SolveError err("the system at instant " + std::string(inst) +

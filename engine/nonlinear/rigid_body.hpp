@@ -22,9 +22,12 @@ namespace lunaster::engine {
 /// or nothing if that part is regular (CHOLMOD with its pivot-ratio test).
 /// `elastic` is the elastic stiffness on the free equations, column free_index[eq] for
 /// equation eq.
+/// `test`: the pivots that count as singular (its `stop` is not read: the search stops at
+/// the first).
 std::optional<SolveError> find_rigid_body_mode(const FeModel& model, const DofMap& dofs,
                                                const std::vector<int>& free_index,
-                                               const SparseMatrix& elastic, double t);
+                                               const SparseMatrix& elastic, double t,
+                                               SingularityTest test = {});
 
 /// The rigid-body error for a body (connected set of cells) that no condition holds:
 /// a translation or rotation of it (AXIS: the axial translation) that vanishes on every
@@ -37,6 +40,7 @@ std::optional<SolveError> find_unheld_body(const FeModel& model, const DofMap& d
                                            double t);
 
 SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, const std::vector<int>& free_index,
-                                    const SparseMatrix& elastic, const SolveError& original, double t);
+                                    const SparseMatrix& elastic, const SolveError& original, double t,
+                                    SingularityTest test = {});
 
 }  // namespace lunaster::engine

@@ -21,6 +21,7 @@
 #include "engine/parallel/mpi_runtime.hpp"
 #include "engine/solver/krylov.hpp"
 #include "engine/solver/saddle_solver.hpp"
+#include "engine/solver/singularity.hpp"
 
 namespace lunaster::engine {
 
@@ -354,11 +355,19 @@ SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err
   // elastic_.ff is the whole K_ff unless the model is shared or K_ff went to the backend
   // (also when the backend failed after taking it).
   const bool whole_here = !distributed_ && !elastic_in_solver_ && (elastic_.ff.nonZeros() > 0 || elastic_.equation.empty());
-  if (whole_here) return diagnose_singular_system(model_, dofs_, cons.free_index, elastic_.ff, err, t);
+  if (whole_here) return diagnose_singular_system(model_, dofs_, cons.free_index, elastic_.ff, err, t, diagnosis_test());
   SplitMatrix whole;
   SparseMatrix k = assemble_stiffness_matrix(model_, dofs_);
   split_matrix(k, elastic_.constrained, whole);
-  return diagnose_singular_system(model_, dofs_, cons.free_index, whole.ff, err, t);
+  return diagnose_singular_system(model_, dofs_, cons.free_index, whole.ff, err, t, diagnosis_test());
+}
+
+SingularityTest StaticSolver::diagnosis_test() const {
+  // A failure's culprit is looked for with the run's digits, or code_aster's default 8 when
+  // the run asked for no test; the diagnosis always stops at it.
+  SingularityTest test;
+  if (options_.singularity.digits >= 0) test.digits = options_.singularity.digits;
+  return test;
 }
 
 SolverKind StaticSolver::backend_for(MatrixKind kind) {
@@ -599,6 +608,7 @@ void StaticSolver::choose_interface(const Constraints& cons, const std::vector<T
   on_interface_.assign(cons.n_free, 0);
   for (int j : eqs) on_interface_[j] = 1;
   interface_ = make_interface_solver(std::move(eqs));
+  interface_->set_singularity_test(options_.singularity);
   interface_use_ = 1;
 }
 
@@ -1008,7 +1018,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       // - then, for what geometry does not see (a mechanism inside a body), by a Cholesky
       //   factorisation of K_ff, for UMFPACK and MUMPS, which return some solution of a
       //   singular but consistent system. CHOLMOD's own factorisation stops on such a system
-      //   (diagnosed below), the interface solver's reference is that factorisation, an
+      //   (diagnosed below; a run told to go on past singular pivots is warned instead), the
+      //   interface solver's reference is that factorisation, an
       //   iterative backend chosen because factorising does not fit skips it, and so does a
       //   shared model, which would need the whole stiffness on one rank.
       if (!rigid_checked_ && (!contact_ || contact_->n_active() == 0)) {
@@ -1017,11 +1028,19 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           related.push_back(e.eq);
           for (const auto& term : e.terms) related.push_back(term.first);
         }
-        if (auto rigid = find_unheld_body(model_, dofs_, cons.free_index, related, t)) throw *rigid;
-        if (interface_use_ != 1 && backend != SolverKind::Cholmod && backend != SolverKind::Petsc && !distributed_) {
+        // Going on past a singular matrix was asked for: a body held by nothing is a warning.
+        const auto report = [this](const SolveError& rigid) {
+          if (options_.singularity.stop) throw rigid;
+          log_.warning("going on as asked with a singular system: " + rigid.message());
+        };
+        const auto unheld = find_unheld_body(model_, dofs_, cons.free_index, related, t);
+        if (unheld) report(*unheld);
+        if (!unheld && interface_use_ != 1 && backend != SolverKind::Cholmod && backend != SolverKind::Petsc && !distributed_ &&
+            options_.singularity.digits >= 0) {
           Stopwatch watch(stats_.assemble_seconds);
           restore_elastic();  // K_ff itself, without this iteration's terms
-          if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, elastic_.ff, t)) throw *rigid;
+          if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, elastic_.ff, t, options_.singularity))
+            report(*rigid);
           update_system(cons, k_contact, condensed, eliminated_eqs);  // the terms again
         }
         rigid_checked_ = true;
@@ -1064,6 +1083,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         backend_solver->set_ordering(options_.ordering);
         backend_solver->set_memory(options_.memory);
         backend_solver->set_workspace_relaxation(options_.workspace_relaxation);
+        backend_solver->set_singularity_test(options_.singularity);
       }
       LinearSolver* const solver = via_interface ? interface_.get() : backend_solver.get();
       const bool iterative = solver->iterative();
@@ -1126,6 +1146,17 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           throw diagnose(cons, err, t);
         }
         ++stats_.factorisations;
+        // A singular matrix that the run goes past, as asked: said at each factorisation.
+        if (const std::string note = solver->singular_note(); !note.empty()) {
+          std::string where;
+          if (const int column = solver->singular_column(); column >= 0)
+            for (int eq = 0; eq < n && where.empty(); ++eq)
+              if (cons.free_index[eq] == column) where = " at " + describe_equation(*model_.mesh, dofs_, eq);
+          char inst[32];
+          std::snprintf(inst, sizeof inst, "%.6e", t);
+          log_.warning("singular matrix at instant " + std::string(inst) + where + ", going on as asked: " +
+                       solver->name() + ": " + note);
+        }
         // What an asked-for ordering and out-of-core factors came to, said once while it holds.
         const auto say_once = [this](const std::string& line, std::string& said) {
           if (line != said) log_.info(line);

@@ -46,6 +46,10 @@ struct NewtonOptions {
   FactorMemory memory = FactorMemory::Auto;
   /// MUMPS's working space beyond its estimate, in % (SOLVEUR PCENT_PIVOT, ICNTL(14)); 0: its default.
   int workspace_relaxation = 0;
+  /// Which pivots make a factorisation singular, and whether a singular one stops the run
+  /// (SOLVEUR NPREC, STOP_SINGULIER). Not stopping also lets a body that no condition holds
+  /// through, with a warning: the factorisation then chooses its position.
+  SingularityTest singularity;
   /// Print each Krylov iteration's residual in the log (code_aster's INFO=2).
   bool krylov_history = false;
   int subdivide_levels = 0;  ///< on a Newton failure, split the step this many times at most
@@ -164,6 +168,8 @@ class StaticSolver {
   /// A solve failure explained by the elastic stiffness (rigid-body modes, a null pivot);
   /// with a shared model the whole stiffness is assembled for it first.
   SolveError diagnose(const Constraints& cons, const SolveError& err, double t) const;
+  /// The singularity test a diagnosis factorises with.
+  SingularityTest diagnosis_test() const;
 
   /// The elastic stiffness K split by the Dirichlet conditions of the run (one set for every
   /// instant, only the imposed values follow the load functions): K_ff (numbered as

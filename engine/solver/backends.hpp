@@ -28,9 +28,4 @@ std::vector<int> given_ordering(const SparseMatrix& a, FactorOrdering ordering);
 /// increasing degree, the whole order reversed. order[k] is the vertex placed k-th.
 std::vector<int> reverse_cuthill_mckee(const std::vector<int>& xadj, const std::vector<int>& adj);
 
-/// Pivot-ratio threshold used to call a factorisation singular: a pivot that
-/// lost more than this relative size against its matrix diagonal (about 10
-/// significant digits) marks a rigid-body mode or a missing boundary condition.
-constexpr double kSingularPivotRatio = 1e-10;
-
 }  // namespace lunaster::engine

@@ -9,6 +9,8 @@
 #include <cholmod.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <cstdint>
 #include <cstddef>
@@ -66,12 +68,14 @@ class CholmodSolver final : public LinearSolver {
     ordering_ = ordering;
   }
   std::string ordering_used() const override { return ordering_used_; }
+  void set_singularity_test(SingularityTest test) override { test_ = test; }
+  int singular_column() const override { return singular_; }
+  std::string singular_note() const override { return singular_note_; }
 
  private:
   bool same_pattern(const SparseMatrix& a, std::uint64_t fingerprint) const {
     return factor_ && n_ == a.cols() && nnz_ == a.nonZeros() && fingerprint_ == fingerprint;
   }
-  int smallest_pivot_column(const SparseMatrix& a) const;
   [[noreturn]] void fail(int column, const std::string& why);
 
   mutable cholmod_common common_{};
@@ -83,6 +87,9 @@ class CholmodSolver final : public LinearSolver {
   bool wide_ = false;               ///< factorised with two BLAS threads (per analysis)
   FactorOrdering ordering_ = FactorOrdering::Auto;
   std::string ordering_used_;       ///< of the last analysis
+  SingularityTest test_;            ///< which pivots are singular, and whether that stops
+  int singular_ = -1;               ///< the weak pivot the last factorisation went past, or -1
+  std::string singular_note_;
   int failed_ = -1;
   bool ready_ = false;
 };
@@ -232,10 +239,16 @@ void CholmodSolver::fail(int column, const std::string& why) {
                     "(rigid-body modes) and the material"});
 }
 
-/// Original column of the first pivot that lost more than kSingularPivotRatio
-/// against its diagonal, or -1. Supernodal layout: column j of supernode s
-/// has its diagonal at x[px[s] + j * (nsrow + 1)].
-int weak_pivot_column(const cholmod_factor* factor, const Vector& diag) {
+/// The first pivot that lost more than the significant digits `ratio` allows against its
+/// diagonal (L_jj^2 <= ratio |A_jj|): its original column and the digits it lost; column -1
+/// when none did or ratio is 0. Supernodal layout: column j of supernode s has its diagonal at
+/// x[px[s] + j * (nsrow + 1)].
+struct WeakPivot {
+  int column = -1;
+  double digits_lost = 0.0;
+};
+WeakPivot weak_pivot(const cholmod_factor* factor, const Vector& diag, double ratio) {
+  if (ratio <= 0.0 || !factor->is_super) return {};
   const auto* perm = static_cast<const int*>(factor->Perm);
   const auto* lx = static_cast<const double*>(factor->x);
   const auto* super = static_cast<const int*>(factor->super);
@@ -247,13 +260,11 @@ int weak_pivot_column(const cholmod_factor* factor, const Vector& diag) {
       const int j = k - super[s];
       const double l = lx[px[s] + static_cast<size_t>(j) * (nsrow + 1)];
       const int col = perm ? perm[k] : k;
-      if (l * l <= kSingularPivotRatio * std::abs(diag(col))) return col;
+      if (l * l <= ratio * std::abs(diag(col))) return {col, std::log10(std::abs(diag(col)) / (l * l))};
     }
   }
-  return -1;
+  return {};
 }
-
-int CholmodSolver::smallest_pivot_column(const SparseMatrix& a) const { return weak_pivot_column(factor_, a.diagonal()); }
 
 /// The supernodal factor's arrays (CHOLMOD's layout: supernode s holds columns super[s] to
 /// super[s+1]-1, its rows are ls[pi[s]..pi[s+1]), its values the column-major block at px[s]).
@@ -500,8 +511,24 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     throw SolveError::out_of_memory("CHOLMOD", m->rows(), "numeric factorisation");
   }
   if (!ok || common_.status < CHOLMOD_OK) fail(-1, "factorisation failed (status " + std::to_string(common_.status) + ")");
-  const int weak = factor_->is_super ? smallest_pivot_column(*m) : -1;
-  if (weak >= 0) fail(weak, "numerically singular matrix (pivot lost more than 10 digits)");
+  singular_ = -1;
+  singular_note_.clear();
+  if (const WeakPivot weak = weak_pivot(factor_, m->diagonal(), test_.pivot_ratio()); weak.column >= 0) {
+    char lost[96];
+    std::snprintf(lost, sizeof lost, "pivot lost %.1f significant digits (more than %d)", weak.digits_lost,
+                  test_.digits);
+    if (test_.stop) {
+      try {
+        fail(weak.column, std::string("numerically singular matrix (") + lost + ")");
+      } catch (SolveError& err) {  // the digits, for a diagnosis
+        err.failure().value = weak.digits_lost;
+        err.failure().limit = test_.digits;
+        throw;
+      }
+    }
+    singular_ = weak.column;
+    singular_note_ = lost;
+  }
   ready_ = true;
 }
 
@@ -555,9 +582,11 @@ class CholmodInterfaceSolver final : public InterfaceSolver {
   Vector solve(const Vector& b) const override;
   std::string name() const override { return "CHOLMOD with the contact interface condensed"; }
   const std::vector<int>& interface() const override { return interface_; }
+  void set_singularity_test(SingularityTest test) override { test_ = test; }
 
  private:
   std::vector<int> interface_;
+  SingularityTest test_;  ///< the reference's weak pivots (a rigid-body mode): no condensation
   std::vector<int> slot_;  ///< per equation: its index in the interface (its order in L), -1 inside
   mutable cholmod_common common_{};
   cholmod_factor* factor_ = nullptr;
@@ -646,9 +675,9 @@ bool CholmodInterfaceSolver::factorize_reference(SparseMatrix& r, double max_den
   wide_ = factor_ && wide_factor(factor_, n);
   const WideBlas threads(wide_);
   const int ok = factor_ ? cholmod_factorize(&view, factor_, &common_) : 0;
-  // A pivot that lost 10 digits is a rigid-body mode (the driver's check, which this
-  // factorisation replaces).
-  if (factor_ && ok && common_.status == CHOLMOD_OK && weak_pivot_column(factor_, r.diagonal()) >= 0)
+  // A pivot that lost more digits than the run allows is a rigid-body mode (the driver's
+  // check, which this factorisation replaces): the caller solves without condensing.
+  if (factor_ && ok && common_.status == CHOLMOD_OK && weak_pivot(factor_, r.diagonal(), test_.pivot_ratio()).column >= 0)
     common_.status = CHOLMOD_NOT_POSDEF;
   if (!factor_ || !ok || common_.status != CHOLMOD_OK) {
     restore();

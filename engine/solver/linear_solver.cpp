@@ -80,11 +80,15 @@ class IterativeWithFallback final : public LinearSolver {
   }
   bool multiply(const Vector& x, Vector& y) const override { return !fallen_ && iterative_->multiply(x, y); }
   int iterations() const override { return fallen_ ? 0 : iterative_->iterations(); }
+  void set_singularity_test(SingularityTest test) override { test_ = test; }  // the factorisation's, if it comes
+  int singular_column() const override { return fallen_ ? direct_->singular_column() : -1; }
+  std::string singular_note() const override { return fallen_ ? direct_->singular_note() : std::string(); }
 
  private:
   void fall_back(const std::string& why) const {
     fallen_ = true;
     direct_ = make_linear_solver(direct_kind_);
+    direct_->set_singularity_test(test_);
     if (note_)
       note_("  SOLVEUR METHODE='AUTO': " + iterative_->name() + " failed (" + why + "); " + direct_->name() +
             " factorises the system from now on");
@@ -98,6 +102,7 @@ class IterativeWithFallback final : public LinearSolver {
   mutable bool fallen_ = false;
   const SparseMatrix* a_ = nullptr;
   MatrixKind kind_ = MatrixKind::SymmetricPositiveDefinite;
+  SingularityTest test_;
 };
 
 }  // namespace
@@ -106,6 +111,8 @@ std::unique_ptr<LinearSolver> make_iterative_with_fallback(const IterativeSettin
                                                            std::function<void(const std::string&)> note) {
   return std::make_unique<IterativeWithFallback>(iterative, direct, std::move(note));
 }
+
+double SingularityTest::pivot_ratio() const { return digits < 0 ? 0.0 : std::pow(10.0, -digits); }
 
 double relative_residual(const SparseMatrix& a, const Vector& x, const Vector& b) {
   return relative_residual([&a](const Vector& v) -> Vector { return a * v; }, x, b);

@@ -84,6 +84,20 @@ inline bool any_backend_orders_by(FactorOrdering ordering) {
 /// factorisation exceeds 80 % of the memory available to this process.
 enum class FactorMemory { Auto, InCore, OutOfCore };
 
+/// When a factorisation calls its matrix singular (code_aster's SOLVEUR NPREC and
+/// STOP_SINGULIER). A pivot is singular when it lost more than `digits` significant digits:
+/// CHOLMOD compares each pivot with its matrix diagonal (L_jj^2 <= 10^-digits |A_jj|); MUMPS
+/// detects null pivots below 10^-digits in its scaled matrix (ICNTL(24) = 1, CNTL(3) =
+/// -10^-digits) and sets them to 1e20 (CNTL(5)), so that the solution is zero along them.
+/// digits < 0: no test (CHOLMOD still stops on a zero or negative pivot, which it cannot go
+/// past). `stop`: a singular matrix is a SolveError; otherwise the factorisation is kept, as
+/// far as the backend can go, and `singular_note()` says what was found.
+struct SingularityTest {
+  int digits = 8;
+  bool stop = true;
+  double pivot_ratio() const;  ///< 10^-digits; 0 when digits < 0
+};
+
 /// Direct solver: factorise once, solve for many right-hand sides.
 class LinearSolver {
  public:
@@ -128,6 +142,14 @@ class LinearSolver {
   /// default. MUMPS doubles it when a factorisation runs short, as before. The others size
   /// their workspace exactly and ignore it.
   virtual void set_workspace_relaxation(int /*percent*/) {}
+  /// Which pivots the next factorisations call singular, and whether that stops them (the
+  /// direct backends; UMFPACK and PETSc keep their own tests).
+  virtual void set_singularity_test(SingularityTest /*test*/) {}
+  /// What the last factorisation found singular and went past (SingularityTest::stop false):
+  /// the first such equation (this system's numbering), or -1 when it found none.
+  virtual int singular_column() const { return -1; }
+  /// The same, in words ("pivot lost 9.3 digits", "2 null pivots, set to 1e20"); empty when none.
+  virtual std::string singular_note() const { return {}; }
   /// How the last factorisation held its factors, when it was not simply in memory as
   /// usual ("out of core: ...", or what a workspace relaxation asked for came to); empty
   /// otherwise.

@@ -4,8 +4,9 @@
 /// part in the factorisation and the solution is broadcast from the host. The matrix is
 /// centralised on the host, rank 0, unless the layout is distributed (each rank's matrix
 /// holds its own columns): then each rank passes the entries of its columns (ICNTL(18) = 3),
-/// and no rank ever holds the whole matrix. Null-pivot detection (ICNTL(24) = 1) reports singular matrices and
-/// the first null pivot's equation.
+/// and no rank ever holds the whole matrix. Null-pivot detection (ICNTL(24) = 1, its threshold from the
+/// SingularityTest) reports singular matrices and the first null pivot's equation, or sets the null
+/// pivots aside when the run goes on past them.
 #include <unistd.h>
 
 #include <algorithm>
@@ -88,6 +89,9 @@ class MumpsSolver final : public LinearSolver {
   void set_workspace_relaxation(int percent) override { relaxation_ = percent; }
   std::string memory_used() const override { return memory_note_; }
   bool takes_distributed() const override { return true; }
+  void set_singularity_test(SingularityTest test) override { test_ = test; }
+  int singular_column() const override { return singular_; }
+  std::string singular_note() const override { return singular_note_; }
 
  private:
   void release() {
@@ -100,6 +104,15 @@ class MumpsSolver final : public LinearSolver {
   /// MUMPS's numeric factorisation (job 2) on the analysis in id_, with two BLAS threads where
   /// the analysis estimated a large one (wide_).
   void factorise_numerically() {
+    // Null pivots as code_aster detects them (SOLVEUR NPREC): below 10^-NPREC in MUMPS's
+    // scaled matrix (CNTL(3) < 0: that absolute threshold; the scaling makes it independent of
+    // the units), set to 1e20 (CNTL(5)) so that the solution is zero along them; NPREC < 0: no
+    // detection. A symmetric positive definite factorisation (SYM = 1) detects none (it stops
+    // on an exact zero only): the driver's check factorises K_ff with CHOLMOD for it.
+    const bool detect = test_.digits >= 0;
+    id_.icntl[23] = detect ? 1 : 0;  // ICNTL(24)
+    id_.cntl[2] = detect ? -test_.pivot_ratio() : 0.0;
+    id_.cntl[4] = detect ? 1e20 : 0.0;
     id_.job = 2;
     const WideBlas threads(wide_);
     dmumps_c(&id_);
@@ -134,6 +147,9 @@ class MumpsSolver final : public LinearSolver {
   bool wide_ = false;         ///< factorised with two BLAS threads (per analysis)
   FactorOrdering ordering_ = FactorOrdering::Auto;
   FactorOrdering given_ = FactorOrdering::Auto;  ///< the ordering given to the last analysis (ICNTL(7) = 1)
+  SingularityTest test_;  ///< null pivots (ICNTL(24), CNTL(3), CNTL(5)), and whether they stop
+  int singular_ = -1;     ///< the first null pivot the last factorisation went past, or -1
+  std::string singular_note_;
   FactorMemory memory_ = FactorMemory::Auto;
   int relaxation_ = 0;       ///< ICNTL(14) for the next analyses; 0: MUMPS's default
   std::string memory_note_;  ///< memory_used() of the last analysis
@@ -255,7 +271,6 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     id_.icntl[1] = -1;
     id_.icntl[2] = -1;
     id_.icntl[3] = 0;
-    id_.icntl[23] = 1;  // ICNTL(24): null pivot detection
     // ICNTL(14): the working space beyond the analysis's estimate (PCENT_PIVOT). MUMPS's own
     // default unless one was asked for (5.5 on one process: 5 % for SYM = 1, 20 % otherwise).
     if (relaxation_ > 0) id_.icntl[13] = relaxation_;
@@ -348,7 +363,13 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     return;
   }
   check("factorisation");
-  if (id_.infog[27] > 0) {  // INFOG(28): number of null pivots
+  singular_ = -1;
+  singular_note_.clear();
+  if (id_.infog[27] > 0 && !test_.stop) {  // INFOG(28): number of null pivots; kept as asked
+    singular_ = id_.pivnul_list ? id_.pivnul_list[0] - 1 : -1;
+    singular_note_ = std::to_string(id_.infog[27]) + " null pivot(s) below 1e-" + std::to_string(test_.digits) +
+                     " in the scaled matrix, set to 1e20: the solution is zero along them";
+  } else if (id_.infog[27] > 0) {
     failed_ = id_.pivnul_list ? id_.pivnul_list[0] - 1 : -1;
     release();
     throw SolveError("MUMPS: singular matrix" + (failed_ >= 0 ? " at equation " + std::to_string(failed_) : std::string()),

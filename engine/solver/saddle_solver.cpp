@@ -152,6 +152,19 @@ class SaddleSolver final : public LinearSolver {
     relaxation_ = percent;
     if (direct_) direct_->set_workspace_relaxation(percent);
   }
+  void set_singularity_test(SingularityTest test) override {
+    test_ = test;
+    split_data_->schur->set_singularity_test(test);
+    if (direct_) direct_->set_singularity_test(test);
+  }
+  int singular_column() const override {
+    if (!split_) return direct_ ? direct_->singular_column() : -1;
+    const int c = split_data_->schur->singular_column();  // S's own numbering: the displacements'
+    return c >= 0 && c < static_cast<int>(split_data_->u_eqs.size()) ? split_data_->u_eqs[c] : -1;
+  }
+  std::string singular_note() const override {
+    return split_ ? split_data_->schur->singular_note() : direct_ ? direct_->singular_note() : std::string();
+  }
   void set_layout(SystemLayout layout) override {  // the direct backend's (S has no use for it)
     if (direct_) direct_->set_layout(std::move(layout));
     else layout_ = std::move(layout), has_layout_ = true;
@@ -168,6 +181,7 @@ class SaddleSolver final : public LinearSolver {
       direct_->set_ordering(ordering_);
       direct_->set_memory(memory_);
       direct_->set_workspace_relaxation(relaxation_);
+      direct_->set_singularity_test(test_);
       if (has_layout_) direct_->set_layout(std::move(layout_)), has_layout_ = false;
     }
     return *direct_;
@@ -291,6 +305,7 @@ class SaddleSolver final : public LinearSolver {
   FactorOrdering ordering_ = FactorOrdering::Auto;
   FactorMemory memory_ = FactorMemory::Auto;
   int relaxation_ = 0;
+  SingularityTest test_;
   mutable SystemLayout layout_;  ///< given before the direct backend existed
   mutable bool has_layout_ = false;
   std::unique_ptr<Split> split_data_ = std::make_unique<Split>();

@@ -459,6 +459,82 @@ TEST(Solvers, FloatingSpringIsDetectedByCholmod) {
   }
 }
 
+/// A chain of springs k (equation 0 held by a spring to the ground) whose link between
+/// equations 4 and 5 has stiffness `soft` k: equations 5.. hang from the rest by it alone.
+SparseMatrix chain_with_soft_link(int n, double soft) {
+  std::vector<Triplet> t = {{0, 0, 1.0}};
+  for (int i = 0; i + 1 < n; ++i) {
+    const double k = i == 4 ? soft : 1.0;
+    t.insert(t.end(), {{i, i, k}, {i + 1, i + 1, k}, {i, i + 1, -k}, {i + 1, i, -k}});
+  }
+  SparseMatrix a(n, n);
+  a.setFromTriplets(t.begin(), t.end());
+  return a;
+}
+
+// SOLVEUR NPREC: a pivot that lost more digits than allowed makes CHOLMOD's factorisation
+// singular, with the digits it lost; with more digits allowed, or told to go on
+// (STOP_SINGULIER='NON'), the factorisation is kept and solves the system.
+TEST(Singularity, CholmodCallsAPivotSingularByTheDigitsItLost) {
+  const SparseMatrix a = chain_with_soft_link(10, 1e-9);  // loses about 9 digits at one pivot
+  auto s = make_linear_solver(SolverKind::Cholmod);
+  s->set_singularity_test({8, true});
+  try {
+    s->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+    FAIL() << "a pivot that lost about 9 digits passed a test of 8";
+  } catch (const SolveError& e) {
+    EXPECT_GE(s->failed_column(), 5) << e.what();  // one of the hanging equations
+    EXPECT_GT(e.failure().value, 8.0) << e.what();
+    EXPECT_LT(e.failure().value, 10.0) << e.what();
+    EXPECT_EQ(e.failure().limit, 8);
+    EXPECT_NE(std::string(e.what()).find("significant digits (more than 8)"), std::string::npos) << e.what();
+  }
+  for (const SingularityTest test : {SingularityTest{10, true}, SingularityTest{-1, true}, SingularityTest{8, false}}) {
+    s->set_singularity_test(test);
+    s->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+    const Vector x = s->solve(rhs(10));
+    EXPECT_LT((a * x - rhs(10)).norm() / rhs(10).norm(), 1e-6) << test.digits << (test.stop ? " stop" : " go on");
+    if (test.stop) {
+      EXPECT_EQ(s->singular_column(), -1);
+      EXPECT_TRUE(s->singular_note().empty()) << s->singular_note();
+    } else {
+      EXPECT_GE(s->singular_column(), 5);
+      EXPECT_NE(s->singular_note().find("pivot lost"), std::string::npos) << s->singular_note();
+    }
+  }
+}
+
+// MUMPS on a symmetric indefinite system with an equation that nothing holds: a null pivot.
+// Stopping (the default) is a SolveError naming it; going on sets it aside (1e20), and the
+// solution of a consistent right-hand side is exact on the other equations and zero on it.
+TEST(Singularity, MumpsSetsANullPivotAsideWhenToldToGoOn) {
+  const int dead = 7;
+  const SparseMatrix a = singular_zero_column(20, dead);
+  auto s = make_linear_solver(SolverKind::Mumps);
+  EXPECT_THROW(s->factorize(a, MatrixKind::SymmetricIndefinite), SolveError);
+  EXPECT_EQ(s->failed_column(), dead);
+  s->set_singularity_test({8, false});
+  s->factorize(a, MatrixKind::SymmetricIndefinite);
+  EXPECT_EQ(s->singular_column(), dead);
+  EXPECT_NE(s->singular_note().find("1 null pivot(s) below 1e-8"), std::string::npos) << s->singular_note();
+  Vector b = rhs(20);
+  b[dead] = 0.0;  // consistent: nothing loads the free equation
+  const Vector x = s->solve(b);
+  EXPECT_LT((a * x - b).norm() / b.norm(), 1e-12);
+  EXPECT_LT(std::abs(x[dead]), 1e-12);
+  // A pivot near 1e-9 of the matrix's scale: null below 1e-8, not below 1e-12, in any units
+  // (the threshold applies to MUMPS's scaled matrix).
+  for (const double units : {1.0, 2e6, 1e-6}) {
+    const SparseMatrix soft = chain_with_soft_link(10, 1e-9) * units;
+    auto m = make_linear_solver(SolverKind::Mumps);
+    EXPECT_THROW(m->factorize(soft, MatrixKind::SymmetricIndefinite), SolveError) << units;
+    m->set_singularity_test({12, true});
+    m->factorize(soft, MatrixKind::SymmetricIndefinite);
+    const Vector y = m->solve(rhs(10));
+    EXPECT_LT((soft * y - rhs(10)).norm() / rhs(10).norm(), 1e-6) << units;
+  }
+}
+
 TEST(Singularity, DescribesNodeAndComponent) {
   Mesh mesh;
   mesh.dim = 2;
