@@ -138,6 +138,30 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                    .range(1, std::nullopt)},
                               {}},
                         Block{"METHODE",
+                              {"AUTO", "CHOLMOD", "MULT_FRONT", "LDLT", "MUMPS"},
+                              {integer("NPREC",
+                                       "Significant digits a pivot may lose before the factorisation calls the "
+                                       "matrix singular (a rigid-body mode, a missing condition, a penalty too "
+                                       "stiff): CHOLMOD compares each pivot with its diagonal (L_jj^2 <= 10^-NPREC "
+                                       "A_jj); MUMPS detects null pivots of an indefinite system below 10^-NPREC "
+                                       "in its scaled matrix (ICNTL(24), CNTL(3) = -10^-NPREC) and sets them to "
+                                       "1e20 (CNTL(5)), and a positive definite one, which MUMPS does not test, "
+                                       "is first factorised by CHOLMOD with the same test. "
+                                       "Negative: no test (CHOLMOD still stops on a zero or negative pivot). "
+                                       "Also the digits the diagnosis of a failed solve looks for. AUTO's "
+                                       "iterative solve of large 3D systems has no pivots")
+                                   .def(8LL),
+                               text("STOP_SINGULIER",
+                                    "OUI: a singular matrix stops the run with the node and component of the "
+                                    "pivot. NON: the run goes on with a warning naming them: past weak pivots "
+                                    "(CHOLMOD keeps its factor; not past a zero or negative pivot, which it "
+                                    "cannot factorise), past null pivots (MUMPS, whose solution is then zero "
+                                    "along them), and past a body no condition holds. Newton's residual still "
+                                    "judges each solution")
+                                   .into_values({"OUI", "NON"})
+                                   .def("OUI")},
+                              {}},
+                        Block{"METHODE",
                               {"MULT_FRONT"},
                               {text("RENUM",
                                     "Fill-reducing ordering of the factorisation (CHOLMOD, or MUMPS/UMFPACK for an "

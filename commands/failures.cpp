@@ -63,7 +63,11 @@ void say_in_keywords(Error& err) {
               "FORMULATION='DISCRETE' has no CONTACT_INIT)";
         else if (h.rfind("so that the contact pressure", 0) == 0)
           h = "so that the contact pressure carries the load from the first iteration";
+        else if (h.rfind("if a much softer part holds it", 0) == 0)
+          h = "if a much softer part holds it (a stiffness ratio near 1e-" + limit +
+              "), raise SOLVEUR NPREC above " + limit + " or set STOP_SINGULIER='NON'";
       }
+      replace("more than the " + limit + " allowed", "more than NPREC = " + limit);
       break;
     case Failure::What::ContactConditioning:
       for (auto& h : hints)

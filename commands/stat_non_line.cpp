@@ -87,11 +87,16 @@ void read_petsc(const Args& solveur, engine::IterativeSettings& settings) {
   settings.max_iterations = static_cast<int>(solveur.integer("NMAX_ITER"));
 }
 
-/// SOLVEUR RENUM (the fill-reducing ordering, by code_aster's names for each METHODE) and,
-/// for MUMPS, GESTION_MEMOIRE and PCENT_PIVOT.
+/// SOLVEUR NPREC and STOP_SINGULIER (the factorising methods), RENUM (the fill-reducing
+/// ordering, by code_aster's names for each METHODE) and, for MUMPS, GESTION_MEMOIRE and
+/// PCENT_PIVOT.
 void read_direct_solver(const Args& solveur, engine::NewtonOptions& options) {
   using O = engine::FactorOrdering;
   const std::string methode = solveur.text("METHODE");
+  if (solveur.has("NPREC")) {  // the methods that factorise (catalogue default 8, code_aster's)
+    options.singularity.digits = static_cast<int>(solveur.integer("NPREC"));
+    options.singularity.stop = solveur.text("STOP_SINGULIER") == "OUI";
+  }
   if (methode == "MULT_FRONT" || methode == "LDLT") {
     if (!solveur.has("RENUM")) return;  // lunaster's choice
     const std::string renum = solveur.text("RENUM");

@@ -10,3 +10,11 @@ foreach(case ssnp121f_quad8_on_tria6 ssnp121k_quad4_on_tria6)
     PASS_REGULAR_EXPRESSION "<A> [^\n]*does not satisfy the compatibility conditions[^\n]*TRIA6 slave on.*lunaster: [0-9]+ check\\(s\\) OK, 0 NOOK"
     FAIL_REGULAR_EXPRESSION "compatibility conditions.*compatibility conditions;\nNOOK (ANALYTIQUE|NON_REGRESSION)")
 endforeach()
+
+# SOLVEUR STOP_SINGULIER='NON' (testcases/solver_singularity.lua): the free block must be named in a
+# warning, CHOLMOD's weak pivot must be named by node and component with the digits it lost, and every
+# check must still pass.
+add_test(NAME warning.solver_singularity
+         COMMAND lunaster run ${CMAKE_SOURCE_DIR}/testcases/solver_singularity.lua --out ${CMAKE_BINARY_DIR}/deck-out/warning-solver_singularity)
+set_tests_properties(warning.solver_singularity PROPERTIES LABELS "deck;warning"
+  PASS_REGULAR_EXPRESSION "<A> going on as asked with a singular system: [^\n]*the body BLOCK \\(9 cells\\) has a rigid-body mode \\(free to move along DX[^\n]*\n<A> singular matrix at instant 1\\.000000e\\+00 at node N[0-9]+, component DX, going on as asked: CHOLMOD: pivot lost [0-9.]+ significant digits \\(more than 8\\).*lunaster: 10 check\\(s\\) OK, 0 NOOK")

@@ -1,0 +1,69 @@
+-- STAT_NON_LINE SOLVEUR NPREC and STOP_SINGULIER: when a factorisation calls its matrix
+-- singular, and going on past it.
+-- Purpose: (1) NPREC. The SSNP121 glued blocks (glued2d_quad4.med): the lower block PLAQUE2
+--          (E = 2e6) hangs from the upper one PLAQUE1, whose material is 1e9 times softer and
+--          whose top CD is moved by DY = -0.1; nothing else holds PLAQUE2. Its last pivot loses
+--          about 9.3 significant digits: with code_aster's default NPREC = 8 the run stops
+--          (testcases/errors/singular_soft_link_nprec.lua); with NPREC = 12 it runs (CHOLMOD,
+--          METHODE='AUTO') and the whole assembly translates by -0.1. The system's condition
+--          number (about 1e9) leaves that translation exact to about 1e-6 only (2.2e-7 in the run
+--          this deck was written from, 2.2e-6 with MUMPS; a tighter RESI_GLOB_RELA, 1e-12, is out
+--          of the solvers' reach): the tolerance is 1e-5. This is what NPREC = 8 warns of. MUMPS
+--          is left out here: on two MPI ranks its other pivot order moves these values by 1e-6,
+--          where the suite compares the ranks' values to 1e-8 (the unit tests Singularity.*
+--          check its null pivots against NPREC).
+--          (2) STOP_SINGULIER='NON'. A QUAD4 patch (patch_quad4.med, 1 x 1, E = 2e6, NU = 0.3,
+--          D_PLAN) held in DY only (BOTTOM DY = 0, TOP DY = -0.01): nothing holds it along DX, a
+--          rigid translation that the load leaves alone. The run goes on with warnings naming
+--          the body and the pivot; the factorisation picks one position along DX (CHOLMOD keeps
+--          its pivot of round-off size; MUMPS's check of K_ff is the same factorisation) and the
+--          stress is the uniaxial one, whatever that position: SIYY = E eps / (1 - NU^2) with
+--          eps = -0.01, SIXX = 0.
+-- Reference: analytical. Units SI. Runtime label: fast, solver.
+DEBUT()
+L = DEFI_LIST_REEL{ DEBUT = 0.0, INTERVALLE = _F{ JUSQU_A = 1.0, NOMBRE = 1 } }
+
+-- (1) A part 1e9 times softer than the one it holds: NPREC = 12 lets the factorisation through.
+MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'meshes/glued2d_quad4.med' }
+MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN' } }
+STIFF = DEFI_MATERIAU{ ELAS = _F{ E = 2.0e6, NU = 0.3 } }
+SOFT = DEFI_MATERIAU{ ELAS = _F{ E = 2.0e-3, NU = 0.3 } }
+CM = AFFE_MATERIAU{ MAILLAGE = MA, AFFE = { _F{ GROUP_MA = 'PLAQUE1', MATER = SOFT },
+                                            _F{ GROUP_MA = 'PLAQUE2', MATER = STIFF } } }
+CH = AFFE_CHAR_MECA{ MODELE = MO, DDL_IMPO = _F{ GROUP_NO = 'CD', DX = 0.0, DY = -0.1 } }
+R1 = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CM, EXCIT = _F{ CHARGE = CH }, SOLVEUR = _F{ NPREC = 12 },
+                    COMPORTEMENT = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L } }
+TEST_RESU{ RESU = {
+  _F{ RESULTAT = R1, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', GROUP_NO = 'GH', NOM_CMP = 'DY', TYPE_TEST = 'MIN',
+      REFERENCE = 'ANALYTIQUE', VALE_REFE = -0.1, PRECISION = 1.0e-5, LEGENDE = 'NPREC=12' },
+  _F{ RESULTAT = R1, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', GROUP_NO = 'GH', NOM_CMP = 'DY', TYPE_TEST = 'MAX',
+      REFERENCE = 'ANALYTIQUE', VALE_REFE = -0.1, PRECISION = 1.0e-5, LEGENDE = 'NPREC=12' },
+} }
+
+-- (2) A free direction that the load leaves alone: STOP_SINGULIER='NON' goes on past it.
+MP = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'meshes/patch_quad4.med' }
+MOP = AFFE_MODELE{ MAILLAGE = MP, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN' } }
+CMP = AFFE_MATERIAU{ MAILLAGE = MP, AFFE = _F{ TOUT = 'OUI', MATER = STIFF } }
+BC = AFFE_CHAR_MECA{ MODELE = MOP, DDL_IMPO = { _F{ GROUP_NO = 'BOTTOM', DY = 0.0 },
+                                                _F{ GROUP_NO = 'TOP', DY = -0.01 } } }
+local syy = 2.0e6 * -0.01 / (1.0 - 0.3 * 0.3)
+for _, methode in ipairs({ 'AUTO', 'MUMPS' }) do
+  local R = STAT_NON_LINE{ MODELE = MOP, CHAM_MATER = CMP, EXCIT = _F{ CHARGE = BC },
+                           SOLVEUR = _F{ METHODE = methode, STOP_SINGULIER = 'NON' },
+                           COMPORTEMENT = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L } }
+  R = CALC_CHAMP{ reuse = R, RESULTAT = R, CONTRAINTE = { 'SIGM_NOEU' } }
+  local function t(cmp, kind, refe, extra)
+    local f = { RESULTAT = R, NUME_ORDRE = 1, NOM_CHAM = 'SIGM_NOEU', NOM_CMP = cmp, TYPE_TEST = kind,
+                REFERENCE = 'ANALYTIQUE', VALE_REFE = refe, PRECISION = 1.0e-10,
+                LEGENDE = 'STOP_SINGULIER=NON ' .. methode }
+    for k, v in pairs(extra or {}) do f[k] = v end
+    return _F(f)
+  end
+  TEST_RESU{ RESU = {
+    t('SIYY', 'MIN', syy), t('SIYY', 'MAX', syy),
+    -- zero to round-off beside |SIYY| (no VALE_CALC around zero)
+    t('SIXX', 'MIN', 0.0, { CRITERE = 'ABSOLU', PRECISION = 1.0e-10 * math.abs(syy) }),
+    t('SIXX', 'MAX', 0.0, { CRITERE = 'ABSOLU', PRECISION = 1.0e-10 * math.abs(syy) }),
+  } }
+end
+FIN()
