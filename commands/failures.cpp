@@ -75,6 +75,9 @@ void say_in_keywords(Error& err) {
           h = "check that the contact surfaces face each other, and that E_N (PENALISATION) or COEF_CONT "
               "(CONTINUE) is not many orders of magnitude above the material stiffness E / h: the condition "
               "number grows with it until double precision cannot resolve the system";
+        else if (h.rfind("or allow more than", 0) == 0)
+          h = "or raise SOLVEUR NPREC above " + limit + " (the digits a pivot may lose): the solve's accuracy is "
+              "still checked";
       break;
     case Failure::What::OutOfMemory:
       for (auto& h : hints)

@@ -19,7 +19,14 @@
 --          its pivot of round-off size; MUMPS's check of K_ff is the same factorisation) and the
 --          stress is the uniaxial one, whatever that position: SIYY = E eps / (1 - NU^2) with
 --          eps = -0.01, SIXX = 0.
--- Reference: analytical. Units SI. Runtime label: fast, solver.
+--          (3) NPREC and a stiff penalty. SSNP121 C's scene (discrete PENALISATION, slave EF,
+--          master AB) with E_N = 1e14, 5e7 times E: a pivot loses 8.1 digits, so code_aster's
+--          default NPREC = 8 stops the run (testcases/errors/penalty_too_stiff_nprec.lua); with
+--          NPREC = 10 it runs, and a penalty that stiff is the Lagrange multipliers' answer: DY at
+--          O and A equal those of SSNP121 B (DISCRETE CONTRAINTE on the same scene, the values
+--          ssnp121b.lua records; code_aster's SSNP121 B gives -0.050173 at O) to 1e-6 (the run
+--          this deck was written from: 1e-9 at O, 1e-8 at A).
+-- Reference: analytical. Units SI. Runtime label: fast, contact, solver.
 DEBUT()
 L = DEFI_LIST_REEL{ DEBUT = 0.0, INTERVALLE = _F{ JUSQU_A = 1.0, NOMBRE = 1 } }
 
@@ -66,4 +73,23 @@ for _, methode in ipairs({ 'AUTO', 'MUMPS' }) do
     t('SIXX', 'MAX', 0.0, { CRITERE = 'ABSOLU', PRECISION = 1.0e-10 * math.abs(syy) }),
   } }
 end
+
+-- (3) A penalty 5e7 times stiffer than the material: NPREC = 10 lets the factorisation through.
+MC = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'ssnp121a.med' }
+MOC = AFFE_MODELE{ MAILLAGE = MC, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN' } }
+ELAS = DEFI_MATERIAU{ ELAS = _F{ E = 2.0e6, NU = 0.0 } }
+CMC = AFFE_MATERIAU{ MAILLAGE = MC, AFFE = _F{ GROUP_MA = { 'PLAQUE1', 'PLAQUE2' }, MATER = ELAS } }
+CHC = AFFE_CHAR_MECA{ MODELE = MOC, DDL_IMPO = { _F{ GROUP_NO = 'CD', DX = 0.0, DY = -0.1 },
+                                                 _F{ GROUP_NO = 'GH', DX = 0.0, DY = 0.0 } } }
+CONT = DEFI_CONTACT{ MODELE = MOC, FORMULATION = 'DISCRETE', REAC_GEOM = 'AUTOMATIQUE',
+                     ZONE = _F{ GROUP_MA_ESCL = 'EF', GROUP_MA_MAIT = 'AB', ALGO_CONT = 'PENALISATION', E_N = 1.0e14 } }
+RAMPE = DEFI_FONCTION{ NOM_PARA = 'INST', VALE = { 0.0, 0.0, 1.0, 1.0 } }
+R3 = STAT_NON_LINE{ MODELE = MOC, CHAM_MATER = CMC, CONTACT = CONT, EXCIT = _F{ CHARGE = CHC, FONC_MULT = RAMPE },
+                    SOLVEUR = _F{ NPREC = 10 }, COMPORTEMENT = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L } }
+TEST_RESU{ RESU = {
+  _F{ RESULTAT = R3, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', GROUP_NO = 'O', NOM_CMP = 'DY', REFERENCE = 'AUTRE_ASTER',
+      VALE_REFE = -5.017342932254e-02, PRECISION = 1.0e-6, LEGENDE = 'E_N=1e14 NPREC=10 against SSNP121 B' },
+  _F{ RESULTAT = R3, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', GROUP_NO = 'A', NOM_CMP = 'DY', REFERENCE = 'AUTRE_ASTER',
+      VALE_REFE = -4.916689305517e-02, PRECISION = 1.0e-6, LEGENDE = 'E_N=1e14 NPREC=10 against SSNP121 B' },
+} }
 FIN()

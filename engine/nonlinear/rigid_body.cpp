@@ -216,6 +216,14 @@ SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, co
                   "coefficient is not many orders of magnitude above the material stiffness E / h: the condition "
                   "number grows with it until double precision cannot resolve the system"});
   err.failure().what = Failure::What::ContactConditioning;
+  // A pivot that lost more digits than allowed, not one the factorisation could not take:
+  // allowing more digits may go on (the solve's own accuracy is still checked).
+  if (original.failure().value > 0.0) {
+    err.failure().value = original.failure().value;
+    err.failure().limit = original.failure().limit;
+    err.add_hint("or allow more than " + std::to_string(original.failure().limit) +
+                 " lost digits: the solve's accuracy is still checked");
+  }
   return err;
 }
 
