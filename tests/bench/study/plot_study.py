@@ -12,6 +12,7 @@ import csv
 import datetime
 import os
 import platform
+import re
 import shutil
 import subprocess
 import sys
@@ -536,7 +537,12 @@ def loss_of_accuracy(rows, xkey, resi_bar=1e-6):
                           "decides whether Newton can converge")
         failed = [r for r in sel if r["status"] != "ok"]
         if failed:
-            words += f". The first failed run is at {xkey} = {failed[0][xkey]} ({failed[0]['status'][8:110].strip()}...)"
+            status = failed[0]["status"]
+            pivot = re.search(r"pivot lost ([0-9.]+) significant digits \(more than (\d+)\)", status)
+            why = (f"a pivot lost {pivot[1]} significant digits, more than SOLVEUR NPREC = {pivot[2]} allows: "
+                   "code_aster's singularity test, which a larger NPREC moves" if pivot
+                   else status[8:110].strip() + "...")
+            words += f". The first failed run is at {xkey} = {failed[0][xkey]} ({why})"
         L.append(words + ".")
     return L
 
