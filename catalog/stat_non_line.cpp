@@ -128,6 +128,12 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                     "code_aster's EVAL is not offered")
                                    .into_values({"AUTO", "IN_CORE", "OUT_OF_CORE"})
                                    .def("AUTO"),
+                               real("RESI_RELA",
+                                    "Relative residual |b - A x| / |b| each solve must reach after iterative "
+                                    "refinement, or the run stops naming the residual reached (a singular or too "
+                                    "ill-conditioned system); zero or negative: not checked, Newton's residual alone "
+                                    "judges (code_aster's default in STAT_NON_LINE, -1). Absent: 1e-6, "
+                                    "lunaster's check for every direct solve"),
                                integer("PCENT_PIVOT",
                                        "Working space of MUMPS's factorisation beyond its analysis's estimate, in "
                                        "percent (ICNTL(14)): room for the pivots an indefinite system delays. "

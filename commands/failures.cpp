@@ -79,6 +79,13 @@ void say_in_keywords(Error& err) {
           h = "or raise SOLVEUR NPREC above " + limit + " (the digits a pivot may lose): the solve's accuracy is "
               "still checked";
       break;
+    case Failure::What::SolveAccuracy:
+      for (auto& h : hints)
+        if (h.rfind("the stiffness is regular", 0) == 0)
+          h = "the stiffness is regular (no rigid-body mode) but its solve did not reach the accuracy asked (SOLVEUR "
+              "RESI_RELA of MUMPS; 1e-6 for every direct solve otherwise): a part far softer than another, or a "
+              "RESI_RELA below round-off; a negative RESI_RELA leaves the judgement to Newton's residual";
+      break;
     case Failure::What::OutOfMemory:
       for (auto& h : hints)
         if (h.rfind("the factors do not fit", 0) == 0)

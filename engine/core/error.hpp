@@ -31,6 +31,7 @@ struct Failure {
     GeometryLoop,         ///< geometric residual `value` above `tolerance` after `limit` re-pairings
     RigidBodyMode,        ///< a body free to move: nothing holds it
     ContactConditioning,  ///< regular elastic part, singular or ill-conditioned system with contact terms
+    SolveAccuracy,        ///< regular system without contact terms whose solve missed the accuracy asked
     OutOfMemory,          ///< a linear solver's factors do not fit
     NotAMedFile,          ///< a mesh file that is not MED
     IterativeSolve,       ///< an iterative linear solver that did not converge or cannot precondition this system

@@ -205,10 +205,18 @@ std::optional<SolveError> find_unheld_body(const FeModel& model, const DofMap& d
 
 SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, const std::vector<int>& free_index,
                                     const SparseMatrix& elastic, const SolveError& original, double t,
-                                    SingularityTest test) {
+                                    SingularityTest test, bool contact_terms) {
   if (auto rigid = find_rigid_body_mode(model, dofs, free_index, elastic, t, test)) return *rigid;
   char inst[32];
   std::snprintf(inst, sizeof inst, "%.6e", t);
+  if (!contact_terms) {
+    SolveError err("the system at instant " + std::string(inst) +
+                       " is too ill-conditioned for the accuracy asked of its solve: " + original.message(),
+                   {"the stiffness is regular (no rigid-body mode) but its solve did not reach the accuracy asked: "
+                    "a part far softer than another, or an accuracy below round-off"});
+    err.failure().what = Failure::What::SolveAccuracy;
+    return err;
+  }
   SolveError err("the system at instant " + std::string(inst) +
                      " is singular or too ill-conditioned for the linear solver: " + original.message(),
                  {"the elastic stiffness alone is regular, so the trouble comes from the contact terms",

@@ -39,8 +39,10 @@ std::optional<SolveError> find_unheld_body(const FeModel& model, const DofMap& d
                                            const std::vector<int>& free_index, const std::vector<int>& held,
                                            double t);
 
+/// `contact_terms`: the failed system had contact terms besides K (then, with K regular,
+/// they are blamed; otherwise the solve's accuracy is).
 SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, const std::vector<int>& free_index,
                                     const SparseMatrix& elastic, const SolveError& original, double t,
-                                    SingularityTest test = {});
+                                    SingularityTest test = {}, bool contact_terms = true);
 
 }  // namespace lunaster::engine

@@ -108,7 +108,8 @@ std::string sci(double v) {
 /// A linear solve is accepted when |K du + r| / |r| is below this (after iterative
 /// refinement): far above round-off for a well-posed system, far below what a singular
 /// one leaves (a rigid-body mode, a contact block without rank). Newton corrects the
-/// remaining inaccuracy at its next iteration.
+/// remaining inaccuracy at its next iteration. A direct solve's own tolerance
+/// (NewtonOptions::direct_solve_tolerance) replaces it when given.
 constexpr double kSolveTolerance = 1e-6;
 
 /// GMRES with the previous factorisation as preconditioner (a new pairing, same statuses):
@@ -355,11 +356,13 @@ SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err
   // elastic_.ff is the whole K_ff unless the model is shared or K_ff went to the backend
   // (also when the backend failed after taking it).
   const bool whole_here = !distributed_ && !elastic_in_solver_ && (elastic_.ff.nonZeros() > 0 || elastic_.equation.empty());
-  if (whole_here) return diagnose_singular_system(model_, dofs_, cons.free_index, elastic_.ff, err, t, diagnosis_test());
+  if (whole_here) return diagnose_singular_system(model_, dofs_, cons.free_index, elastic_.ff, err, t, diagnosis_test(),
+                                                      contact_ != nullptr);
   SplitMatrix whole;
   SparseMatrix k = assemble_stiffness_matrix(model_, dofs_);
   split_matrix(k, elastic_.constrained, whole);
-  return diagnose_singular_system(model_, dofs_, cons.free_index, whole.ff, err, t, diagnosis_test());
+  return diagnose_singular_system(model_, dofs_, cons.free_index, whole.ff, err, t, diagnosis_test(),
+                                  contact_ != nullptr);
 }
 
 SingularityTest StaticSolver::diagnosis_test() const {
@@ -1204,7 +1207,9 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         // SSNP121 E's LAGS_C 3e-8 off in a two-rank MUMPS run, its multiplier rows far from
         // their own round-off.
         accuracy = solve_with_refinement(*solver, system_product, -r_free, du, 3, whole ? 1e-14 : 1e-10,
-                                         whole ? &abs_product : nullptr, kSolveTolerance);
+                                         whole ? &abs_product : nullptr,
+                                         options_.direct_solve_tolerance > 0.0 ? options_.direct_solve_tolerance
+                                                                               : kSolveTolerance);
         // A direct backend that iterates on a factorisation of another matrix (the
         // multipliers' Schur complement) says how many iterations its last solve took.
         if (const int its = solver->iterations(); its > 0) {
@@ -1221,8 +1226,9 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       const double raw_error = accuracy.raw_residual, solve_error = accuracy.residual;
       stats_.solve_residual_raw = std::max(stats_.solve_residual_raw, raw_error);
       stats_.solve_residual = std::max(stats_.solve_residual, solve_error);
-      const double accepted =
-          iterative ? std::max(kSolveTolerance, 1.01 * options_.iterative.relative_residual) : kSolveTolerance;
+      const double accepted = iterative ? std::max(kSolveTolerance, 1.01 * options_.iterative.relative_residual)
+                              : options_.direct_solve_tolerance > 0.0 ? options_.direct_solve_tolerance
+                                                                      : std::numeric_limits<double>::infinity();
       if (!(solve_error <= accepted)) {
         restore_elastic();
         throw diagnose(

@@ -50,6 +50,10 @@ struct NewtonOptions {
   /// (SOLVEUR NPREC, STOP_SINGULIER). Not stopping also lets a body that no condition holds
   /// through, with a warning: the factorisation then chooses its position.
   SingularityTest singularity;
+  /// The relative residual |A du - b| / |b| a direct solve must reach after iterative
+  /// refinement (code_aster's SOLVEUR RESI_RELA of MUMPS); <= 0: not checked, Newton's
+  /// residual alone judges. Iterative backends keep their own tolerance.
+  double direct_solve_tolerance = 1e-6;
   /// Print each Krylov iteration's residual in the log (code_aster's INFO=2).
   bool krylov_history = false;
   int subdivide_levels = 0;  ///< on a Newton failure, split the step this many times at most
