@@ -1149,7 +1149,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           throw diagnose(cons, err, t);
         }
         ++stats_.factorisations;
-        // A singular matrix that the run goes past, as asked: said at each factorisation.
+        // A singular matrix that the run goes past, as asked: said once for each instant and
+        // pivot (the Newton iterations and contact passes of an instant refactorise it alike).
         if (const std::string note = solver->singular_note(); !note.empty()) {
           std::string where;
           if (const int column = solver->singular_column(); column >= 0)
@@ -1157,8 +1158,10 @@ void StaticSolver::solve_instant(double t, Vector& u) {
               if (cons.free_index[eq] == column) where = " at " + describe_equation(*model_.mesh, dofs_, eq);
           char inst[32];
           std::snprintf(inst, sizeof inst, "%.6e", t);
-          log_.warning("singular matrix at instant " + std::string(inst) + where + ", going on as asked: " +
-                       solver->name() + ": " + note);
+          const std::string said = "singular matrix at instant " + std::string(inst) + where;
+          if (said != singular_said_)
+            log_.warning(said + ", going on as asked: " + solver->name() + ": " + note);
+          singular_said_ = said;
         }
         // What an asked-for ordering and out-of-core factors came to, said once while it holds.
         const auto say_once = [this](const std::string& line, std::string& said) {

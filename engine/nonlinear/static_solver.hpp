@@ -232,6 +232,7 @@ class StaticSolver {
   void factorize_interface_reference(SystemCache& sys);
   double k_scale_ = 0.0;
   bool rigid_checked_ = false;  ///< elastic part proven free of rigid-body modes
+  std::string singular_said_;   ///< the last singular matrix the run went past, as the log said it
   bool backend_note_logged_ = false;  ///< the Cholmod -> Mumps substitution was logged in this run
   bool saddle_ = false;  ///< indefinite systems go to the saddle-point backend (backend_for)
 
