@@ -161,9 +161,10 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                     "OUI: a singular matrix stops the run with the node and component of the "
                                     "pivot. NON: the run goes on with a warning naming them: past weak pivots "
                                     "(CHOLMOD keeps its factor; not past a zero or negative pivot, which it "
-                                    "cannot factorise), past null pivots (MUMPS, whose solution is then zero "
-                                    "along them), and past a body no condition holds. Newton's residual still "
-                                    "judges each solution")
+                                    "cannot factorise), past null pivots (MUMPS, which then factorises even a "
+                                    "positive definite system as symmetric indefinite to detect them; the "
+                                    "solution is zero along them), and past a body no condition holds. "
+                                    "Newton's residual still judges each solution")
                                    .into_values({"OUI", "NON"})
                                    .def("OUI")},
                               {}},

@@ -88,7 +88,8 @@ enum class FactorMemory { Auto, InCore, OutOfCore };
 /// STOP_SINGULIER). A pivot is singular when it lost more than `digits` significant digits:
 /// CHOLMOD compares each pivot with its matrix diagonal (L_jj^2 <= 10^-digits |A_jj|); MUMPS
 /// detects null pivots below 10^-digits in its scaled matrix (ICNTL(24) = 1, CNTL(3) =
-/// -10^-digits) and sets them to 1e20 (CNTL(5)), so that the solution is zero along them.
+/// -10^-digits) and sets them to 1e20 (CNTL(5)), so that the solution is zero along them (an
+/// SPD system told to go on is factorised as symmetric indefinite: SYM = 1 detects none).
 /// digits < 0: no test (CHOLMOD still stops on a zero or negative pivot, which it cannot go
 /// past). `stop`: a singular matrix is a SolveError; otherwise the factorisation is kept, as
 /// far as the backend can go, and `singular_note()` says what was found.

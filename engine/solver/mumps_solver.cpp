@@ -239,7 +239,11 @@ void MumpsSolver::choose_memory() {
 void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   failed_ = -1;
   LUNASTER_ASSERT(a.rows() == a.cols(), "MUMPS: matrix is not square");
-  const int sym = kind == MatrixKind::SymmetricPositiveDefinite ? 1 : (kind == MatrixKind::SymmetricIndefinite ? 2 : 0);
+  int sym = kind == MatrixKind::SymmetricPositiveDefinite ? 1 : (kind == MatrixKind::SymmetricIndefinite ? 2 : 0);
+  // Going on past null pivots needs them detected and set aside, which SYM = 1 does not do
+  // (its round-off pivot along a free body's motion would move it by 1e13): an SPD system is
+  // then factorised as symmetric indefinite.
+  if (sym == 1 && !test_.stop && test_.digits >= 0) sym = 2;
   std::vector<MUMPS_INT> irn, jcn;
   std::vector<double> val;
   mumps_entries(a, sym, irn, jcn, val);
