@@ -153,15 +153,16 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                        "in its scaled matrix (ICNTL(24), CNTL(3) = -10^-NPREC) and sets them to "
                                        "1e20 (CNTL(5)), and a positive definite one, which MUMPS does not test, "
                                        "is first factorised by CHOLMOD with the same test. "
-                                       "Negative: no test (CHOLMOD still stops on a zero or negative pivot). "
+                                       "Negative: no test (CHOLMOD still stops on a zero or negative pivot, "
+                                       "whatever STOP_SINGULIER says). "
                                        "Also the digits the diagnosis of a failed solve looks for. AUTO's "
                                        "iterative solve of large 3D systems has no pivots")
                                    .def(8LL),
                                text("STOP_SINGULIER",
                                     "OUI: a singular matrix stops the run with the node and component of the "
                                     "pivot. NON: the run goes on with a warning naming them: past weak pivots "
-                                    "(CHOLMOD keeps its factor; not past a zero or negative pivot, which it "
-                                    "cannot factorise), past null pivots (MUMPS, which then factorises even a "
+                                    "(CHOLMOD keeps its factor; a zero or negative pivot, which it cannot take, "
+                                    "hands the system to MUMPS), past null pivots (MUMPS, which then factorises even a "
                                     "positive definite system as symmetric indefinite to detect them; the "
                                     "solution is zero along them), and past a body no condition holds. "
                                     "Newton's residual still judges each solution")

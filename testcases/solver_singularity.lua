@@ -16,8 +16,9 @@
 --          D_PLAN) held in DY only (BOTTOM DY = 0, TOP DY = -0.01): nothing holds it along DX, a
 --          rigid translation that the load leaves alone. The run goes on with warnings naming
 --          the body and the pivot; the factorisation picks one position along DX (CHOLMOD keeps
---          its pivot of round-off size; MUMPS, which then factorises the SPD system as symmetric
---          indefinite to detect its null pivot, sets it aside: zero DX at that node) and the
+--          its pivot of round-off size, or, when round-off makes it negative, as a sanitizer build
+--          does, hands the system to MUMPS; MUMPS, which then factorises the SPD system as
+--          symmetric indefinite to detect its null pivot, sets it aside: zero DX there) and the
 --          stress is the uniaxial one, whatever that position: SIYY = E eps / (1 - NU^2) with
 --          eps = -0.01, SIXX = 0.
 --          (3) NPREC and a stiff penalty. SSNP121 C's scene (discrete PENALISATION, slave EF,

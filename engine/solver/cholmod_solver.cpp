@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <numeric>
 #include <cstdint>
 #include <cstddef>
@@ -69,8 +70,13 @@ class CholmodSolver final : public LinearSolver {
   }
   std::string ordering_used() const override { return ordering_used_; }
   void set_singularity_test(SingularityTest test) override { test_ = test; }
-  int singular_column() const override { return singular_; }
-  std::string singular_note() const override { return singular_note_; }
+  int singular_column() const override { return past_ ? past_->singular_column() : singular_; }
+  std::string singular_note() const override {
+    if (!past_) return singular_note_;
+    const std::string note = past_->singular_note();
+    return "a pivot CHOLMOD cannot take (zero or negative), so MUMPS factorised the system" +
+           (note.empty() ? std::string() : ": " + note);
+  }
 
  private:
   bool same_pattern(const SparseMatrix& a, std::uint64_t fingerprint) const {
@@ -88,6 +94,9 @@ class CholmodSolver final : public LinearSolver {
   FactorOrdering ordering_ = FactorOrdering::Auto;
   std::string ordering_used_;       ///< of the last analysis
   SingularityTest test_;            ///< which pivots are singular, and whether that stops
+  /// Going on past a singular matrix whose pivot CHOLMOD cannot take (zero or negative, which
+  /// round-off decides for a free body): MUMPS, symmetric indefinite, sets its null pivots aside.
+  std::unique_ptr<LinearSolver> past_;
   int singular_ = -1;               ///< the weak pivot the last factorisation went past, or -1
   std::string singular_note_;
   int failed_ = -1;
@@ -439,6 +448,7 @@ Vector supernodal_solve(const cholmod_factor* factor, const SweepPlan& plan, con
 void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   failed_ = -1;
   ready_ = false;
+  past_.reset();
   if (kind != MatrixKind::SymmetricPositiveDefinite)
     throw InternalError("CHOLMOD needs a symmetric positive definite matrix; use UMFPACK or MUMPS");
   LUNASTER_ASSERT(a.rows() == a.cols(), "CHOLMOD: matrix is not square");
@@ -502,6 +512,13 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     return cholmod_factorize(&s, factor_, &common_);
   }();
   if (common_.status == CHOLMOD_NOT_POSDEF) {
+    if (!test_.stop && test_.digits >= 0) {
+      past_ = make_linear_solver(SolverKind::Mumps);
+      past_->set_singularity_test(test_);
+      past_->factorize(*m, MatrixKind::SymmetricIndefinite);
+      ready_ = true;
+      return;
+    }
     const auto* perm = static_cast<const int*>(factor_->Perm);
     const int minor = static_cast<int>(factor_->minor);
     fail(perm ? perm[minor] : minor, "matrix not positive definite");
@@ -534,6 +551,7 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
 
 Vector CholmodSolver::solve(const Vector& b) const {
   if (!ready_) throw InternalError("CHOLMOD: solve called without a valid factorisation");
+  if (past_) return past_->solve(b);
   if (factor_->is_super && factor_->is_ll) return supernodal_solve(factor_, plan_, b);
   cholmod_dense rhs{};
   rhs.nrow = b.size();

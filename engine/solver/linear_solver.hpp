@@ -90,9 +90,9 @@ enum class FactorMemory { Auto, InCore, OutOfCore };
 /// detects null pivots below 10^-digits in its scaled matrix (ICNTL(24) = 1, CNTL(3) =
 /// -10^-digits) and sets them to 1e20 (CNTL(5)), so that the solution is zero along them (an
 /// SPD system told to go on is factorised as symmetric indefinite: SYM = 1 detects none).
-/// digits < 0: no test (CHOLMOD still stops on a zero or negative pivot, which it cannot go
-/// past). `stop`: a singular matrix is a SolveError; otherwise the factorisation is kept, as
-/// far as the backend can go, and `singular_note()` says what was found.
+/// digits < 0: no test (CHOLMOD still stops on a zero or negative pivot). `stop`: a singular
+/// matrix is a SolveError; otherwise the factorisation is kept (CHOLMOD hands a zero or
+/// negative pivot, which it cannot take, to MUMPS), and `singular_note()` says what was found.
 struct SingularityTest {
   int digits = 8;
   bool stop = true;

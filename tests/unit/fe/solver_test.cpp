@@ -504,6 +504,32 @@ TEST(Singularity, CholmodCallsAPivotSingularByTheDigitsItLost) {
   }
 }
 
+// Going on past a pivot CHOLMOD cannot take (zero or negative: for a free body round-off
+// decides which): CHOLMOD hands the system to MUMPS, which sets the null pivot aside.
+TEST(Singularity, CholmodHandsAPivotItCannotTakeToMumpsWhenToldToGoOn) {
+  const int dead = 7;
+  const SparseMatrix a = singular_zero_column(20, dead);
+  auto s = make_linear_solver(SolverKind::Cholmod);
+  EXPECT_THROW(s->factorize(a, MatrixKind::SymmetricPositiveDefinite), SolveError);
+  s->set_singularity_test({8, false});
+  s->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+  EXPECT_EQ(s->singular_column(), dead);
+  EXPECT_NE(s->singular_note().find("a pivot CHOLMOD cannot take (zero or negative), so MUMPS factorised the system: "
+                                    "1 null pivot(s)"),
+            std::string::npos)
+      << s->singular_note();
+  Vector b = rhs(20);
+  b[dead] = 0.0;
+  const Vector x = s->solve(b);
+  EXPECT_LT((a * x - b).norm() / b.norm(), 1e-12);
+  EXPECT_LT(std::abs(x[dead]), 1e-12);
+  // A regular matrix afterwards is CHOLMOD's own again.
+  const SparseMatrix regular = spd_matrix(20);
+  s->factorize(regular, MatrixKind::SymmetricPositiveDefinite);
+  EXPECT_TRUE(s->singular_note().empty()) << s->singular_note();
+  check_solution(regular, s->solve(rhs(20)), "CHOLMOD after MUMPS");
+}
+
 // MUMPS on a symmetric indefinite system with an equation that nothing holds: a null pivot.
 // Stopping (the default) is a SolveError naming it; going on sets it aside (1e20), and the
 // solution of a consistent right-hand side is exact on the other equations and zero on it.
