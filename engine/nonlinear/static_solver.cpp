@@ -621,7 +621,10 @@ void StaticSolver::factorize_interface_reference(SystemCache& sys) {
     Stopwatch watch(seconds);
     const int m = static_cast<int>(interface_->interface().size());
     try {
-      if (interface_->factorize_reference(elastic_.ff, interface_dense_share_)) {
+      const bool taken = interface_->factorize_reference(elastic_.ff, interface_dense_share_);
+      if (const std::string analysis = interface_->analysis_note(); !analysis.empty() && analysis != analysis_logged_)
+        log_.debug("  " + analysis), analysis_logged_ = analysis;
+      if (taken) {
         interface_reference_ = sys.elastic_generation;
         interface_state_ = SystemState{};
         stats_.interface_equations = m;
@@ -1170,6 +1173,9 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         };
         if (options_.ordering != FactorOrdering::Auto)
           say_once("  " + solver->name() + " ordering: " + solver->ordering_used(), ordering_logged_);
+        if (const std::string analysis = solver->analysis_note(); !analysis.empty() && analysis != analysis_logged_)
+          log_.debug("  " + analysis);
+        analysis_logged_ = solver->analysis_note();
         if (const std::string memory = solver->memory_used(); !memory.empty())
           say_once("  " + solver->name() + " factors: " + memory, memory_logged_);
         if (via_interface)

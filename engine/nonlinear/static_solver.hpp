@@ -214,6 +214,7 @@ class StaticSolver {
   int interface_use_ = 0;
   std::string ordering_logged_;  ///< the last ordering line of the log (an ordering asked for)
   std::string memory_logged_;    ///< the last line of the log on where the factors are
+  std::string analysis_logged_;  ///< the last symbolic analysis said in the log (verbosity 2)
   long interface_reference_ = -1;  ///< elastic generation of the factorised reference
   SystemState interface_state_;
   std::vector<char> on_interface_;  ///< per free equation: on the interface

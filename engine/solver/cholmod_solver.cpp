@@ -69,6 +69,7 @@ class CholmodSolver final : public LinearSolver {
     ordering_ = ordering;
   }
   std::string ordering_used() const override { return ordering_used_; }
+  std::string analysis_note() const override { return analysis_note_; }
   void set_singularity_test(SingularityTest test) override { test_ = test; }
   int singular_column() const override { return past_ ? past_->singular_column() : singular_; }
   std::string singular_note() const override {
@@ -93,6 +94,7 @@ class CholmodSolver final : public LinearSolver {
   bool wide_ = false;               ///< factorised with two BLAS threads (per analysis)
   FactorOrdering ordering_ = FactorOrdering::Auto;
   std::string ordering_used_;       ///< of the last analysis
+  std::string analysis_note_;       ///< its operations and factor entries
   SingularityTest test_;            ///< which pivots are singular, and whether that stops
   /// Going on past a singular matrix whose pivot CHOLMOD cannot take (zero or negative, which
   /// round-off decides for a free body): MUMPS, symmetric indefinite, sets its null pivots aside.
@@ -224,6 +226,13 @@ std::vector<int> node_graph_ordering(const SparseMatrix& a, cholmod_common* comm
   for (int g : gperm)
     for (int j = start[g]; j < start[g + 1]; ++j) perm.push_back(j);
   return perm;
+}
+
+/// A count of CHOLMOD's analysis (operations, factor entries) for the log: "4.52e+09".
+std::string analysis_count(double count) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", count);
+  return text;
 }
 
 /// A 3D mesh's system: over 40 stored entries a column (81 for HEXA8 meshes, 18 for QUAD4).
@@ -467,6 +476,8 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     const bool asked = ordering_ != FactorOrdering::Auto;
     std::vector<int> perm = asked ? given_ordering(*m, ordering_) : node_graph_ordering(*m, &common_, GraphOrdering::Amd);
     if (asked && perm.empty()) throw SolveError("CHOLMOD: the " + ordering_name(ordering_) + " ordering failed");
+    double kept_fl = 0.0, kept_lnz = 0.0;  // the analysis of the factor kept
+    std::string tried;                      // the other ordering tried, if any
     if (perm.empty()) {
       common_.nmethods = 0;  // CHOLMOD's default strategy (AMD, then METIS if AMD fills badly)
       factor_ = cholmod_analyze(&s, &common_);
@@ -477,6 +488,7 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
       factor_ = cholmod_analyze_p(&s, perm.data(), nullptr, 0, &common_);
       ordering_used_ = ordering_name(asked ? ordering_ : FactorOrdering::Amd);
     }
+    kept_fl = common_.fl, kept_lnz = common_.lnz;
     if (!asked && !perm.empty()) {
       // Where AMD's factorisation of a 3D system (over 40 entries a column) needs over 5e9
       // operations, or its factor is over 10 times A, nested dissection (METIS on the same
@@ -490,9 +502,14 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
         std::vector<int> nd = node_graph_ordering(*m, &common_, GraphOrdering::Metis);
         if (!nd.empty()) {
           cholmod_factor* other = cholmod_analyze_p(&s, nd.data(), nullptr, 0, &common_);
-          if (other && common_.fl < fl_amd) {
+          const double fl_nd = common_.fl, lnz_nd = common_.lnz;
+          if (other && fl_nd < fl_amd) {
             std::swap(factor_, other);
             ordering_used_ = ordering_name(FactorOrdering::Metis);
+            kept_fl = fl_nd, kept_lnz = lnz_nd;
+            tried = "; AMD: " + analysis_count(fl_amd) + " operations";
+          } else if (other) {
+            tried = "; METIS: " + analysis_count(fl_nd) + " operations";
           }
           if (other) cholmod_free_factor(&other, &common_);
         }
@@ -501,6 +518,8 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     if (!factor_ && common_.status == CHOLMOD_OUT_OF_MEMORY)
       throw SolveError::out_of_memory("CHOLMOD", m->rows(), "symbolic analysis");
     if (!factor_) fail(-1, "symbolic analysis failed (status " + std::to_string(common_.status) + ")");
+    analysis_note_ = "CHOLMOD analysis, " + ordering_used_ + ": " + analysis_count(kept_fl) + " operations, " +
+                     analysis_count(kept_lnz) + " factor entries" + tried;
     n_ = m->cols();
     nnz_ = m->nonZeros();
     fingerprint_ = fingerprint;
@@ -599,6 +618,7 @@ class CholmodInterfaceSolver final : public InterfaceSolver {
   void factorize(const SparseMatrix& a, MatrixKind kind) override;
   Vector solve(const Vector& b) const override;
   std::string name() const override { return "CHOLMOD with the contact interface condensed"; }
+  std::string analysis_note() const override { return analysis_note_; }
   const std::vector<int>& interface() const override { return interface_; }
   void set_singularity_test(SingularityTest test) override { test_ = test; }
 
@@ -617,6 +637,7 @@ class CholmodInterfaceSolver final : public InterfaceSolver {
   std::vector<int> pivots_;
   bool wide_ = false;  ///< two BLAS threads for the factorisations (a 3D-sized factor)
   bool ready_ = false;
+  std::string analysis_note_;  ///< the reference's analysis and the interface's dense factorisation
   Eigen::Map<const Eigen::MatrixXd> l_ii() const {
     const auto m = static_cast<Eigen::Index>(interface_.size());
     return {l_ii_.data(), m, m};
@@ -657,7 +678,8 @@ bool CholmodInterfaceSolver::factorize_reference(SparseMatrix& r, double max_den
     perm = node_graph_ordering(r, &common_, GraphOrdering::Metis, &on_interface);
     std::stable_partition(perm.begin(), perm.end(), [&on_interface](int eq) { return !on_interface[eq]; });
   }
-  if (!interface_last(perm)) {
+  const bool perm_from_metis = interface_last(perm);
+  if (!perm_from_metis) {
     perm = node_graph_ordering(r, &common_, GraphOrdering::Amd, &on_interface);
     if (perm.empty()) {
       perm.resize(n);
@@ -669,6 +691,11 @@ bool CholmodInterfaceSolver::factorize_reference(SparseMatrix& r, double max_den
     if (!interface_last(perm)) throw SolveError("CHOLMOD: CAMD did not order the interface last");
   }
   factor_ = cholmod_analyze_p(&view, perm.data(), nullptr, 0, &common_);
+  if (factor_)
+    analysis_note_ = "CHOLMOD analysis of the reference, " + std::string(perm_from_metis ? "METIS" : "CAMD") +
+                     " with the " + std::to_string(m) + " interface equations last: " + analysis_count(common_.fl) +
+                     " operations, " + analysis_count(common_.lnz) + " factor entries; each contact pass " +
+                     analysis_count(static_cast<double>(m) * m * m / 3.0) + " (dense)";
   if (factor_ && max_dense_share > 0.0 && static_cast<double>(m) * m * m / 3.0 > max_dense_share * common_.fl) {
     cholmod_free_factor(&factor_, &common_);
     return false;

@@ -158,6 +158,10 @@ class LinearSolver {
   /// The ordering the last analysis used ("METIS (nested dissection of the node graph),
   /// given", "PORD", ...); empty for the backends that do not say.
   virtual std::string ordering_used() const { return {}; }
+  /// What the last symbolic analysis came to ("AMD: 4.5e+09 operations, 1.3e+07 factor
+  /// entries"), as the backend's own analysis counts it; empty for the backends that do not
+  /// say. The log prints it at verbosity 2 (`lunaster run -v`), once per analysis.
+  virtual std::string analysis_note() const { return {}; }
 };
 
 /// Builds a backend. Never returns null. `iterative` is read by SolverKind::Petsc only.

@@ -173,6 +173,9 @@ class SaddleSolver final : public LinearSolver {
   std::string ordering_used() const override {
     return split_ ? split_data_->schur->ordering_used() : direct_ ? direct_->ordering_used() : std::string();
   }
+  std::string analysis_note() const override {
+    return split_ ? split_data_->schur->analysis_note() : direct_ ? direct_->analysis_note() : std::string();
+  }
 
  private:
   LinearSolver& direct() const {

@@ -702,6 +702,54 @@ TEST(Solvers, NestedDissectionOfThe3dNodeGraphBeatsMinimumDegree) {
   expect_cholmod_solves_as_umfpack(k, 1e-12, 1e-9);
 }
 
+/// The count that `analysis_note()` gives before `what` ("operations", "factor entries").
+double count_before(const std::string& note, const std::string& what) {
+  const size_t at = note.find(" " + what);
+  if (at == std::string::npos) return -1.0;
+  const size_t start = note.find_last_of(" ,:;", at - 1);
+  return std::stod(note.substr(start + 1, at - start - 1));
+}
+
+TEST(Solvers, CholmodSaysWhatItsAnalysisCameTo) {
+  // A chain (tridiagonal) without a layout (no node graph: CHOLMOD orders it itself): no
+  // fill, 2n - 1 factor entries, and CHOLMOD's count of operations, the sum of the squared
+  // column counts of L: 9 columns of 2 entries and the last of 1, 9 x 4 + 1 = 37.
+  {
+    std::vector<Triplet> t;
+    for (int i = 0; i < 10; ++i) {
+      t.emplace_back(i, i, 2.0);
+      if (i + 1 < 10) t.emplace_back(i, i + 1, -1.0), t.emplace_back(i + 1, i, -1.0);
+    }
+    SparseMatrix a(10, 10);
+    a.setFromTriplets(t.begin(), t.end());
+    auto cholmod = make_linear_solver(SolverKind::Cholmod);
+    cholmod->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+    const std::string note = cholmod->analysis_note();
+    EXPECT_NE(note.find("CHOLMOD's own"), std::string::npos) << note;
+    EXPECT_EQ(count_before(note, "factor entries"), 19.0) << note;
+    EXPECT_EQ(count_before(note, "operations"), 37.0) << note;
+    EXPECT_EQ(note.find("METIS"), std::string::npos) << "a small 1D system tries no nested dissection: " << note;
+  }
+  // The 16 x 16 x 16 HEXA8 block above: AMD's factor needs over 5e9 operations, so METIS is
+  // tried and kept; the note gives its count (as CHOLMOD's analysis of that order counts it)
+  // and AMD's, the larger.
+  const SparseMatrix k = block_on_springs(CellType::Hexa8, 16, 0.2, 2.0e11, 1e13);
+  auto cholmod = make_linear_solver(SolverKind::Cholmod);
+  cholmod->factorize(k, MatrixKind::SymmetricPositiveDefinite);
+  const std::string note = cholmod->analysis_note();
+  ASSERT_EQ(note.find("CHOLMOD analysis, METIS"), 0u) << note;
+  const double kept = count_before(note, "operations");
+  const double with_nd = factor_operations(k, given_ordering(k, FactorOrdering::Metis));
+  EXPECT_NEAR(kept, with_nd, 0.01 * with_nd) << note;
+  const size_t amd = note.find("; AMD: ");
+  ASSERT_NE(amd, std::string::npos) << note;
+  EXPECT_GT(count_before(note.substr(amd), "operations"), kept) << note;
+  // Analysed once: new values in the same pattern keep the note.
+  SparseMatrix k2 = 2.0 * k;
+  cholmod->factorize(k2, MatrixKind::SymmetricPositiveDefinite);
+  EXPECT_EQ(cholmod->analysis_note(), note);
+}
+
 /// k with its nodes renumbered by a fixed shuffle (each node's `per_node` equations kept
 /// together and in order): the same operator, its band spread over the whole matrix.
 SparseMatrix shuffled_nodes(const SparseMatrix& k, int per_node) {
