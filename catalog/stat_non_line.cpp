@@ -134,6 +134,17 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                     "ill-conditioned system); zero or negative: not checked, Newton's residual alone "
                                     "judges (code_aster's default in STAT_NON_LINE, -1). Absent: 1e-6, "
                                     "lunaster's check for every direct solve"),
+                               text("MATR_DISTRIBUEE",
+                                    "Under mpirun: OUI shares the model among the ranks (Scotch partition of "
+                                    "the cells; each rank assembles and keeps the rows of the nodes it owns and "
+                                    "gives them to MUMPS as distributed entries); NON gives every rank the whole "
+                                    "system (each assembles all of it; MUMPS reads rank 0's copy and still "
+                                    "factorises across the ranks), whose values are those of a run without mpirun "
+                                    "to round-off. Without mpirun there is one rank and nothing to share. "
+                                    "code_aster's default is NON; lunaster's is OUI, the memory of a model "
+                                    "beyond one machine")
+                                   .into_values({"OUI", "NON"})
+                                   .def("OUI"),
                                integer("PCENT_PIVOT",
                                        "Working space of MUMPS's factorisation beyond its analysis's estimate, in "
                                        "percent (ICNTL(14)): room for the pivots an indefinite system delays. "

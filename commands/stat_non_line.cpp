@@ -89,7 +89,7 @@ void read_petsc(const Args& solveur, engine::IterativeSettings& settings) {
 
 /// SOLVEUR NPREC and STOP_SINGULIER (the factorising methods), RENUM (the fill-reducing
 /// ordering, by code_aster's names for each METHODE) and, for MUMPS, GESTION_MEMOIRE,
-/// PCENT_PIVOT and RESI_RELA.
+/// MATR_DISTRIBUEE, PCENT_PIVOT and RESI_RELA.
 void read_direct_solver(const Args& solveur, engine::NewtonOptions& options) {
   using O = engine::FactorOrdering;
   const std::string methode = solveur.text("METHODE");
@@ -111,6 +111,7 @@ void read_direct_solver(const Args& solveur, engine::NewtonOptions& options) {
   options.memory = memory == "IN_CORE"       ? engine::FactorMemory::InCore
                    : memory == "OUT_OF_CORE" ? engine::FactorMemory::OutOfCore
                                              : engine::FactorMemory::Auto;
+  options.share_model = solveur.text("MATR_DISTRIBUEE") == "OUI";
   if (solveur.has("PCENT_PIVOT")) options.workspace_relaxation = static_cast<int>(solveur.integer("PCENT_PIVOT"));
   if (solveur.has("RESI_RELA")) options.direct_solve_tolerance = solveur.real("RESI_RELA");
   const std::string renum = solveur.text("RENUM");

@@ -229,6 +229,10 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
                 (contact_ ? std::string(", pairs its share of the contact points and builds the contact terms "
                                         "of its own columns")
                           : std::string()));
+    } else if (parallel::size() > 1 && !options_.auto_solver && options_.solver == SolverKind::Mumps) {
+      log_.info("model whole on each of the " + std::to_string(parallel::size()) +
+                " ranks, as asked: each rank assembles the whole system; MUMPS reads rank 0's copy and "
+                "factorises it across the ranks");
     }
     SparseMatrix k = assemble_stiffness_matrix(model_, dofs_, distributed_ ? &owned_nodes_ : nullptr);
     split_matrix(k, constrained, elastic_);
@@ -334,7 +338,7 @@ bool StaticSolver::shares_model() const {
   // Only when the deck names such a backend: METHODE='AUTO' keeps its choice (CHOLMOD on
   // every rank for an SPD system), so a deck gives the same values under mpirun.
   if (parallel::size() < 2 || options_.auto_solver) return false;
-  return options_.solver == SolverKind::Mumps || options_.solver == SolverKind::Petsc;
+  return (options_.solver == SolverKind::Mumps && options_.share_model) || options_.solver == SolverKind::Petsc;
 }
 
 Vector StaticSolver::stiffness_times(const Vector& u) const {

@@ -38,6 +38,10 @@ struct NewtonOptions {
   /// elasticity, the only behaviour, it is the tangent: factorised once per run either way.
   /// Not for runs with contact (the multiplier equations would be empty).
   bool elastic_matrix = false;
+  /// Under mpirun, whether a deck that names MUMPS shares the model among the ranks
+  /// (SOLVEUR MATR_DISTRIBUEE='OUI', the default) or gives every rank the whole system ('NON').
+  /// PETSc always shares it.
+  bool share_model = true;
   /// SolverKind::Petsc: the Krylov method, preconditioner and tolerance.
   IterativeSettings iterative;
   /// The direct backends' fill-reducing ordering (SOLVEUR RENUM).
@@ -182,7 +186,7 @@ class StaticSolver {
   /// the eliminations' columns.
   SplitMatrix elastic_;
   /// The model shared among the ranks of an MPI run (several ranks, a backend named by the
-  /// deck that takes a distributed system: MUMPS or PETSc). The volume cells are partitioned
+  /// deck that takes a distributed system: MUMPS unless MATR_DISTRIBUEE='NON', or PETSc). The volume cells are partitioned
   /// (Scotch); each rank assembles the complete columns of the nodes it owns
   /// (owned_nodes_), so elastic_ and the system hold only those, and products with them are
   /// summed over the ranks. The contact hook shares its pairing among the ranks and builds
