@@ -27,6 +27,8 @@ RESU = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CHMAT, CONTACT = CONT,
                       COMPORTEMENT = _F{ RELATION = 'ELAS' },
                       INCREMENT = _F{ LIST_INST = L_INST } }
 RESU = CALC_CHAMP{ reuse = RESU, RESULTAT = RESU, CONTRAINTE = { 'SIGM_ELNO', 'SIGM_NOEU' } }
+-- The result in MED: every step with the same DEPL components (LAGS_C at NUME_ORDRE 0 too).
+IMPR_RESU{ FORMAT = 'MED', RESU = _F{ RESULTAT = RESU } }
 
 -- VALE_CALC: lunaster's own values from a real run (non-regression, relative 1e-6), keyed by
 -- 'field component point' or 'field component MIN(group)'.

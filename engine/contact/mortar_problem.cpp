@@ -751,20 +751,37 @@ void MortarProblem::restore(const ContactSnapshot& state) {
   ++pattern_version_;
 }
 
+namespace {
+
+/// The index of LAGS_C in DEPL, the component added (undefined everywhere) if DEPL has none.
+int lags_c_of(NodalField& depl) {
+  int lags = depl.component_index("LAGS_C");
+  if (lags >= 0) return lags;
+  std::vector<std::string> components = depl.components;
+  components.push_back("LAGS_C");
+  NodalField wider(components, depl.n_nodes);
+  for (int node = 0; node < depl.n_nodes; ++node)
+    for (int c = 0; c < depl.n_components(); ++c)
+      if (depl.has(node, c)) wider.set(node, c, depl.value(node, c));
+  depl = std::move(wider);
+  return depl.component_index("LAGS_C");
+}
+
+}  // namespace
+
+void MortarProblem::write_initial_fields(ResultStep& step) const {
+  // Before contact: no pressure at the nodes of the slave surfaces, where LAGS_C will live.
+  NodalField& depl = step.nodal.at("DEPL");
+  const int lags = lags_c_of(depl);
+  for (const auto& zone : slave_cells_)
+    for (const OrientedCell& oc : zone)
+      for (int k = 0; k < oc.n; ++k) depl.set(oc.nodes[k], lags, 0.0);
+}
+
 void MortarProblem::write_fields(const Vector& u, ResultStep& step) const {
   // LAGS_C in DEPL: the nodal pressure, negative in compression (no unknown carries it).
   NodalField& depl = step.nodal.at("DEPL");
-  int lags = depl.component_index("LAGS_C");
-  if (lags < 0) {
-    NodalField wider(depl.components, depl.n_nodes);
-    wider.components.push_back("LAGS_C");
-    wider = NodalField(wider.components, depl.n_nodes);
-    for (int node = 0; node < depl.n_nodes; ++node)
-      for (int c = 0; c < depl.n_components(); ++c)
-        if (depl.has(node, c)) wider.set(node, c, depl.value(node, c));
-    depl = std::move(wider);
-    lags = depl.component_index("LAGS_C");
-  }
+  const int lags = lags_c_of(depl);
   std::vector<std::string> cmps = {"CONT", "JEU", "RN", "RNX", "RNY"};
   if (dim_ == 3) cmps.push_back("RNZ");
   cmps.push_back("PRES");

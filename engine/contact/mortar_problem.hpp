@@ -87,6 +87,7 @@ class MortarProblem final : public ContactHook {
   unsigned long long status_key() const override;
   int n_active() const override;
   void write_fields(const Vector& u, ResultStep& step) const override;
+  void write_initial_fields(ResultStep& step) const override;
   ContactSnapshot snapshot() const override;
   void restore(const ContactSnapshot& state) override;
 

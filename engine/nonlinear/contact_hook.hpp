@@ -107,6 +107,11 @@ class ContactHook {
   virtual int n_active() const = 0;
   /// Stores contact results (LAGS_C in DEPL is already in u; CONT_NOEU ...).
   virtual void write_fields(const Vector& u, ResultStep& step) const = 0;
+  /// The initial state (NUME_ORDRE 0, before any pairing): the components the hook adds to
+  /// DEPL at later steps, at their value before contact, so that every step of a result has
+  /// the same components (a MED field has one list of components for all its steps). A hook
+  /// whose contact unknowns are already in u adds nothing.
+  virtual void write_initial_fields(ResultStep& /*step*/) const {}
   /// State at the start of a step, and its restoration (step subdivision).
   virtual ContactSnapshot snapshot() const { return {}; }
   virtual void restore(const ContactSnapshot& /*state*/) {}

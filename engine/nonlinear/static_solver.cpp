@@ -248,6 +248,7 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   initial.nume_ordre = 0;
   initial.inst = instants[0];
   initial.nodal["DEPL"] = make_depl(u);
+  if (contact_) contact_->write_initial_fields(initial);
   steps_.push_back(std::move(initial));
   for (size_t i = 1; i < instants.size(); ++i) {
     try {
