@@ -738,16 +738,43 @@ int MortarProblem::n_active() const {
   return static_cast<int>(std::count_if(rows_.begin(), rows_.end(), [](const auto& r) { return r.active; }));
 }
 
+namespace {
+
+/// What a mortar pairing is made of, kept by a snapshot: the rows (their statuses included),
+/// the master terms, the configuration paired and the pressures.
+struct MortarPairing {
+  std::vector<MortarRow> rows;
+  std::vector<std::vector<std::pair<int, double>>> masters;
+  Vector u_at_pairing;
+  std::vector<int> row_of_node;
+  std::vector<double> lambda;
+};
+
+}  // namespace
+
 ContactSnapshot MortarProblem::snapshot() const {
   ContactSnapshot s;
   s.first_step = first_step_;
   for (const auto& r : rows_) s.active.push_back(r.active);
+  // begin_step keeps the last pairing after the first step: a step split after a failure
+  // must start from the pairing of the step's start, not from the failed attempt's last one.
+  if (!first_step_)
+    s.pairing = std::make_shared<const MortarPairing>(
+        MortarPairing{rows_, master_terms_, u_at_pairing_, row_of_node_, lambda_});
   return s;
 }
 
 void MortarProblem::restore(const ContactSnapshot& state) {
-  if (state.active.size() != rows_.size()) return;
-  for (size_t i = 0; i < rows_.size(); ++i) rows_[i].active = state.active[i] != 0;
+  // Before the first step: the next begin_step pairs again and applies CONTACT_INIT.
+  first_step_ = state.first_step;
+  if (state.pairing) {
+    const auto& p = *static_cast<const MortarPairing*>(state.pairing.get());
+    rows_ = p.rows;
+    master_terms_ = p.masters;
+    u_at_pairing_ = p.u_at_pairing;
+    row_of_node_ = p.row_of_node;
+    lambda_ = p.lambda;
+  }
   ++pattern_version_;
 }
 

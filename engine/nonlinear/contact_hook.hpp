@@ -3,6 +3,7 @@
 /// Implemented in engine/contact (contact_problem.hpp); the driver knows no
 /// contact method, only this interface.
 #include <array>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -21,6 +22,9 @@ namespace lunaster::engine {
 struct ContactSnapshot {
   std::vector<char> active;
   bool first_step = true;
+  /// A hook's own pairing at the snapshot, for a hook that does not pair again at the start
+  /// of every step (mortar keeps the last converged pairing); null otherwise. Opaque here.
+  std::shared_ptr<const void> pairing;
 };
 
 /// One unknown a hook removes from the linear solve by a linear relation between Newton

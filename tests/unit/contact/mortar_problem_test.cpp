@@ -252,4 +252,53 @@ TEST(MortarProblem, SurfacesThatMovedAsOneKeepTheirRowsWithoutIntegratingThem) {
   EXPECT_EQ(hook.n_pairings(), 2);
 }
 
+TEST(MortarProblem, ASplitStepStartsFromThePairingAndStatusesOfTheStepStart) {
+  // A failed attempt re-paired the sliding surfaces and changed statuses; the driver then
+  // restores the snapshot taken at the step's start. Mortar keeps the last converged pairing
+  // (begin_step pairs only once), so the snapshot must bring back the rows themselves.
+  const TwoBlocks tb = make_two_blocks(4, 3, false);
+  ContactDefinition def = mortar_definition(tb, ContactMethod::MortarLagrange, ContactInit::Yes, 100.0);
+  def.reac_geom = GeometryUpdate::Automatic;
+  def.resi_geom = 1e-12;
+  MortarProblem hook(def, tb.mesh, 2);
+  DofMap dofs(tb.mesh, make_model(tb.mesh, 2e6, 0.0).volume_cells(), 2);
+  hook.add_dofs(dofs);
+  const int upper_nodes = 5 * 5;  // the upper block's nodes come first
+  auto moved = [&](double ux_up) {
+    Vector u = Vector::Zero(dofs.n_dofs());
+    for (int node = 0; node < upper_nodes; ++node) u[dofs.dof(node, DX)] = ux_up;
+    return u;
+  };
+  const ContactSnapshot before_first = hook.snapshot();
+  hook.begin_step(Vector::Zero(dofs.n_dofs()), quiet_log());  // first step: paired, all active (CONTACT_INIT)
+  const int active = hook.n_active();
+  ASSERT_GT(active, 0);
+  const ContactSnapshot start = hook.snapshot();  // the next step's start
+  const std::vector<lunaster::engine::contact::MortarRow> rows = hook.rows();
+  const auto masters = hook.master_terms();
+  // The failed attempt: the upper block slid by 0.4 of a cell, re-paired, statuses changed.
+  hook.begin_step(Vector::Zero(dofs.n_dofs()), quiet_log());
+  EXPECT_FALSE(hook.settle(moved(0.1), quiet_log()));
+  ASSERT_EQ(hook.n_pairings(), 2);
+  ASSERT_NE(hook.master_terms(), masters);
+  hook.restore(start);
+  ASSERT_EQ(hook.rows().size(), rows.size());
+  for (size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_EQ(hook.rows()[i].node, rows[i].node);
+    EXPECT_EQ(hook.rows()[i].coef, rows[i].coef);
+    EXPECT_EQ(hook.rows()[i].active, rows[i].active);
+  }
+  EXPECT_EQ(hook.master_terms(), masters);
+  EXPECT_EQ(hook.n_active(), active);
+  // The next begin_step keeps that pairing (no new one), as after a converged step.
+  hook.begin_step(Vector::Zero(dofs.n_dofs()), quiet_log());
+  EXPECT_EQ(hook.n_pairings(), 2);
+  EXPECT_EQ(hook.master_terms(), masters);
+  // Restoring the state from before the first step pairs again and applies CONTACT_INIT.
+  hook.restore(before_first);
+  hook.begin_step(moved(0.1), quiet_log());
+  EXPECT_EQ(hook.n_pairings(), 3);
+  EXPECT_EQ(hook.n_active(), static_cast<int>(hook.rows().size()));
+}
+
 }  // namespace
