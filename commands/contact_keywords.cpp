@@ -59,6 +59,7 @@ engine::ContactZone read_contact_zone(const catalog::Args& zone, const engine::M
   z.slave_group = zone.text("GROUP_MA_ESCL");
   z.master_group = zone.text("GROUP_MA_MAIT");
   read_integration(zone, z);
+  if (opt(zone, "TOLE_PROJ_EXT")) z.tole_proj_ext = zone.real("TOLE_PROJ_EXT");
   if (opt(zone, "COEF_CONT")) z.coef_cont = zone.real("COEF_CONT");
   if (opt(zone, "COEF_REGU_CONT")) z.coef_cont = zone.real("COEF_REGU_CONT");
   if (opt(zone, "E_N")) z.coef_pena = zone.real("E_N");
