@@ -14,6 +14,12 @@ std::string residual_keywords(const std::string& hint) {
   return std::regex_replace(hint, engine_words, "last residuals: RESI_GLOB_RELA = $1, RESI_GLOB_MAXI = $2");
 }
 
+/// The engine's "(stored step N)" as the result's index is named in a deck (NUME_ORDRE).
+std::string step_keywords(const std::string& hint) {
+  static const std::regex engine_words("\\(stored step ([0-9]+)\\)");
+  return std::regex_replace(hint, engine_words, "(NUME_ORDRE $1)");
+}
+
 }  // namespace
 
 void say_in_keywords(Error& err) {
@@ -108,6 +114,7 @@ void say_in_keywords(Error& err) {
   }
   if (f.residuals_known)
     for (auto& h : hints) h = residual_keywords(h);
+  for (auto& h : hints) h = step_keywords(h);
   if (f.subdivision_levels > 0)
     for (auto& h : hints) {
       const std::string levels = "subdivision level(s)";

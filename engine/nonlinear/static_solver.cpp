@@ -258,7 +258,7 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
       const ResultStep& last = steps_.back();
       err.add_hint("failed in step " + std::to_string(i) + " of " + std::to_string(instants.size() - 1) + " [" +
                    sci(instants[i - 1]) + ", " + sci(instants[i]) + "]; " + std::to_string(steps_.size() - 1) +
-                   " step(s) converged before, the last at instant " + sci(last.inst) + " (NUME_ORDRE " +
+                   " step(s) converged before, the last at instant " + sci(last.inst) + " (stored step " +
                    std::to_string(last.nume_ordre) + ")");
       throw;
     }
@@ -393,8 +393,8 @@ SolverKind StaticSolver::backend_for(MatrixKind kind) {
       model_.dim == 3 && stats_.n_free > kLargeSpd3d) {
     const bool iterative = parallel::size() == 1;
     if (!backend_note_logged_)
-      log_.info("SOLVEUR METHODE='AUTO': " +
-                std::string(iterative ? "PETSc CG + BoomerAMG (RESI_RELA 1e-12, MUMPS if it does not converge)"
+      log_.info("solver chosen automatically: " +
+                std::string(iterative ? "PETSc CG + BoomerAMG (relative residual 1e-12, MUMPS if it does not converge)"
                                       : "MUMPS") +
                 " for a 3D system of " + std::to_string(stats_.n_free) +
                 " unknowns (a factorisation fills too much at this size)");

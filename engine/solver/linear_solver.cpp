@@ -90,7 +90,7 @@ class IterativeWithFallback final : public LinearSolver {
     direct_ = make_linear_solver(direct_kind_);
     direct_->set_singularity_test(test_);
     if (note_)
-      note_("  SOLVEUR METHODE='AUTO': " + iterative_->name() + " failed (" + why + "); " + direct_->name() +
+      note_("  solver chosen automatically: " + iterative_->name() + " failed (" + why + "); " + direct_->name() +
             " factorises the system from now on");
   }
 
