@@ -852,3 +852,49 @@ TEST(MortarDualBasis, AxisSeg3FromTheAxisKeepsItsOtherMultipliers) {
   ASSERT_TRUE(mortar::dual_coefficients(CellType::Seg3, pts, a.data()));
   for (int j = 0; j < 3; ++j) EXPECT_EQ(a[j], 0.0) << "Phi of the axis vertex, coefficient " << j;
 }
+
+namespace {
+
+// D and M of one SEG2 slave cell [0, 1] on two SEG2 master cells [-0.5, 0.5] and [0.5, 1.5]
+// (the master surface facing it, its node order reversed), integrated by hand:
+//   dual basis Phi_1 = 2 N_1 - N_2 = 2 - 3x, Phi_2 = 3x - 1 (A = De Me^-1 = [2 -1; -1 2]);
+//   D = diag(int N_j) = (1/2, 1/2);
+//   M_jl = int Phi_j N_l over the overlaps, master nodes x = -0.5, 0.5, 1.5:
+//     slave node x = 0: 3/16, 3/8, -1/16;  slave node x = 1: -1/16, 3/8, 3/16
+//   (each row sums to D_jj: the master shape functions sum to one).
+TEST(MortarIntegration, DAndMOfAShiftedSeg2PairAreTheHandValues) {
+  const double slave[6] = {0.0, 0.0, 0.0, 1.0, 0.0, 0.0};
+  const double master_cells[2][6] = {{0.5, 0.0, 0.0, -0.5, 0.0, 0.0}, {1.5, 0.0, 0.0, 0.5, 0.0, 0.0}};
+  const double master_node_x[2][2] = {{0.5, -0.5}, {1.5, 0.5}};
+  std::vector<mortar::OverlapPoint> points;
+  std::vector<int> cell_of_point;
+  for (int c = 0; c < 2; ++c) {
+    const size_t before = points.size();
+    EXPECT_NEAR(mortar::overlap_points(CellType::Seg2, slave, CellType::Seg2, master_cells[c], 4, points), 0.5, 1e-15);
+    cell_of_point.insert(cell_of_point.end(), points.size() - before, c);
+  }
+  double a[4];
+  ASSERT_TRUE(mortar::dual_coefficients(CellType::Seg2, points, a));
+  const double a_hand[4] = {2.0, -1.0, -1.0, 2.0};
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(a[k], a_hand[k], 1e-14) << "A entry " << k;
+  double d[2] = {0.0, 0.0};
+  std::array<std::array<double, 3>, 2> m{};  // slave node x master node (x = -0.5, 0.5, 1.5)
+  const auto master_index = [](double x) { return static_cast<int>(std::lround(x + 0.5)); };
+  for (size_t p = 0; p < points.size(); ++p) {
+    double ns[2], nm[2];
+    mortar::slave_shape(CellType::Seg2, points[p].xi_s, ns);
+    mortar::slave_shape(CellType::Seg2, points[p].xi_m, nm);
+    for (int j = 0; j < 2; ++j) {
+      d[j] += points[p].w * ns[j];
+      const double phi = a[2 * j] * ns[0] + a[2 * j + 1] * ns[1];
+      for (int l = 0; l < 2; ++l) m[j][master_index(master_node_x[cell_of_point[p]][l])] += points[p].w * phi * nm[l];
+    }
+  }
+  EXPECT_NEAR(d[0], 0.5, 1e-15);
+  EXPECT_NEAR(d[1], 0.5, 1e-15);
+  const double m_hand[2][3] = {{3.0 / 16, 3.0 / 8, -1.0 / 16}, {-1.0 / 16, 3.0 / 8, 3.0 / 16}};
+  for (int j = 0; j < 2; ++j)
+    for (int l = 0; l < 3; ++l) EXPECT_NEAR(m[j][l], m_hand[j][l], 1e-15) << "M(" << j << ", " << l << ")";
+}
+
+}  // namespace
