@@ -15,7 +15,7 @@
 --    orderings). LAGS_C and DY at A, O and B against ssnp121a.lua's own values (VALE_CALC,
 --    relative 1e-6) and against the analytical ones at code_aster's 1 %.
 -- Under `verify --np 2` the MUMPS models are shared among the ranks and METIS orders the pattern
--- they send to rank 0 (tests/mpi/renum_metis.lua checks the log). The orders each backend reports
+-- they send to rank 0 (tests/mpi/matr_distribuee.lua checks the log). The orders each backend reports
 -- and the fill of each ordering are checked by the unit tests Solvers.MumpsTakesTheOrdering*,
 -- Solvers.CholmodAndUmfpackTakeTheOrderingAskedFor, Solvers.ReverseCuthillMckee* and
 -- Solvers.MumpsOutOfCoreAgreesWithInCore; PCENT_PIVOT's allocation by

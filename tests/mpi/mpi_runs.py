@@ -294,16 +294,13 @@ def errors(exe, source, scratch):
             check("model shared among 2 ranks" in text, f"{deck}: the model is shared among the ranks")
 
     # RENUM='METIS' on a model shared among the ranks: rank 0 orders the gathered pattern.
-    code, out, err, _ = run([mpirun(), "-np", 2, exe, "run", HERE / "renum_metis.lua", "--out", "shared"], scratch)
-    text = out + err
-    check(code == 0 and "model shared among 2 ranks" in text and "MUMPS ordering: METIS" in text,
-          f"renum_metis.lua runs on a shared model with METIS's order (exit {code})")
     # MATR_DISTRIBUEE: 'OUI' (the default) shares the model, 'NON' gives every rank the whole system.
-    code, out, err, _ = run([mpirun(), "-np", 2, exe, "run", HERE / "matr_distribuee.lua", "--out", "matr"], scratch)
+    code, out, err, _ = run([mpirun(), "-np", 2, exe, "run", HERE / "matr_distribuee.lua", "--out", "shared"], scratch)
     text = out + err
     check(code == 0 and "4 check(s) OK, 0 NOOK" in text and text.count("model shared among 2 ranks") == 1
-          and text.count("model whole on each of the 2 ranks, as asked") == 1,
-          f"matr_distribuee.lua: one solve shared among the ranks, one whole on each, both exact (exit {code})")
+          and "MUMPS ordering: METIS" in text and text.count("model whole on each of the 2 ranks, as asked") == 1,
+          f"matr_distribuee.lua: one solve shared among the ranks with METIS's order, one whole on each, both exact "
+          f"(exit {code})")
 
     code, out, err, _ = run([mpirun(), "-np", 2, exe, "verify", source / "testcases" / "patch_2d.lua"], scratch)
     check(code == 2 and (out + err).count("lunaster verify --np N") == 1,

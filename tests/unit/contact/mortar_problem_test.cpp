@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <sstream>
 
 #include "engine/contact/mortar_problem.hpp"
@@ -232,28 +233,37 @@ TEST(MortarProblem, ActiveSetMovesInsideNewtonAndSettles) {
   EXPECT_GT(relative[relative.size() - 2], 1e-6) << "the active set settled before the last solve: " << run.log;
 }
 
-TEST(MortarProblem, SurfacesThatMovedAsOneKeepTheirRowsWithoutIntegratingThem) {
-  const TwoBlocks tb = make_two_blocks(4, 3, false);
-  ContactDefinition def = mortar_definition(tb, ContactMethod::MortarLagrange, ContactInit::Yes, 100.0);
-  def.reac_geom = GeometryUpdate::Automatic;
-  def.resi_geom = 1e-12;
-  MortarProblem hook(def, tb.mesh, 2);
-  DofMap dofs(tb.mesh, make_model(tb.mesh, 2e6, 0.0).volume_cells(), 2);
-  hook.add_dofs(dofs);
-  const int upper_nodes = 5 * 5;  // the upper block's nodes come first
-  auto moved = [&](double ux_up, double ux_low, double uy) {
+/// The 4-on-3 blocks, re-paired at every geometric change, and displacements that slide the
+/// upper block (whose 5 x 5 nodes come first) over the lower one.
+struct SlidingBlocks {
+  TwoBlocks tb = make_two_blocks(4, 3, false);
+  DofMap dofs;
+  std::unique_ptr<MortarProblem> hook;
+  SlidingBlocks() : dofs(tb.mesh, make_model(tb.mesh, 2e6, 0.0).volume_cells(), 2) {
+    ContactDefinition def = mortar_definition(tb, ContactMethod::MortarLagrange, ContactInit::Yes, 100.0);
+    def.reac_geom = GeometryUpdate::Automatic;
+    def.resi_geom = 1e-12;
+    hook = std::make_unique<MortarProblem>(def, tb.mesh, 2);
+    hook->add_dofs(dofs);
+  }
+  Vector moved(double ux_up, double ux_low, double uy) const {
     Vector u = Vector::Zero(dofs.n_dofs());
     for (int node = 0; node < tb.mesh.n_nodes(); ++node) {
-      u[dofs.dof(node, DX)] = node < upper_nodes ? ux_up : ux_low;
+      u[dofs.dof(node, DX)] = node < 5 * 5 ? ux_up : ux_low;
       u[dofs.dof(node, DY)] = uy;
     }
     return u;
-  };
-  hook.begin_step(Vector::Zero(dofs.n_dofs()), quiet_log());
+  }
+};
+
+TEST(MortarProblem, SurfacesThatMovedAsOneKeepTheirRowsWithoutIntegratingThem) {
+  SlidingBlocks blocks;
+  MortarProblem& hook = *blocks.hook;
+  hook.begin_step(blocks.moved(0.0, 0.0, 0.0), quiet_log());
   ASSERT_EQ(hook.n_row_builds(), 1);
   const auto rows = hook.rows();
   // Both surfaces translated together: settled, the rows kept, nothing integrated.
-  EXPECT_TRUE(hook.settle(moved(0.13, 0.13, -0.02), quiet_log()));
+  EXPECT_TRUE(hook.settle(blocks.moved(0.13, 0.13, -0.02), quiet_log()));
   EXPECT_EQ(hook.n_row_builds(), 1);
   ASSERT_EQ(hook.rows().size(), rows.size());
   for (size_t i = 0; i < rows.size(); ++i) {
@@ -261,7 +271,7 @@ TEST(MortarProblem, SurfacesThatMovedAsOneKeepTheirRowsWithoutIntegratingThem) {
     EXPECT_EQ(hook.rows()[i].coef, rows[i].coef);
   }
   // The upper block slid along the interface: the rows are integrated again, and change.
-  EXPECT_FALSE(hook.settle(moved(0.23, 0.13, -0.02), quiet_log()));
+  EXPECT_FALSE(hook.settle(blocks.moved(0.23, 0.13, -0.02), quiet_log()));
   EXPECT_EQ(hook.n_row_builds(), 2);
   EXPECT_EQ(hook.n_pairings(), 2);
 }
@@ -270,29 +280,19 @@ TEST(MortarProblem, ASplitStepStartsFromThePairingAndStatusesOfTheStepStart) {
   // A failed attempt re-paired the sliding surfaces and changed statuses; the driver then
   // restores the snapshot taken at the step's start. Mortar keeps the last converged pairing
   // (begin_step pairs only once), so the snapshot must bring back the rows themselves.
-  const TwoBlocks tb = make_two_blocks(4, 3, false);
-  ContactDefinition def = mortar_definition(tb, ContactMethod::MortarLagrange, ContactInit::Yes, 100.0);
-  def.reac_geom = GeometryUpdate::Automatic;
-  def.resi_geom = 1e-12;
-  MortarProblem hook(def, tb.mesh, 2);
-  DofMap dofs(tb.mesh, make_model(tb.mesh, 2e6, 0.0).volume_cells(), 2);
-  hook.add_dofs(dofs);
-  const int upper_nodes = 5 * 5;  // the upper block's nodes come first
-  auto moved = [&](double ux_up) {
-    Vector u = Vector::Zero(dofs.n_dofs());
-    for (int node = 0; node < upper_nodes; ++node) u[dofs.dof(node, DX)] = ux_up;
-    return u;
-  };
+  SlidingBlocks blocks;
+  MortarProblem& hook = *blocks.hook;
+  const Vector at_rest = blocks.moved(0.0, 0.0, 0.0);
   const ContactSnapshot before_first = hook.snapshot();
-  hook.begin_step(Vector::Zero(dofs.n_dofs()), quiet_log());  // first step: paired, all active (CONTACT_INIT)
+  hook.begin_step(at_rest, quiet_log());  // first step: paired, all active (CONTACT_INIT)
   const int active = hook.n_active();
   ASSERT_GT(active, 0);
   const ContactSnapshot start = hook.snapshot();  // the next step's start
   const std::vector<lunaster::engine::contact::MortarRow> rows = hook.rows();
   const auto masters = hook.master_terms();
   // The failed attempt: the upper block slid by 0.4 of a cell, re-paired, statuses changed.
-  hook.begin_step(Vector::Zero(dofs.n_dofs()), quiet_log());
-  EXPECT_FALSE(hook.settle(moved(0.1), quiet_log()));
+  hook.begin_step(at_rest, quiet_log());
+  EXPECT_FALSE(hook.settle(blocks.moved(0.1, 0.0, 0.0), quiet_log()));
   ASSERT_EQ(hook.n_pairings(), 2);
   ASSERT_NE(hook.master_terms(), masters);
   hook.restore(start);
@@ -305,12 +305,12 @@ TEST(MortarProblem, ASplitStepStartsFromThePairingAndStatusesOfTheStepStart) {
   EXPECT_EQ(hook.master_terms(), masters);
   EXPECT_EQ(hook.n_active(), active);
   // The next begin_step keeps that pairing (no new one), as after a converged step.
-  hook.begin_step(Vector::Zero(dofs.n_dofs()), quiet_log());
+  hook.begin_step(at_rest, quiet_log());
   EXPECT_EQ(hook.n_pairings(), 2);
   EXPECT_EQ(hook.master_terms(), masters);
   // Restoring the state from before the first step pairs again and applies CONTACT_INIT.
   hook.restore(before_first);
-  hook.begin_step(moved(0.1), quiet_log());
+  hook.begin_step(blocks.moved(0.1, 0.0, 0.0), quiet_log());
   EXPECT_EQ(hook.n_pairings(), 3);
   EXPECT_EQ(hook.n_active(), static_cast<int>(hook.rows().size()));
 }
