@@ -139,7 +139,8 @@ MortarProblem::MortarProblem(const ContactDefinition& definition, const Mesh& me
   for (size_t z = 0; z < def_.zones.size(); ++z) {
     const ContactZone& zone = def_.zones[z];
     if (!(zone.coef_cont > 0.0) || !std::isfinite(zone.coef_cont))
-      throw DeckError(zone_label(zone, static_cast<int>(z)) + ": the complementarity coefficient must be a finite number > 0");
+      throw DeckError(zone_label(zone, static_cast<int>(z)) +
+                      ": the complementarity coefficient must be a finite number > 0");
     const std::string label = zone_label(zone, static_cast<int>(z));
     slave_cells_.push_back(orient_surface(mesh, dim, zone.slave_cells, volumes_of_node, label, "slave"));
     master_cells_.push_back(orient_surface(mesh, dim, zone.master_cells, volumes_of_node, label, "master"));

@@ -186,8 +186,8 @@ class StaticSolver {
   /// the eliminations' columns.
   SplitMatrix elastic_;
   /// The model shared among the ranks of an MPI run (several ranks, a backend named by the
-  /// deck that takes a distributed system: MUMPS unless MATR_DISTRIBUEE='NON', or PETSc). The volume cells are partitioned
-  /// (Scotch); each rank assembles the complete columns of the nodes it owns
+  /// deck that takes a distributed system: MUMPS unless told not to share, or PETSc). The
+  /// volume cells are partitioned (Scotch); each rank assembles the complete columns of the nodes it owns
   /// (owned_nodes_), so elastic_ and the system hold only those, and products with them are
   /// summed over the ranks. The contact hook shares its pairing among the ranks and builds
   /// the terms of the points touching this rank's columns (share_among_ranks); each rank

@@ -20,7 +20,8 @@ TEST(FailureKeywords, NewtonNamesIterGlobMaxiAndTheResiduals) {
   SolveError e("Newton did not converge at instant 1.000000e+00 within 6 iterations",
                {"last residuals: relative 1.2e-03, absolute 4.5e+01 N", "loop: Newton (contact/geometry fixed-point pass 0)",
                 "step [0, 1] still failed after 2 subdivision level(s)",
-                "failed in step 2 of 2 [2.5e-01, 1]; 1 step(s) converged before, the last at instant 2.5e-01 (stored step 1)"});
+                "failed in step 2 of 2 [2.5e-01, 1]; 1 step(s) converged before, the last at instant 2.5e-01 "
+                "(stored step 1)"});
   e.failure().what = Failure::What::NewtonIterations;
   e.failure().limit = 6;
   e.failure().residuals_known = true;
@@ -30,7 +31,8 @@ TEST(FailureKeywords, NewtonNamesIterGlobMaxiAndTheResiduals) {
   EXPECT_EQ(e.hints()[0], "last residuals: RESI_GLOB_RELA = 1.2e-03, RESI_GLOB_MAXI = 4.5e+01");
   EXPECT_EQ(e.hints()[2], "step [0, 1] still failed after 2 subdivision level(s) (SUBD_NIVEAU)");
   EXPECT_EQ(e.hints()[3],
-            "failed in step 2 of 2 [2.5e-01, 1]; 1 step(s) converged before, the last at instant 2.5e-01 (NUME_ORDRE 1)");
+            "failed in step 2 of 2 [2.5e-01, 1]; 1 step(s) converged before, the last at instant 2.5e-01 "
+            "(NUME_ORDRE 1)");
 }
 
 TEST(FailureKeywords, ContactLoopsNameTheirLimits) {
