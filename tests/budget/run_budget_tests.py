@@ -100,7 +100,7 @@ def run_budgets(exe, source, scratch):
     code, out, seconds = run([exe, "run", loop, "--out", "o"], scratch)
     check(code == 5 and 1.0 <= seconds and before(seconds, 2.0), f"header time_limit=1: exit 5 after 1-2 s ({seconds:.2f} s)")
     # The loop's line (7). A sanitizer build, several times slower to start, may still be in
-    # DEBUT (line 5) when the second is up, as the 476e998.. run under make test-asan was once.
+    # DEBUT (line 5) when the second is up (seen once, right after mpi.concurrent_runs).
     lines = (5, 7) if SANITIZED else (7,)
     check(any(f"{loop}:{n}: time limit of 1 s exceeded" in out for n in lines),
           "the message names the deck line and the limit")
