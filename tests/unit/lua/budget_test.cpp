@@ -211,7 +211,15 @@ TEST(BudgetRun, TheTimeLimitCountsFromTheStartGiven) {
       now - std::chrono::milliseconds(400));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - now).count();
   EXPECT_EQ(code, 5) << err.str();
-  EXPECT_NE(err.str().find("late.lua:3: time limit of 0.5 s exceeded"), std::string::npos) << err.str();
+#if defined(__SANITIZE_ADDRESS__)
+  // A sanitizer build, several times slower, may still be in DEBUT (line 1) when the 0.1 s
+  // left is up (seen once under make test-asan); the message then names that line.
+  const bool named = err.str().find("late.lua:3: time limit of 0.5 s exceeded") != std::string::npos ||
+                     err.str().find("late.lua:1: time limit of 0.5 s exceeded") != std::string::npos;
+#else
+  const bool named = err.str().find("late.lua:3: time limit of 0.5 s exceeded") != std::string::npos;
+#endif
+  EXPECT_TRUE(named) << err.str();
   EXPECT_GE(seconds, 0.09);
   EXPECT_LT(seconds, 0.4);
 }
