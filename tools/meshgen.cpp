@@ -21,11 +21,15 @@ using namespace lunaster;
 
 const char* kUsage =
     "usage:\n"
-    "  lunaster-meshgen --upper TYPE:N --lower TYPE:N [--x-range X0,X1] [--refine K] [--glued] [--name MESH] -o FILE.med\n"
+    "  lunaster-meshgen --upper TYPE:N --lower TYPE:N [--top TYPE:N] [--x-range X0,X1] [--refine K] [--glued]\n"
+    "                   [--name MESH] -o FILE.med\n"
     "      SSNP121 2D: PLAQUE1 = [-1,1]x[0,1] (upper), PLAQUE2 = [-1,1]x[-1,0]; TYPE quad4|quad8|tria3|tria6;\n"
+    "      --top: a third block PLAQUE3 = [-1,1]x[1,2] (edges IJ JK KL LI, nodes I J K L P), meshed apart\n"
     "      --x-range: [X0,X1] instead of [-1,1] (axisymmetric sections: x = r)\n"
-    "  lunaster-meshgen --v1 TYPE:NXxNYxNZ --v2 TYPE:NXxNYxNZ [--refine K] [--glued] [--name MESH] -o FILE.med\n"
-    "      SSNP121 3D: V1 = [0,1]^3, V2 = [0,1]^2x[1,2]; TYPE hexa8|hexa20|penta6|penta15|tetra4|tetra10\n"
+    "  lunaster-meshgen --v1 TYPE:NXxNYxNZ --v2 TYPE:NXxNYxNZ [--v3 TYPE:NXxNYxNZ] [--refine K] [--glued]\n"
+    "                   [--name MESH] -o FILE.med\n"
+    "      SSNP121 3D: V1 = [0,1]^3, V2 = [0,1]^2x[1,2]; TYPE hexa8|hexa20|penta6|penta15|tetra4|tetra10;\n"
+    "      --v3: a third block V3 = [0,1]^2x[2,3] (faces SURBA3 z=2, SURCH3 z=3, nodes A31..A34), meshed apart\n"
     "  lunaster-meshgen --ring TYPE:NTxNR --sleeve TYPE:NTxNR [--radii A,B,C] [--refine K] [--name MESH] -o FILE.med\n"
     "      quarter ring RING (A <= r <= B) fitted in a sleeve SLEEVE (B <= r <= C), meshed independently\n"
     "      (non-matching on r = B when the NT differ); NT cells along the arc, NR through the thickness;\n"
@@ -76,7 +80,7 @@ Options parse(int argc, char** argv) {
                a == "--ring" || a == "--sleeve" || a == "--radii" || a == "--nodes" ||
                a == "--refine" || a == "--distort" || a == "--name" || a == "--info" || a == "--mirror" ||
                a == "--msh-version" || a == "--hertz" || a == "--radius" || a == "--box" || a == "--grading" ||
-               a == "--rect" || a == "--x-range") {
+               a == "--rect" || a == "--x-range" || a == "--top" || a == "--v3") {
       if (i + 1 >= argc) throw DeckError("meshgen: option " + a + " needs a value");
       o.values[a] = argv[++i];
     } else {
@@ -242,6 +246,7 @@ int run(int argc, char** argv) {
     opt.upper = refined(get("--upper").empty() ? "quad4:12" : get("--upper"), 2, refine);
     opt.lower = refined(get("--lower").empty() ? "quad4:11" : get("--lower"), 2, refine);
     opt.glued = o.glued;
+    if (!get("--top").empty()) opt.top = refined(get("--top"), 2, refine);
     if (!get("--x-range").empty()) {
       const std::vector<double> r = number_list(get("--x-range"), "--x-range");
       if (r.size() != 2) throw DeckError("meshgen: --x-range expects X0,X1, got '" + get("--x-range") + "'");
@@ -252,6 +257,7 @@ int run(int argc, char** argv) {
     tools::Ssnp121Options3d opt;
     opt.v1 = refined(get("--v1").empty() ? "hexa20:4" : get("--v1"), 3, refine);
     opt.v2 = refined(get("--v2").empty() ? "hexa20:4" : get("--v2"), 3, refine);
+    if (!get("--v3").empty()) opt.v3 = refined(get("--v3"), 3, refine);
     opt.glued = o.glued;
     mesh = tools::make_ssnp121_3d(opt);
   } else if (ring) {

@@ -312,6 +312,16 @@ Mesh make_ssnp121_2d(const Ssnp121Options2d& o) {
                   {{"EF", 1, 0.0}, {"FG", 0, x1}, {"GH", 1, -1.0}, {"HE", 0, x0}}, low};
   BlockMesher(b, o.upper, upper).run();
   BlockMesher(b, o.lower, lower).run();
+  if (o.top.n[0] > 0) {
+    check_dim(o.top, 2, "top block");
+    const int top_pool = b.new_pool();
+    BlockGeom top{{x0, 1, 0}, {x1, 2, 0}, 2, 0.0, "PLAQUE3",
+                  {{"IJ", 1, 1.0}, {"JK", 0, x1}, {"KL", 1, 2.0}, {"LI", 0, x0}}, top_pool};
+    BlockMesher(b, o.top, top).run();
+    for (const auto& [name, x, y] : std::vector<std::tuple<std::string, double, double>>{
+             {"I", x0, 1}, {"J", x1, 1}, {"K", x1, 2}, {"L", x0, 2}, {"P", xm, 1}})
+      b.add_node_group(name, top_pool, {x, y, 0});
+  }
   for (const auto& [name, x, y] : std::vector<std::tuple<std::string, double, double>>{
            {"A", x0, 0}, {"B", x1, 0}, {"C", x1, 1}, {"D", x0, 1}, {"O", xm, 0}})
     b.add_node_group(name, up, {x, y, 0});
@@ -359,6 +369,16 @@ Mesh make_ssnp121_3d(const Ssnp121Options3d& o) {
   BlockGeom v2{{0, 0, 1}, {1, 1, 2}, 3, 0.0, "V2", {{"SURMAI", 2, 1.0}, {"SURCHA", 2, 2.0}}, p2};
   BlockMesher(b, o.v1, v1).run();
   BlockMesher(b, o.v2, v2).run();
+  if (o.v3.n[0] > 0) {
+    check_dim(o.v3, 3, "V3");
+    const int p3 = b.new_pool();
+    BlockGeom v3{{0, 0, 2}, {1, 1, 3}, 3, 0.0, "V3", {{"SURBA3", 2, 2.0}, {"SURCH3", 2, 3.0}}, p3};
+    BlockMesher(b, o.v3, v3).run();
+    b.add_node_group("A31", p3, {0, 0, 2});
+    b.add_node_group("A32", p3, {1, 0, 2});
+    b.add_node_group("A33", p3, {1, 1, 2});
+    b.add_node_group("A34", p3, {0, 1, 2});
+  }
   b.add_node_group("A21", p1, {0, 0, 1});
   b.add_node_group("A22", p1, {1, 0, 1});
   b.add_node_group("A23", p1, {1, 1, 1});

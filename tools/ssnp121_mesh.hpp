@@ -24,6 +24,8 @@ struct Ssnp121Options2d {
   BlockCells upper{engine::CellType::Quad4, {12, 12, 1}};
   BlockCells lower{engine::CellType::Quad4, {11, 11, 1}};
   bool glued = false;  ///< share interface nodes (needs equal types and counts)
+  /// A third block PLAQUE3 = [-1,1]x[1,2] on top of the upper one, meshed apart (n[0] = 0: none).
+  BlockCells top{engine::CellType::Quad4, {0, 0, 1}};
   /// x extent of both blocks (default -1..1); e.g. 0..1 for an axisymmetric section on the axis.
   double x0 = -1.0, x1 = 1.0;
 };
@@ -32,6 +34,8 @@ struct Ssnp121Options2d {
 struct Ssnp121Options3d {
   BlockCells v1{engine::CellType::Hexa20, {4, 4, 4}};
   BlockCells v2{engine::CellType::Hexa20, {4, 4, 4}};
+  /// A third block V3 = [0,1]^2 x [2,3] on top of V2, meshed apart (n[0] = 0: none).
+  BlockCells v3{engine::CellType::Hexa8, {0, 0, 0}};
   bool glued = false;
 };
 
@@ -67,11 +71,15 @@ engine::Mesh make_ring_sleeve(const RingOptions& options);
 /// Groups: cells PLAQUE1, PLAQUE2; boundary cells AB BC CD DA (upper) and EF FG
 /// GH HE (lower), oriented outward (counter-clockwise traversal of each
 /// block); node groups A B C D O (upper block) and E F G H (lower block). With
-/// x0, x1: A = (x0, 0), B = (x1, 0), O = ((x0 + x1) / 2, 0) and so on.
+/// x0, x1: A = (x0, 0), B = (x1, 0), O = ((x0 + x1) / 2, 0) and so on. With a top block:
+/// cells PLAQUE3, boundary cells IJ (y=1) JK KL (y=2) LI, nodes I J K L (x0 or x1, 1 or 2) and
+/// P = (xm, 1), all of the top block.
 engine::Mesh make_ssnp121_2d(const Ssnp121Options2d& options);
 
 /// Groups: cells V1, V2; outward faces ENCAST (V1 z=0), SURESC (V1 z=1),
 /// SURMAI (V2 z=1), SURCHA (V2 z=2); node groups A21..A24 (corners of SURESC, V1 nodes).
+/// With a third block: cells V3, faces SURBA3 (V3 z=2) and SURCH3 (V3 z=3), node groups
+/// A31..A34 (corners of SURBA3, V3 nodes).
 engine::Mesh make_ssnp121_3d(const Ssnp121Options3d& options);
 
 /// Groups: cells BLOCK; outward boundary cells LEFT (x=0), RIGHT (x=1),

@@ -114,6 +114,38 @@ TEST(Orientation, OrientBoundaryOutward2d) {
     EXPECT_DOUBLE_EQ(mesh.node(mesh.cell(c)[2])[d], 0.5 * (mesh.node(mesh.cell(c)[0])[d] + mesh.node(mesh.cell(c)[1])[d]));
 }
 
+TEST(Orientation, AThirdBlockIsMeshedApartWithOutwardFacesOnBothItsInterfaces) {
+  // 2D: PLAQUE3 on the upper block, its own nodes on y = 1 (IJ faces down, CD up).
+  tools::Ssnp121Options2d o2;
+  o2.top = tools::parse_block_cells("tria6:3", 2);
+  Mesh m2 = tools::make_ssnp121_2d(o2);
+  EXPECT_EQ(m2.cell_groups.at("PLAQUE3").size(), 18u);
+  const auto ij = m2.cell_groups.at("IJ"), cd = m2.cell_groups.at("CD"), kl = m2.cell_groups.at("KL");
+  EXPECT_EQ(ij.size(), 3u);
+  for (int c : ij) EXPECT_GT(dot(boundary_normal(m2, c), {0, -1, 0}), 0.0);
+  for (int c : kl) EXPECT_GT(dot(boundary_normal(m2, c), {0, 1, 0}), 0.0);
+  EXPECT_EQ(orient_boundary_outward(m2, ij), 0);
+  const int i = m2.node_groups.at("I")[0], d = m2.node_groups.at("D")[0], p = m2.node_groups.at("P")[0];
+  EXPECT_NE(i, d);  // same place (-1, 1), two bodies
+  EXPECT_EQ(m2.node(i)[0], m2.node(d)[0]);
+  EXPECT_EQ(m2.node(i)[1], 1.0);
+  EXPECT_NEAR(m2.node(p)[0], 0.0, 1e-15);  // a mid-side node here: the mean of -1/3 and 1/3
+  for (int c : cd)
+    for (int a = 0; a < m2.cell_n_nodes(c); ++a)
+      for (int e : ij)
+        for (int b = 0; b < m2.cell_n_nodes(e); ++b) EXPECT_NE(m2.cell(c)[a], m2.cell(e)[b]);
+  // 3D: V3 on V2, SURBA3 facing down, SURCH3 up; no third block unless asked.
+  tools::Ssnp121Options3d o3;
+  o3.v2 = tools::parse_block_cells("hexa8:1x1x1", 3);
+  o3.v3 = tools::parse_block_cells("penta6:2x2x1", 3);
+  Mesh m3 = tools::make_ssnp121_3d(o3);
+  EXPECT_EQ(m3.cell_groups.at("V3").size(), 8u);
+  for (int c : m3.cell_groups.at("SURBA3")) EXPECT_GT(dot(boundary_normal(m3, c), {0, 0, -1}), 0.0);
+  for (int c : m3.cell_groups.at("SURCH3")) EXPECT_GT(dot(boundary_normal(m3, c), {0, 0, 1}), 0.0);
+  EXPECT_EQ(m3.node(m3.node_groups.at("A33")[0])[2], 2.0);
+  EXPECT_EQ(tools::make_ssnp121_3d(tools::Ssnp121Options3d{}).cell_groups.count("V3"), 0u);
+}
+
 TEST(Orientation, OrientBoundaryOutward3dAllFaceTypes) {
   for (const char* v1 : {"hexa8:2x2x1", "hexa20:2x2x1", "penta6:2x2x1", "penta15:2x2x1", "tetra4:2x2x1", "tetra10:1x1x1"}) {
     tools::Ssnp121Options3d opt;
