@@ -1143,6 +1143,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           LUNASTER_ASSERT(!distributed_ || solver->takes_distributed(), "a shared model needs a backend that takes it");
           if (iterative || distributed_) solver->set_layout(system_layout(cons, condensed, eliminated_eqs));
           LUNASTER_ASSERT(!elastic_in_solver_, "K_ff was handed to a backend: it cannot be factorised again");
+          if (options_.observe_factorisation && !via_interface) options_.observe_factorisation(a, kind, elastic_.equation);
           if (&a == &elastic_.ff && !contact_) {
             // The system is K_ff itself: a backend that keeps its own copy (PETSc) takes it,
             // and one copy is enough; a direct backend leaves it here.

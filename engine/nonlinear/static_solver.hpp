@@ -62,6 +62,11 @@ struct NewtonOptions {
   bool krylov_history = false;
   int subdivide_levels = 0;  ///< on a Newton failure, split the step this many times at most
   int subdivide_parts = 4;   ///< sub-steps per split
+  /// Called with each matrix handed to a sparse factorisation, its kind, and per column the
+  /// equation it stands for (what tests read: the symmetry of a condensed contact system).
+  /// Not called for the interface solver's dense Schur complements; with a shared model, a
+  /// holds this rank's columns. Empty: nothing called.
+  std::function<void(const SparseMatrix& a, MatrixKind kind, const std::vector<int>& equation)> observe_factorisation;
 };
 
 /// What one run cost, measured by the solver itself (wall seconds, counts).
