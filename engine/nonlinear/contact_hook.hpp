@@ -55,6 +55,9 @@ class ContactHook {
   /// columns). Its residual stays whole on every rank. Collective from then on: every rank
   /// calls begin_step, settle and add_to_system alike.
   virtual void share_among_ranks(const std::vector<char>& /*owned_nodes*/) {}
+  /// The instant about to be solved, before begin_step: for terms that follow the load
+  /// functions (a relation's right-hand side).
+  virtual void set_instant(double /*t*/) {}
   /// Start of an instant, with the converged displacement of the previous one.
   virtual void begin_step(const Vector& u, const Log& log) = 0;
   /// Adds the contact tangent and residual at iterate u (residual = internal - external).
@@ -109,6 +112,12 @@ class ContactHook {
   /// Number of contact points (or slave nodes) currently active. With none, the
   /// bodies must be held by Dirichlet conditions alone: the driver checks it.
   virtual int n_active() const = 0;
+  /// False for a hook that adds linear relations only (no contact zone): the driver then runs
+  /// no contact pass and says nothing of contact.
+  virtual bool has_contact() const { return true; }
+  /// Unknowns that the hook's linear relations tie to others: counted as held when the
+  /// driver looks for bodies that nothing holds (with no active contact point).
+  virtual std::vector<int> related_equations() const { return {}; }
   /// Stores contact results (LAGS_C in DEPL is already in u; CONT_NOEU ...).
   virtual void write_fields(const Vector& u, ResultStep& step) const = 0;
   /// The initial state (NUME_ORDRE 0, before any pairing): the components the hook adds to

@@ -3,6 +3,8 @@
 #include <functional>
 #include <vector>
 
+#include "engine/assembly/linear_relations.hpp"
+
 namespace lunaster::engine {
 
 /// Imposed value of one displacement component; `load` indexes the multiplier.
@@ -17,6 +19,9 @@ struct MechanicalLoads {
   std::vector<DirichletValue> dirichlet;
   std::vector<PressureLoad> pressures;
   std::vector<NodalForce> forces;
+  /// Relations between displacement components of two terms or more (LIAISON_DDL; a
+  /// one-term relation is a Dirichlet value, split_dirichlet in linear_relations.hpp).
+  std::vector<LinearRelation> relations;
   std::vector<std::function<double(double)>> multipliers;  ///< one per load index
 };
 

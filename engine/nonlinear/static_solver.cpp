@@ -650,7 +650,7 @@ void StaticSolver::factorize_interface_reference(SystemCache& sys) {
       interface_use_ = -1;
       interface_.reset();
       stats_.interface_equations = 0;
-      log_.info("  the elastic system alone is not positive definite (a body held by contact only): "
+      log_.info("  the elastic system alone is not positive definite (a body held by contact or linear relations only): "
                 "each contact pass factorises the whole system");
     }
   }
@@ -901,6 +901,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
   stats_.n_free = std::max(stats_.n_free, cons.n_free);
   if (contact_) {
     Stopwatch watch(stats_.contact_seconds);
+    contact_->set_instant(t);
     contact_->begin_step(u, log_);
   }
 
@@ -1034,7 +1035,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       //   iterative backend chosen because factorising does not fit skips it, and so does a
       //   shared model, which would need the whole stiffness on one rank.
       if (!rigid_checked_ && (!contact_ || contact_->n_active() == 0)) {
-        std::vector<int> related;  // every unknown of a relation: counted as holding
+        // Every unknown of a relation (the hook's and the eliminations'): counted as holding.
+        std::vector<int> related = contact_ ? contact_->related_equations() : std::vector<int>{};
         for (const Elimination& e : eliminated) {
           related.push_back(e.eq);
           for (const auto& term : e.terms) related.push_back(term.first);
@@ -1046,7 +1048,10 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         };
         const auto unheld = find_unheld_body(model_, dofs_, cons.free_index, related, t);
         if (unheld) report(*unheld);
-        if (!unheld && interface_use_ != 1 && backend != SolverKind::Cholmod && backend != SolverKind::Petsc && !distributed_ &&
+        // A body that only the hook's relations hold leaves K_ff singular, rightly: the
+        // mechanism check of K_ff alone is for runs whose every body the Dirichlet conditions hold.
+        const bool held_by_relations = contact_ && !contact_->related_equations().empty();
+        if (!unheld && !held_by_relations && interface_use_ != 1 && backend != SolverKind::Cholmod && backend != SolverKind::Petsc && !distributed_ &&
             options_.singularity.digits >= 0) {
           Stopwatch watch(stats_.assemble_seconds);
           restore_elastic();  // K_ff itself, without this iteration's terms
@@ -1294,7 +1299,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       f.residuals_known = true, f.relative = resi_rela, f.absolute = resi_maxi;
       throw err;
     }
-    if (!contact_) break;
+    if (!contact_ || !contact_->has_contact()) break;
     log_.info("contact: " + std::to_string(contact_->n_active()) + " active point(s) in this pass");
     ++stats_.contact_passes;
     bool settled = false;
