@@ -36,6 +36,21 @@ Keyword force_nodale() {
       .with_rules({exactly_one({"GROUP_NO", "NOEUD"}), at_least_one({"FX", "FY", "FZ"})});
 }
 
+Keyword liaison_ddl() {
+  return factor("LIAISON_DDL",
+                {text("GROUP_NO", "Node groups, one term per node, in the order given (a group of one node "
+                                  "each, as a rule)")
+                     .many(),
+                 text("NOEUD", "Nodes, one term per node, in the order given (a node may repeat)").many(),
+                 text("DDL", "Component of each term").into_values({"DX", "DY", "DZ"}).many().required(),
+                 real("COEF_MULT", "Coefficient of each term").many().required(),
+                 real("COEF_IMPO", "Right-hand side of the relation (m); follows the load's FONC_MULT").required()},
+                "Linear relation sum COEF_MULT(i) u(node i, DDL(i)) = COEF_IMPO between displacement components "
+                "(a Lagrange multiplier each; a relation of one term is an imposed displacement)")
+      .occurs(0, -1)
+      .with_rules({exactly_one({"GROUP_NO", "NOEUD"})});
+}
+
 /// The seed's contact syntax (code_aster 8): one zone with the method inside.
 Keyword contact() {
   std::vector<Keyword> children = {
@@ -77,10 +92,10 @@ Keyword contact() {
 
 const CommandSpec& affe_char_meca_spec() {
   static const CommandSpec spec = make_command(
-      "AFFE_CHAR_MECA", "char_meca", "Define mechanical loads: imposed displacements, pressures, forces, contact",
+      "AFFE_CHAR_MECA", "char_meca", "Define mechanical loads: imposed displacements, linear relations, pressures, forces, contact",
       {concept_kw("MODELE", {"modele"}, "Model the loads apply to").required(), ddl_impo(), pres_rep(),
-       force_nodale(), contact(), common::info()},
-      {at_least_one({"DDL_IMPO", "PRES_REP", "FORCE_NODALE", "CONTACT"})});
+       force_nodale(), liaison_ddl(), contact(), common::info()},
+      {at_least_one({"DDL_IMPO", "PRES_REP", "FORCE_NODALE", "LIAISON_DDL", "CONTACT"})});
   return spec;
 }
 

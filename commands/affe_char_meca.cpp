@@ -1,4 +1,5 @@
-// AFFE_CHAR_MECA: imposed displacements, pressures, nodal forces and (seed syntax) contact.
+// AFFE_CHAR_MECA: imposed displacements, linear relations, pressures, nodal forces and (seed
+// syntax) contact.
 #include <algorithm>
 
 #include "commands/commands.hpp"
@@ -50,6 +51,57 @@ void read_force_nodale(const Args& occ, const Modele& mo, CharMeca& load) {
   }
 }
 
+/// LIAISON_DDL: one relation, its nodes in the order written (GROUP_NO: each group's nodes in
+/// the group's order), one DDL and COEF_MULT per node.
+void read_liaison_ddl(const Args& occ, const Modele& mo, CharMeca& load) {
+  const engine::Mesh& mesh = *mo.maillage->mesh;
+  const std::string where = occ.has("GROUP_NO") ? "GROUP_NO" : "NOEUD";
+  std::vector<int> nodes;
+  for (const auto& name : occ.texts(where)) {
+    if (where == "GROUP_NO") {
+      const std::vector<int> group = node_group(occ, "GROUP_NO", mesh, name);
+      nodes.insert(nodes.end(), group.begin(), group.end());
+      continue;
+    }
+    const int n = mesh.find_node(name);
+    if (n < 0)
+      throw occ.error("NOEUD", "a node name of the mesh", "'" + name + "'",
+                      mesh.node_groups.count(name) ? std::vector<std::string>{"'" + name + "' is a node group: use GROUP_NO"}
+                                                   : std::vector<std::string>{});
+    nodes.push_back(n);
+  }
+  const std::vector<std::string> ddl = occ.texts("DDL");
+  const std::vector<double> coef = occ.reals("COEF_MULT");
+  const std::string counted = std::to_string(nodes.size()) + " node(s) from " + where;
+  if (ddl.size() != nodes.size())
+    throw occ.error("DDL", "one component per node (" + counted + ")", std::to_string(ddl.size()) + " component(s)",
+                    {"a GROUP_NO group gives all its nodes: name groups of one node each, or use NOEUD"});
+  if (coef.size() != nodes.size())
+    throw occ.error("COEF_MULT", "one coefficient per node (" + counted + ")",
+                    std::to_string(coef.size()) + " coefficient(s)");
+  std::vector<char> in_model(mesh.n_nodes(), 0);  // nodes of the cells that carry an element
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    if (mo.modelisation[c] != engine::Modelisation::None)
+      for (int a = 0; a < mesh.cell_n_nodes(c); ++a) in_model[mesh.cell(c)[a]] = 1;
+  engine::LinearRelation relation;
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    const int component = ddl[i] == "DX" ? engine::DX : ddl[i] == "DY" ? engine::DY : engine::DZ;
+    if (component == engine::DZ && mo.dim == 2) throw occ.error("DDL", "DX or DY in a 2D model", "'DZ'");
+    if (!in_model[nodes[i]])
+      throw occ.error(where, "nodes of cells of MODELE '" + mo.user_name + "'",
+                      "node " + mesh.node_names[nodes[i]] + ", on no cell of it");
+    relation.terms.push_back({nodes[i], component, coef[i]});
+  }
+  relation.value = occ.real("COEF_IMPO");
+  // Terms on one component of one node add up; a relation left with none says 0 = COEF_IMPO.
+  std::vector<engine::DirichletValue> unused;
+  const auto kept = engine::split_dirichlet({relation}, unused);
+  if (!kept.empty() && kept[0].terms.empty())
+    throw occ.error("COEF_MULT", "coefficients that do not cancel on one component of one node",
+                    "terms that sum to zero on every component");
+  load.relations.push_back(relation);
+}
+
 engine::ContactMethod seed_method(const std::string& methode) {
   if (methode == "CONTRAINTE") return engine::ContactMethod::DiscreteLagrange;
   if (methode == "PENALISATION") return engine::ContactMethod::DiscretePenalty;
@@ -83,6 +135,7 @@ ConceptPtr affe_char_meca(const Args& args, Session& session) {
   for (const auto& occ : args.factors("DDL_IMPO")) read_ddl_impo(occ, mo, *load);
   for (const auto& occ : args.factors("PRES_REP")) read_pres_rep(occ, mo, *load);
   for (const auto& occ : args.factors("FORCE_NODALE")) read_force_nodale(occ, mo, *load);
+  for (const auto& occ : args.factors("LIAISON_DDL")) read_liaison_ddl(occ, mo, *load);
   if (args.count("CONTACT") > 0) {
     load->has_contact = true;
     auto& def = load->contact;

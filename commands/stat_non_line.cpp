@@ -7,6 +7,7 @@
 #include "commands/failures.hpp"
 #include "engine/contact/contact_factory.hpp"
 #include "engine/io/med_writer.hpp"
+#include "engine/nonlinear/relations_hook.hpp"
 
 namespace lunaster::cmd {
 
@@ -194,6 +195,7 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     for (auto d : charge->dirichlet) { d.load = index; loads.dirichlet.push_back(d); }
     for (auto p : charge->pressures) { p.load = index; loads.pressures.push_back(p); }
     for (auto f : charge->forces) { f.load = index; loads.forces.push_back(f); }
+    for (auto r : charge->relations) { r.load = index; loads.relations.push_back(r); }
     if (charge->has_contact) {
       if (contact) throw excit.error("CHARGE", "a single contact definition", "a second one in '" + charge->user_name + "'");
       contact = &charge->contact;
@@ -236,6 +238,10 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     for (const auto& m : model.materials) definition.modulus = std::max(definition.modulus, m.young);
     hook = engine::make_contact_hook(definition, *model.mesh, model.dim);
   }
+  // LIAISON_DDL: a relation of one term is an imposed displacement; the others get a multiplier
+  // each, in the system beside the contact terms.
+  loads.relations = engine::split_dirichlet(std::move(loads.relations), loads.dirichlet);
+  if (!loads.relations.empty()) hook = engine::make_relations_hook(loads.relations, loads.multipliers, std::move(hook));
   result->loads = loads;
   engine::StaticSolver solver(model, loads, options, hook.get(), session.log());
   {
