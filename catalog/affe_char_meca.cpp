@@ -51,6 +51,20 @@ Keyword liaison_ddl() {
       .with_rules({exactly_one({"GROUP_NO", "NOEUD"})});
 }
 
+Keyword liaison_unif() {
+  return factor("LIAISON_UNIF",
+                {common::group_no("Node groups sharing one value of each DDL"),
+                 common::group_ma("Cell groups whose nodes share one value of each DDL"),
+                 text("DDL", "Components that take one (unknown) value on all these nodes")
+                     .into_values({"DX", "DY", "DZ"})
+                     .many()
+                     .required()},
+                "The same unknown value of each DDL on a set of nodes (a linear relation u(node) - u(first "
+                "node) = 0 per other node and component)")
+      .occurs(0, -1)
+      .with_rules({exactly_one({"GROUP_NO", "GROUP_MA"})});
+}
+
 /// The seed's contact syntax (code_aster 8): one zone with the method inside.
 Keyword contact() {
   std::vector<Keyword> children = {
@@ -94,8 +108,8 @@ const CommandSpec& affe_char_meca_spec() {
   static const CommandSpec spec = make_command(
       "AFFE_CHAR_MECA", "char_meca", "Define mechanical loads: imposed displacements, linear relations, pressures, forces, contact",
       {concept_kw("MODELE", {"modele"}, "Model the loads apply to").required(), ddl_impo(), pres_rep(),
-       force_nodale(), liaison_ddl(), contact(), common::info()},
-      {at_least_one({"DDL_IMPO", "PRES_REP", "FORCE_NODALE", "LIAISON_DDL", "CONTACT"})});
+       force_nodale(), liaison_ddl(), liaison_unif(), contact(), common::info()},
+      {at_least_one({"DDL_IMPO", "PRES_REP", "FORCE_NODALE", "LIAISON_DDL", "LIAISON_UNIF", "CONTACT"})});
   return spec;
 }
 

@@ -51,6 +51,16 @@ void read_force_nodale(const Args& occ, const Modele& mo, CharMeca& load) {
   }
 }
 
+/// Per mesh node, whether a cell that carries an element of `mo` holds it.
+std::vector<char> model_nodes(const Modele& mo) {
+  const engine::Mesh& mesh = *mo.maillage->mesh;
+  std::vector<char> in_model(mesh.n_nodes(), 0);
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    if (mo.modelisation[c] != engine::Modelisation::None)
+      for (int a = 0; a < mesh.cell_n_nodes(c); ++a) in_model[mesh.cell(c)[a]] = 1;
+  return in_model;
+}
+
 /// LIAISON_DDL: one relation, its nodes in the order written (GROUP_NO: each group's nodes in
 /// the group's order), one DDL and COEF_MULT per node.
 void read_liaison_ddl(const Args& occ, const Modele& mo, CharMeca& load) {
@@ -79,10 +89,7 @@ void read_liaison_ddl(const Args& occ, const Modele& mo, CharMeca& load) {
   if (coef.size() != nodes.size())
     throw occ.error("COEF_MULT", "one coefficient per node (" + counted + ")",
                     std::to_string(coef.size()) + " coefficient(s)");
-  std::vector<char> in_model(mesh.n_nodes(), 0);  // nodes of the cells that carry an element
-  for (int c = 0; c < mesh.n_cells(); ++c)
-    if (mo.modelisation[c] != engine::Modelisation::None)
-      for (int a = 0; a < mesh.cell_n_nodes(c); ++a) in_model[mesh.cell(c)[a]] = 1;
+  const std::vector<char> in_model = model_nodes(mo);
   engine::LinearRelation relation;
   for (size_t i = 0; i < nodes.size(); ++i) {
     const int component = ddl[i] == "DX" ? engine::DX : ddl[i] == "DY" ? engine::DY : engine::DZ;
@@ -100,6 +107,35 @@ void read_liaison_ddl(const Args& occ, const Modele& mo, CharMeca& load) {
     throw occ.error("COEF_MULT", "coefficients that do not cancel on one component of one node",
                     "terms that sum to zero on every component");
   load.relations.push_back(relation);
+}
+
+/// LIAISON_UNIF: u(node) - u(first node) = 0 for every other node of the set (nodes in mesh
+/// order) and every DDL.
+void read_liaison_unif(const Args& occ, const Modele& mo, CharMeca& load) {
+  const engine::Mesh& mesh = *mo.maillage->mesh;
+  const std::vector<int> nodes = select_nodes(occ, mesh);
+  const std::string where = occ.has("GROUP_NO") ? "GROUP_NO" : "GROUP_MA";
+  if (nodes.size() < 2)
+    throw occ.error(where, "two nodes or more (one value shared among them)",
+                    std::to_string(nodes.size()) + " node");
+  const std::vector<char> in_model = model_nodes(mo);
+  for (int n : nodes)
+    if (!in_model[n])
+      throw occ.error(where, "nodes of cells of MODELE '" + mo.user_name + "'",
+                      "node " + mesh.node_names[n] + ", on no cell of it");
+  const std::vector<std::string> ddls = occ.texts("DDL");
+  for (size_t k = 0; k < ddls.size(); ++k)
+    if (std::find(ddls.begin(), ddls.begin() + k, ddls[k]) != ddls.begin() + k)
+      throw occ.error("DDL", "each component once", "'" + ddls[k] + "' twice");
+  for (const auto& ddl : ddls) {
+    const int component = ddl == "DX" ? engine::DX : ddl == "DY" ? engine::DY : engine::DZ;
+    if (component == engine::DZ && mo.dim == 2) throw occ.error("DDL", "DX or DY in a 2D model", "'DZ'");
+    for (size_t i = 1; i < nodes.size(); ++i) {
+      engine::LinearRelation r;
+      r.terms = {{nodes[i], component, 1.0}, {nodes[0], component, -1.0}};
+      load.relations.push_back(r);
+    }
+  }
 }
 
 engine::ContactMethod seed_method(const std::string& methode) {
@@ -136,6 +172,7 @@ ConceptPtr affe_char_meca(const Args& args, Session& session) {
   for (const auto& occ : args.factors("PRES_REP")) read_pres_rep(occ, mo, *load);
   for (const auto& occ : args.factors("FORCE_NODALE")) read_force_nodale(occ, mo, *load);
   for (const auto& occ : args.factors("LIAISON_DDL")) read_liaison_ddl(occ, mo, *load);
+  for (const auto& occ : args.factors("LIAISON_UNIF")) read_liaison_unif(occ, mo, *load);
   if (args.count("CONTACT") > 0) {
     load->has_contact = true;
     auto& def = load->contact;
