@@ -7,6 +7,24 @@ namespace lunaster::catalog {
 
 namespace {
 
+/// SOLVEUR ELIM_LAGR (code_aster's values per METHODE; LAGR2, MUMPS's double-Lagrange option in
+/// code_aster, keeps the multipliers here, which are single already).
+Keyword elim_lagr(const std::vector<std::string>& names, const std::string& def) {
+  std::vector<Scalar> values(names.begin(), names.end());
+  return text("ELIM_LAGR",
+              "Linear relations (LIAISON_DDL, LIAISON_UNIF): OUI solves each for one of its unknowns (the free "
+              "one of largest coefficient, once the relations before it are substituted) and keeps no "
+              "multiplier, so a symmetric positive definite system stays one (CHOLMOD, or CG with algebraic "
+              "multigrid); NON gives each relation a Lagrange multiplier (a symmetric indefinite system)" +
+                  std::string(def == "LAGR2" ? "; LAGR2 (code_aster's single Lagrange multiplier for MUMPS) is NON "
+                                               "here, whose multipliers are single"
+                                             : "") +
+                  ". The log says which. Not with mortar contact ALGO_CONT='LAGRANGIEN', which eliminates "
+                  "unknowns itself")
+      .into_values(std::move(values))
+      .def(def);
+}
+
 Keyword behaviour(const std::string& name, const std::string& doc) {
   return factor(name,
                 {text("RELATION", "Constitutive law (only linear elasticity)").into_values({"ELAS"}).def("ELAS"),
@@ -145,6 +163,7 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                     "beyond one machine")
                                    .into_values({"OUI", "NON"})
                                    .def("OUI"),
+                               elim_lagr({"OUI", "NON", "LAGR2"}, "LAGR2"),
                                integer("PCENT_PIVOT",
                                        "Working space of MUMPS's factorisation beyond its analysis's estimate, in "
                                        "percent (ICNTL(14)): room for the pivots an indefinite system delays. "
@@ -179,6 +198,10 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                     "Newton's residual still judges each solution")
                                    .into_values({"OUI", "NON"})
                                    .def("OUI")},
+                              {}},
+                        Block{"METHODE",
+                              {"AUTO", "CHOLMOD", "MULT_FRONT", "LDLT", "UMFPACK", "PETSC"},
+                              {elim_lagr({"OUI", "NON"}, "NON")},
                               {}},
                         Block{"METHODE",
                               {"MULT_FRONT"},

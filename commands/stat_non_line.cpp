@@ -238,10 +238,23 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     for (const auto& m : model.materials) definition.modulus = std::max(definition.modulus, m.young);
     hook = engine::make_contact_hook(definition, *model.mesh, model.dim);
   }
-  // LIAISON_DDL: a relation of one term is an imposed displacement; the others get a multiplier
-  // each, in the system beside the contact terms.
+  // LIAISON_DDL, LIAISON_UNIF: a relation of one term is an imposed displacement; the others get
+  // a multiplier each (or are solved for one unknown each: ELIM_LAGR='OUI'), in the system beside
+  // the contact terms.
   loads.relations = engine::split_dirichlet(std::move(loads.relations), loads.dirichlet);
-  if (!loads.relations.empty()) hook = engine::make_relations_hook(loads.relations, loads.multipliers, std::move(hook));
+  if (!loads.relations.empty()) {
+    const Args solveur = args.factor("SOLVEUR");
+    const bool eliminate = solveur.has("ELIM_LAGR") && solveur.text("ELIM_LAGR") == "OUI";
+    if (eliminate && contact && contact->method == engine::ContactMethod::MortarLagrange)
+      throw solveur.error("ELIM_LAGR", "'NON' with mortar contact (ALGO_CONT = 'LAGRANGIEN'), which eliminates "
+                                       "unknowns itself",
+                          "'OUI' and " + std::to_string(loads.relations.size()) + " linear relation(s)");
+    session.log().info("  " + std::to_string(loads.relations.size()) + " linear relation(s) " +
+                       (eliminate ? "each solved for one of its unknowns (SOLVEUR ELIM_LAGR = 'OUI'): no multipliers"
+                                  : "with a Lagrange multiplier each (SOLVEUR ELIM_LAGR = 'OUI' would solve each "
+                                    "for one of its unknowns instead)"));
+    hook = engine::make_relations_hook(loads.relations, loads.multipliers, std::move(hook), eliminate);
+  }
   result->loads = loads;
   engine::StaticSolver solver(model, loads, options, hook.get(), session.log());
   {

@@ -10,7 +10,10 @@
 --     0.1, which FONC_MULT scales as it scales DDL_IMPO.
 --   BOTTOM: DY = 0. Loads ramp linearly in time, instants 0.5 and 1.
 --   A second run (R2) writes the plate as LIAISON_UNIF (GROUP_MA = 'TOP', DDL = 'DY': one
---   unknown DY on the four top nodes) and gives the same state.
+--   unknown DY on the four top nodes; SOLVEUR ELIM_LAGR = 'NON', the default: a multiplier
+--   each) and gives the same state; a third (R3, code_aster 17's MECA_NON_LINE) solves R2's
+--   relations for one unknown each (ELIM_LAGR = 'OUI': no multipliers, an SPD system that
+--   CHOLMOD factorises) and gives it too.
 -- Reference: analytical (Hooke's law, plane strain, SIXX = 0): EPYY = 0.1 t, SIYY = E EPYY /
 --            (1 - NU^2), EPXX = -NU / (1 - NU) EPYY; the relation on DX gives DX(C00) =
 --            (0.1 t - EPXX) / 2 and DX(C10) = DX(C00) + EPXX. The isoparametric QUAD4 reproduces
@@ -44,11 +47,16 @@ CH2 = AFFE_CHAR_MECA{ MODELE = MO,
                                       _F{ GROUP_NO = { 'C00', 'C10' }, DDL = { 'DX', 'DX' }, COEF_MULT = { 1.0, 1.0 },
                                           COEF_IMPO = 0.1 } } }
 R2 = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CM, EXCIT = _F{ CHARGE = CH2, FONC_MULT = RAMPE },
-                    COMPORTEMENT = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L } }
+                    COMPORTEMENT = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L },
+                    SOLVEUR = _F{ ELIM_LAGR = 'NON' } }
 R2 = CALC_CHAMP{ reuse = R2, RESULTAT = R2, CONTRAINTE = { 'SIGM_ELNO', 'SIGM_NOEU' } }
+R3 = MECA_NON_LINE{ MODELE = MO, CHAM_MATER = CM, EXCIT = _F{ CHARGE = CH2, FONC_MULT = RAMPE },
+                    COMPORTEMENT = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L },
+                    SOLVEUR = _F{ ELIM_LAGR = 'OUI' } }
+R3 = CALC_CHAMP{ reuse = R3, RESULTAT = R3, CONTRAINTE = { 'SIGM_ELNO', 'SIGM_NOEU' } }
 
 -- VALE_CALC: lunaster's own values from a real run (non-regression, relative 1e-6), keyed by
--- '[UNIF ]instant field component place' (UNIF: the run R2).
+-- '[UNIF |ELIM ]instant field component place' (UNIF: the run R2, ELIM: R3).
 local calc = {
   ['0.5 DEPL DY C01'] = 5.000000000000e-02,
   ['0.5 DEPL DY C11'] = 5.000000000000e-02,
@@ -98,6 +106,30 @@ local calc = {
   ['UNIF 1.0 SIGM_NOEU SIYY MAX(BLOCK)'] = 1.098901098901e+05,
   ['UNIF 1.0 SIGM_NOEU SIXX MIN(BLOCK)'] = -3.070031569853e-10,
   ['UNIF 1.0 SIGM_NOEU SIXX MAX(BLOCK)'] = 2.030231413027e-10,
+  ['ELIM 0.5 DEPL DY C01'] = 5.000000000000e-02,
+  ['ELIM 0.5 DEPL DY C11'] = 5.000000000000e-02,
+  ['ELIM 0.5 DEPL DY MIN(TOP)'] = 5.000000000000e-02,
+  ['ELIM 0.5 DEPL DY MAX(TOP)'] = 5.000000000000e-02,
+  ['ELIM 0.5 DEPL DX C00'] = 3.571428571429e-02,
+  ['ELIM 0.5 DEPL DX C01'] = 3.571428571429e-02,
+  ['ELIM 0.5 DEPL DX C10'] = 1.428571428571e-02,
+  ['ELIM 0.5 DEPL DX C11'] = 1.428571428571e-02,
+  ['ELIM 0.5 SIGM_NOEU SIYY MIN(BLOCK)'] = 5.494505494505e+04,
+  ['ELIM 0.5 SIGM_NOEU SIYY MAX(BLOCK)'] = 5.494505494506e+04,
+  ['ELIM 0.5 SIGM_NOEU SIXX MIN(BLOCK)'] = -9.310419107238e-11,
+  ['ELIM 0.5 SIGM_NOEU SIXX MAX(BLOCK)'] = 4.900340076343e-11,
+  ['ELIM 1.0 DEPL DY C01'] = 1.000000000000e-01,
+  ['ELIM 1.0 DEPL DY C11'] = 1.000000000000e-01,
+  ['ELIM 1.0 DEPL DY MIN(TOP)'] = 1.000000000000e-01,
+  ['ELIM 1.0 DEPL DY MAX(TOP)'] = 1.000000000000e-01,
+  ['ELIM 1.0 DEPL DX C00'] = 7.142857142857e-02,
+  ['ELIM 1.0 DEPL DX C01'] = 7.142857142857e-02,
+  ['ELIM 1.0 DEPL DX C10'] = 2.857142857143e-02,
+  ['ELIM 1.0 DEPL DX C11'] = 2.857142857143e-02,
+  ['ELIM 1.0 SIGM_NOEU SIYY MIN(BLOCK)'] = 1.098901098901e+05,
+  ['ELIM 1.0 SIGM_NOEU SIYY MAX(BLOCK)'] = 1.098901098901e+05,
+  ['ELIM 1.0 SIGM_NOEU SIXX MIN(BLOCK)'] = -1.333040605919e-10,
+  ['ELIM 1.0 SIGM_NOEU SIXX MAX(BLOCK)'] = 3.393803728340e-11,
 }
 local checks = {}
 local resu, tag = R, ''
@@ -109,8 +141,9 @@ local function check(t, field, cmp, refe, place, kind)
   if kind then c.TYPE_TEST = kind; c.GROUP_MA = place else c.GROUP_NO = place end
   checks[#checks + 1] = c
 end
-for run, t in ipairs({ 0.5, 1.0, 0.5, 1.0 }) do
+for run, t in ipairs({ 0.5, 1.0, 0.5, 1.0, 0.5, 1.0 }) do
   if run == 3 then resu, tag = R2, 'UNIF ' end
+  if run == 5 then resu, tag = R3, 'ELIM ' end
   local epyy = 0.1 * t
   local epxx = -NU / (1.0 - NU) * epyy
   local dx0 = (0.1 * t - epxx) / 2.0

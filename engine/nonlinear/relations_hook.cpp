@@ -1,20 +1,171 @@
 #include "engine/nonlinear/relations_hook.hpp"
 
+#include <Eigen/SparseLU>
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <set>
+#include <string>
 #include <utility>
 
 #include "engine/assembly/linear_relations.hpp"
+#include "engine/core/error.hpp"
 
 namespace lunaster::engine {
 
 namespace {
 
+/// The relations solved for one unknown each instead of a multiplier (code_aster's
+/// ELIM_LAGR='OUI'): Gaussian elimination over the relations in their order, each pivot the
+/// free unknown of largest coefficient (the first of them on a tie) once the unknowns chosen
+/// before are substituted, and every expression closed (no pivot in another's terms):
+/// u_p = sum_k a_k u_k + sum_l b_l v_l, v_l the right-hand side of relation l. The system
+/// then keeps K's kind (SPD stays SPD, CHOLMOD). The relations' forces C^T lambda come from
+/// the pivots' rows of the residual: C_P^T lambda = -r_P.
+class RelationEliminator {
+ public:
+  /// `free`: whether an equation is free (not Dirichlet-constrained).
+  void build(const std::vector<LinearRelation>& relations, const DofMap& dofs, const std::function<bool(int)>& free) {
+    const int m = static_cast<int>(relations.size());
+    pivot_.assign(m, -1);
+    std::map<int, int> position;  // pivot equation -> index in exprs_
+    for (int i = 0; i < m; ++i) {
+      std::vector<std::pair<int, double>> row;  // in term order
+      auto add = [&row](int eq, double c) {
+        for (auto& [e, v] : row)
+          if (e == eq) return void(v += c);
+        row.emplace_back(eq, c);
+      };
+      for (const auto& t : relations[i].terms) add(dofs.dof(t.node, t.component), t.coef);
+      std::map<int, double> rhs{{i, 1.0}};
+      // The pivots chosen before: c u_e = c (sum a u + sum b v) moves its v part to the right.
+      std::vector<std::pair<int, double>> substituted;
+      for (const auto& [eq, c] : row) {
+        auto it = position.find(eq);
+        if (it == position.end()) {
+          substituted.emplace_back(eq, c);
+          continue;
+        }
+        const Expr& e = exprs_[it->second];
+        for (const auto& [k, a] : e.terms) substituted.emplace_back(k, c * a);
+        for (const auto& [l, b] : e.rhs) rhs[l] -= c * b;
+      }
+      row.clear();
+      for (const auto& [eq, c] : substituted) add(eq, c);
+      double scale = 0.0;
+      for (const auto& [eq, c] : row) scale = std::max(scale, std::abs(c));
+      int p = -1;
+      double best = 0.0;
+      for (const auto& [eq, c] : row)
+        if (free(eq) && std::abs(c) > 1e-12 * scale && std::abs(c) > best) p = eq, best = std::abs(c);
+      if (p < 0) {
+        bool constrained_terms = false;
+        for (const auto& [eq, c] : row) constrained_terms |= std::abs(c) > 1e-12 * scale;
+        if (constrained_terms) continue;  // every term imposed: it holds as the Dirichlet values do
+        throw DeckError("linear relation " + std::to_string(i + 1) +
+                        " is a combination of the relations before it (with its right-hand side, the same "
+                        "relation or a contradiction): remove it");
+      }
+      double cp = 0.0;
+      for (const auto& [eq, c] : row)
+        if (eq == p) cp = c;
+      Expr e;
+      e.eq = p;
+      for (const auto& [eq, c] : row)
+        if (eq != p && std::abs(c) > 1e-12 * scale) e.terms.emplace_back(eq, -c / cp);
+      for (const auto& [l, b] : rhs)
+        if (b != 0.0) e.rhs.emplace_back(l, b / cp);
+      // Close: the expressions before it that name p name its expression instead.
+      for (Expr& other : exprs_) {
+        double a = 0.0;
+        for (auto it = other.terms.begin(); it != other.terms.end(); ++it)
+          if (it->first == p) {
+            a = it->second;
+            other.terms.erase(it);
+            break;
+          }
+        if (a == 0.0) continue;
+        for (const auto& [k, c] : e.terms) merge(other.terms, k, a * c);
+        for (const auto& [l, b] : e.rhs) merge(other.rhs, l, a * b);
+      }
+      position[p] = static_cast<int>(exprs_.size());
+      exprs_.push_back(std::move(e));
+      pivot_[i] = p;
+    }
+    // C_P^T, for the relations' forces: row j is pivot j's column of C over the relations kept.
+    kept_.clear();
+    for (int i = 0; i < m; ++i)
+      if (pivot_[i] >= 0) kept_.push_back(i);
+    const int n = static_cast<int>(kept_.size());
+    std::map<int, int> column_of_pivot;
+    for (int j = 0; j < n; ++j) column_of_pivot[pivot_[kept_[j]]] = j;
+    std::vector<Triplet> t;
+    for (int j = 0; j < n; ++j)
+      for (const auto& term : relations[kept_[j]].terms) {
+        auto it = column_of_pivot.find(dofs.dof(term.node, term.component));
+        if (it != column_of_pivot.end()) t.emplace_back(it->second, j, term.coef);  // (pivot, relation): C^T
+      }
+    SparseMatrix ct(n, n);
+    ct.setFromTriplets(t.begin(), t.end());
+    if (n > 0) {
+      lu_.compute(ct);
+      LUNASTER_ASSERT(lu_.info() == Eigen::Success, "the relations' pivots make a singular block");
+    }
+  }
+
+  /// The eliminations at iterate u: du_p = sum a du_k + (sum a u_k + sum b v_l - u_p).
+  void eliminations(const Vector& u, const std::function<double(int)>& rhs_value, std::vector<Elimination>& out) const {
+    for (const Expr& e : exprs_) {
+      Elimination el;
+      el.eq = e.eq;
+      el.terms = e.terms;
+      double target = 0.0;
+      for (const auto& [k, a] : e.terms) target += a * u[k];
+      for (const auto& [l, b] : e.rhs) target += b * rhs_value(l);
+      el.value = target - u[e.eq];
+      out.push_back(std::move(el));
+    }
+  }
+
+  /// Adds the relations' forces C^T lambda to `residual`, lambda making its pivots' rows zero.
+  void add_forces(const std::vector<LinearRelation>& relations, const DofMap& dofs, Vector& residual) const {
+    const int n = static_cast<int>(kept_.size());
+    if (n == 0) return;
+    Eigen::VectorXd r(n);
+    for (int j = 0; j < n; ++j) r[j] = -residual[pivot_[kept_[j]]];
+    const Eigen::VectorXd lambda = lu_.solve(r);
+    for (int j = 0; j < n; ++j)
+      for (const auto& t : relations[kept_[j]].terms) residual[dofs.dof(t.node, t.component)] += t.coef * lambda[j];
+  }
+
+  bool empty() const { return exprs_.empty(); }
+
+ private:
+  struct Expr {
+    int eq = -1;
+    std::vector<std::pair<int, double>> terms;  ///< (equation, a)
+    std::vector<std::pair<int, double>> rhs;    ///< (relation, b)
+  };
+  static void merge(std::vector<std::pair<int, double>>& list, int key, double value) {
+    for (auto& [k, v] : list)
+      if (k == key) return void(v += value);
+    list.emplace_back(key, value);
+  }
+
+  std::vector<Expr> exprs_;
+  std::vector<int> pivot_;  ///< per relation, its pivot equation; -1 when left out
+  std::vector<int> kept_;   ///< relations with a pivot
+  Eigen::SparseLU<SparseMatrix> lu_;
+};
+
 class RelationsHook final : public ContactHook {
  public:
   RelationsHook(std::vector<LinearRelation> relations, std::vector<std::function<double(double)>> multipliers,
-                std::unique_ptr<ContactHook> contact)
-      : relations_(std::move(relations)), multipliers_(std::move(multipliers)), contact_(std::move(contact)) {}
+                std::unique_ptr<ContactHook> contact, bool eliminate)
+      : relations_(std::move(relations)),
+        multipliers_(std::move(multipliers)),
+        contact_(std::move(contact)),
+        eliminate_(eliminate) {}
 
   void set_dirichlet(const std::vector<DirichletValue>& dirichlet) override {
     imposed_.clear();
@@ -23,8 +174,12 @@ class RelationsHook final : public ContactHook {
   }
   void add_dofs(DofMap& dofs) override {
     if (contact_) contact_->add_dofs(dofs);  // its carriers first (QUAD8 ties name theirs)
-    relations_.add_dofs(dofs, imposed_);
     dofs_ = &dofs;
+    if (!eliminate_) return relations_.add_dofs(dofs, imposed_);
+    std::set<int> constrained;
+    for (const auto& [node, component] : imposed_)
+      if (dofs.dof(node, component) >= 0) constrained.insert(dofs.dof(node, component));
+    eliminator_.build(relations_.relations(), dofs, [&constrained](int eq) { return !constrained.count(eq); });
   }
   void share_among_ranks(const std::vector<char>& owned_nodes) override {
     if (contact_) contact_->share_among_ranks(owned_nodes);
@@ -38,11 +193,26 @@ class RelationsHook final : public ContactHook {
   }
   // The relations' terms go in first: a contact hook may read the residual it is given (mortar
   // recovers its pressures from the slave nodes' equilibrium, which a relation's force is part of).
+  // Eliminated, their forces come from the pivots' rows of the residual, contact forces included:
+  // the contact's terms go in first (a hook that reads its residual and eliminates, mortar, is
+  // refused beside eliminated relations by the command).
   void add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) override {
+    if (eliminate_) {
+      if (contact_) contact_->add_to_system(u, tangent, residual);
+      eliminator_.add_forces(relations_.relations(), *dofs_, residual);
+      eliminations_ = contact_ ? contact_->eliminations() : std::vector<Elimination>{};
+      eliminator_.eliminations(u, rhs_value(), eliminations_);
+      return;
+    }
     relations_.add_to_system(*dofs_, u, tangent, residual, factor());
     if (contact_) contact_->add_to_system(u, tangent, residual);
   }
   bool add_residual(const Vector& u, Vector& residual) override {
+    if (eliminate_) {
+      if (contact_ && !contact_->add_residual(u, residual)) return false;
+      eliminator_.add_forces(relations_.relations(), *dofs_, residual);
+      return true;
+    }
     if (!contact_) {
       relations_.add_residual(*dofs_, u, residual, factor());
       return true;
@@ -62,6 +232,7 @@ class RelationsHook final : public ContactHook {
     if (contact_) contact_->recover(u);
   }
   const std::vector<Elimination>& eliminations() const override {
+    if (eliminate_) return eliminations_;
     return contact_ ? contact_->eliminations() : ContactHook::eliminations();
   }
   std::vector<int> surface_equations() const override {
@@ -77,7 +248,7 @@ class RelationsHook final : public ContactHook {
   std::array<bool, 3> displacement_components() const override {
     std::array<bool, 3> reached = contact_ ? contact_->displacement_components() : std::array<bool, 3>{};
     for (const auto& r : relations_.relations())
-      if (r.multiplier >= 0)
+      if (r.multiplier >= 0 || eliminate_)
         for (const auto& t : r.terms) reached[t.component] = true;
     return reached;
   }
@@ -94,8 +265,8 @@ class RelationsHook final : public ContactHook {
   std::vector<int> related_equations() const override {
     std::vector<int> eqs = contact_ ? contact_->related_equations() : std::vector<int>{};
     for (const auto& r : relations_.relations()) {
-      if (r.multiplier < 0) continue;
-      eqs.push_back(r.multiplier);
+      if (r.multiplier < 0 && !eliminate_) continue;
+      if (r.multiplier >= 0) eqs.push_back(r.multiplier);
       for (const auto& t : r.terms) eqs.push_back(dofs_->dof(t.node, t.component));
     }
     return eqs;
@@ -115,6 +286,13 @@ class RelationsHook final : public ContactHook {
   std::function<double(int)> factor() const {
     return [this](int load) { return multipliers_[load](t_); };
   }
+  /// The right-hand side of relation l at this instant.
+  std::function<double(int)> rhs_value() const {
+    return [this](int l) {
+      const LinearRelation& r = relations_.relations()[l];
+      return r.load >= 0 ? r.value * multipliers_[r.load](t_) : r.value;
+    };
+  }
 
   LinearRelations relations_;
   std::vector<std::function<double(double)>> multipliers_;
@@ -122,14 +300,18 @@ class RelationsHook final : public ContactHook {
   std::set<std::pair<int, int>> imposed_;
   const DofMap* dofs_ = nullptr;
   double t_ = 0.0;
+  const bool eliminate_;
+  RelationEliminator eliminator_;
+  std::vector<Elimination> eliminations_;  ///< the contact's and the relations', at the last add_to_system
 };
 
 }  // namespace
 
 std::unique_ptr<ContactHook> make_relations_hook(std::vector<LinearRelation> relations,
                                                  std::vector<std::function<double(double)>> multipliers,
-                                                 std::unique_ptr<ContactHook> contact) {
-  return std::make_unique<RelationsHook>(std::move(relations), std::move(multipliers), std::move(contact));
+                                                 std::unique_ptr<ContactHook> contact, bool eliminate) {
+  return std::make_unique<RelationsHook>(std::move(relations), std::move(multipliers), std::move(contact),
+                                         eliminate);
 }
 
 }  // namespace lunaster::engine

@@ -51,23 +51,30 @@ TEST(RelationsHook, TieTheLoadingPlateBesideEachContactMethodAsDirichletConditio
     ContactDefinition def = zone_ab_on_ef(tb, c.method, c.init);
     def.modulus = 2e6;
     auto plain = make_contact_hook(def, tb.mesh, 2);
-    auto tied = make_relations_hook(plate.relations, loads.multipliers, make_contact_hook(def, tb.mesh, 2));
-    EXPECT_TRUE(tied->has_contact());
     std::ostringstream out;
     lunaster::Log log(out, 1);
-    SolveResult ref, r;
+    SolveResult ref;
     ASSERT_NO_THROW(ref = solve(model, displacement_bcs(tb), {}, *plain, log)) << c.name << "\n" << out.str();
-    ASSERT_NO_THROW(r = solve(model, plate.imposed, {}, *tied, log)) << c.name << "\n" << out.str();
-    // The same numbering but for the relations' multipliers, numbered last.
-    ASSERT_EQ(r.dofs.n_dofs(), ref.dofs.n_dofs() + static_cast<int>(plate.relations.size())) << c.name;
-    for (int eq = 0; eq < ref.dofs.n_dofs(); ++eq) {
-      const double scale = ref.dofs.component_of(eq) == LAGS_C ? 1e5 : 0.1;
-      EXPECT_NEAR(r.u[eq], ref.u[eq], 1e-9 * scale) << c.name << " equation " << eq;
+    // Multipliers, and (but beside mortar, which eliminates unknowns itself) eliminated relations.
+    for (bool eliminate : {false, true}) {
+      if (eliminate && c.method == ContactMethod::MortarLagrange) continue;
+      const std::string what = std::string(c.name) + (eliminate ? ", eliminated" : ", multipliers");
+      auto tied = make_relations_hook(plate.relations, loads.multipliers, make_contact_hook(def, tb.mesh, 2), eliminate);
+      EXPECT_TRUE(tied->has_contact());
+      SolveResult r;
+      ASSERT_NO_THROW(r = solve(model, plate.imposed, {}, *tied, log)) << what << "\n" << out.str();
+      // The same numbering but for the relations' multipliers, numbered last.
+      ASSERT_EQ(r.dofs.n_dofs(), ref.dofs.n_dofs() + (eliminate ? 0 : static_cast<int>(plate.relations.size())))
+          << what;
+      for (int eq = 0; eq < ref.dofs.n_dofs(); ++eq) {
+        const double scale = ref.dofs.component_of(eq) == LAGS_C ? 1e5 : 0.1;
+        EXPECT_NEAR(r.u[eq], ref.u[eq], 1e-9 * scale) << what << " equation " << eq;
+      }
+      for (int n : tb.cd_nodes) EXPECT_NEAR(r.u[r.dofs.dof(n, DY)], -0.1, 1e-12) << what;
+      if (c.method == ContactMethod::MortarLagrange)
+        for (int n : {tb.node_a, tb.node_o, tb.node_b}) EXPECT_NEAR(dy(r, n) / -0.05, 1.0, 1e-12) << what;
+      EXPECT_GT(r.n_settle, 0) << what;  // its contact passes still run
     }
-    for (int n : tb.cd_nodes) EXPECT_NEAR(r.u[r.dofs.dof(n, DY)], -0.1, 1e-12) << c.name;
-    if (c.method == ContactMethod::MortarLagrange)
-      for (int n : {tb.node_a, tb.node_o, tb.node_b}) EXPECT_NEAR(dy(r, n) / -0.05, 1.0, 1e-12) << c.name;
-    EXPECT_GT(r.n_settle, 0) << c.name;  // its contact passes still run
   }
 }
 
@@ -89,6 +96,62 @@ TEST(RelationsHook, AloneTheyHoldWhatDirichletConditionsWouldAndRunNoContactPass
   for (int n : tb.cd_nodes) EXPECT_NEAR(r.u[r.dofs.dof(n, DY)], -0.1, 1e-13);
   EXPECT_EQ(r.n_settle, 0);
   EXPECT_EQ(out.str().find("contact"), std::string::npos) << out.str();
+}
+
+TEST(RelationsHook, EliminatedChainsAreClosedAndGiveWhatTheMultipliersGive) {
+  // The upper block on a fixed base (AB clamped), its top nodes chained: DY(n_i+1) - DY(n_i) = 0,
+  // listed from the last node (each relation's pivot is in the expression of the one before, which
+  // the elimination then closes), DX(last) - DX(first) = 0.01 t (a right-hand side following the load), and DY of the
+  // first top node imposed. Eliminated and dualised, the same state to round-off; a relation that
+  // repeats the chain's sum stops the eliminated run, naming it.
+  const TwoBlocks tb = make_two_blocks(4, 3, false);
+  const FeModel model = make_model(tb.mesh, 2e6, 0.3);
+  std::vector<Imposed> imposed;
+  for (const int n : tb.mesh.nodes_of_cells(tb.ab)) imposed.push_back({n, DX, 0.0}), imposed.push_back({n, DY, 0.0});
+  for (int n : tb.gh_nodes) imposed.push_back({n, DX, 0.0}), imposed.push_back({n, DY, 0.0});  // the other block
+  imposed.push_back({tb.cd_nodes[0], DY, -0.1});
+  imposed.push_back({tb.cd_nodes[0], DX, 0.0});
+  std::vector<LinearRelation> relations;
+  for (size_t i = tb.cd_nodes.size() - 1; i > 0; --i) {  // from the end: each pivot is in the expression before
+    LinearRelation r;
+    r.terms = {{tb.cd_nodes[i], DY, 2.0}, {tb.cd_nodes[i - 1], DY, -2.0}};
+    relations.push_back(r);
+  }
+  LinearRelation shear;
+  shear.terms = {{tb.cd_nodes.back(), DX, 1.0}, {tb.cd_nodes[0], DX, -1.0}};
+  shear.value = 0.01, shear.load = 0;
+  relations.push_back(shear);
+  MechanicalLoads loads;
+  loads.multipliers.push_back([](double t) { return t; });
+  std::ostringstream out;
+  lunaster::Log log(out, 1);
+  SolveResult with_multipliers, eliminated;
+  auto dual = make_relations_hook(relations, loads.multipliers, nullptr, false);
+  auto elim = make_relations_hook(relations, loads.multipliers, nullptr, true);
+  ASSERT_NO_THROW(with_multipliers = solve(model, imposed, {}, *dual, log)) << out.str();
+  ASSERT_NO_THROW(eliminated = solve(model, imposed, {}, *elim, log)) << out.str();
+  EXPECT_EQ(elim->matrix_kind(), MatrixKind::SymmetricPositiveDefinite);
+  EXPECT_EQ(dual->matrix_kind(), MatrixKind::SymmetricIndefinite);
+  ASSERT_EQ(with_multipliers.dofs.n_dofs(), eliminated.dofs.n_dofs() + static_cast<int>(relations.size()));
+  for (int eq = 0; eq < eliminated.dofs.n_dofs(); ++eq)
+    EXPECT_NEAR(eliminated.u[eq], with_multipliers.u[eq], 1e-13) << "equation " << eq;
+  for (int n : tb.cd_nodes) EXPECT_NEAR(eliminated.u[eliminated.dofs.dof(n, DY)], -0.1, 1e-14);
+  EXPECT_NEAR(eliminated.u[eliminated.dofs.dof(tb.cd_nodes.back(), DX)], 0.01, 1e-14);
+  EXPECT_GT(std::abs(eliminated.u[eliminated.dofs.dof(tb.cd_nodes[2], DX)]), 1e-4);  // the top is sheared
+  // DY(last) - DY(first) = 0 is the chain's sum: no unknown is left to solve it for.
+  LinearRelation sum;
+  sum.terms = {{tb.cd_nodes.back(), DY, 1.0}, {tb.cd_nodes[1], DY, -1.0}};
+  relations.push_back(sum);
+  auto redundant = make_relations_hook(relations, loads.multipliers, nullptr, true);
+  try {
+    solve(model, imposed, {}, *redundant, log);
+    FAIL() << "no error";
+  } catch (const lunaster::DeckError& e) {
+    EXPECT_NE(std::string(e.what()).find("linear relation " + std::to_string(relations.size()) +
+                                         " is a combination of the relations before it"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(LinearRelations, OneTermRelationsBecomeDirichletValuesAndRepeatedTermsAddUp) {
