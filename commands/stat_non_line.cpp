@@ -254,6 +254,13 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
                                   : "with a Lagrange multiplier each (SOLVEUR ELIM_LAGR = 'OUI' would solve each "
                                     "for one of its unknowns instead)"));
     hook = engine::make_relations_hook(loads.relations, loads.multipliers, std::move(hook), eliminate);
+    if (options.elastic_matrix) {
+      // As contact terms, the relations' belong in the matrix (code_aster keeps them there whatever
+      // MATRICE says); with elasticity it is the same matrix at every iteration, factorised once.
+      options.elastic_matrix = false;
+      session.log().info("  NEWTON MATRICE = 'ELASTIQUE' with linear relations: the matrix keeps their terms, and "
+                         "is factorised once while it does not change");
+    }
   }
   result->loads = loads;
   engine::StaticSolver solver(model, loads, options, hook.get(), session.log());

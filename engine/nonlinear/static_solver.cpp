@@ -650,8 +650,8 @@ void StaticSolver::factorize_interface_reference(SystemCache& sys) {
       interface_use_ = -1;
       interface_.reset();
       stats_.interface_equations = 0;
-      log_.info("  the elastic system alone is not positive definite (a body held by contact or linear relations only): "
-                "each contact pass factorises the whole system");
+      log_.info("  the elastic system alone is not positive definite (a body held by contact or linear relations "
+                "only): each contact pass factorises the whole system");
     }
   }
   stats_.factorize_seconds += seconds;
@@ -1051,8 +1051,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         // A body that only the hook's relations hold leaves K_ff singular, rightly: the
         // mechanism check of K_ff alone is for runs whose every body the Dirichlet conditions hold.
         const bool held_by_relations = contact_ && !contact_->related_equations().empty();
-        if (!unheld && !held_by_relations && interface_use_ != 1 && backend != SolverKind::Cholmod && backend != SolverKind::Petsc && !distributed_ &&
-            options_.singularity.digits >= 0) {
+        if (!unheld && !held_by_relations && interface_use_ != 1 && backend != SolverKind::Cholmod &&
+            backend != SolverKind::Petsc && !distributed_ && options_.singularity.digits >= 0) {
           Stopwatch watch(stats_.assemble_seconds);
           restore_elastic();  // K_ff itself, without this iteration's terms
           if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, elastic_.ff, t, options_.singularity))
