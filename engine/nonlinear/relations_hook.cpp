@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <utility>
 
 #include "engine/assembly/linear_relations.hpp"
@@ -28,7 +29,8 @@ class RelationEliminator {
   void build(const std::vector<LinearRelation>& relations, const DofMap& dofs, const std::function<bool(int)>& free) {
     const int m = static_cast<int>(relations.size());
     pivot_.assign(m, -1);
-    std::map<int, int> position;  // pivot equation -> index in exprs_
+    std::map<int, int> position;                        // pivot equation -> index in exprs_
+    std::unordered_map<int, std::vector<int>> users;    // equation -> expressions that name it
     for (int i = 0; i < m; ++i) {
       std::vector<std::pair<int, double>> row;  // in term order
       auto add = [&row](int eq, double c) {
@@ -75,20 +77,28 @@ class RelationEliminator {
         if (eq != p && std::abs(c) > 1e-12 * scale) e.terms.emplace_back(eq, -c / cp);
       for (const auto& [l, b] : rhs)
         if (b != 0.0) e.rhs.emplace_back(l, b / cp);
-      // Close: the expressions before it that name p name its expression instead.
-      for (Expr& other : exprs_) {
-        double a = 0.0;
-        for (auto it = other.terms.begin(); it != other.terms.end(); ++it)
-          if (it->first == p) {
-            a = it->second;
-            other.terms.erase(it);
-            break;
-          }
-        if (a == 0.0) continue;
-        for (const auto& [k, c] : e.terms) merge(other.terms, k, a * c);
-        for (const auto& [l, b] : e.rhs) merge(other.rhs, l, a * b);
+      // Close: the expressions before it that name p (users[p]) name its expression instead.
+      const int index = static_cast<int>(exprs_.size());
+      auto named = users.find(p);
+      if (named != users.end()) {
+        const std::vector<int> before = std::move(named->second);
+        users.erase(named);
+        for (int j : before) {
+          Expr& other = exprs_[j];
+          double a = 0.0;
+          for (auto it = other.terms.begin(); it != other.terms.end(); ++it)
+            if (it->first == p) {
+              a = it->second;
+              other.terms.erase(it);
+              break;
+            }
+          for (const auto& [k, c] : e.terms)
+            if (merge(other.terms, k, a * c)) users[k].push_back(j);
+          for (const auto& [l, b] : e.rhs) merge(other.rhs, l, a * b);
+        }
       }
-      position[p] = static_cast<int>(exprs_.size());
+      for (const auto& [k, c] : e.terms) users[k].push_back(index);
+      position[p] = index;
       exprs_.push_back(std::move(e));
       pivot_[i] = p;
     }
@@ -146,10 +156,12 @@ class RelationEliminator {
     std::vector<std::pair<int, double>> terms;  ///< (equation, a)
     std::vector<std::pair<int, double>> rhs;    ///< (relation, b)
   };
-  static void merge(std::vector<std::pair<int, double>>& list, int key, double value) {
+  /// Adds value to key's entry; true when the key was not in the list.
+  static bool merge(std::vector<std::pair<int, double>>& list, int key, double value) {
     for (auto& [k, v] : list)
-      if (k == key) return void(v += value);
+      if (k == key) return v += value, false;
     list.emplace_back(key, value);
+    return true;
   }
 
   std::vector<Expr> exprs_;
