@@ -13,8 +13,7 @@
 
 #include "engine/contact/mortar_problem.hpp"
 #include "engine/mesh/cell_topology.hpp"
-#include "tools/ssnp121_mesh.hpp"
-#include "two_blocks.hpp"
+#include "ring_sleeve.hpp"
 
 namespace {
 
@@ -51,36 +50,13 @@ std::function<void(const SparseMatrix&, MatrixKind, const std::vector<int>&)> ob
   };
 }
 
-TEST(MortarCondensedSystem, IsSymmetricPositiveDefiniteOnACurvedNonMatchingInterface) {
-  // Quarter ring in a sleeve, 12 against 9 arcs: the interface normals turn through 90
-  // degrees, so each eliminated relation mixes DX and DY of several master nodes.
-  tools::RingOptions opt;
-  opt.ring = tools::parse_block_cells("quad4:12x2", 2);
-  opt.sleeve = tools::parse_block_cells("quad4:9x2", 2);
-  const Mesh mesh = tools::make_ring_sleeve(opt);
-  FeModel model = make_model(mesh, 2e11, 0.3);
-  model.materials.push_back({1e11, 0.25, 0.0});
-  for (int c : mesh.cell_groups.at("SLEEVE")) model.material[c] = 1;
-  ContactDefinition def;
-  def.method = ContactMethod::MortarLagrange;
-  ContactZone zone;
-  zone.slave_cells = mesh.cell_groups.at("RING_OUT");
-  zone.master_cells = mesh.cell_groups.at("SLEEVE_IN");
-  zone.init = ContactInit::Yes;
-  zone.coef_cont = 100.0;
-  def.zones.push_back(zone);
-  def.modulus = 2e11;
-  MortarProblem hook(def, mesh, 2);
-  MechanicalLoads loads;
-  loads.multipliers.push_back([](double t) { return t; });
-  for (const char* g : {"X0_RING", "X0_SLEEVE"})
-    for (int n : mesh.nodes_of_cells(mesh.cell_groups.at(g))) loads.dirichlet.push_back({n, DX, 0.0, 0});
-  for (const char* g : {"Y0_RING", "Y0_SLEEVE"})
-    for (int n : mesh.nodes_of_cells(mesh.cell_groups.at(g))) loads.dirichlet.push_back({n, DY, 0.0, 0});
-  loads.pressures.push_back({mesh.cell_groups.at("INNER"), 1e8, 0});
-
+/// One step of `hook` on `model` under `loads` through the driver with CHOLMOD, every factorised
+/// matrix read by the observer; `slave_body_cells` are the slave body's cells. Returns what it saw.
+Seen solve_and_read(const FeModel& model, const MechanicalLoads& loads, const std::vector<int>& slave_body_cells,
+                    MortarProblem& hook, std::vector<ResultStep>* steps) {
+  const Mesh& mesh = *model.mesh;
   std::vector<char> slave_body(mesh.n_nodes(), 0);
-  for (int n : mesh.nodes_of_cells(mesh.cell_groups.at("RING"))) slave_body[n] = 1;
+  for (int n : mesh.nodes_of_cells(slave_body_cells)) slave_body[n] = 1;
   Seen seen;
   const DofMap* dofs = nullptr;
   NewtonOptions options;
@@ -91,21 +67,39 @@ TEST(MortarCondensedSystem, IsSymmetricPositiveDefiniteOnACurvedNonMatchingInter
   lunaster::Log log(out, 1);
   StaticSolver solver(model, loads, options, &hook, log);
   dofs = &solver.dofs();
-  ASSERT_NO_THROW(solver.run({0.0, 1.0})) << out.str();
+  std::vector<ResultStep> result;
+  EXPECT_NO_THROW(result = solver.run({0.0, 1.0})) << out.str();
+  EXPECT_EQ(out.str().find("MUMPS"), std::string::npos) << out.str();  // CHOLMOD took every system
+  if (steps) *steps = std::move(result);
+  return seen;
+}
+
+/// The observer's verdict: every matrix SPD-kind, symmetric to 1e-14, LL^T-factorisable, and
+/// coupling the two bodies (condensed through Q, not solved apart).
+void expect_condensed_spd(const Seen& seen) {
+  ASSERT_GE(seen.matrices, 1);
+  EXPECT_EQ(seen.spd_kind, seen.matrices);
+  EXPECT_LE(seen.asymmetry, 1e-14);
+  EXPECT_EQ(seen.cholesky_failures, 0);
+  EXPECT_GT(seen.couplings, 0);
+}
+
+TEST(MortarCondensedSystem, IsSymmetricPositiveDefiniteOnACurvedNonMatchingInterface) {
+  // Quarter ring in a sleeve, 12 against 9 arcs: the interface normals turn through 90
+  // degrees, so each eliminated relation mixes DX and DY of several master nodes.
+  RingSleeve scene;
+  make_ring_sleeve_scene(scene, "quad4:12x2", "quad4:9x2", 1e8);
+  MortarProblem hook(scene.contact, scene.mesh, 2);
+  const Seen seen = solve_and_read(scene.model, scene.loads, scene.mesh.cell_groups.at("RING"), hook, nullptr);
   // The two polygons do not fit (a 9-chord arc lies inside a 12-chord one by up to 2.9e-3 m,
   // ten times the ring's expansion), so contact holds where they cross: the active rows are
   // few, and their normals are tilted (the relations mix DX and DY).
   int active = 0, tilted = 0;
   for (const auto& row : hook.rows())
     if (row.active) ++active, tilted += std::min(std::abs(row.normal[0]), std::abs(row.normal[1])) > 0.1 ? 1 : 0;
-  EXPECT_GE(active, 3) << out.str();
-  EXPECT_GE(tilted, 2) << out.str();
-  ASSERT_GE(seen.matrices, 1);
-  EXPECT_EQ(seen.spd_kind, seen.matrices);
-  EXPECT_LE(seen.asymmetry, 1e-14);
-  EXPECT_EQ(seen.cholesky_failures, 0);
-  EXPECT_GT(seen.couplings, 0);  // the bodies are coupled through Q, not solved apart
-  EXPECT_EQ(out.str().find("MUMPS"), std::string::npos) << out.str();  // CHOLMOD took it
+  EXPECT_GE(active, 3);
+  EXPECT_GE(tilted, 2);
+  expect_condensed_spd(seen);
 }
 
 TEST(MortarCondensedSystem, IsSymmetricPositiveDefiniteOnANonMatching3dInterface) {
@@ -144,29 +138,14 @@ TEST(MortarCondensedSystem, IsSymmetricPositiveDefiniteOnANonMatching3dInterface
     loads.dirichlet.push_back({n, DY, 0.0, 0});
     loads.dirichlet.push_back({n, DZ, -0.1, 0});
   }
-  std::vector<char> slave_body(mesh.n_nodes(), 0);
-  for (int n : mesh.nodes_of_cells(mesh.cell_groups.at("V1"))) slave_body[n] = 1;
-  Seen seen;
-  const DofMap* dofs = nullptr;
-  NewtonOptions options;
-  options.resi_glob_rela = 1e-8;
-  options.solver = SolverKind::Cholmod;
-  options.observe_factorisation = observer(seen, slave_body, dofs);
-  std::ostringstream out;
-  lunaster::Log log(out, 1);
-  StaticSolver solver(model, loads, options, &hook, log);
-  dofs = &solver.dofs();
   std::vector<ResultStep> steps;
-  ASSERT_NO_THROW(steps = solver.run({0.0, 1.0})) << out.str();
+  const Seen seen = solve_and_read(model, loads, mesh.cell_groups.at("V1"), hook, &steps);
   int active = 0;
   for (const auto& row : hook.rows()) active += row.active ? 1 : 0;
-  EXPECT_EQ(active, 16) << out.str();  // the 4 x 4 slave nodes
-  ASSERT_GE(seen.matrices, 1);
-  EXPECT_EQ(seen.spd_kind, seen.matrices);
-  EXPECT_LE(seen.asymmetry, 1e-14);
-  EXPECT_EQ(seen.cholesky_failures, 0);
-  EXPECT_GT(seen.couplings, 0);
+  EXPECT_EQ(active, 16);  // the 4 x 4 slave nodes
+  expect_condensed_spd(seen);
   // And the solve it gave is the springs-in-series state: p = 0.1 / (1/6e6 + 1/2e6).
+  ASSERT_FALSE(steps.empty());
   const NodalField& depl = steps.back().nodal.at("DEPL");
   const int lags = depl.component_index("LAGS_C");
   for (const auto& row : hook.rows()) EXPECT_NEAR(depl.value(row.node, lags) / -1.5e5, 1.0, 1e-10);

@@ -11,14 +11,12 @@
 #include <sstream>
 
 #include "engine/contact/mortar_problem.hpp"
-#include "tools/ssnp121_mesh.hpp"
-#include "two_blocks.hpp"
+#include "ring_sleeve.hpp"
 
 namespace {
 
 using namespace contact_test;
 using lunaster::engine::contact::MortarProblem;
-namespace tools = lunaster::tools;
 
 /// Pressurised ring (a = 0.5, b = 0.75) in a sleeve (c = 1), plane strain, both fitted:
 /// the contact pressure of the Lame solution for p = 1e8 Pa, E 2e11 / 1e11, nu 0.3 / 0.25
@@ -26,39 +24,17 @@ namespace tools = lunaster::tools;
 constexpr double kP = 1.0e8, kQ = 15660243.99987708;
 
 TEST(MortarSymmetry, SlaveEndNodesOnSymmetryLinesConvergeToTheLamePressure) {
-  tools::RingOptions opt;
-  opt.ring = tools::parse_block_cells("quad4:12x2", 2);
-  opt.sleeve = tools::parse_block_cells("quad4:12x2", 2);  // matching: the end nodes are in contact
-  const Mesh mesh = tools::make_ring_sleeve(opt);
-  FeModel model = make_model(mesh, 2e11, 0.3);
-  model.materials.push_back({1e11, 0.25, 0.0});
-  for (int c : mesh.cell_groups.at("SLEEVE")) model.material[c] = 1;
-
-  ContactDefinition def;
-  def.method = ContactMethod::MortarLagrange;
-  ContactZone zone;
-  zone.slave_cells = mesh.cell_groups.at("RING_OUT");
-  zone.master_cells = mesh.cell_groups.at("SLEEVE_IN");
-  zone.init = ContactInit::Yes;
-  zone.coef_cont = 100.0;
-  def.zones.push_back(zone);
-  def.modulus = 2e11;
-  MortarProblem hook(def, mesh, 2);
-
-  MechanicalLoads loads;
-  loads.multipliers.push_back([](double t) { return t; });
-  for (const char* g : {"X0_RING", "X0_SLEEVE"})
-    for (int n : mesh.nodes_of_cells(mesh.cell_groups.at(g))) loads.dirichlet.push_back({n, DX, 0.0, 0});
-  for (const char* g : {"Y0_RING", "Y0_SLEEVE"})
-    for (int n : mesh.nodes_of_cells(mesh.cell_groups.at(g))) loads.dirichlet.push_back({n, DY, 0.0, 0});
-  loads.pressures.push_back({mesh.cell_groups.at("INNER"), kP, 0});
+  RingSleeve scene;  // matching (12 arcs each): the end nodes are in contact
+  make_ring_sleeve_scene(scene, "quad4:12x2", "quad4:12x2", kP);
+  const Mesh& mesh = scene.mesh;
+  MortarProblem hook(scene.contact, mesh, 2);
   NewtonOptions options;
   options.resi_glob_rela = 1e-8;
   options.iter_glob_maxi = 10;
   options.solver = SolverKind::Cholmod;
   std::ostringstream out;
   lunaster::Log log(out, 1);
-  StaticSolver solver(model, loads, options, &hook, log);
+  StaticSolver solver(scene.model, scene.loads, options, &hook, log);
   std::vector<ResultStep> steps;
   ASSERT_NO_THROW(steps = solver.run({0.0, 1.0})) << out.str();
   EXPECT_LE(solver.stats().newton_iterations, 3) << out.str();
