@@ -106,7 +106,8 @@ Keyword contact() {
 
 const CommandSpec& affe_char_meca_spec() {
   static const CommandSpec spec = make_command(
-      "AFFE_CHAR_MECA", "char_meca", "Define mechanical loads: imposed displacements, linear relations, pressures, forces, contact",
+      "AFFE_CHAR_MECA", "char_meca",
+      "Define mechanical loads: imposed displacements, linear relations, pressures, forces, contact",
       {concept_kw("MODELE", {"modele"}, "Model the loads apply to").required(), ddl_impo(), pres_rep(),
        force_nodale(), liaison_ddl(), liaison_unif(), contact(), common::info()},
       {at_least_one({"DDL_IMPO", "PRES_REP", "FORCE_NODALE", "LIAISON_DDL", "LIAISON_UNIF", "CONTACT"})});

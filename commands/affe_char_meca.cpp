@@ -74,10 +74,11 @@ void read_liaison_ddl(const Args& occ, const Modele& mo, CharMeca& load) {
       continue;
     }
     const int n = mesh.find_node(name);
-    if (n < 0)
-      throw occ.error("NOEUD", "a node name of the mesh", "'" + name + "'",
-                      mesh.node_groups.count(name) ? std::vector<std::string>{"'" + name + "' is a node group: use GROUP_NO"}
-                                                   : std::vector<std::string>{});
+    if (n < 0) {
+      std::vector<std::string> hints;
+      if (mesh.node_groups.count(name)) hints.push_back("'" + name + "' is a node group: use GROUP_NO");
+      throw occ.error("NOEUD", "a node name of the mesh", "'" + name + "'", hints);
+    }
     nodes.push_back(n);
   }
   const std::vector<std::string> ddl = occ.texts("DDL");

@@ -56,7 +56,7 @@ struct CharMeca : Concept {
   std::vector<engine::DirichletValue> dirichlet;
   std::vector<engine::PressureLoad> pressures;
   std::vector<engine::NodalForce> forces;
-  std::vector<engine::LinearRelation> relations;  ///< LIAISON_DDL, as written (load -1)
+  std::vector<engine::LinearRelation> relations;  ///< LIAISON_DDL and LIAISON_UNIF, as written (load -1)
   bool has_contact = false;
   engine::ContactDefinition contact;
   std::string type_name() const override { return "char_meca"; }

@@ -23,8 +23,8 @@ void LinearRelations::add_dofs(DofMap& dofs, const std::set<std::pair<int, int>>
           if (dofs.dof(r.terms[k].node, c) < 0) r.carrier_node = r.terms[k].node, r.carrier_component = c;
       if (r.carrier_node < 0)
         throw DeckError("linear relation " + std::to_string(i + 1) +
-                           ": every node of it already carries three relation multipliers (the most a node "
-                           "carries); relate these nodes through fewer relations, or add a node to this one");
+                        ": every node of it already carries three relation multipliers (the most a node "
+                        "carries); relate these nodes through fewer relations, or add a node to this one");
     }
     r.multiplier = dofs.add(r.carrier_node, r.carrier_component);
   }

@@ -1,10 +1,10 @@
 #pragma once
-/// Linear relations between displacement components (LIAISON_DDL) in the Newton system:
+/// Linear relations between displacement components (LIAISON_DDL, LIAISON_UNIF) in the Newton system:
 /// one multiplier per relation (linear_relations.hpp), or each relation solved for one of its
 /// unknowns (eliminated), added to the system as the contact terms are, through the driver's
-/// ContactHook interface. Wraps the run's contact hook when
-/// there is one, which keeps its own terms, statuses and results; without one, the relations
-/// are the only terms besides K, and the driver runs no contact pass.
+/// ContactHook interface. Wraps the run's contact hook when there is one, which keeps its own
+/// terms, statuses and results; without one, the relations are the only terms besides K, and
+/// the driver runs no contact pass.
 #include <memory>
 #include <vector>
 
