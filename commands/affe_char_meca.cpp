@@ -61,6 +61,12 @@ std::vector<char> model_nodes(const Modele& mo) {
   return in_model;
 }
 
+/// A DDL value of LIAISON_DDL / LIAISON_UNIF as a component; DZ refused in a 2D model.
+int relation_component(const Args& occ, const Modele& mo, const std::string& ddl) {
+  if (ddl == "DZ" && mo.dim == 2) throw occ.error("DDL", "DX or DY in a 2D model", "'DZ'");
+  return ddl == "DX" ? engine::DX : ddl == "DY" ? engine::DY : engine::DZ;
+}
+
 /// LIAISON_DDL: one relation, its nodes in the order written (GROUP_NO: each group's nodes in
 /// the group's order), one DDL and COEF_MULT per node.
 void read_liaison_ddl(const Args& occ, const Modele& mo, CharMeca& load) {
@@ -93,8 +99,7 @@ void read_liaison_ddl(const Args& occ, const Modele& mo, CharMeca& load) {
   const std::vector<char> in_model = model_nodes(mo);
   engine::LinearRelation relation;
   for (size_t i = 0; i < nodes.size(); ++i) {
-    const int component = ddl[i] == "DX" ? engine::DX : ddl[i] == "DY" ? engine::DY : engine::DZ;
-    if (component == engine::DZ && mo.dim == 2) throw occ.error("DDL", "DX or DY in a 2D model", "'DZ'");
+    const int component = relation_component(occ, mo, ddl[i]);
     if (!in_model[nodes[i]])
       throw occ.error(where, "nodes of cells of MODELE '" + mo.user_name + "'",
                       "node " + mesh.node_names[nodes[i]] + ", on no cell of it");
@@ -129,8 +134,7 @@ void read_liaison_unif(const Args& occ, const Modele& mo, CharMeca& load) {
     if (std::find(ddls.begin(), ddls.begin() + k, ddls[k]) != ddls.begin() + k)
       throw occ.error("DDL", "each component once", "'" + ddls[k] + "' twice");
   for (const auto& ddl : ddls) {
-    const int component = ddl == "DX" ? engine::DX : ddl == "DY" ? engine::DY : engine::DZ;
-    if (component == engine::DZ && mo.dim == 2) throw occ.error("DDL", "DX or DY in a 2D model", "'DZ'");
+    const int component = relation_component(occ, mo, ddl);
     for (size_t i = 1; i < nodes.size(); ++i) {
       engine::LinearRelation r;
       r.terms = {{nodes[i], component, 1.0}, {nodes[0], component, -1.0}};

@@ -229,10 +229,20 @@ class RelationsHook final : public ContactHook {
       relations_.add_residual(*dofs_, u, residual, factor());
       return true;
     }
-    const Vector given = residual;
+    // Neither part when the contact hook gives none: the entries the relations touch are put
+    // back as they were (their equations only, not a copy of the whole residual per iteration).
+    std::vector<std::pair<int, double>> given;
+    for (const auto& r : relations_.relations()) {
+      if (r.multiplier < 0) continue;
+      given.emplace_back(r.multiplier, residual[r.multiplier]);
+      for (const auto& t : r.terms) {
+        const int eq = dofs_->dof(t.node, t.component);
+        given.emplace_back(eq, residual[eq]);
+      }
+    }
     relations_.add_residual(*dofs_, u, residual, factor());
     if (!contact_->add_residual(u, residual)) {
-      residual = given;  // neither part: the driver calls add_to_system instead
+      for (auto it = given.rbegin(); it != given.rend(); ++it) residual[it->first] = it->second;
       return false;
     }
     return true;

@@ -1037,6 +1037,9 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       if (!rigid_checked_ && (!contact_ || contact_->n_active() == 0)) {
         // Every unknown of a relation (the hook's and the eliminations'): counted as holding.
         std::vector<int> related = contact_ ? contact_->related_equations() : std::vector<int>{};
+        // A body that only the hook's relations hold leaves K_ff singular, rightly: the
+        // mechanism check of K_ff alone is for runs whose every body the Dirichlet conditions hold.
+        const bool held_by_relations = !related.empty();
         for (const Elimination& e : eliminated) {
           related.push_back(e.eq);
           for (const auto& term : e.terms) related.push_back(term.first);
@@ -1048,9 +1051,6 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         };
         const auto unheld = find_unheld_body(model_, dofs_, cons.free_index, related, t);
         if (unheld) report(*unheld);
-        // A body that only the hook's relations hold leaves K_ff singular, rightly: the
-        // mechanism check of K_ff alone is for runs whose every body the Dirichlet conditions hold.
-        const bool held_by_relations = contact_ && !contact_->related_equations().empty();
         if (!unheld && !held_by_relations && interface_use_ != 1 && backend != SolverKind::Cholmod &&
             backend != SolverKind::Petsc && !distributed_ && options_.singularity.digits >= 0) {
           Stopwatch watch(stats_.assemble_seconds);
