@@ -26,7 +26,9 @@ ConceptPtr defi_cont(const Args& args, Session& session) {
       throw zone.error("ALGO_CONT", "the same contact algorithm in every zone", "'" + algo + "'");
     def.method = method;
     engine::ContactZone z = read_contact_zone(zone, *mo.maillage->mesh, mo.dim, method);
-    z.coef_cont = zone.real("COEF_CONT");
+    // COEF_CONT is the penalty of ALGO_CONT='PENALISATION' (Pa/m), the complementarity
+    // constant of 'LAGRANGIEN' (relative) otherwise.
+    (method == engine::ContactMethod::MortarPenalty ? z.coef_pena : z.coef_cont) = zone.real("COEF_CONT");
     z.dist_mait = zone.real("DIST_MAIT");
     z.dist_escl = zone.real("DIST_ESCL");
     def.zones.push_back(std::move(z));

@@ -27,8 +27,9 @@ struct ContactZone {
   IntegrationScheme integration = IntegrationScheme::Auto;
   int integration_order = 0;     ///< ORDRE_INT; 0 = scheme default
   int sub_elements = 1;          ///< seed's SIMPSON1/2, NCOTES1/2 variants map here
-  double coef_cont = 100.0;      ///< COEF_CONT / COEF_REGU_CONT (augmented Lagrangian rho)
-  double coef_pena = 0.0;        ///< E_N or COEF_PENA_CONT
+  /// COEF_CONT / COEF_REGU_CONT: the augmented Lagrangian's rho; DEFI_CONT LAGRANGIEN's relative c.
+  double coef_cont = 100.0;
+  double coef_pena = 0.0;        ///< E_N or COEF_PENA_CONT; DEFI_CONT PENALISATION's COEF_CONT (Pa/m)
   ContactInit init = ContactInit::Interpenetrated;
   double tole_proj_ext = 0.5;    ///< TOLE_PROJ_EXT: accepted projection distance outside a master cell (reference units)
   double dist_mait = 0.0;        ///< DIST_MAIT: thickness added to the master surface (m, mortar)

@@ -5,24 +5,35 @@
 
 namespace lunaster::engine {
 
+std::unique_ptr<contact::ContactLaw> make_contact_law(const ContactDefinition& definition) {
+  using namespace contact;
+  switch (definition.method) {
+    case ContactMethod::Continuous: return make_augmented_lagrangian_law();
+    case ContactMethod::ContinuousPenalty: return make_penalty_law(false);
+    case ContactMethod::DiscreteLagrange: return make_active_set_law();
+    case ContactMethod::DiscretePenalty: return make_penalty_law(true);
+    case ContactMethod::MortarLagrange: return make_complementarity_law();
+    case ContactMethod::MortarPenalty: return make_penalty_law(false);
+  }
+  return nullptr;
+}
+
 std::unique_ptr<ContactHook> make_contact_hook(const ContactDefinition& definition, const Mesh& mesh, int dim) {
   using namespace contact;
-  if (definition.method == ContactMethod::MortarLagrange || definition.method == ContactMethod::MortarPenalty)
-    return std::make_unique<MortarProblem>(definition, mesh, dim);
-  std::unique_ptr<Discretisation> where;
-  std::unique_ptr<ContactLaw> how;
+  std::unique_ptr<ContactLaw> how = make_contact_law(definition);
   switch (definition.method) {
-    case ContactMethod::Continuous: where = make_integration_points(), how = make_augmented_lagrangian_law(); break;
-    case ContactMethod::ContinuousPenalty: where = make_integration_points(), how = make_penalty_law(false); break;
+    case ContactMethod::MortarLagrange:
+    case ContactMethod::MortarPenalty:
+      return std::make_unique<MortarProblem>(definition, mesh, dim, std::move(how));
+    case ContactMethod::Continuous:
+    case ContactMethod::ContinuousPenalty:
+      return std::make_unique<ContactProblem>(definition, mesh, dim, make_integration_points(), std::move(how));
     case ContactMethod::DiscreteLagrange:
-      where = make_node_to_segment(definition.axisymmetric), how = make_active_set_law();
-      break;
     case ContactMethod::DiscretePenalty:
-      where = make_node_to_segment(definition.axisymmetric), how = make_penalty_law(true);
-      break;
-    default: break;
+      return std::make_unique<ContactProblem>(definition, mesh, dim, make_node_to_segment(definition.axisymmetric),
+                                              std::move(how));
   }
-  return std::make_unique<ContactProblem>(definition, mesh, dim, std::move(where), std::move(how));
+  return nullptr;
 }
 
 }  // namespace lunaster::engine

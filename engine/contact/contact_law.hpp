@@ -15,11 +15,18 @@
 /// | augmented Lagrangian (CONTINUE, ALGO_CONT='STANDARD') | alpha = sigma = w, beta = w rho | kappa = w / rho |
 /// | active set (CONTRAINTE)                      | alpha = sigma = w, beta = 0        | kappa = w / c (scaling) |
 /// | penalty (PENALISATION)                       | beta = w rho (or E_N per node); sigma = w, kappa = w / rho when LAGS_C is reported | kappa = w / rho |
+/// | primal-dual active set (mortar LAGRANGIEN)   | alpha = sigma = w: g = 0 exactly   | nothing              |
 ///
 /// w is the point's weight (contact_point.hpp). When no point has alpha != 0 the
 /// multipliers do not enter the displacement equations: the shared part then
 /// condenses them out of the linear solve (the system is SPD) and recovers them from
 /// their own rows, (sum kappa phi phi^T) LAGS_C = sum sigma g phi.
+///
+/// A law may hold its active conditions exactly without any multiplier unknown
+/// (`exact_by_elimination`): on a dual discretisation (mortar_segments.hpp) each condition is
+/// its slave node's own, so the shared part for such rows (mortar_problem.hpp) eliminates
+/// one unknown of that node per active row and recovers the pressure from the node's
+/// equilibrium afterwards. The penalty law works on those rows too (its beta terms).
 #include <memory>
 #include <vector>
 
@@ -45,8 +52,15 @@ class ContactLaw {
   virtual const char* name() const = 0;
   /// True: the slave nodes carry LAGS_C unknowns.
   virtual bool has_multipliers() const = 0;
+  /// True: an active condition holds g = 0 exactly by eliminating an unknown of its slave
+  /// node (dual rows only, mortar_problem.hpp); no LAGS_C unknown.
+  virtual bool exact_by_elimination() const { return false; }
   /// The zone's coefficient the law works with (penalty, augmentation or scaling); > 0.
   virtual double coefficient(const ContactZone& zone) const = 0;
+  /// True: `coefficient` is dimensionless, to be multiplied by E / h (the model's largest
+  /// Young's modulus over the zone's smallest slave edge), so that its default works in any
+  /// unit system.
+  virtual bool relative_coefficient() const { return false; }
   /// Status of the first pairing: CONTACT_INIT, given the gap at the start.
   virtual bool initial_status(ContactInit init, double g, double tolerance) const;
   /// Status of one paired point from its pressure and gap (fixed point, Newton statuses, CONT_NOEU).
@@ -65,6 +79,9 @@ class ContactLaw {
 
 std::unique_ptr<ContactLaw> make_augmented_lagrangian_law();
 std::unique_ptr<ContactLaw> make_active_set_law();
+/// Primal-dual active set inside Newton, with exact conditions held by elimination (mortar's
+/// ALGO_CONT='LAGRANGIEN').
+std::unique_ptr<ContactLaw> make_complementarity_law();
 /// `spring_per_node`: the coefficient is a nodal stiffness (N/m, discrete E_N), not a
 /// pressure per gap (Pa/m), and no LAGS_C is reported.
 std::unique_ptr<ContactLaw> make_penalty_law(bool spring_per_node);

@@ -686,12 +686,24 @@ void ContactProblem::recover(Vector& u) {
   for (int i = 0; i < n_mult; ++i) u[multiplier_eqs_[i]] = r.local[i] >= 0 ? lambda[r.local[i]] : 0.0;
 }
 
-void ContactProblem::write_fields(const Vector& u, ResultStep& step) const {
+NodalField nodal_contact_field(const std::vector<NodalContactState>& states, int n_nodes, int dim) {
   std::vector<std::string> cmps = {"CONT", "JEU", "RN", "RNX", "RNY"};
-  if (dim_ == 3) cmps.push_back("RNZ");
-  const bool nodal = disc_->nodal();
-  if (nodal) cmps.push_back("PRES");
-  NodalField field(cmps, mesh_.n_nodes());
+  if (dim == 3) cmps.push_back("RNZ");
+  cmps.push_back("PRES");
+  NodalField field(cmps, n_nodes);
+  const int pres = static_cast<int>(cmps.size()) - 1;
+  for (const auto& s : states) {
+    const double* f = s.force;
+    field.set(s.node, 0, s.active ? 1.0 : 0.0);
+    field.set(s.node, 1, s.gap);
+    field.set(s.node, 2, std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]));
+    for (int k = 0; k < dim; ++k) field.set(s.node, 3 + k, f[k]);
+    field.set(s.node, pres, s.pressure);
+  }
+  return field;
+}
+
+void ContactProblem::write_fields(const Vector& u, ResultStep& step) const {
   // Nodal contact forces on the slave nodes: f_a = -sum w p phi_a n over the active points.
   std::vector<double> force(3 * static_cast<size_t>(mesh_.n_nodes()), 0.0);
   for (const auto& p : points_) {
@@ -701,25 +713,29 @@ void ContactProblem::write_fields(const Vector& u, ResultStep& step) const {
       for (int k = 0; k < 3; ++k)
         force[3 * static_cast<size_t>(p.slave_nodes[a]) + k] -= p.wjac * pressure * p.phi[a] * p.normal[k];
   }
+  if (disc_->nodal()) {
+    // One point per slave node: its status, frozen-pairing gap and pressure.
+    std::vector<NodalContactState> states(points_.size());
+    for (size_t i = 0; i < points_.size(); ++i) {
+      const ContactPoint& p = points_[i];
+      NodalContactState& s = states[i];
+      s.node = p.slave_nodes[0];
+      s.active = p.active;
+      s.gap = p.paired ? p.gap.value(u) : 0.0;
+      for (int k = 0; k < 3; ++k) s.force[k] = force[3 * static_cast<size_t>(s.node) + k];
+      s.pressure = p.active ? law_->pressure(p, multiplier(u, p), s.gap, rho(p.zone)) : 0.0;
+    }
+    step.nodal["CONT_NOEU"] = nodal_contact_field(states, mesh_.n_nodes(), dim_);
+    return;
+  }
+  std::vector<std::string> cmps = {"CONT", "JEU", "RN", "RNX", "RNY"};
+  if (dim_ == 3) cmps.push_back("RNZ");
+  NodalField field(cmps, mesh_.n_nodes());
   auto set_force = [&](int node) {
     const double* f = &force[3 * static_cast<size_t>(node)];
     field.set(node, 2, std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]));
     for (int k = 0; k < dim_; ++k) field.set(node, 3 + k, f[k]);
   };
-  if (nodal) {
-    // One point per slave node: its status, frozen-pairing gap and pressure.
-    const int pres = static_cast<int>(cmps.size()) - 1;
-    for (const auto& p : points_) {
-      const int node = p.slave_nodes[0];
-      const double g = p.paired ? p.gap.value(u) : 0.0;
-      field.set(node, 0, p.active ? 1.0 : 0.0);
-      field.set(node, 1, g);
-      set_force(node);
-      field.set(node, pres, p.active ? law_->pressure(p, multiplier(u, p), g, rho(p.zone)) : 0.0);
-    }
-    step.nodal["CONT_NOEU"] = std::move(field);
-    return;
-  }
   // Integration points: each slave node projected on the master surface in the current configuration.
   const std::vector<double> xyz = current_coordinates(mesh_, dofs_, dim_, u);
   std::vector<std::unique_ptr<MasterSurface>> current;

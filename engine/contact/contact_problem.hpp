@@ -149,4 +149,15 @@ double geometric_residual(const std::vector<int>& nodes, const DofMap& dofs, int
 /// Smallest vertex-to-vertex edge length of surface cells (m).
 double smallest_edge(const Mesh& mesh, const std::vector<int>& cells);
 
+/// One slave node of a method with one condition per slave node (node to segment, mortar).
+struct NodalContactState {
+  int node = -1;
+  bool active = false;
+  double gap = 0.0;                  ///< m, > 0 open
+  double force[3] = {0.0, 0.0, 0.0}; ///< contact force on the slave node (N, or N per radian on AXIS)
+  double pressure = 0.0;             ///< Pa, negative in compression
+};
+/// CONT_NOEU of such a method: CONT, JEU, RN (norm of the force), RNX, RNY[, RNZ], PRES.
+NodalField nodal_contact_field(const std::vector<NodalContactState>& states, int n_nodes, int dim);
+
 }  // namespace lunaster::engine::contact

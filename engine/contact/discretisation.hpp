@@ -3,7 +3,10 @@
 /// surfaces of each zone into contact points (contact_point.hpp) and says how their
 /// weights follow the geometry. It enforces nothing: that is the law's part
 /// (contact_law.hpp). The shared part (contact_problem.hpp) pairs the points,
-/// initialises and updates statuses through the law, and writes CONT_NOEU.
+/// initialises and updates statuses through the law, and writes CONT_NOEU. Mortar's
+/// segment-to-segment discretisation produces dual rows instead, one per slave node, which
+/// a law may hold by elimination: mortar_segments.hpp, with its own shared part
+/// (mortar_problem.hpp).
 ///
 /// - NodeToSegment (node_to_segment.cpp): code_aster's FORMULATION='DISCRETE'
 ///   (R5.03.50). One point per slave vertex, weighted by its tributary length/area

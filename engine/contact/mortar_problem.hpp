@@ -1,77 +1,46 @@
 #pragma once
-/// Mortar contact (DEFI_CONT, APPARIEMENT='MORTAR'): one weighted-gap condition per slave
-/// node with dual (biorthogonal) multipliers, enforced by a primal-dual active set inside
-/// Newton (ALGO_CONT='LAGRANGIEN') or by a penalty on the weighted gaps ('PENALISATION').
-/// Facts and sources: mortar_integration.hpp and the project's research notes.
-/// AXIS models (ContactDefinition::axisymmetric): every overlap weight is multiplied by the
-/// radius of its slave point, so D_j, M_jl and the dual basis are those of the measure r dl
-/// (per radian, as the AXIS elements), and LAGS_C stays a pressure.
+/// The shared part of mortar contact (DEFI_CONT, APPARIEMENT='MORTAR'): the rows of the
+/// segment-to-segment discretisation (mortar_segments.hpp: one weighted gap g~_j per slave
+/// node, dual multipliers, D diagonal) times a law (contact_law.hpp). Here, once for every
+/// law: pairing and re-pairing in the geometry loop, initial statuses (CONTACT_INIT), statuses
+/// inside Newton, the terms of the rows, and CONT_NOEU. The law decides statuses and how an
+/// active row acts:
 ///
-/// Rows. For slave node j, with Phi_j its dual function, N~ the slave shape functions
-/// (transformed on TRIA6/QUAD8 slave cells, mortar_integration.hpp), n_j the nodal normal
-/// (outward from the slave body, the average of the adjacent slave cells' normals):
-///   D_j  = sum over slave cells of the integral of N~_j over the covered part,
-///   M_jl = sum over slave/master overlaps of the integral of Phi_j N_l,
-///   g~_j(u) = n_j . (sum_l M_jl x_l - D_j x~_j),  x = X + u, x~_j the transformed slave position,
-/// frozen between two pairings, so g~_j is linear in u (g~ > 0 open). The nodal gap is
-/// g_j = g~_j / D_j (m) and the nodal pressure lambda_j (Pa, >= 0 in compression; LAGS_C =
-/// -lambda_j) acts on the slave as -lambda_j grad g~_j.
+/// - A law that holds its rows exactly (`exact_by_elimination`, the primal-dual active set of
+///   ALGO_CONT='LAGRANGIEN'): an active row holds g~_j = 0. The driver eliminates one
+///   displacement component of each active slave node by that relation (the component along
+///   which n_j is largest), so the system it factorises is Q^T K Q: symmetric positive
+///   definite, solved by CHOLMOD; no multiplier is an unknown. The pressure lambda_j (Pa,
+///   >= 0 in compression; LAGS_C = -lambda_j) is recovered from the slave node's own
+///   equilibrium, lambda_j = -n_j . r~_j / D_j with r~ the (transformed) residual K u - f at
+///   the node. Statuses are updated at every Newton iteration but the first of each instant
+///   (semi-smooth Newton); the law's coefficient is relative: c = COEF_CONT E / h.
+/// - A penalty law ('PENALISATION', the law's beta = D_j rho on an active row): lambda_j =
+///   COEF_CONT max(0, -g_j) (Pa, COEF_CONT in Pa/m); tangent COEF_CONT / D_j grad g~_j
+///   grad g~_j^T on active rows; SPD, CHOLMOD. The pressure of the patch test is then
+///   E / (2 COEF_CONT) low (two blocks of unit height). A row closes whenever it penetrates
+///   and opens from the second iteration of an instant on.
 ///
-/// Lagrange ('LAGRANGIEN'): an active row holds g~_j = 0. The driver eliminates one
-/// displacement component of each active slave node by that relation (the component along
-/// which n_j is largest), so the system it factorises is Q^T K Q: symmetric positive definite,
-/// solved by CHOLMOD; no multiplier is an unknown. lambda_j is recovered from the slave node's
-/// own equilibrium, lambda_j = -n_j . r~_j / D_j with r~ the (transformed) residual K u - f
-/// at the node. Statuses follow the complementarity function C_j = lambda_j - max(0,
-/// lambda_j - c g_j), updated at every Newton iteration but the first of each instant
-/// (semi-smooth Newton); c = COEF_CONT E / h (E the largest Young's modulus, h the
-/// smallest slave edge), so that the default works in any unit system.
-///
-/// Penalty ('PENALISATION'): lambda_j = COEF_CONT max(0, -g_j) (Pa, COEF_CONT in Pa/m);
-/// tangent COEF_CONT / D_j grad g~_j grad g~_j^T on active rows; SPD, CHOLMOD. The pressure
-/// of the patch test is then E / (2 COEF_CONT) low (two blocks of unit height).
+/// The law sees each row as a nodal contact point (contact_point.hpp) of weight D_j, with the
+/// nodal gap g_j = g~_j / D_j and LAGS_C's sign (negative in compression).
 #include <memory>
-#include <array>
 #include <set>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "engine/contact/contact_definition.hpp"
+#include "engine/contact/contact_law.hpp"
+#include "engine/contact/mortar_segments.hpp"
 #include "engine/mesh/mesh.hpp"
 #include "engine/nonlinear/contact_hook.hpp"
 
 namespace lunaster::engine::contact {
 
-/// A surface cell of a zone with its nodes in the order whose normal points out of its body.
-struct OrientedCell {
-  int cell = -1;
-  CellType type = CellType::Seg2;
-  int n = 0;
-  int nodes[8] = {};
-};
-
-/// One weighted-gap condition (a slave node of one zone).
-struct MortarRow {
-  int zone = 0;
-  int node = -1;                 ///< slave node
-  double d = 0.0;                ///< D_j (m in 2D, m^2 in 3D)
-  double normal[3] = {0, 0, 0};  ///< n_j, outward from the slave body
-  std::vector<int> eq;           ///< displacement equations of g~_j
-  std::vector<double> coef;      ///< d g~_j / d u_eq (m or m^2 per m)
-  double g0 = 0.0;               ///< g~_j at u = 0
-  bool active = false;
-  int eliminated = -1;           ///< equation eliminated by an active Lagrange row
-
-  double weighted_gap(const Vector& u) const {
-    double g = g0;
-    for (size_t k = 0; k < eq.size(); ++k) g += coef[k] * u[eq[k]];
-    return g;
-  }
-};
-
 class MortarProblem final : public ContactHook {
  public:
+  MortarProblem(const ContactDefinition& definition, const Mesh& mesh, int dim, std::unique_ptr<ContactLaw> law);
+  /// With the law of `definition.method` (contact_factory.hpp).
   MortarProblem(const ContactDefinition& definition, const Mesh& mesh, int dim);
 
   void set_dirichlet(const std::vector<DirichletValue>& dirichlet) override;
@@ -103,36 +72,30 @@ class MortarProblem final : public ContactHook {
   int n_status_changes() const { return n_status_changes_; }
 
  private:
-  bool lagrange() const { return def_.method == ContactMethod::MortarLagrange; }
-  /// Builds the rows from the configuration u (statuses kept for nodes still paired).
-  std::vector<MortarRow> build_rows(const Vector& u, std::vector<std::vector<std::pair<int, double>>>& masters,
-                                    int& n_whole_cell) const;
-  /// A shared model: D, M and the count of whole-cell dual bases of a zone, each rank having
-  /// integrated its own slave cells, made whole on every rank (collective).
-  static void share_overlaps(std::vector<double>& d, std::vector<std::vector<std::pair<int, double>>>& m,
-                             int& n_whole_cell);
   void pair(const Vector& u, const Log* log);
   /// Makes `rows` the current pairing (statuses kept node by node) and checks them.
-  void adopt(const Vector& u, std::vector<MortarRow> rows, std::vector<std::vector<std::pair<int, double>>> masters,
-             int n_whole_cell, const Log* log);
+  void adopt(const Vector& u, MortarPairingRows pairing, const Log* log);
+  /// Row i as the law sees it: a paired nodal point of weight D_j with the row's status.
+  ContactPoint as_point(size_t i) const;
   /// True when every node of the contact surfaces moved by one vector since the last pairing
   /// (to round-off): the rows of a new pairing would be the same.
   bool moved_as_one(const Vector& u) const;
+  /// Pressures of the exact rows from the slave nodes' equilibrium (the residual at u).
   void update_pressures(const Vector& residual);
+  /// The law's statuses of the exact rows at u; returns how many changed.
   int update_statuses(const Vector& u);
   void build_eliminations(const Vector& u);
-  double complementarity(int zone) const;
 
   const ContactDefinition def_;
   const Mesh& mesh_;
   const int dim_;
+  MortarSegments segments_;
+  std::unique_ptr<ContactLaw> law_;
+  const bool exact_;                       ///< the law holds its rows by elimination
+  std::vector<double> rho_;                ///< per zone, the law's coefficient (E / h applied)
+  std::vector<double> h_;                  ///< per zone, smallest slave edge (m)
   DofMap dofs_;
   std::set<std::pair<int, int>> imposed_;
-  std::vector<double> h_;                  ///< per zone, smallest slave edge (m)
-  std::vector<std::vector<OrientedCell>> slave_cells_, master_cells_;  ///< per zone, oriented outwards
-  /// Mid-edge slave nodes of transformed cells: (mid node, vertex 1, vertex 2).
-  std::vector<std::array<int, 3>> mid_edges_;
-  std::vector<int> geometry_nodes_;        ///< nodes of the slave and master cells
   Vector u_at_pairing_;
   std::vector<MortarRow> rows_;
   std::vector<std::vector<std::pair<int, double>>> master_terms_;

@@ -24,7 +24,8 @@ ContactDefinition mortar_definition(const TwoBlocks& tb, ContactMethod method, C
   zone.slave_cells = tb.ab;
   zone.master_cells = tb.ef;
   zone.init = init;
-  zone.coef_cont = coef;
+  // As DEFI_CONT reads COEF_CONT: the penalty of PENALISATION, LAGRANGIEN's complementarity constant.
+  (method == ContactMethod::MortarPenalty ? zone.coef_pena : zone.coef_cont) = coef;
   def.zones.push_back(zone);
   def.modulus = 2e6;
   return def;
@@ -95,6 +96,27 @@ TEST(MortarProblem, NonMatchingPatchTestIsExactAndSolvedByCholesky) {
     ASSERT_TRUE(run.depl0.has(row.node, lags)) << "slave node " << row.node;
     EXPECT_EQ(run.depl0.value(row.node, lags), 0.0);
   }
+}
+
+// The law, not the method named in the definition, decides how the rows are held: the
+// penalty definition with the complementarity law is exact, the Lagrange one with the penalty
+// law gives the penalty floor; a law whose multipliers enter the displacement equations needs
+// LAGS_C unknowns, which dual rows do not have.
+TEST(MortarProblem, TheLawDecidesHowTheRowsAreHeld) {
+  using namespace lunaster::engine::contact;
+  const TwoBlocks tb = make_two_blocks(12, 11, false);
+  const FeModel model = make_model(tb.mesh, 2e6, 0.0);
+  ContactDefinition def = mortar_definition(tb, ContactMethod::MortarPenalty, ContactInit::No, 1e9);
+  def.zones[0].coef_cont = 100.0;
+  MortarProblem exact(def, tb.mesh, 2, make_complementarity_law());
+  expect_uniform(run_mortar(model, displacement_bcs(tb), exact), exact, -1e5, -0.05, 1e-11);
+  def.method = ContactMethod::MortarLagrange;
+  MortarProblem penalty(def, tb.mesh, 2, make_penalty_law(false));
+  const MortarRun run = run_mortar(model, displacement_bcs(tb), penalty);
+  const double p = 0.1 * 2e6 / (2.0 + 2e6 / 1e9);  // the floor of PenaltyGivesItsFloorAndNoWorse
+  expect_uniform(run, penalty, -p, -0.05 - 0.5 * p / 1e9, 1e-10);
+  EXPECT_THROW(MortarProblem(def, tb.mesh, 2, make_augmented_lagrangian_law()), lunaster::InternalError);
+  EXPECT_THROW(MortarProblem(def, tb.mesh, 2, make_active_set_law()), lunaster::InternalError);
 }
 
 TEST(MortarProblem, ASlaveNodeOfTwoZonesIsRefused) {
