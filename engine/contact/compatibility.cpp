@@ -2,7 +2,7 @@
 
 #include <map>
 
-#include "engine/contact/contact_problem.hpp"
+#include "engine/contact/contact_common.hpp"
 #include "engine/contact/integration_rules.hpp"
 #include "engine/contact/surface_element.hpp"
 

@@ -5,22 +5,9 @@
 
 namespace lunaster::engine {
 
-std::unique_ptr<contact::ContactLaw> make_contact_law(const ContactDefinition& definition) {
-  using namespace contact;
-  switch (definition.method) {
-    case ContactMethod::Continuous: return make_augmented_lagrangian_law();
-    case ContactMethod::ContinuousPenalty: return make_penalty_law(false);
-    case ContactMethod::DiscreteLagrange: return make_active_set_law();
-    case ContactMethod::DiscretePenalty: return make_penalty_law(true);
-    case ContactMethod::MortarLagrange: return make_complementarity_law();
-    case ContactMethod::MortarPenalty: return make_penalty_law(false);
-  }
-  return nullptr;
-}
-
 std::unique_ptr<ContactHook> make_contact_hook(const ContactDefinition& definition, const Mesh& mesh, int dim) {
   using namespace contact;
-  std::unique_ptr<ContactLaw> how = make_contact_law(definition);
+  std::unique_ptr<ContactLaw> how = make_contact_law(definition.method);
   switch (definition.method) {
     case ContactMethod::MortarLagrange:
     case ContactMethod::MortarPenalty:

@@ -24,7 +24,6 @@
 #include <memory>
 
 #include "engine/contact/contact_definition.hpp"
-#include "engine/contact/contact_law.hpp"
 #include "engine/core/error.hpp"
 #include "engine/mesh/mesh.hpp"
 #include "engine/nonlinear/static_solver.hpp"
@@ -35,8 +34,5 @@ namespace lunaster::engine {
 /// definition are read at construction; the mesh must outlive the hook.
 /// Throws DeckError for unusable surfaces (non-boundary cells, E_N <= 0 ...).
 std::unique_ptr<ContactHook> make_contact_hook(const ContactDefinition& definition, const Mesh& mesh, int dim);
-
-/// The law of `definition.method` (the table above).
-std::unique_ptr<contact::ContactLaw> make_contact_law(const ContactDefinition& definition);
 
 }  // namespace lunaster::engine

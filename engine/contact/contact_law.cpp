@@ -23,4 +23,16 @@ int ContactLaw::update_statuses(std::vector<ContactPoint>& points, const StatusI
   return changed;
 }
 
+std::unique_ptr<ContactLaw> make_contact_law(ContactMethod method) {
+  switch (method) {
+    case ContactMethod::Continuous: return make_augmented_lagrangian_law();
+    case ContactMethod::ContinuousPenalty: return make_penalty_law(false);
+    case ContactMethod::DiscreteLagrange: return make_active_set_law();
+    case ContactMethod::DiscretePenalty: return make_penalty_law(true);
+    case ContactMethod::MortarLagrange: return make_complementarity_law();
+    case ContactMethod::MortarPenalty: return make_penalty_law(false);
+  }
+  return nullptr;
+}
+
 }  // namespace lunaster::engine::contact

@@ -86,4 +86,7 @@ std::unique_ptr<ContactLaw> make_complementarity_law();
 /// pressure per gap (Pa/m), and no LAGS_C is reported.
 std::unique_ptr<ContactLaw> make_penalty_law(bool spring_per_node);
 
+/// The law of a method (the table of contact_factory.hpp).
+std::unique_ptr<ContactLaw> make_contact_law(ContactMethod method);
+
 }  // namespace lunaster::engine::contact

@@ -16,61 +16,6 @@
 
 namespace lunaster::engine::contact {
 
-std::string cell_label(const Mesh& mesh, int cell) {
-  if (cell >= 0 && cell < static_cast<int>(mesh.cell_names.size())) return mesh.cell_names[cell];
-  return "#" + std::to_string(cell);
-}
-
-std::string node_label(const Mesh& mesh, int node) {
-  if (node >= 0 && node < static_cast<int>(mesh.node_names.size())) return mesh.node_names[node];
-  return "#" + std::to_string(node);
-}
-
-std::vector<double> current_coordinates(const Mesh& mesh, const DofMap& dofs, int dim, const Vector& u) {
-  std::vector<double> xyz(mesh.coords);
-  const int n = std::min(static_cast<int>(xyz.size() / 3), dofs.n_nodes());
-  for (int node = 0; node < n; ++node)
-    for (int k = 0; k < dim; ++k) {
-      const int eq = dofs.dof(node, k);
-      if (eq >= 0 && eq < u.size()) xyz[3 * static_cast<size_t>(node) + k] += u[eq];
-    }
-  return xyz;
-}
-
-double geometric_residual(const std::vector<int>& nodes, const DofMap& dofs, int dim, const Vector& u,
-                          const Vector& u_before) {
-  double du_max = 0.0, u_max = 0.0;
-  for (int node : nodes) {
-    double du2 = 0.0, u2 = 0.0;
-    for (int k = 0; k < dim; ++k) {
-      const int eq = dofs.dof(node, k);
-      if (eq < 0) continue;
-      const double prev = eq < u_before.size() ? u_before[eq] : 0.0;
-      du2 += (u[eq] - prev) * (u[eq] - prev);
-      u2 += u[eq] * u[eq];
-    }
-    du_max = std::max(du_max, std::sqrt(du2));
-    u_max = std::max(u_max, std::sqrt(u2));
-  }
-  return u_max > 0.0 ? du_max / u_max : 0.0;
-}
-
-double smallest_edge(const Mesh& mesh, const std::vector<int>& cells) {
-  double h = 1e300;
-  for (int c : cells) {
-    const CellType t = mesh.cell_types[c];
-    const int nv = surface_n_vertices(t);
-    const int n_edges = nv == 2 ? 1 : nv;
-    for (int e = 0; e < n_edges; ++e) {
-      const double* a = mesh.node(mesh.cell(c)[e]);
-      const double* b = mesh.node(mesh.cell(c)[(e + 1) % nv]);
-      h = std::min(h, std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-                                (a[2] - b[2]) * (a[2] - b[2])));
-    }
-  }
-  return h;
-}
-
 /// The multiplier rows of a condensed pass: M LAGS_C = b with M = sum kappa phi phi^T
 /// (SPD on the nodes that some paired point touches), factorised once per pairing.
 struct ContactProblem::Recovery {
@@ -684,23 +629,6 @@ void ContactProblem::recover(Vector& u) {
   }
   const Vector lambda = r.ldlt.solve(b);
   for (int i = 0; i < n_mult; ++i) u[multiplier_eqs_[i]] = r.local[i] >= 0 ? lambda[r.local[i]] : 0.0;
-}
-
-NodalField nodal_contact_field(const std::vector<NodalContactState>& states, int n_nodes, int dim) {
-  std::vector<std::string> cmps = {"CONT", "JEU", "RN", "RNX", "RNY"};
-  if (dim == 3) cmps.push_back("RNZ");
-  cmps.push_back("PRES");
-  NodalField field(cmps, n_nodes);
-  const int pres = static_cast<int>(cmps.size()) - 1;
-  for (const auto& s : states) {
-    const double* f = s.force;
-    field.set(s.node, 0, s.active ? 1.0 : 0.0);
-    field.set(s.node, 1, s.gap);
-    field.set(s.node, 2, std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]));
-    for (int k = 0; k < dim; ++k) field.set(s.node, 3 + k, f[k]);
-    field.set(s.node, pres, s.pressure);
-  }
-  return field;
 }
 
 void ContactProblem::write_fields(const Vector& u, ResultStep& step) const {

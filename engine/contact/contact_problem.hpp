@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "engine/assembly/linear_relations.hpp"
+#include "engine/contact/contact_common.hpp"
 #include "engine/contact/contact_definition.hpp"
 #include "engine/contact/contact_law.hpp"
 #include "engine/contact/discretisation.hpp"
@@ -135,29 +136,5 @@ class ContactProblem final : public ContactHook {
   long pattern_version_ = 0;
   int n_status_iter_ = 0, n_geom_iter_ = 0, n_pairings_ = 0;
 };
-
-/// "M12" or "#11" when the mesh has no names.
-std::string cell_label(const Mesh& mesh, int cell);
-/// "N5" or "#4".
-std::string node_label(const Mesh& mesh, int node);
-/// Node coordinates in the configuration u (3 per node; nodes without displacement unknowns unmoved).
-std::vector<double> current_coordinates(const Mesh& mesh, const DofMap& dofs, int dim, const Vector& u);
-/// Largest displacement change of `nodes` since `u_before`, over their largest displacement
-/// (0 when nothing moved): the geometry loops' criterion for a new pairing.
-double geometric_residual(const std::vector<int>& nodes, const DofMap& dofs, int dim, const Vector& u,
-                          const Vector& u_before);
-/// Smallest vertex-to-vertex edge length of surface cells (m).
-double smallest_edge(const Mesh& mesh, const std::vector<int>& cells);
-
-/// One slave node of a method with one condition per slave node (node to segment, mortar).
-struct NodalContactState {
-  int node = -1;
-  bool active = false;
-  double gap = 0.0;                  ///< m, > 0 open
-  double force[3] = {0.0, 0.0, 0.0}; ///< contact force on the slave node (N, or N per radian on AXIS)
-  double pressure = 0.0;             ///< Pa, negative in compression
-};
-/// CONT_NOEU of such a method: CONT, JEU, RN (norm of the force), RNX, RNY[, RNZ], PRES.
-NodalField nodal_contact_field(const std::vector<NodalContactState>& states, int n_nodes, int dim);
 
 }  // namespace lunaster::engine::contact

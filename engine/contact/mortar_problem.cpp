@@ -4,8 +4,7 @@
 #include <cmath>
 #include <unordered_map>
 
-#include "engine/contact/contact_factory.hpp"
-#include "engine/contact/contact_problem.hpp"
+#include "engine/contact/contact_common.hpp"
 #include "engine/core/error.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 
@@ -38,7 +37,7 @@ MortarProblem::MortarProblem(const ContactDefinition& definition, const Mesh& me
 }
 
 MortarProblem::MortarProblem(const ContactDefinition& definition, const Mesh& mesh, int dim)
-    : MortarProblem(definition, mesh, dim, make_contact_law(definition)) {}
+    : MortarProblem(definition, mesh, dim, make_contact_law(definition.method)) {}
 
 void MortarProblem::set_dirichlet(const std::vector<DirichletValue>& dirichlet) {
   for (const auto& d : dirichlet) imposed_.insert({d.node, d.component});

@@ -40,7 +40,7 @@ namespace lunaster::engine::contact {
 class MortarProblem final : public ContactHook {
  public:
   MortarProblem(const ContactDefinition& definition, const Mesh& mesh, int dim, std::unique_ptr<ContactLaw> law);
-  /// With the law of `definition.method` (contact_factory.hpp).
+  /// With the law of `definition.method` (make_contact_law).
   MortarProblem(const ContactDefinition& definition, const Mesh& mesh, int dim);
 
   void set_dirichlet(const std::vector<DirichletValue>& dirichlet) override;

@@ -6,8 +6,9 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "engine/contact/contact_problem.hpp"
+#include "engine/contact/contact_common.hpp"
 #include "engine/contact/integration_rules.hpp"
+#include "engine/contact/linear_gap.hpp"
 #include "engine/contact/mortar_integration.hpp"
 #include "engine/contact/surface_element.hpp"
 #include "engine/core/error.hpp"
