@@ -36,11 +36,7 @@ class ActiveSetLaw final : public ContactLaw {
     double worst_lambda = 0.0;
     for (size_t i = 0; i < points.size(); ++i) {
       ContactPoint& p = points[i];
-      if (!p.paired) {
-        changed += p.active;
-        p.active = false;
-        continue;
-      }
+      if (inactive_if_unpaired(p, changed)) continue;
       if (!p.active && in.gap[i] < -1e-8 * in.min_edge[p.zone]) p.active = true, ++changed;
       if (p.active && in.lambda[i] > lambda_tol && (!worst || in.lambda[i] > worst_lambda))
         worst = &p, worst_lambda = in.lambda[i];

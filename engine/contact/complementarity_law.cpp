@@ -43,11 +43,7 @@ class ComplementarityLaw final : public ContactLaw {
     int changed = 0;
     for (size_t i = 0; i < points.size(); ++i) {
       ContactPoint& p = points[i];
-      if (!p.paired) {
-        changed += p.active;
-        p.active = false;
-        continue;
-      }
+      if (inactive_if_unpaired(p, changed)) continue;
       const double c = rho_of_zone[p.zone], h = in.min_edge[p.zone];
       const double pressure = p.active ? -in.lambda[i] : 0.0;
       const double tol = p.active ? 1e-9 * lambda_max + 1e-9 * c * h : 1e-9 * c * h;

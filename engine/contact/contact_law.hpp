@@ -75,6 +75,16 @@ class ContactLaw {
   virtual PointCoefficients coefficients(const ContactPoint& p, double rho) const = 0;
   /// Contact pressure of an active point (Pa, negative in compression).
   virtual double pressure(const ContactPoint& p, double lambda, double g, double rho) const = 0;
+
+ protected:
+  /// An unpaired point is inactive: sets it so, counting a change in `changed`; true when
+  /// the point is unpaired (nothing more to decide).
+  static bool inactive_if_unpaired(ContactPoint& p, int& changed) {
+    if (p.paired) return false;
+    changed += p.active;
+    p.active = false;
+    return true;
+  }
 };
 
 std::unique_ptr<ContactLaw> make_augmented_lagrangian_law();
