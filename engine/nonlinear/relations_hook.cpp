@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -23,12 +24,21 @@ namespace {
 /// u_p = sum_k a_k u_k + sum_l b_l v_l, v_l the right-hand side of relation l. The system
 /// then keeps K's kind (SPD stays SPD, CHOLMOD). The relations' forces C^T lambda come from
 /// the pivots' rows of the residual: C_P^T lambda = -r_P.
+/// A relation whose every unknown is imposed (Dirichlet conditions), possibly once other
+/// relations are substituted: sum c u_eq = sum b v_l must hold for the imposed values.
+struct ImposedRelation {
+  int relation = -1;                          ///< the relation (0-based) it was built from
+  std::vector<std::pair<int, double>> terms;  ///< (equation, c)
+  std::vector<std::pair<int, double>> rhs;    ///< (relation l, b): the right-hand sides v_l
+};
+
 class RelationEliminator {
  public:
   /// `free`: whether an equation is free (not Dirichlet-constrained).
   void build(const std::vector<LinearRelation>& relations, const DofMap& dofs, const std::function<bool(int)>& free) {
     const int m = static_cast<int>(relations.size());
     pivot_.assign(m, -1);
+    imposed_only_.clear();
     std::map<int, int> position;                        // pivot equation -> index in exprs_
     std::unordered_map<int, std::vector<int>> users;    // equation -> expressions that name it
     for (int i = 0; i < m; ++i) {
@@ -63,7 +73,16 @@ class RelationEliminator {
       if (p < 0) {
         bool constrained_terms = false;
         for (const auto& [eq, c] : row) constrained_terms |= std::abs(c) > 1e-12 * scale;
-        if (constrained_terms) continue;  // every term imposed: it holds as the Dirichlet values do
+        if (constrained_terms) {  // every term imposed: it holds if the Dirichlet values agree with it
+          ImposedRelation check;
+          check.relation = i;
+          for (const auto& [eq, c] : row)
+            if (std::abs(c) > 1e-12 * scale) check.terms.emplace_back(eq, c);
+          for (const auto& [l, b] : rhs)
+            if (b != 0.0) check.rhs.emplace_back(l, b);
+          imposed_only_.push_back(std::move(check));
+          continue;
+        }
         throw DeckError("linear relation " + std::to_string(i + 1) +
                         " is a combination of the relations before it (with its right-hand side, the same "
                         "relation or a contradiction): remove it");
@@ -149,6 +168,8 @@ class RelationEliminator {
   }
 
   bool empty() const { return exprs_.empty(); }
+  /// The relations left with imposed unknowns only once the pivots before them are substituted.
+  const std::vector<ImposedRelation>& imposed_only() const { return imposed_only_; }
 
  private:
   struct Expr {
@@ -167,6 +188,7 @@ class RelationEliminator {
   std::vector<Expr> exprs_;
   std::vector<int> pivot_;  ///< per relation, its pivot equation; -1 when left out
   std::vector<int> kept_;   ///< relations with a pivot
+  std::vector<ImposedRelation> imposed_only_;
   Eigen::SparseLU<SparseMatrix> lu_;
 };
 
@@ -182,22 +204,42 @@ class RelationsHook final : public ContactHook {
   void set_dirichlet(const std::vector<DirichletValue>& dirichlet) override {
     imposed_.clear();
     for (const auto& d : dirichlet) imposed_.insert({d.node, d.component});
+    dirichlet_ = dirichlet;
     if (contact_) contact_->set_dirichlet(dirichlet);
   }
   void add_dofs(DofMap& dofs) override {
     if (contact_) contact_->add_dofs(dofs);  // its carriers first (QUAD8 ties name theirs)
     dofs_ = &dofs;
-    if (!eliminate_) return relations_.add_dofs(dofs, imposed_);
+    // Each imposed equation's value and load, the last condition winning as in the driver.
+    imposed_value_.clear();
+    for (const auto& d : dirichlet_)
+      if (dofs.dof(d.node, d.component) >= 0) imposed_value_[dofs.dof(d.node, d.component)] = {d.value, d.load};
+    if (!eliminate_) {
+      relations_.add_dofs(dofs, imposed_);
+      imposed_only_.clear();
+      for (size_t i = 0; i < relations_.relations().size(); ++i) {
+        const LinearRelation& r = relations_.relations()[i];
+        if (r.multiplier >= 0) continue;  // a multiplier holds it
+        ImposedRelation check;
+        check.relation = static_cast<int>(i);
+        for (const auto& t : r.terms) check.terms.emplace_back(dofs.dof(t.node, t.component), t.coef);
+        check.rhs.emplace_back(static_cast<int>(i), 1.0);
+        imposed_only_.push_back(std::move(check));
+      }
+      return;
+    }
     std::set<int> constrained;
     for (const auto& [node, component] : imposed_)
       if (dofs.dof(node, component) >= 0) constrained.insert(dofs.dof(node, component));
     eliminator_.build(relations_.relations(), dofs, [&constrained](int eq) { return !constrained.count(eq); });
+    imposed_only_ = eliminator_.imposed_only();
   }
   void share_among_ranks(const std::vector<char>& owned_nodes) override {
     if (contact_) contact_->share_among_ranks(owned_nodes);
   }
   void set_instant(double t) override {
     t_ = t;
+    check_imposed_only();
     if (contact_) contact_->set_instant(t);
   }
   void begin_step(const Vector& u, const Log& log) override {
@@ -316,10 +358,44 @@ class RelationsHook final : public ContactHook {
     };
   }
 
+  /// A relation that relates imposed unknowns only holds without any unknown of its own:
+  /// the imposed values at this instant must satisfy it (to 1e-9 of its terms), else the
+  /// conditions contradict each other and the run stops.
+  void check_imposed_only() const {
+    const std::function<double(int)> v = rhs_value();
+    for (const ImposedRelation& check : imposed_only_) {
+      double lhs = 0.0, rhs = 0.0, scale = 0.0;
+      for (const auto& [eq, c] : check.terms) {
+        const auto it = imposed_value_.find(eq);
+        LUNASTER_ASSERT(it != imposed_value_.end(), "a relation's imposed unknown has no imposed value");
+        const double value = it->second.second >= 0 ? it->second.first * multipliers_[it->second.second](t_)
+                                                    : it->second.first;
+        lhs += c * value;
+        scale += std::abs(c * value);
+      }
+      for (const auto& [l, b] : check.rhs) {
+        rhs += b * v(l);
+        scale += std::abs(b * v(l));
+      }
+      if (std::abs(lhs - rhs) <= 1e-9 * scale) continue;
+      std::ostringstream msg;
+      msg.precision(10);
+      msg << "linear relation " << check.relation + 1 << " relates imposed unknowns only"
+          << (eliminate_ ? " (once the relations before it are solved for their unknowns)" : "")
+          << ", and their imposed values contradict it at t = " << t_ << ": its terms sum to " << lhs
+          << ", its right-hand side is " << rhs
+          << "; remove the relation, or one of the imposed values it relates";
+      throw DeckError(msg.str());
+    }
+  }
+
   LinearRelations relations_;
   std::vector<std::function<double(double)>> multipliers_;
   std::unique_ptr<ContactHook> contact_;
   std::set<std::pair<int, int>> imposed_;
+  std::vector<DirichletValue> dirichlet_;
+  std::map<int, std::pair<double, int>> imposed_value_;  ///< imposed equation -> (value, load)
+  std::vector<ImposedRelation> imposed_only_;            ///< relations checked at every instant
   const DofMap* dofs_ = nullptr;
   double t_ = 0.0;
   const bool eliminate_;
