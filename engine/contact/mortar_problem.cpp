@@ -43,6 +43,10 @@ void MortarProblem::set_dirichlet(const std::vector<DirichletValue>& dirichlet) 
   for (const auto& d : dirichlet) imposed_.insert({d.node, d.component});
 }
 
+void MortarProblem::set_related(const std::vector<std::pair<int, int>>& node_components) {
+  related_.insert(node_components.begin(), node_components.end());
+}
+
 void MortarProblem::add_dofs(DofMap& dofs) { dofs_ = dofs; }
 
 void MortarProblem::share_among_ranks(const std::vector<char>& /*owned_nodes*/) { shared_ = parallel::size() > 1; }
@@ -118,6 +122,26 @@ void MortarProblem::begin_step(const Vector& u, const Log& log) {
     n_active += r.active;
   }
   segments_.report(rows_, n_active, log);
+  // A linear relation on a slave node's normal component ties the very unknown the contact
+  // condition acts on: both may hold (the relation then carries the force there and the
+  // node's pressure reads 0), or contradict each other. Said once, naming the nodes.
+  std::vector<std::string> tied;
+  for (const auto& r : rows_) {
+    int k_max = 0;
+    for (int k = 1; k < dim_; ++k)
+      if (std::abs(r.normal[k]) > std::abs(r.normal[k_max])) k_max = k;
+    if (related_.count({r.node, k_max}))
+      tied.push_back(node_label(mesh_, r.node) + " (" + component_name(static_cast<Component>(k_max)) + ")");
+  }
+  if (!tied.empty()) {
+    std::string names;
+    for (size_t i = 0; i < tied.size() && i < 5; ++i) names += (i ? ", " : "") + tied[i];
+    if (tied.size() > 5) names += " and " + std::to_string(tied.size() - 5) + " more";
+    log.warning("mortar contact: a linear relation ties the displacement along the contact normal of slave "
+                "node(s) " + names + ": the relation and the contact condition act on the same unknown, so "
+                "the relation carries the force there and the node's contact pressure (LAGS_C) reads 0 (or "
+                "the two contradict each other); leave such nodes out of the relation or of the slave group");
+  }
 }
 
 void MortarProblem::update_pressures(const Vector& residual) {

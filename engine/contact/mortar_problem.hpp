@@ -44,6 +44,7 @@ class MortarProblem final : public ContactHook {
   MortarProblem(const ContactDefinition& definition, const Mesh& mesh, int dim);
 
   void set_dirichlet(const std::vector<DirichletValue>& dirichlet) override;
+  void set_related(const std::vector<std::pair<int, int>>& node_components) override;
   void add_dofs(DofMap& dofs) override;
   void share_among_ranks(const std::vector<char>& owned_nodes) override;
   void begin_step(const Vector& u, const Log& log) override;
@@ -96,6 +97,7 @@ class MortarProblem final : public ContactHook {
   std::vector<double> h_;                  ///< per zone, smallest slave edge (m)
   DofMap dofs_;
   std::set<std::pair<int, int>> imposed_;
+  std::set<std::pair<int, int>> related_;  ///< (node, component) that linear relations tie to others
   Vector u_at_pairing_;
   std::vector<MortarRow> rows_;
   std::vector<std::vector<std::pair<int, double>>> master_terms_;

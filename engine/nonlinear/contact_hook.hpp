@@ -46,6 +46,10 @@ class ContactHook {
   /// The Dirichlet conditions of the run, once, before add_dofs (a hook that ties
   /// unknowns together skips the relations these already impose).
   virtual void set_dirichlet(const std::vector<DirichletValue>& /*dirichlet*/) {}
+  /// The displacement components (node, component) that the run's linear relations of two
+  /// terms or more tie to other unknowns, once, before add_dofs (a hook whose conditions act
+  /// on the same components may say so).
+  virtual void set_related(const std::vector<std::pair<int, int>>& /*node_components*/) {}
   /// Adds contact unknowns (LAGS_C ...) to the numbering, once, before any step.
   virtual void add_dofs(DofMap& dofs) = 0;
   /// A model shared among the ranks of an MPI run, once after add_dofs: `owned_nodes` flags,

@@ -205,7 +205,12 @@ class RelationsHook final : public ContactHook {
     imposed_.clear();
     for (const auto& d : dirichlet) imposed_.insert({d.node, d.component});
     dirichlet_ = dirichlet;
-    if (contact_) contact_->set_dirichlet(dirichlet);
+    if (!contact_) return;
+    contact_->set_dirichlet(dirichlet);
+    std::vector<std::pair<int, int>> related;
+    for (const auto& r : relations_.relations())
+      for (const auto& t : r.terms) related.emplace_back(t.node, t.component);
+    contact_->set_related(related);
   }
   void add_dofs(DofMap& dofs) override {
     if (contact_) contact_->add_dofs(dofs);  // its carriers first (QUAD8 ties name theirs)

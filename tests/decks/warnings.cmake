@@ -18,3 +18,12 @@ add_test(NAME warning.solver_singularity
          COMMAND lunaster run ${CMAKE_SOURCE_DIR}/testcases/solver_singularity.lua --out ${CMAKE_BINARY_DIR}/deck-out/warning-solver_singularity)
 set_tests_properties(warning.solver_singularity PROPERTIES LABELS "deck;warning"
   PASS_REGULAR_EXPRESSION "<A> going on as asked with a singular system: [^\n]*the body BLOCK \\(9 cells\\) has a rigid-body mode \\(free to move along DX[^\n]*\n<A> singular matrix at instant 1\\.000000e\\+00 at node N[0-9]+, component DX, going on as asked: CHOLMOD: (pivot lost [0-9.]+ significant digits \\(more than 8\\)|a pivot CHOLMOD cannot take[^\n]*null pivot)[^\n]*\n.*<A> singular matrix at instant 1\\.000000e\\+00 at node N[0-9]+, component DX, going on as asked: MUMPS: [0-9]+ null pivot\\(s\\) below 1e-8 in the scaled matrix, set to 1e20.*lunaster: 12 check\\(s\\) OK, 0 NOOK")
+
+# A linear relation on a mortar slave node's normal component (testcases/ssnp121a_mortar_relation.lua):
+# the run must name the node and component once, and every check must still pass.
+add_test(NAME warning.ssnp121a_mortar_relation
+         COMMAND lunaster run ${CMAKE_SOURCE_DIR}/testcases/ssnp121a_mortar_relation.lua
+                 --out ${CMAKE_BINARY_DIR}/deck-out/warning-ssnp121a_mortar_relation)
+set_tests_properties(warning.ssnp121a_mortar_relation PROPERTIES LABELS "deck;warning"
+  PASS_REGULAR_EXPRESSION "<A> mortar contact: a linear relation ties the displacement along the contact normal of slave node\\(s\\) N1 \\(DY\\):.*lunaster: 16 check\\(s\\) OK, 0 NOOK"
+  FAIL_REGULAR_EXPRESSION "contact normal of slave node.*contact normal of slave node")
