@@ -12,7 +12,8 @@ namespace {
 Keyword elim_lagr(const std::vector<std::string>& names, const std::string& def) {
   std::vector<Scalar> values(names.begin(), names.end());
   return text("ELIM_LAGR",
-              "Linear relations (LIAISON_DDL, LIAISON_UNIF): OUI solves each for one of its unknowns (the free "
+              "Linear relations (LIAISON_DDL, LIAISON_UNIF, and discrete contact's ties of QUAD8 mid-side nodes): "
+              "OUI solves each for one of its unknowns (the free "
               "one of largest coefficient, once the relations before it are substituted) and keeps no "
               "multiplier, so a symmetric positive definite system stays one (CHOLMOD, or CG with algebraic "
               "multigrid); NON gives each relation a Lagrange multiplier (a symmetric indefinite system)" +

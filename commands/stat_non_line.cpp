@@ -242,18 +242,29 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
   // a multiplier each (or are solved for one unknown each: ELIM_LAGR='OUI'), in the system beside
   // the contact terms.
   loads.relations = engine::split_dirichlet(std::move(loads.relations), loads.dirichlet);
-  if (!loads.relations.empty()) {
-    const Args solveur = args.factor("SOLVEUR");
-    const bool eliminate = solveur.has("ELIM_LAGR") && solveur.text("ELIM_LAGR") == "OUI";
+  const Args solveur = args.factor("SOLVEUR");
+  const bool eliminate = solveur.has("ELIM_LAGR") && solveur.text("ELIM_LAGR") == "OUI";
+  // Solved for one unknown each, the relations discrete contact puts on QUAD8 faces (mid-side
+  // ties) join the deck's, as code_aster's kinematic relations do; with multipliers they stay
+  // the contact's own.
+  std::vector<engine::LinearRelation> relations = loads.relations;
+  size_t n_ties = 0;
+  if (eliminate && hook) {
+    std::vector<engine::LinearRelation> ties = hook->take_relations();
+    n_ties = ties.size();
+    relations.insert(relations.end(), ties.begin(), ties.end());
+  }
+  if (!relations.empty()) {
     if (eliminate && contact && contact->method == engine::ContactMethod::MortarLagrange)
       throw solveur.error("ELIM_LAGR", "'NON' with mortar contact (ALGO_CONT = 'LAGRANGIEN'), which eliminates "
                                        "unknowns itself",
-                          "'OUI' and " + std::to_string(loads.relations.size()) + " linear relation(s)");
-    session.log().info("  " + std::to_string(loads.relations.size()) + " linear relation(s) " +
+                          "'OUI' and " + std::to_string(relations.size()) + " linear relation(s)");
+    session.log().info("  " + std::to_string(relations.size()) + " linear relation(s) " +
+                       (n_ties ? "(" + std::to_string(n_ties) + " of them discrete contact's QUAD8 mid-side ties) " : "") +
                        (eliminate ? "each solved for one of its unknowns (SOLVEUR ELIM_LAGR = 'OUI'): no multipliers"
                                   : "with a Lagrange multiplier each (SOLVEUR ELIM_LAGR = 'OUI' would solve each "
                                     "for one of its unknowns instead)"));
-    hook = engine::make_relations_hook(loads.relations, loads.multipliers, std::move(hook), eliminate);
+    hook = engine::make_relations_hook(std::move(relations), loads.multipliers, std::move(hook), eliminate);
     if (options.elastic_matrix) {
       // As contact terms, the relations' belong in the matrix (code_aster keeps them there whatever
       // MATRICE says); with elasticity it is the same matrix at every iteration, factorised once.

@@ -9,6 +9,10 @@
 -- Reference: analytical SIZZ = -1e5 Pa (SIGM_NOEU) and DZ = -0.05 m on the interface, PRECISION 1e-6
 -- (code_aster's tolerance on D is 0.1 %). CONTRAINTE is exact to round-off (1e-14); PENALISATION keeps a
 -- penetration of F / E_N per slave node (6e-9 m here), a relative error of about 1e-7.
+-- A third run (PENE) is the penalty with SOLVEUR ELIM_LAGR = 'OUI': the mid-side ties are then solved
+-- for one unknown each, as code_aster does with every kinematic relation, so no multiplier is left and
+-- CHOLMOD factorises an SPD system (the other runs factorise a system with the ties' multipliers);
+-- same values to the penalty's 1e-7.
 -- Runtime label: fast, contact, 3D.
 DEBUT()
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'ssnp121d.med' }
@@ -21,16 +25,21 @@ CHA1 = AFFE_CHAR_MECA{ MODELE = MO,
 L_INST = DEFI_LIST_REEL{ DEBUT = 0.0, INTERVALLE = _F{ JUSQU_A = 1.0, NOMBRE = 1 } }
 RAMPE = DEFI_FONCTION{ NOM_PARA = 'INST', VALE = { 0.0, 0.0, 1.0, 1.0 } }
 
-local function solve(contact)
+local function solve(contact, solveur)
   local cha2 = AFFE_CHAR_MECA{ MODELE = MO, CONTACT = _F(contact) }
   local r = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CHMAT,
                            EXCIT = { _F{ CHARGE = CHA1, FONC_MULT = RAMPE }, _F{ CHARGE = cha2 } },
-                           COMPORTEMENT = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L_INST } }
+                           COMPORTEMENT = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L_INST },
+                           SOLVEUR = solveur }
   return CALC_CHAMP{ reuse = r, RESULTAT = r, CONTRAINTE = { 'SIGM_ELNO', 'SIGM_NOEU' } }
 end
 LAGR = solve{ METHODE = 'CONTRAINTE', GROUP_MA_ESCL = 'SURMAI', GROUP_MA_MAIT = 'SURESC', REAC_GEOM = 'AUTOMATIQUE' }
 PENA = solve{ METHODE = 'PENALISATION', GROUP_MA_ESCL = 'SURMAI', GROUP_MA_MAIT = 'SURESC', E_N = 1.0e12,
               REAC_GEOM = 'AUTOMATIQUE' }
+-- The same penalty with the mid-side ties solved for one unknown each (ELIM_LAGR = 'OUI', as
+-- code_aster treats every kinematic relation): no multiplier is left, so the system is SPD.
+PENE = solve({ METHODE = 'PENALISATION', GROUP_MA_ESCL = 'SURMAI', GROUP_MA_MAIT = 'SURESC', E_N = 1.0e12,
+               REAC_GEOM = 'AUTOMATIQUE' }, _F{ METHODE = 'CHOLMOD', ELIM_LAGR = 'OUI' })
 
 -- calc: lunaster's own value from a real run (VALE_CALC, non-regression, relative 1e-6).
 local checks = {}
@@ -71,5 +80,13 @@ check(PENA, 'SIGM_NOEU', 'SIZZ', 'SURMAI', -1.000000053398e+05, -1.0e5, 'MIN')
 check(PENA, 'DEPL', 'DZ', 'SURMAI', -5.000000330656e-02, -0.05, 'MIN')
 check(PENA, 'SIGM_NOEU', 'SIZZ', 'SURMAI', -9.999998625902e+04, -1.0e5, 'MAX')
 check(PENA, 'DEPL', 'DZ', 'SURMAI', -5.000000032505e-02, -0.05, 'MAX')
+check(PENE, 'SIGM_NOEU', 'SIZZ', 'A21', -1.000000050418e+05, -1.0e5)
+check(PENE, 'DEPL', 'DZ', 'A21', -4.999999858042e-02, -0.05)
+check(PENE, 'SIGM_NOEU', 'SIZZ', 'A23', -1.000000049567e+05, -1.0e5)
+check(PENE, 'DEPL', 'DZ', 'A23', -4.999999944184e-02, -0.05)
+check(PENE, 'SIGM_NOEU', 'SIZZ', 'SURESC', -1.000000051538e+05, -1.0e5, 'MIN')
+check(PENE, 'SIGM_NOEU', 'SIZZ', 'SURESC', -9.999998658524e+04, -1.0e5, 'MAX')
+check(PENE, 'DEPL', 'DZ', 'SURMAI', -5.000000335892e-02, -0.05, 'MIN')
+check(PENE, 'DEPL', 'DZ', 'SURMAI', -5.000000014292e-02, -0.05, 'MAX')
 TEST_RESU{ RESU = checks }
 FIN()

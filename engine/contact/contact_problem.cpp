@@ -65,6 +65,12 @@ void ContactProblem::set_dirichlet(const std::vector<DirichletValue>& dirichlet)
   for (const auto& d : dirichlet) imposed_.insert({d.node, d.component});
 }
 
+std::vector<LinearRelation> ContactProblem::take_relations() {
+  std::vector<LinearRelation> taken = relations_.relations();
+  relations_ = LinearRelations();
+  return taken;
+}
+
 void ContactProblem::add_dofs(DofMap& dofs) {
   for (int node : multiplier_nodes_) multiplier_eqs_.push_back(dofs.add(node, LAGS_C));
   relations_.add_dofs(dofs, imposed_);

@@ -50,6 +50,11 @@ class ContactHook {
   /// terms or more tie to other unknowns, once, before add_dofs (a hook whose conditions act
   /// on the same components may say so).
   virtual void set_related(const std::vector<std::pair<int, int>>& /*node_components*/) {}
+  /// Hands over the linear relations the hook's discretisation puts between displacement
+  /// components (discrete contact's QUAD8 mid-side ties), once, before set_dirichlet: the run's
+  /// relation facility then holds them beside the deck's (and may solve each for one unknown:
+  /// ELIM_LAGR), and the hook keeps none. Empty: none, or none to hand.
+  virtual std::vector<LinearRelation> take_relations() { return {}; }
   /// Adds contact unknowns (LAGS_C ...) to the numbering, once, before any step.
   virtual void add_dofs(DofMap& dofs) = 0;
   /// A model shared among the ranks of an MPI run, once after add_dofs: `owned_nodes` flags,
