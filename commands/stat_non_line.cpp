@@ -259,8 +259,9 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
       throw solveur.error("ELIM_LAGR", "'NON' with mortar contact (ALGO_CONT = 'LAGRANGIEN'), which eliminates "
                                        "unknowns itself",
                           "'OUI' and " + std::to_string(relations.size()) + " linear relation(s)");
-    session.log().info("  " + std::to_string(relations.size()) + " linear relation(s) " +
-                       (n_ties ? "(" + std::to_string(n_ties) + " of them discrete contact's QUAD8 mid-side ties) " : "") +
+    const std::string ties_said =
+        n_ties ? "(" + std::to_string(n_ties) + " of them discrete contact's QUAD8 mid-side ties) " : "";
+    session.log().info("  " + std::to_string(relations.size()) + " linear relation(s) " + ties_said +
                        (eliminate ? "each solved for one of its unknowns (SOLVEUR ELIM_LAGR = 'OUI'): no multipliers"
                                   : "with a Lagrange multiplier each (SOLVEUR ELIM_LAGR = 'OUI' would solve each "
                                     "for one of its unknowns instead)"));

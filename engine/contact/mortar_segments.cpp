@@ -67,8 +67,8 @@ std::vector<OrientedCell> orient_surface(const Mesh& mesh, int dim, const std::v
     oc.cell = c;
     oc.type = mesh.cell_types[c];
     if (!is_surface_type(oc.type) || topological_dim(oc.type) != dim - 1)
-      throw DeckError(zone + ": " + role + " cell " + cell_label(mesh, c) + " is a " + surface_type_name(oc.type) + ", expected a boundary cell of dimension " +
-                      std::to_string(dim - 1));
+      throw DeckError(zone + ": " + role + " cell " + cell_label(mesh, c) + " is a " + surface_type_name(oc.type) +
+                      ", expected a boundary cell of dimension " + std::to_string(dim - 1));
     oc.n = surface_n_nodes(oc.type);
     const int* nodes = mesh.cell(c);
     const int nv = surface_n_vertices(oc.type);
@@ -155,7 +155,8 @@ MortarSegments::MortarSegments(const ContactDefinition& definition, const Mesh& 
           int v1, v2;
           // An edge shared by two cells is listed once (its vertices in a fixed order).
           if (edge_vertices(oc.type, a, &v1, &v2))
-            mid_edges_.push_back({oc.nodes[a], std::min(oc.nodes[v1], oc.nodes[v2]), std::max(oc.nodes[v1], oc.nodes[v2])});
+            mid_edges_.push_back(
+                {oc.nodes[a], std::min(oc.nodes[v1], oc.nodes[v2]), std::max(oc.nodes[v1], oc.nodes[v2])});
         }
     h_.push_back(contact::smallest_edge(mesh, zone.slave_cells));
     for (const auto* group : {&slave_cells_.back(), &master_cells_.back()})
