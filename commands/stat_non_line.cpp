@@ -1,5 +1,7 @@
 // STAT_NON_LINE: quasi-static incremental analysis (Newton), with contact.
+#include <algorithm>
 #include <memory>
+#include <set>
 
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
@@ -261,10 +263,24 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
                           "'OUI' and " + std::to_string(relations.size()) + " linear relation(s)");
     const std::string ties_said =
         n_ties ? "(" + std::to_string(n_ties) + " of them discrete contact's QUAD8 mid-side ties) " : "";
+    // A relation between imposed unknowns only gets no multiplier: the imposed values are
+    // checked against it at each instant (relations_hook.hpp).
+    std::set<std::pair<int, int>> imposed;
+    for (const auto& d : loads.dirichlet) imposed.insert({d.node, d.component});
+    const auto imposed_only = std::count_if(relations.begin(), relations.end(), [&](const engine::LinearRelation& r) {
+      return std::all_of(r.terms.begin(), r.terms.end(),
+                         [&](const auto& t) { return imposed.count({t.node, t.component}) != 0; });
+    });
+    const std::string checked_said =
+        !eliminate && imposed_only
+            ? ", except " + std::to_string(imposed_only) + " between imposed unknowns only, which need none (the "
+                  "imposed values are checked against them)"
+            : "";
     session.log().info("  " + std::to_string(relations.size()) + " linear relation(s) " + ties_said +
                        (eliminate ? "each solved for one of its unknowns (SOLVEUR ELIM_LAGR = 'OUI'): no multipliers"
                                   : "with a Lagrange multiplier each (SOLVEUR ELIM_LAGR = 'OUI' would solve each "
-                                    "for one of its unknowns instead)"));
+                                    "for one of its unknowns instead)") +
+                       checked_said);
     hook = engine::make_relations_hook(std::move(relations), loads.multipliers, std::move(hook), eliminate);
     if (options.elastic_matrix) {
       // As contact terms, the relations' belong in the matrix (code_aster keeps them there whatever
