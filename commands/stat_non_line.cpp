@@ -267,13 +267,12 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     // checked against it at each instant (relations_hook.hpp).
     std::set<std::pair<int, int>> imposed;
     for (const auto& d : loads.dirichlet) imposed.insert({d.node, d.component});
-    const auto imposed_only = std::count_if(relations.begin(), relations.end(), [&](const engine::LinearRelation& r) {
-      return std::all_of(r.terms.begin(), r.terms.end(),
-                         [&](const auto& t) { return imposed.count({t.node, t.component}) != 0; });
+    const auto n_checked = std::count_if(relations.begin(), relations.end(), [&](const engine::LinearRelation& r) {
+      return engine::imposed_only(r, imposed);
     });
     const std::string checked_said =
-        !eliminate && imposed_only
-            ? ", except " + std::to_string(imposed_only) + " between imposed unknowns only, which need none (the "
+        !eliminate && n_checked
+            ? ", except " + std::to_string(n_checked) + " between imposed unknowns only, which need none (the "
                   "imposed values are checked against them)"
             : "";
     session.log().info("  " + std::to_string(relations.size()) + " linear relation(s) " + ties_said +

@@ -11,9 +11,7 @@ namespace lunaster::engine {
 void LinearRelations::add_dofs(DofMap& dofs, const std::set<std::pair<int, int>>& imposed) {
   for (size_t i = 0; i < relations_.size(); ++i) {
     LinearRelation& r = relations_[i];
-    bool all_imposed = true;
-    for (const auto& t : r.terms) all_imposed = all_imposed && imposed.count({t.node, t.component});
-    if (all_imposed) {
+    if (imposed_only(r, imposed)) {
       r.multiplier = -1;
       continue;
     }
@@ -28,6 +26,12 @@ void LinearRelations::add_dofs(DofMap& dofs, const std::set<std::pair<int, int>>
     }
     r.multiplier = dofs.add(r.carrier_node, r.carrier_component);
   }
+}
+
+bool imposed_only(const LinearRelation& relation, const std::set<std::pair<int, int>>& imposed) {
+  for (const auto& t : relation.terms)
+    if (!imposed.count({t.node, t.component})) return false;
+  return true;
 }
 
 bool LinearRelations::any_multiplier() const {

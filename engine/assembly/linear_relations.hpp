@@ -62,6 +62,10 @@ class LinearRelations {
   std::vector<LinearRelation> relations_;
 };
 
+/// True when every term of `relation` is on a (node, component) of `imposed`: the relation
+/// then needs no unknown of its own (its multiplier would leave the system singular).
+bool imposed_only(const LinearRelation& relation, const std::set<std::pair<int, int>>& imposed);
+
 /// Sums the terms of each relation on one (node, component) and drops those whose sum is
 /// zero; then moves every relation left with one term, c u = v, to `dirichlet` as u = v / c
 /// (same load). Returns the relations left (two terms or more, in their order). A relation

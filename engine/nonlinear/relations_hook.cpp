@@ -17,13 +17,6 @@ namespace lunaster::engine {
 
 namespace {
 
-/// The relations solved for one unknown each instead of a multiplier (code_aster's
-/// ELIM_LAGR='OUI'): Gaussian elimination over the relations in their order, each pivot the
-/// free unknown of largest coefficient (the first of them on a tie) once the unknowns chosen
-/// before are substituted, and every expression closed (no pivot in another's terms):
-/// u_p = sum_k a_k u_k + sum_l b_l v_l, v_l the right-hand side of relation l. The system
-/// then keeps K's kind (SPD stays SPD, CHOLMOD). The relations' forces C^T lambda come from
-/// the pivots' rows of the residual: C_P^T lambda = -r_P.
 /// A relation whose every unknown is imposed (Dirichlet conditions), possibly once other
 /// relations are substituted: sum c u_eq = sum b v_l must hold for the imposed values.
 struct ImposedRelation {
@@ -32,6 +25,13 @@ struct ImposedRelation {
   std::vector<std::pair<int, double>> rhs;    ///< (relation l, b): the right-hand sides v_l
 };
 
+/// The relations solved for one unknown each instead of a multiplier (code_aster's
+/// ELIM_LAGR='OUI'): Gaussian elimination over the relations in their order, each pivot the
+/// free unknown of largest coefficient (the first of them on a tie) once the unknowns chosen
+/// before are substituted, and every expression closed (no pivot in another's terms):
+/// u_p = sum_k a_k u_k + sum_l b_l v_l, v_l the right-hand side of relation l. The system
+/// then keeps K's kind (SPD stays SPD, CHOLMOD). The relations' forces C^T lambda come from
+/// the pivots' rows of the residual: C_P^T lambda = -r_P.
 class RelationEliminator {
  public:
   /// `free`: whether an equation is free (not Dirichlet-constrained).
