@@ -72,6 +72,8 @@ class Args {
 
   /// Keyword path for messages: "EXCIT[2].CHARGE" (occurrences 1-based).
   std::string path(const std::string& kw) const;
+  /// Where this node sits, for messages: "LIAISON_DDL[2]" for an occurrence; empty at the root.
+  const std::string& where() const { return path_; }
   /// A DeckError located at this keyword: "expected <expected>, got <given>".
   DeckError error(const std::string& kw, const std::string& expected, const std::string& given,
                   std::vector<std::string> hints = {}) const;

@@ -106,6 +106,7 @@ void read_liaison_ddl(const Args& occ, const Modele& mo, CharMeca& load) {
     relation.terms.push_back({nodes[i], component, coef[i]});
   }
   relation.value = occ.real("COEF_IMPO");
+  relation.label = occ.where();
   // Terms on one component of one node add up; a relation left with none says 0 = COEF_IMPO.
   std::vector<engine::DirichletValue> unused;
   const auto kept = engine::split_dirichlet({relation}, unused);
@@ -138,6 +139,8 @@ void read_liaison_unif(const Args& occ, const Modele& mo, CharMeca& load) {
     for (size_t i = 1; i < nodes.size(); ++i) {
       engine::LinearRelation r;
       r.terms = {{nodes[i], component, 1.0}, {nodes[0], component, -1.0}};
+      r.label = occ.where() + " (" + ddl + " of node " + mesh.node_names[nodes[i]] + " equal to node " +
+                mesh.node_names[nodes[0]] + "'s)";
       load.relations.push_back(r);
     }
   }

@@ -197,7 +197,11 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     for (auto d : charge->dirichlet) { d.load = index; loads.dirichlet.push_back(d); }
     for (auto p : charge->pressures) { p.load = index; loads.pressures.push_back(p); }
     for (auto f : charge->forces) { f.load = index; loads.forces.push_back(f); }
-    for (auto r : charge->relations) { r.load = index; loads.relations.push_back(r); }
+    for (auto r : charge->relations) {
+      r.load = index;
+      r.label += charge->user_name.empty() ? " of " + excit.path("CHARGE") : " of CHARGE '" + charge->user_name + "'";
+      loads.relations.push_back(r);
+    }
     if (charge->has_contact) {
       if (contact) throw excit.error("CHARGE", "a single contact definition", "a second one in '" + charge->user_name + "'");
       contact = &charge->contact;

@@ -20,12 +20,16 @@ void LinearRelations::add_dofs(DofMap& dofs, const std::set<std::pair<int, int>>
         for (int c = LAGR_DX; c <= LAGR_DZ && r.carrier_node < 0; ++c)
           if (dofs.dof(r.terms[k].node, c) < 0) r.carrier_node = r.terms[k].node, r.carrier_component = c;
       if (r.carrier_node < 0)
-        throw DeckError("linear relation " + std::to_string(i + 1) +
+        throw DeckError(relation_name(r, i) +
                         ": every node of it already carries three relation multipliers (the most a node "
                         "carries); relate these nodes through fewer relations, or add a node to this one");
     }
     r.multiplier = dofs.add(r.carrier_node, r.carrier_component);
   }
+}
+
+std::string relation_name(const LinearRelation& relation, size_t index) {
+  return relation.label.empty() ? "linear relation " + std::to_string(index + 1) : relation.label;
 }
 
 bool imposed_only(const LinearRelation& relation, const std::set<std::pair<int, int>>& imposed) {

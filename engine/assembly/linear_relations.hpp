@@ -15,6 +15,7 @@
 /// anyway, and its multiplier would leave the system singular).
 #include <functional>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -33,7 +34,11 @@ struct LinearRelation {
   int carrier_node = -1;       ///< node carrying the multiplier; -1: chosen by add_dofs
   int carrier_component = -1;  ///< LAGR_DX, LAGR_DY or LAGR_DZ
   int multiplier = -1;         ///< its equation once numbered; -1 when left out
+  std::string label;           ///< what messages call it ("LIAISON_DDL[2] of CHARGE 'CH'"); see relation_name
 };
+
+/// How messages name relation `index` (0-based) of a list: its label, else "linear relation N".
+std::string relation_name(const LinearRelation& relation, size_t index);
 
 class LinearRelations {
  public:

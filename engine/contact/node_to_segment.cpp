@@ -3,6 +3,7 @@
 #include <map>
 #include <set>
 
+#include "engine/contact/contact_common.hpp"
 #include "engine/contact/discretisation.hpp"
 #include "engine/contact/integration_rules.hpp"
 #include "engine/contact/surface_element.hpp"
@@ -70,6 +71,8 @@ class NodeToSegment final : public Discretisation {
           r.terms = {{mid, k, scale}, {a, k, -0.5 * scale}, {b, k, -0.5 * scale}};
           r.carrier_node = mid;
           r.carrier_component = LAGR_DX + k;
+          r.label = "discrete contact's tie of QUAD8 mid-side node " + node_label(mesh, mid) + " (D" +
+                    static_cast<char>('X' + k) + ")";
           relations.add(std::move(r));
         }
       }

@@ -83,7 +83,7 @@ class RelationEliminator {
           imposed_only_.push_back(std::move(check));
           continue;
         }
-        throw DeckError("linear relation " + std::to_string(i + 1) +
+        throw DeckError(relation_name(relations[i], i) +
                         " is a combination of the relations before it (with its right-hand side, the same "
                         "relation or a contradiction): remove it");
       }
@@ -385,7 +385,8 @@ class RelationsHook final : public ContactHook {
       if (std::abs(lhs - rhs) <= 1e-9 * scale) continue;
       std::ostringstream msg;
       msg.precision(10);
-      msg << "linear relation " << check.relation + 1 << " relates imposed unknowns only"
+      msg << relation_name(relations_.relations()[check.relation], check.relation)
+          << " relates imposed unknowns only"
           << (eliminate_ ? " (once the relations before it are solved for their unknowns)" : "")
           << ", and their imposed values contradict it at t = " << t_ << ": its terms sum to " << lhs
           << ", its right-hand side is " << rhs

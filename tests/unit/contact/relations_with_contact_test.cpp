@@ -213,6 +213,18 @@ TEST(LinearRelations, CarriersAreFreeSlotsOfTheTermsNodesAndTheRightHandSideFoll
   } catch (const lunaster::DeckError& e) {
     EXPECT_NE(std::string(e.what()).find("linear relation 5"), std::string::npos) << e.what();
   }
+  // A relation that says where it comes from is named so (AFFE_CHAR_MECA and STAT_NON_LINE label the deck's).
+  r.label = "LIAISON_DDL[2] of CHARGE 'CH'";
+  LinearRelations labelled = relations;
+  labelled.add(r);
+  DofMap again(mesh, {0}, 2);
+  for (int k = 0; k < 3; ++k) again.add(1, LAGR_DX + k);
+  try {
+    labelled.add_dofs(again, {});
+    FAIL() << "no error";
+  } catch (const lunaster::DeckError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("LIAISON_DDL[2] of CHARGE 'CH': every node of it", 0), 0u) << e.what();
+  }
 }
 
 }  // namespace
