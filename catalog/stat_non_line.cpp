@@ -164,6 +164,18 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                     "beyond one machine")
                                    .into_values({"OUI", "NON"})
                                    .def("OUI"),
+                               text("POSTTRAITEMENTS",
+                                    "Iterative refinement of each solve (x += A^-1 (b - A x) on the same "
+                                    "factors): AUTO up to 3 steps, until the solve is backward stable row by row "
+                                    "(|A x - b| <= 1e-14 (|A| |x| + |b|) in every row; on a model shared among MPI "
+                                    "ranks, until the relative residual is under 1e-10) or a step gains nothing; "
+                                    "SANS none (RESI_RELA then judges the solve straight from the factors); MINI "
+                                    "one step at most, with AUTO's stop; FORCE up to 10 steps, each kept while it "
+                                    "lowers the residual, backward stable or not. The instant's log line says "
+                                    "how many steps were taken. Applies to every direct solve of the run, "
+                                    "whichever backend factorises (CHOLMOD for an SPD system)")
+                                   .into_values({"AUTO", "SANS", "MINI", "FORCE"})
+                                   .def("AUTO"),
                                elim_lagr({"OUI", "NON", "LAGR2"}, "LAGR2"),
                                integer("PCENT_PIVOT",
                                        "Working space of MUMPS's factorisation beyond its analysis's estimate, in "

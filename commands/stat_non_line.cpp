@@ -92,7 +92,7 @@ void read_petsc(const Args& solveur, engine::IterativeSettings& settings) {
 
 /// SOLVEUR NPREC and STOP_SINGULIER (the factorising methods), RENUM (the fill-reducing
 /// ordering, by code_aster's names for each METHODE) and, for MUMPS, GESTION_MEMOIRE,
-/// MATR_DISTRIBUEE, PCENT_PIVOT and RESI_RELA.
+/// MATR_DISTRIBUEE, PCENT_PIVOT, RESI_RELA and POSTTRAITEMENTS.
 void read_direct_solver(const Args& solveur, engine::NewtonOptions& options) {
   using O = engine::FactorOrdering;
   const std::string methode = solveur.text("METHODE");
@@ -117,6 +117,9 @@ void read_direct_solver(const Args& solveur, engine::NewtonOptions& options) {
   options.share_model = solveur.text("MATR_DISTRIBUEE") == "OUI";
   if (solveur.has("PCENT_PIVOT")) options.workspace_relaxation = static_cast<int>(solveur.integer("PCENT_PIVOT"));
   if (solveur.has("RESI_RELA")) options.direct_solve_tolerance = solveur.real("RESI_RELA");
+  using R = engine::NewtonOptions::Refinement;
+  const std::string post = solveur.text("POSTTRAITEMENTS");
+  options.refinement = post == "SANS" ? R::None : post == "MINI" ? R::Once : post == "FORCE" ? R::Force : R::Auto;
   const std::string renum = solveur.text("RENUM");
   options.ordering = renum == "METIS" ? O::Metis
                      : renum == "AMD" ? O::Amd

@@ -907,6 +907,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
 
 
   const int factorisations_before = stats_.factorisations;
+  const int refinements_before = stats_.refinement_steps;
   int total_newton = 0;
   double last_converged_maxi = -1.0;  // the absolute residual the previous pass converged with
   for (int fixed_point = 0;; ++fixed_point) {
@@ -1226,8 +1227,13 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         // residual of 8e-11 (under the 1e-10 that asks for refinement without it) left
         // SSNP121 E's LAGS_C 3e-8 off in a two-rank MUMPS run, its multiplier rows far from
         // their own round-off.
-        accuracy = solve_with_refinement(*solver, system_product, -r_free, du, 3, whole ? 1e-14 : 1e-10,
-                                         whole ? &abs_product : nullptr,
+        using R = NewtonOptions::Refinement;
+        const R policy = options_.refinement;
+        const int steps = policy == R::None ? 0 : policy == R::Once ? 1 : policy == R::Force ? 10 : 3;
+        const bool stop_when_stable = policy != R::Force;
+        accuracy = solve_with_refinement(*solver, system_product, -r_free, du, steps,
+                                         !stop_when_stable ? 0.0 : whole ? 1e-14 : 1e-10,
+                                         whole && stop_when_stable ? &abs_product : nullptr,
                                          options_.direct_solve_tolerance > 0.0 ? options_.direct_solve_tolerance
                                                                                : kSolveTolerance);
         // A direct backend that iterates on a factorisation of another matrix (the
@@ -1318,7 +1324,10 @@ void StaticSolver::solve_instant(double t, Vector& u) {
     if (settled) break;
   }
   log_.info("  converged in " + std::to_string(total_newton) + " Newton iteration(s), " +
-            std::to_string(stats_.factorisations - factorisations_before) + " factorisation(s)");
+            std::to_string(stats_.factorisations - factorisations_before) + " factorisation(s)" +
+            (stats_.refinement_steps > refinements_before
+                 ? ", " + std::to_string(stats_.refinement_steps - refinements_before) + " refinement step(s)"
+                 : std::string()));
 }
 
 }  // namespace lunaster::engine

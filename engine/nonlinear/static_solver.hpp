@@ -58,6 +58,11 @@ struct NewtonOptions {
   /// refinement (code_aster's SOLVEUR RESI_RELA of MUMPS); <= 0: not checked, Newton's
   /// residual alone judges. Iterative backends keep their own tolerance.
   double direct_solve_tolerance = 1e-6;
+  /// Iterative refinement of the direct solves (code_aster's SOLVEUR POSTTRAITEMENTS of MUMPS).
+  /// Auto: up to 3 steps, until the solve is backward stable row by row (or no step gains);
+  /// None: none; Once: one step at most, with the same stop; Force: up to 10 steps, each kept
+  /// while it lowers the residual, backward stable or not.
+  enum class Refinement { Auto, None, Once, Force } refinement = Refinement::Auto;
   /// Print each Krylov iteration's residual in the log (code_aster's INFO=2).
   bool krylov_history = false;
   int subdivide_levels = 0;  ///< on a Newton failure, split the step this many times at most
