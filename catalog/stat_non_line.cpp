@@ -164,6 +164,15 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                     "beyond one machine")
                                    .into_values({"OUI", "NON"})
                                    .def("OUI"),
+                               text("PRETRAITEMENTS",
+                                    "What MUMPS does to the matrix before factorising it: AUTO its own choice of "
+                                    "scaling and of permutations towards a heavy diagonal (ICNTL(6), (8), (12) "
+                                    "automatic); SANS the matrix as assembled (no scaling: NPREC's null-pivot "
+                                    "threshold then applies to the entries as they are, where a contact or "
+                                    "relation multiplier's pivot, small in absolute terms, counts as null: "
+                                    "NPREC = -1 beside it turns that test off)")
+                                   .into_values({"AUTO", "SANS"})
+                                   .def("AUTO"),
                                text("POSTTRAITEMENTS",
                                     "Iterative refinement of each solve (x += A^-1 (b - A x) on the same "
                                     "factors): AUTO up to 3 steps, until the solve is backward stable row by row "

@@ -112,6 +112,11 @@ void say_in_keywords(Error& err) {
         if (h.rfind("this reader reads MED files", 0) == 0) h = "LIRE_MAILLAGE reads MED files; use FORMAT='GMSH' for .msh";
       break;
   }
+  for (auto& h : hints)  // whatever the failure: a pivot test of a matrix MUMPS did not scale
+    if (h.rfind("the matrix was factorised as assembled", 0) == 0)
+      h = "the matrix was factorised as assembled (SOLVEUR PRETRAITEMENTS='SANS'), so NPREC tested its pivots "
+          "unscaled: a multiplier's pivot, small in absolute terms, counts as null; use PRETRAITEMENTS='AUTO' (the "
+          "default), or NPREC=-1 to turn the test off";
   if (f.residuals_known)
     for (auto& h : hints) h = residual_keywords(h);
   for (auto& h : hints) h = step_keywords(h);

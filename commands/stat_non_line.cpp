@@ -120,6 +120,7 @@ void read_direct_solver(const Args& solveur, engine::NewtonOptions& options) {
   using R = engine::NewtonOptions::Refinement;
   const std::string post = solveur.text("POSTTRAITEMENTS");
   options.refinement = post == "SANS" ? R::None : post == "MINI" ? R::Once : post == "FORCE" ? R::Force : R::Auto;
+  options.preprocessing = solveur.text("PRETRAITEMENTS") == "AUTO";
   const std::string renum = solveur.text("RENUM");
   options.ordering = renum == "METIS" ? O::Metis
                      : renum == "AMD" ? O::Amd

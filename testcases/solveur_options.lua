@@ -1,7 +1,10 @@
 -- SOLVEUR options by code_aster's names, each changing how the system is factorised, not the
 -- answer: METHODE='MUMPS' with each RENUM (AUTO, METIS, AMD, AMF, QAMD, PORD) and each
 -- GESTION_MEMOIRE (IN_CORE, OUT_OF_CORE: the factors on disk, in $TMPDIR else /tmp; AUTO), and
--- PCENT_PIVOT = 50 (MUMPS's working space: the analysis's estimate + 50 %, which the log states);
+-- PCENT_PIVOT = 50 (MUMPS's working space: the analysis's estimate + 50 %, which the log states),
+-- PRETRAITEMENTS = 'SANS' (no scaling nor permutation before the analysis; NPREC = -1, as the
+-- unscaled pivots of the contact multipliers would fail the null-pivot test) and POSTTRAITEMENTS =
+-- 'FORCE' (iterative refinement until a step gains nothing);
 -- METHODE='MULT_FRONT' with RENUM METIS, MD, MDA; METHODE='LDLT' with RENUM RCMK (reverse
 -- Cuthill-McKee) and SANS (no reordering). The log names the ordering used and says when the
 -- factors are out of core.
@@ -19,7 +22,9 @@
 -- and the fill of each ordering are checked by the unit tests Solvers.MumpsTakesTheOrdering*,
 -- Solvers.CholmodAndUmfpackTakeTheOrderingAskedFor, Solvers.ReverseCuthillMckee* and
 -- Solvers.MumpsOutOfCoreAgreesWithInCore; PCENT_PIVOT's allocation by
--- Solvers.MumpsWorkspaceRelaxationIsAllocatedAndSaid.
+-- Solvers.MumpsWorkspaceRelaxationIsAllocatedAndSaid; what PRETRAITEMENTS changes by
+-- Singularity.MumpsWithoutPreprocessingTestsPivotsAsAssembled, POSTTRAITEMENTS's steps by
+-- tests/decks/mumps_posttraitements.lua.
 -- Reference: analytical.
 -- Runtime label: fast, 3D, contact, solver.
 DEBUT()
@@ -32,13 +37,17 @@ end
 local others = {
   { METHODE = 'MUMPS', GESTION_MEMOIRE = 'IN_CORE' }, { METHODE = 'MUMPS', GESTION_MEMOIRE = 'OUT_OF_CORE' },
   { METHODE = 'MUMPS', GESTION_MEMOIRE = 'AUTO' }, { METHODE = 'MUMPS', PCENT_PIVOT = 50 },
+  { METHODE = 'MUMPS', PRETRAITEMENTS = 'SANS', NPREC = -1 }, { METHODE = 'MUMPS', POSTTRAITEMENTS = 'FORCE' },
   { METHODE = 'MULT_FRONT', RENUM = 'METIS' }, { METHODE = 'MULT_FRONT', RENUM = 'MD' },
   { METHODE = 'MULT_FRONT', RENUM = 'MDA' }, { METHODE = 'LDLT', RENUM = 'RCMK' }, { METHODE = 'LDLT', RENUM = 'SANS' },
 }
 local function label(s)
   return s.METHODE .. (s.RENUM and ' RENUM=' .. s.RENUM or '') ..
          (s.GESTION_MEMOIRE and ' GESTION_MEMOIRE=' .. s.GESTION_MEMOIRE or '') ..
-         (s.PCENT_PIVOT and ' PCENT_PIVOT=' .. s.PCENT_PIVOT or '')
+         (s.PCENT_PIVOT and ' PCENT_PIVOT=' .. s.PCENT_PIVOT or '') ..
+         (s.PRETRAITEMENTS and ' PRETRAITEMENTS=' .. s.PRETRAITEMENTS or '') ..
+         (s.NPREC and ' NPREC=' .. s.NPREC or '') ..
+         (s.POSTTRAITEMENTS and ' POSTTRAITEMENTS=' .. s.POSTTRAITEMENTS or '')
 end
 
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'meshes/glued3d_hexa20.med' }

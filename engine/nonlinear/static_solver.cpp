@@ -361,13 +361,21 @@ SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err
   // elastic_.ff is the whole K_ff unless the model is shared or K_ff went to the backend
   // (also when the backend failed after taking it).
   const bool whole_here = !distributed_ && !elastic_in_solver_ && (elastic_.ff.nonZeros() > 0 || elastic_.equation.empty());
-  if (whole_here) return diagnose_singular_system(model_, dofs_, cons.free_index, elastic_.ff, err, t, diagnosis_test(),
-                                                      contact_ != nullptr);
-  SplitMatrix whole;
-  SparseMatrix k = assemble_stiffness_matrix(model_, dofs_);
-  split_matrix(k, elastic_.constrained, whole);
-  return diagnose_singular_system(model_, dofs_, cons.free_index, whole.ff, err, t, diagnosis_test(),
-                                  contact_ != nullptr);
+  SolveError found = [&] {
+    if (whole_here)
+      return diagnose_singular_system(model_, dofs_, cons.free_index, elastic_.ff, err, t, diagnosis_test(),
+                                      contact_ != nullptr);
+    SplitMatrix whole;
+    SparseMatrix k = assemble_stiffness_matrix(model_, dofs_);
+    split_matrix(k, elastic_.constrained, whole);
+    return diagnose_singular_system(model_, dofs_, cons.free_index, whole.ff, err, t, diagnosis_test(),
+                                    contact_ != nullptr);
+  }();
+  if (!options_.preprocessing && options_.singularity.digits >= 0)
+    found.add_hint("the matrix was factorised as assembled (MUMPS without preprocessing), so its pivots were tested "
+                   "unscaled: a multiplier's pivot, small in absolute terms, counts as null; let MUMPS scale the "
+                   "matrix, or turn the pivot test off");
+  return found;
 }
 
 SingularityTest StaticSolver::diagnosis_test() const {
@@ -1100,6 +1108,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         backend_solver->set_ordering(options_.ordering);
         backend_solver->set_memory(options_.memory);
         backend_solver->set_workspace_relaxation(options_.workspace_relaxation);
+        backend_solver->set_preprocessing(options_.preprocessing);
         backend_solver->set_singularity_test(options_.singularity);
       }
       LinearSolver* const solver = via_interface ? interface_.get() : backend_solver.get();

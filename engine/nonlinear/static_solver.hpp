@@ -63,6 +63,9 @@ struct NewtonOptions {
   /// None: none; Once: one step at most, with the same stop; Force: up to 10 steps, each kept
   /// while it lowers the residual, backward stable or not.
   enum class Refinement { Auto, None, Once, Force } refinement = Refinement::Auto;
+  /// MUMPS's automatic scaling and permutations of the matrix before its analysis (code_aster's
+  /// SOLVEUR PRETRAITEMENTS = 'AUTO'); false: the matrix as assembled ('SANS').
+  bool preprocessing = true;
   /// Print each Krylov iteration's residual in the log (code_aster's INFO=2).
   bool krylov_history = false;
   int subdivide_levels = 0;  ///< on a Newton failure, split the step this many times at most

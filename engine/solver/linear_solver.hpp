@@ -143,6 +143,10 @@ class LinearSolver {
   /// default. MUMPS doubles it when a factorisation runs short, as before. The others size
   /// their workspace exactly and ignore it.
   virtual void set_workspace_relaxation(int /*percent*/) {}
+  /// Whether the next analyses scale the matrix and permute it for large diagonal entries as
+  /// the backend sees fit (MUMPS's automatic ICNTL(6), (8), (12); code_aster's PRETRAITEMENTS
+  /// = 'AUTO', the default) or leave it as assembled ('SANS'). The other backends keep theirs.
+  virtual void set_preprocessing(bool /*automatic*/) {}
   /// Which pivots the next factorisations call singular, and whether that stops them (the
   /// direct backends; UMFPACK and PETSc keep their own tests).
   virtual void set_singularity_test(SingularityTest /*test*/) {}

@@ -87,6 +87,7 @@ class MumpsSolver final : public LinearSolver {
   std::string ordering_used() const override;
   void set_memory(FactorMemory memory) override { memory_ = memory; }
   void set_workspace_relaxation(int percent) override { relaxation_ = percent; }
+  void set_preprocessing(bool automatic) override { preprocessing_ = automatic; }
   std::string memory_used() const override { return memory_note_; }
   bool takes_distributed() const override { return true; }
   void set_singularity_test(SingularityTest test) override { test_ = test; }
@@ -152,6 +153,7 @@ class MumpsSolver final : public LinearSolver {
   std::string singular_note_;
   FactorMemory memory_ = FactorMemory::Auto;
   int relaxation_ = 0;       ///< ICNTL(14) for the next analyses; 0: MUMPS's default
+  bool preprocessing_ = true;  ///< MUMPS's automatic scaling and permutations; false: none
   std::string memory_note_;  ///< memory_used() of the last analysis
 };
 
@@ -278,6 +280,10 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     // ICNTL(14): the working space beyond the analysis's estimate (PCENT_PIVOT). MUMPS's own
     // default unless one was asked for (5.5 on one process: 5 % for SYM = 1, 20 % otherwise).
     if (relaxation_ > 0) id_.icntl[13] = relaxation_;
+    // PRETRAITEMENTS = 'SANS': the matrix as assembled, no scaling (ICNTL(8) = 0), no
+    // permutation to a zero-free or heavy diagonal (ICNTL(6) = 0) and no 2x2 pivots chosen
+    // by it (ICNTL(12) = 1). MUMPS's own choices otherwise (77, 7 and 0, its defaults).
+    if (!preprocessing_) id_.icntl[5] = 0, id_.icntl[7] = 0, id_.icntl[11] = 1;
     // ICNTL(7): the fill-reducing ordering. On sparse rows (2D meshes: 18 to 26 entries a row
     // for QUAD4/QUAD8) AMD beat the automatic choice (PORD's nested dissection: Debian 12's
     // MUMPS 5.5 is built without METIS and SCOTCH, and says so when asked for them), whose

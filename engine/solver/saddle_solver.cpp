@@ -152,6 +152,10 @@ class SaddleSolver final : public LinearSolver {
     relaxation_ = percent;
     if (direct_) direct_->set_workspace_relaxation(percent);
   }
+  void set_preprocessing(bool automatic) override {
+    preprocessing_ = automatic;
+    if (direct_) direct_->set_preprocessing(automatic);
+  }
   void set_singularity_test(SingularityTest test) override {
     test_ = test;
     split_data_->schur->set_singularity_test(test);
@@ -184,6 +188,7 @@ class SaddleSolver final : public LinearSolver {
       direct_->set_ordering(ordering_);
       direct_->set_memory(memory_);
       direct_->set_workspace_relaxation(relaxation_);
+      direct_->set_preprocessing(preprocessing_);
       direct_->set_singularity_test(test_);
       if (has_layout_) direct_->set_layout(std::move(layout_)), has_layout_ = false;
     }
@@ -308,6 +313,7 @@ class SaddleSolver final : public LinearSolver {
   FactorOrdering ordering_ = FactorOrdering::Auto;
   FactorMemory memory_ = FactorMemory::Auto;
   int relaxation_ = 0;
+  bool preprocessing_ = true;
   SingularityTest test_;
   mutable SystemLayout layout_;  ///< given before the direct backend existed
   mutable bool has_layout_ = false;

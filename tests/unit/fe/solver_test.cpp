@@ -530,6 +530,32 @@ TEST(Singularity, CholmodHandsAPivotItCannotTakeToMumpsWhenToldToGoOn) {
   check_solution(regular, s->solve(rhs(20)), "CHOLMOD after MUMPS");
 }
 
+// PRETRAITEMENTS: MUMPS's null-pivot test (NPREC) looks at its scaled matrix, so that a pivot
+// near 1e-9 of the matrix's scale is null below 1e-8 in any units (the test above). Without
+// preprocessing ('SANS') the pivots are compared as assembled: in units of 2e6 the soft link's
+// pivot (4e-3) passes NPREC = 8, and in units of 1e-6 (a pivot of 2e-15) NPREC = 12 stops on it,
+// where the scaled test lets it through.
+TEST(Singularity, MumpsWithoutPreprocessingTestsPivotsAsAssembled) {
+  const SparseMatrix big = chain_with_soft_link(10, 1e-9) * 2e6, small = chain_with_soft_link(10, 1e-9) * 1e-6;
+  for (const bool automatic : {true, false}) {
+    auto m = make_linear_solver(SolverKind::Mumps);
+    m->set_preprocessing(automatic);
+    m->set_singularity_test({8, true});
+    if (automatic) {
+      EXPECT_THROW(m->factorize(big, MatrixKind::SymmetricIndefinite), SolveError);
+    } else {
+      EXPECT_NO_THROW(m->factorize(big, MatrixKind::SymmetricIndefinite));
+      EXPECT_LT((big * m->solve(rhs(10)) - rhs(10)).norm() / rhs(10).norm(), 1e-6);
+    }
+    m->set_singularity_test({12, true});
+    if (automatic) {
+      EXPECT_NO_THROW(m->factorize(small, MatrixKind::SymmetricIndefinite));
+    } else {
+      EXPECT_THROW(m->factorize(small, MatrixKind::SymmetricIndefinite), SolveError);
+    }
+  }
+}
+
 // MUMPS on a symmetric indefinite system with an equation that nothing holds: a null pivot.
 // Stopping (the default) is a SolveError naming it; going on sets it aside (1e20), and the
 // solution of a consistent right-hand side is exact on the other equations and zero on it.
