@@ -256,11 +256,15 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
   const bool eliminate = solveur.has("ELIM_LAGR") && solveur.text("ELIM_LAGR") == "OUI";
   // Solved for one unknown each, the relations discrete contact puts on QUAD8 faces (mid-side
   // ties) join the deck's, as code_aster's kinematic relations do; with multipliers they stay
-  // the contact's own.
+  // the contact's own, but for those between imposed unknowns only: no multiplier holds them,
+  // and the deck's relations' check of their imposed values is theirs too.
+  std::set<std::pair<int, int>> imposed;
+  for (const auto& d : loads.dirichlet) imposed.insert({d.node, d.component});
   std::vector<engine::LinearRelation> relations = loads.relations;
   size_t n_ties = 0;
-  if (eliminate && hook) {
-    std::vector<engine::LinearRelation> ties = hook->take_relations();
+  if (hook) {
+    std::vector<engine::LinearRelation> ties =
+        hook->take_relations([&](const engine::LinearRelation& r) { return eliminate || engine::imposed_only(r, imposed); });
     n_ties = ties.size();
     relations.insert(relations.end(), ties.begin(), ties.end());
   }
@@ -273,8 +277,6 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
         n_ties ? "(" + std::to_string(n_ties) + " of them discrete contact's QUAD8 mid-side ties) " : "";
     // A relation between imposed unknowns only gets no multiplier: the imposed values are
     // checked against it at each instant (relations_hook.hpp).
-    std::set<std::pair<int, int>> imposed;
-    for (const auto& d : loads.dirichlet) imposed.insert({d.node, d.component});
     const auto n_checked = std::count_if(relations.begin(), relations.end(), [&](const engine::LinearRelation& r) {
       return engine::imposed_only(r, imposed);
     });

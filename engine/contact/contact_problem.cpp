@@ -65,9 +65,10 @@ void ContactProblem::set_dirichlet(const std::vector<DirichletValue>& dirichlet)
   for (const auto& d : dirichlet) imposed_.insert({d.node, d.component});
 }
 
-std::vector<LinearRelation> ContactProblem::take_relations() {
-  std::vector<LinearRelation> taken = relations_.relations();
-  relations_ = LinearRelations();
+std::vector<LinearRelation> ContactProblem::take_relations(const std::function<bool(const LinearRelation&)>& which) {
+  std::vector<LinearRelation> taken, kept;
+  for (const LinearRelation& r : relations_.relations()) (!which || which(r) ? taken : kept).push_back(r);
+  relations_ = LinearRelations(std::move(kept));
   return taken;
 }
 

@@ -30,7 +30,7 @@ class ContactProblem final : public ContactHook {
                  std::unique_ptr<Discretisation> discretisation, std::unique_ptr<ContactLaw> law);
 
   void set_dirichlet(const std::vector<DirichletValue>& dirichlet) override;
-  std::vector<LinearRelation> take_relations() override;
+  std::vector<LinearRelation> take_relations(const std::function<bool(const LinearRelation&)>& which = {}) override;
   void add_dofs(DofMap& dofs) override;
   void share_among_ranks(const std::vector<char>& owned_nodes) override;
   void begin_step(const Vector& u, const Log& log) override;

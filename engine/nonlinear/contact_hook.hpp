@@ -3,6 +3,7 @@
 /// Implemented in engine/contact (contact_problem.hpp); the driver knows no
 /// contact method, only this interface.
 #include <array>
+#include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -53,8 +54,12 @@ class ContactHook {
   /// Hands over the linear relations the hook's discretisation puts between displacement
   /// components (discrete contact's QUAD8 mid-side ties), once, before set_dirichlet: the run's
   /// relation facility then holds them beside the deck's (and may solve each for one unknown:
-  /// ELIM_LAGR), and the hook keeps none. Empty: none, or none to hand.
-  virtual std::vector<LinearRelation> take_relations() { return {}; }
+  /// ELIM_LAGR), and the hook keeps none of them. Empty: none, or none to hand.
+  /// `which`, when given, picks the relations to hand over; the hook keeps the others.
+  virtual std::vector<LinearRelation> take_relations(const std::function<bool(const LinearRelation&)>& which = {}) {
+    (void)which;
+    return {};
+  }
   /// Adds contact unknowns (LAGS_C ...) to the numbering, once, before any step.
   virtual void add_dofs(DofMap& dofs) = 0;
   /// A model shared among the ranks of an MPI run, once after add_dofs: `owned_nodes` flags,

@@ -390,7 +390,7 @@ class RelationsHook final : public ContactHook {
           << (eliminate_ ? " (once the relations before it are solved for their unknowns)" : "")
           << ", and their imposed values contradict it at t = " << t_ << ": its terms sum to " << lhs
           << ", its right-hand side is " << rhs
-          << "; remove the relation, or one of the imposed values it relates";
+          << "; change one of the imposed values it relates, or remove the relation if the deck wrote it";
       throw DeckError(msg.str());
     }
   }

@@ -3,7 +3,7 @@
 -- second, it leaves DX(C10) - DX(C00) = 0.1 between two unknowns DDL_IMPO holds at 0: the
 -- relations and the imposed values contradict each other. The elimination used to drop the
 -- second relation without a word (DX(C11) = 0, the relation not met).
--- EXPECT_ERROR: liaison_ddl_eliminated_contradiction\.lua:20: STAT_NON_LINE: LIAISON_DDL\[2\] of CHARGE 'CH' relates imposed unknowns only \(once the relations before it are solved for their unknowns\), and their imposed values contradict it at t = 1: its terms sum to 0, its right-hand side is 0\.1; remove the relation, or one of the imposed values it relates
+-- EXPECT_ERROR: liaison_ddl_eliminated_contradiction\.lua:20: STAT_NON_LINE: LIAISON_DDL\[2\] of CHARGE 'CH' relates imposed unknowns only \(once the relations before it are solved for their unknowns\), and their imposed values contradict it at t = 1: its terms sum to 0, its right-hand side is 0\.1; change one of the imposed values it relates, or remove the relation if the deck wrote it
 -- EXPECT_STATUS: 2
 DEBUT()
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = '../meshes/patch_quad4.med' }

@@ -2,7 +2,7 @@
 -- where DDL_IMPO holds both at DX = 0: no unknown is left to satisfy it and the imposed values
 -- contradict it (0 against 0.1). With a multiplier (ELIM_LAGR = 'NON', the default) such a
 -- relation gets none and used to be dropped without a word.
--- EXPECT_ERROR: liaison_ddl_imposed_contradiction\.lua:17: STAT_NON_LINE: LIAISON_DDL\[1\] of CHARGE 'CH' relates imposed unknowns only, and their imposed values contradict it at t = 1: its terms sum to 0, its right-hand side is 0\.1; remove the relation, or one of the imposed values it relates
+-- EXPECT_ERROR: liaison_ddl_imposed_contradiction\.lua:17: STAT_NON_LINE: LIAISON_DDL\[1\] of CHARGE 'CH' relates imposed unknowns only, and their imposed values contradict it at t = 1: its terms sum to 0, its right-hand side is 0\.1; change one of the imposed values it relates, or remove the relation if the deck wrote it
 -- EXPECT_STATUS: 2
 DEBUT()
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = '../meshes/patch_quad4.med' }

@@ -109,4 +109,17 @@ TEST(MidSideTie, LinearFacesAreNotTied) {
   EXPECT_EQ(hook->matrix_kind(), MatrixKind::SymmetricPositiveDefinite);
 }
 
+TEST(MidSideTie, TheHookHandsOverTheTiesAskedForAndKeepsTheOthers) {
+  const Mesh mesh = load("ssnp121d");
+  auto hook = hook_for(discrete(mesh, ContactMethod::DiscreteLagrange), mesh);
+  const auto taken = hook->take_relations([](const LinearRelation& r) { return r.terms[0].component == DX; });
+  EXPECT_EQ(taken.size(), 80u);
+  for (const auto& r : taken) EXPECT_EQ(r.label.rfind("discrete contact's tie of QUAD8 mid-side node N", 0), 0u) << r.label;
+  const auto& kept = problem(hook).relations().relations();
+  ASSERT_EQ(kept.size(), 160u);
+  for (const auto& r : kept) EXPECT_NE(r.terms[0].component, DX);
+  EXPECT_EQ(hook->take_relations().size(), 160u);  // no choice: all that is left
+  EXPECT_TRUE(problem(hook).relations().relations().empty());
+}
+
 }  // namespace
