@@ -263,8 +263,8 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
   std::vector<engine::LinearRelation> relations = loads.relations;
   size_t n_ties = 0;
   if (hook) {
-    std::vector<engine::LinearRelation> ties =
-        hook->take_relations([&](const engine::LinearRelation& r) { return eliminate || engine::imposed_only(r, imposed); });
+    std::vector<engine::LinearRelation> ties = hook->take_relations(
+        [&](const engine::LinearRelation& r) { return eliminate || engine::imposed_only(r, imposed); });
     n_ties = ties.size();
     relations.insert(relations.end(), ties.begin(), ties.end());
   }

@@ -114,7 +114,8 @@ TEST(MidSideTie, TheHookHandsOverTheTiesAskedForAndKeepsTheOthers) {
   auto hook = hook_for(discrete(mesh, ContactMethod::DiscreteLagrange), mesh);
   const auto taken = hook->take_relations([](const LinearRelation& r) { return r.terms[0].component == DX; });
   EXPECT_EQ(taken.size(), 80u);
-  for (const auto& r : taken) EXPECT_EQ(r.label.rfind("discrete contact's tie of QUAD8 mid-side node N", 0), 0u) << r.label;
+  for (const auto& r : taken)
+    EXPECT_EQ(r.label.rfind("discrete contact's tie of QUAD8 mid-side node N", 0), 0u) << r.label;
   const auto& kept = problem(hook).relations().relations();
   ASSERT_EQ(kept.size(), 160u);
   for (const auto& r : kept) EXPECT_NE(r.terms[0].component, DX);
