@@ -181,8 +181,7 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                     "SANS none (RESI_RELA then judges the solve straight from the factors); MINI "
                                     "one step at most, with AUTO's stop; FORCE up to 10 steps, each kept while it "
                                     "lowers the residual, backward stable or not. The instant's log line says "
-                                    "how many steps were taken. Applies to every direct solve of the run, "
-                                    "whichever backend factorises (CHOLMOD for an SPD system)")
+                                    "how many steps were taken. Applies to every direct solve of the run")
                                    .into_values({"AUTO", "SANS", "MINI", "FORCE"})
                                    .def("AUTO"),
                                elim_lagr({"OUI", "NON", "LAGR2"}, "LAGR2"),

@@ -92,7 +92,7 @@ void read_petsc(const Args& solveur, engine::IterativeSettings& settings) {
 
 /// SOLVEUR NPREC and STOP_SINGULIER (the factorising methods), RENUM (the fill-reducing
 /// ordering, by code_aster's names for each METHODE) and, for MUMPS, GESTION_MEMOIRE,
-/// MATR_DISTRIBUEE, PCENT_PIVOT, RESI_RELA and POSTTRAITEMENTS.
+/// MATR_DISTRIBUEE, PCENT_PIVOT, RESI_RELA, PRETRAITEMENTS and POSTTRAITEMENTS.
 void read_direct_solver(const Args& solveur, engine::NewtonOptions& options) {
   using O = engine::FactorOrdering;
   const std::string methode = solveur.text("METHODE");
