@@ -268,6 +268,9 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     n_ties = ties.size();
     relations.insert(relations.end(), ties.begin(), ties.end());
   }
+  if (eliminate && relations.empty())
+    session.log().info("  SOLVEUR ELIM_LAGR = 'OUI': no linear relation to solve for one of its unknowns (DDL_IMPO "
+                       "conditions are eliminated whatever ELIM_LAGR says; contact treats its multipliers its own way)");
   if (!relations.empty()) {
     if (eliminate && contact && contact->method == engine::ContactMethod::MortarLagrange)
       throw solveur.error("ELIM_LAGR", "'NON' with mortar contact (ALGO_CONT = 'LAGRANGIEN'), which eliminates "
