@@ -164,6 +164,16 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                     "beyond one machine")
                                    .into_values({"OUI", "NON"})
                                    .def("OUI"),
+                               text("TYPE_RESOL",
+                                    "MUMPS's factorisation: AUTO by the system (LDL^T without pivoting for a "
+                                    "positive definite one, with pivoting for a symmetric indefinite one: contact "
+                                    "or relation multipliers, LU otherwise); NONSYM an LU of every entry (about "
+                                    "twice the factor memory); SYMGEN LDL^T with pivoting whatever the system "
+                                    "(refused for a system that is not symmetric); SYMDEF LDL^T without pivoting "
+                                    "(refused for a system that is not positive definite). The log names the "
+                                    "factorisation used when TYPE_RESOL is given")
+                                   .into_values({"AUTO", "NONSYM", "SYMGEN", "SYMDEF"})
+                                   .def("AUTO"),
                                text("PRETRAITEMENTS",
                                     "What MUMPS does to the matrix before factorising it: AUTO its own choice of "
                                     "scaling and of permutations towards a heavy diagonal (ICNTL(6), (8), (12) "

@@ -112,6 +112,12 @@ void say_in_keywords(Error& err) {
         if (h.rfind("this reader reads MED files", 0) == 0) h = "LIRE_MAILLAGE reads MED files; use FORMAT='GMSH' for .msh";
       break;
   }
+  for (auto& h : hints) {  // TYPE_RESOL asked for a factorisation the system cannot take
+    if (h.rfind("ask for a symmetric indefinite or general factorisation", 0) == 0)
+      h = "use SOLVEUR TYPE_RESOL='SYMGEN' or 'NONSYM', or 'AUTO' (the default: by the system)";
+    else if (h.rfind("ask for a general (LU) factorisation", 0) == 0)
+      h = "use SOLVEUR TYPE_RESOL='NONSYM', or 'AUTO' (the default: by the system)";
+  }
   for (auto& h : hints)  // whatever the failure: a pivot test of a matrix MUMPS did not scale
     if (h.rfind("the matrix was factorised as assembled", 0) == 0)
       h = "the matrix was factorised as assembled (SOLVEUR PRETRAITEMENTS='SANS'), so NPREC tested its pivots "

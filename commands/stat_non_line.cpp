@@ -52,7 +52,7 @@ std::vector<double> instants(const Args& inc, engine::NewtonOptions& options) {
 /// <deck>_converged.rmed in the output folder (the deck stops, exit 3, so the
 /// concept itself is never assigned) and the error says where they are.
 void save_converged_steps(const std::vector<engine::ResultStep>& steps, const engine::Mesh& mesh, Session& session,
-                          SolveError& err) {
+                          Error& err) {
   if (steps.size() < 2) return;  // only the initial state
   const auto path = session.output_file(session.deck_path.stem().string() + "_converged.rmed");
   try {
@@ -92,7 +92,7 @@ void read_petsc(const Args& solveur, engine::IterativeSettings& settings) {
 
 /// SOLVEUR NPREC and STOP_SINGULIER (the factorising methods), RENUM (the fill-reducing
 /// ordering, by code_aster's names for each METHODE) and, for MUMPS, GESTION_MEMOIRE,
-/// MATR_DISTRIBUEE, PCENT_PIVOT, RESI_RELA, PRETRAITEMENTS and POSTTRAITEMENTS.
+/// MATR_DISTRIBUEE, PCENT_PIVOT, RESI_RELA, PRETRAITEMENTS, POSTTRAITEMENTS and TYPE_RESOL.
 void read_direct_solver(const Args& solveur, engine::NewtonOptions& options) {
   using O = engine::FactorOrdering;
   const std::string methode = solveur.text("METHODE");
@@ -121,6 +121,11 @@ void read_direct_solver(const Args& solveur, engine::NewtonOptions& options) {
   const std::string post = solveur.text("POSTTRAITEMENTS");
   options.refinement = post == "SANS" ? R::None : post == "MINI" ? R::Once : post == "FORCE" ? R::Force : R::Auto;
   options.preprocessing = solveur.text("PRETRAITEMENTS") == "AUTO";
+  const std::string type = solveur.text("TYPE_RESOL");
+  options.factorisation_by_kind = type == "AUTO";
+  options.factorisation = type == "NONSYM"   ? engine::MatrixKind::General
+                          : type == "SYMDEF" ? engine::MatrixKind::SymmetricPositiveDefinite
+                                             : engine::MatrixKind::SymmetricIndefinite;
   const std::string renum = solveur.text("RENUM");
   options.ordering = renum == "METIS" ? O::Metis
                      : renum == "AMD" ? O::Amd
@@ -314,6 +319,10 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
         err.add_hint("NEWTON: REAC_ITER = " + std::to_string(options.reac_iter) +
                      " reuses the factorisation between iterations (a modified Newton, slower to converge); "
                      "REAC_ITER = 1 refactorises at every iteration");
+      save_converged_steps(solver.converged_steps(), *model.mesh, session, err);
+      throw;
+    } catch (DeckError& err) {  // a choice of the deck the system turned out not to allow
+      say_in_keywords(err);
       save_converged_steps(solver.converged_steps(), *model.mesh, session, err);
       throw;
     }

@@ -4,7 +4,8 @@
 -- PCENT_PIVOT = 50 (MUMPS's working space: the analysis's estimate + 50 %, which the log states),
 -- PRETRAITEMENTS = 'SANS' (no scaling nor permutation before the analysis; NPREC = -1, as the
 -- unscaled pivots of the contact multipliers would fail the null-pivot test) and POSTTRAITEMENTS =
--- 'FORCE' (iterative refinement until a step gains nothing);
+-- 'FORCE' (iterative refinement until a step gains nothing), TYPE_RESOL = 'NONSYM' (an LU of the
+-- symmetric systems) and 'SYMGEN' (LDL^T with pivoting, also of the SPD one);
 -- METHODE='MULT_FRONT' with RENUM METIS, MD, MDA; METHODE='LDLT' with RENUM RCMK (reverse
 -- Cuthill-McKee) and SANS (no reordering). The log names the ordering used and says when the
 -- factors are out of core.
@@ -23,7 +24,8 @@
 -- Solvers.CholmodAndUmfpackTakeTheOrderingAskedFor, Solvers.ReverseCuthillMckee* and
 -- Solvers.MumpsOutOfCoreAgreesWithInCore; PCENT_PIVOT's allocation by
 -- Solvers.MumpsWorkspaceRelaxationIsAllocatedAndSaid; what PRETRAITEMENTS changes by
--- Singularity.MumpsWithoutPreprocessingTestsPivotsAsAssembled, POSTTRAITEMENTS's steps by
+-- Singularity.MumpsWithoutPreprocessingTestsPivotsAsAssembled, TYPE_RESOL's factorisations by
+-- Solvers.MumpsFactorisesAsAskedWhereTheSystemAllowsIt, POSTTRAITEMENTS's steps by
 -- tests/decks/mumps_posttraitements.lua.
 -- Reference: analytical.
 -- Runtime label: fast, 3D, contact, solver.
@@ -38,6 +40,7 @@ local others = {
   { METHODE = 'MUMPS', GESTION_MEMOIRE = 'IN_CORE' }, { METHODE = 'MUMPS', GESTION_MEMOIRE = 'OUT_OF_CORE' },
   { METHODE = 'MUMPS', GESTION_MEMOIRE = 'AUTO' }, { METHODE = 'MUMPS', PCENT_PIVOT = 50 },
   { METHODE = 'MUMPS', PRETRAITEMENTS = 'SANS', NPREC = -1 }, { METHODE = 'MUMPS', POSTTRAITEMENTS = 'FORCE' },
+  { METHODE = 'MUMPS', TYPE_RESOL = 'NONSYM' }, { METHODE = 'MUMPS', TYPE_RESOL = 'SYMGEN' },
   { METHODE = 'MULT_FRONT', RENUM = 'METIS' }, { METHODE = 'MULT_FRONT', RENUM = 'MD' },
   { METHODE = 'MULT_FRONT', RENUM = 'MDA' }, { METHODE = 'LDLT', RENUM = 'RCMK' }, { METHODE = 'LDLT', RENUM = 'SANS' },
 }
@@ -47,7 +50,8 @@ local function label(s)
          (s.PCENT_PIVOT and ' PCENT_PIVOT=' .. s.PCENT_PIVOT or '') ..
          (s.PRETRAITEMENTS and ' PRETRAITEMENTS=' .. s.PRETRAITEMENTS or '') ..
          (s.NPREC and ' NPREC=' .. s.NPREC or '') ..
-         (s.POSTTRAITEMENTS and ' POSTTRAITEMENTS=' .. s.POSTTRAITEMENTS or '')
+         (s.POSTTRAITEMENTS and ' POSTTRAITEMENTS=' .. s.POSTTRAITEMENTS or '') ..
+         (s.TYPE_RESOL and ' TYPE_RESOL=' .. s.TYPE_RESOL or '')
 end
 
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'meshes/glued3d_hexa20.med' }

@@ -1109,6 +1109,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         backend_solver->set_memory(options_.memory);
         backend_solver->set_workspace_relaxation(options_.workspace_relaxation);
         backend_solver->set_preprocessing(options_.preprocessing);
+        backend_solver->set_factorisation(options_.factorisation, options_.factorisation_by_kind);
         backend_solver->set_singularity_test(options_.singularity);
       }
       LinearSolver* const solver = via_interface ? interface_.get() : backend_solver.get();
@@ -1194,6 +1195,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         };
         if (options_.ordering != FactorOrdering::Auto)
           say_once("  " + solver->name() + " ordering: " + solver->ordering_used(), ordering_logged_);
+        if (const std::string f = solver->factorisation_used(); !f.empty())
+          say_once("  " + solver->name() + " factorisation: " + f, factorisation_logged_);
         if (const std::string analysis = solver->analysis_note(); !analysis.empty() && analysis != analysis_logged_)
           log_.debug("  " + analysis);
         analysis_logged_ = solver->analysis_note();

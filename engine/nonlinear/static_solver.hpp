@@ -66,6 +66,10 @@ struct NewtonOptions {
   /// MUMPS's automatic scaling and permutations of the matrix before its analysis (code_aster's
   /// SOLVEUR PRETRAITEMENTS = 'AUTO'); false: the matrix as assembled ('SANS').
   bool preprocessing = true;
+  /// The factorisation MUMPS uses (code_aster's SOLVEUR TYPE_RESOL): by the matrix's kind when
+  /// `factorisation_by_kind`, else `factorisation` (see LinearSolver::set_factorisation).
+  bool factorisation_by_kind = true;
+  MatrixKind factorisation = MatrixKind::SymmetricIndefinite;
   /// Print each Krylov iteration's residual in the log (code_aster's INFO=2).
   bool krylov_history = false;
   int subdivide_levels = 0;  ///< on a Newton failure, split the step this many times at most
@@ -230,6 +234,7 @@ class StaticSolver {
   std::unique_ptr<InterfaceSolver> interface_;
   int interface_use_ = 0;
   std::string ordering_logged_;  ///< the last ordering line of the log (an ordering asked for)
+  std::string factorisation_logged_;  ///< the last factorisation line of the log (one asked for)
   std::string memory_logged_;    ///< the last line of the log on where the factors are
   std::string analysis_logged_;  ///< the last symbolic analysis said in the log (verbosity 2)
   long interface_reference_ = -1;  ///< elastic generation of the factorised reference

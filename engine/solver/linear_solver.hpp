@@ -147,6 +147,15 @@ class LinearSolver {
   /// the backend sees fit (MUMPS's automatic ICNTL(6), (8), (12); code_aster's PRETRAITEMENTS
   /// = 'AUTO', the default) or leave it as assembled ('SANS'). The other backends keep theirs.
   virtual void set_preprocessing(bool /*automatic*/) {}
+  /// The factorisation the next ones use whatever the matrix's kind (MUMPS; code_aster's
+  /// TYPE_RESOL): Auto by the kind; General an LU of every entry; SymmetricIndefinite an LDL^T
+  /// with pivoting (refused for a matrix that is not symmetric); SymmetricPositiveDefinite an
+  /// LDL^T without pivoting (refused for a matrix that is not known positive definite). The
+  /// other backends factorise by the kind.
+  virtual void set_factorisation(MatrixKind /*kind*/, bool /*automatic*/) {}
+  /// The factorisation the last one used, when it was asked for ("LU", "LDL^T with pivoting",
+  /// "LDL^T"); empty otherwise.
+  virtual std::string factorisation_used() const { return {}; }
   /// Which pivots the next factorisations call singular, and whether that stops them (the
   /// direct backends; UMFPACK and PETSc keep their own tests).
   virtual void set_singularity_test(SingularityTest /*test*/) {}

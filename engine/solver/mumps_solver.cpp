@@ -88,6 +88,11 @@ class MumpsSolver final : public LinearSolver {
   void set_memory(FactorMemory memory) override { memory_ = memory; }
   void set_workspace_relaxation(int percent) override { relaxation_ = percent; }
   void set_preprocessing(bool automatic) override { preprocessing_ = automatic; }
+  void set_factorisation(MatrixKind kind, bool automatic) override { forced_ = automatic ? -1 : static_cast<int>(kind); }
+  std::string factorisation_used() const override {
+    if (forced_ < 0 || !initialised_) return {};
+    return id_.sym == 0 ? "LU (SYM = 0)" : id_.sym == 2 ? "LDL^T with pivoting (SYM = 2)" : "LDL^T (SYM = 1)";
+  }
   std::string memory_used() const override { return memory_note_; }
   bool takes_distributed() const override { return true; }
   void set_singularity_test(SingularityTest test) override { test_ = test; }
@@ -154,6 +159,7 @@ class MumpsSolver final : public LinearSolver {
   FactorMemory memory_ = FactorMemory::Auto;
   int relaxation_ = 0;       ///< ICNTL(14) for the next analyses; 0: MUMPS's default
   bool preprocessing_ = true;  ///< MUMPS's automatic scaling and permutations; false: none
+  int forced_ = -1;            ///< the MatrixKind whose factorisation was asked for; -1: by the matrix's
   std::string memory_note_;  ///< memory_used() of the last analysis
 };
 
@@ -242,6 +248,21 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   failed_ = -1;
   LUNASTER_ASSERT(a.rows() == a.cols(), "MUMPS: matrix is not square");
   int sym = kind == MatrixKind::SymmetricPositiveDefinite ? 1 : (kind == MatrixKind::SymmetricIndefinite ? 2 : 0);
+  if (forced_ >= 0) {  // TYPE_RESOL: the factorisation asked for, where the matrix allows it
+    const auto asked = static_cast<MatrixKind>(forced_);
+    if (asked == MatrixKind::General) {
+      sym = 0;
+    } else if (kind == MatrixKind::General) {
+      throw DeckError("MUMPS: a symmetric factorisation was asked for a system that is not symmetric",
+                      {"ask for a general (LU) factorisation, or let the system's kind choose"});
+    } else if (asked == MatrixKind::SymmetricIndefinite) {
+      sym = 2;
+    } else if (kind != MatrixKind::SymmetricPositiveDefinite) {
+      throw DeckError("MUMPS: a positive definite factorisation (LDL^T without pivoting) was asked for a symmetric "
+                      "indefinite system (contact or relation multipliers)",
+                      {"ask for a symmetric indefinite or general factorisation, or let the system's kind choose"});
+    }
+  }
   // Going on past null pivots needs them detected and set aside, which SYM = 1 does not do
   // (its round-off pivot along a free body's motion would move it by 1e13): an SPD system is
   // then factorised as symmetric indefinite.

@@ -530,6 +530,37 @@ TEST(Singularity, CholmodHandsAPivotItCannotTakeToMumpsWhenToldToGoOn) {
   check_solution(regular, s->solve(rhs(20)), "CHOLMOD after MUMPS");
 }
 
+// TYPE_RESOL: MUMPS factorises as asked where the system allows it (an LU of a symmetric
+// system, LDL^T with pivoting of a positive definite one) and says which; a factorisation the
+// system cannot take (LDL^T without pivoting of an indefinite system, a symmetric one of a
+// general system) is the deck's error, not a singular matrix.
+TEST(Solvers, MumpsFactorisesAsAskedWhereTheSystemAllowsIt) {
+  const SparseMatrix spd = spd_matrix(20);
+  const SparseMatrix shift = 3.0 * SparseMatrix(Eigen::VectorXd::Ones(10).asDiagonal());
+  const SparseMatrix indefinite = chain_with_soft_link(10, 1.0) - shift;
+  struct Case { MatrixKind asked; MatrixKind kind; const SparseMatrix* a; const char* said; };
+  for (const Case& c : {Case{MatrixKind::General, MatrixKind::SymmetricPositiveDefinite, &spd, "LU (SYM = 0)"},
+                        Case{MatrixKind::SymmetricIndefinite, MatrixKind::SymmetricPositiveDefinite, &spd,
+                             "LDL^T with pivoting (SYM = 2)"},
+                        Case{MatrixKind::General, MatrixKind::SymmetricIndefinite, &indefinite, "LU (SYM = 0)"}}) {
+    auto m = make_linear_solver(SolverKind::Mumps);
+    EXPECT_TRUE(m->factorisation_used().empty());
+    m->set_factorisation(c.asked, false);
+    m->factorize(*c.a, c.kind);
+    EXPECT_EQ(m->factorisation_used(), c.said);
+    const Vector b = rhs(static_cast<int>(c.a->rows()));
+    EXPECT_LT((*c.a * m->solve(b) - b).norm() / b.norm(), 1e-12) << c.said;
+  }
+  auto m = make_linear_solver(SolverKind::Mumps);
+  m->set_factorisation(MatrixKind::SymmetricPositiveDefinite, false);
+  EXPECT_THROW(m->factorize(indefinite, MatrixKind::SymmetricIndefinite), DeckError);
+  m->set_factorisation(MatrixKind::SymmetricIndefinite, false);
+  EXPECT_THROW(m->factorize(spd, MatrixKind::General), DeckError);
+  m->set_factorisation(MatrixKind::General, true);  // by the kind again: said by no one
+  m->factorize(spd, MatrixKind::SymmetricPositiveDefinite);
+  EXPECT_TRUE(m->factorisation_used().empty());
+}
+
 // PRETRAITEMENTS: MUMPS's null-pivot test (NPREC) looks at its scaled matrix, so that a pivot
 // near 1e-9 of the matrix's scale is null below 1e-8 in any units (the test above). Without
 // preprocessing ('SANS') the pivots are compared as assembled: in units of 2e6 the soft link's
