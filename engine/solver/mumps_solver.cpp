@@ -88,7 +88,9 @@ class MumpsSolver final : public LinearSolver {
   void set_memory(FactorMemory memory) override { memory_ = memory; }
   void set_workspace_relaxation(int percent) override { relaxation_ = percent; }
   void set_preprocessing(bool automatic) override { preprocessing_ = automatic; }
-  void set_factorisation(MatrixKind kind, bool automatic) override { forced_ = automatic ? -1 : static_cast<int>(kind); }
+  void set_factorisation(MatrixKind kind, bool automatic) override {
+    forced_ = automatic ? -1 : static_cast<int>(kind);
+  }
   std::string factorisation_used() const override {
     if (forced_ < 0 || !initialised_) return {};
     return id_.sym == 0 ? "LU (SYM = 0)" : id_.sym == 2 ? "LDL^T with pivoting (SYM = 2)" : "LDL^T (SYM = 1)";
