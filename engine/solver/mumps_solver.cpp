@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <dmumps_c.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -89,10 +90,10 @@ class MumpsSolver final : public LinearSolver {
   void set_workspace_relaxation(int percent) override { relaxation_ = percent; }
   void set_preprocessing(bool automatic) override { preprocessing_ = automatic; }
   void set_factorisation(MatrixKind kind, bool automatic) override {
-    forced_ = automatic ? -1 : static_cast<int>(kind);
+    forced_ = automatic ? std::nullopt : std::optional<MatrixKind>(kind);
   }
   std::string factorisation_used() const override {
-    if (forced_ < 0 || !initialised_) return {};
+    if (!forced_ || !initialised_) return {};
     return id_.sym == 0 ? "LU (SYM = 0)" : id_.sym == 2 ? "LDL^T with pivoting (SYM = 2)" : "LDL^T (SYM = 1)";
   }
   std::string memory_used() const override { return memory_note_; }
@@ -161,7 +162,7 @@ class MumpsSolver final : public LinearSolver {
   FactorMemory memory_ = FactorMemory::Auto;
   int relaxation_ = 0;       ///< ICNTL(14) for the next analyses; 0: MUMPS's default
   bool preprocessing_ = true;  ///< MUMPS's automatic scaling and permutations; false: none
-  int forced_ = -1;            ///< the MatrixKind whose factorisation was asked for; -1: by the matrix's
+  std::optional<MatrixKind> forced_;  ///< the kind whose factorisation was asked for; none: the matrix's
   std::string memory_note_;  ///< memory_used() of the last analysis
 };
 
@@ -250,8 +251,8 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   failed_ = -1;
   LUNASTER_ASSERT(a.rows() == a.cols(), "MUMPS: matrix is not square");
   int sym = kind == MatrixKind::SymmetricPositiveDefinite ? 1 : (kind == MatrixKind::SymmetricIndefinite ? 2 : 0);
-  if (forced_ >= 0) {  // TYPE_RESOL: the factorisation asked for, where the matrix allows it
-    const auto asked = static_cast<MatrixKind>(forced_);
+  if (forced_) {  // TYPE_RESOL: the factorisation asked for, where the matrix allows it
+    const MatrixKind asked = *forced_;
     if (asked == MatrixKind::General) {
       sym = 0;
     } else if (kind == MatrixKind::General) {
