@@ -112,17 +112,16 @@ void say_in_keywords(Error& err) {
         if (h.rfind("this reader reads MED files", 0) == 0) h = "LIRE_MAILLAGE reads MED files; use FORMAT='GMSH' for .msh";
       break;
   }
-  for (auto& h : hints) {  // TYPE_RESOL asked for a factorisation the system cannot take
+  for (auto& h : hints) {  // whatever the failure: MUMPS settings (TYPE_RESOL, PRETRAITEMENTS) the system did not fit
     if (h.rfind("ask for a symmetric indefinite or general factorisation", 0) == 0)
       h = "use SOLVEUR TYPE_RESOL='SYMGEN' or 'NONSYM', or 'AUTO' (the default: by the system)";
     else if (h.rfind("ask for a general (LU) factorisation", 0) == 0)
       h = "use SOLVEUR TYPE_RESOL='NONSYM', or 'AUTO' (the default: by the system)";
-  }
-  for (auto& h : hints)  // whatever the failure: a pivot test of a matrix MUMPS did not scale
-    if (h.rfind("the matrix was factorised as assembled", 0) == 0)
+    else if (h.rfind("the matrix was factorised as assembled", 0) == 0)
       h = "the matrix was factorised as assembled (SOLVEUR PRETRAITEMENTS='SANS'), so NPREC tested its pivots "
           "unscaled: a multiplier's pivot, small in absolute terms, counts as null; use PRETRAITEMENTS='AUTO' (the "
           "default), or NPREC=-1 to turn the test off";
+  }
   if (f.residuals_known)
     for (auto& h : hints) h = residual_keywords(h);
   for (auto& h : hints) h = step_keywords(h);

@@ -275,7 +275,8 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
   }
   if (eliminate && relations.empty())
     session.log().info("  SOLVEUR ELIM_LAGR = 'OUI': no linear relation to solve for one of its unknowns (DDL_IMPO "
-                       "conditions are eliminated whatever ELIM_LAGR says; contact treats its multipliers its own way)");
+                       "conditions are eliminated whatever ELIM_LAGR says; contact treats its multipliers its own "
+                       "way)");
   if (!relations.empty()) {
     if (eliminate && contact && contact->method == engine::ContactMethod::MortarLagrange)
       throw solveur.error("ELIM_LAGR", "'NON' with mortar contact (ALGO_CONT = 'LAGRANGIEN'), which eliminates "
@@ -313,16 +314,14 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     Session::Timer timer(session, "solve");
     try {
       result->steps = solver.run(times);
-    } catch (SolveError& err) {
+    } catch (Error& err) {
+      // A failed solve, or a choice of the deck the system turned out not to allow (TYPE_RESOL).
+      if (!dynamic_cast<SolveError*>(&err) && !dynamic_cast<DeckError*>(&err)) throw;
       say_in_keywords(err);
       if (dynamic_cast<engine::ConvergenceError*>(&err) && options.reac_iter != 1)
         err.add_hint("NEWTON: REAC_ITER = " + std::to_string(options.reac_iter) +
                      " reuses the factorisation between iterations (a modified Newton, slower to converge); "
                      "REAC_ITER = 1 refactorises at every iteration");
-      save_converged_steps(solver.converged_steps(), *model.mesh, session, err);
-      throw;
-    } catch (DeckError& err) {  // a choice of the deck the system turned out not to allow
-      say_in_keywords(err);
       save_converged_steps(solver.converged_steps(), *model.mesh, session, err);
       throw;
     }
