@@ -185,13 +185,14 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                    .def("AUTO"),
                                text("POSTTRAITEMENTS",
                                     "Iterative refinement of each solve (x += A^-1 (b - A x) on the same "
-                                    "factors): AUTO up to 3 steps, until the solve is backward stable row by row "
-                                    "(|A x - b| <= 1e-14 (|A| |x| + |b|) in every row; on a model shared among MPI "
-                                    "ranks, until the relative residual is under 1e-10) or a step gains nothing; "
-                                    "SANS none (RESI_RELA then judges the solve straight from the factors); MINI "
-                                    "one step at most, with AUTO's stop; FORCE up to 10 steps, each kept while it "
-                                    "lowers the residual, backward stable or not. The instant's log line says "
-                                    "how many steps were taken. Applies to every direct solve of the run")
+                                    "factors), with code_aster's MUMPS settings: AUTO up to 4 steps, until the "
+                                    "solve is backward stable row by row (|A x - b| <= 1e-14 (|A| |x| + |b|) in "
+                                    "every row; on a model shared among MPI ranks, until the relative residual "
+                                    "is under 1e-10); SANS none (RESI_RELA then judges the solve straight from "
+                                    "the factors); MINI two steps, backward stable or not; FORCE up to 10 steps, "
+                                    "backward stable or not. A step that does not lower the residual ends the "
+                                    "refinement. The instant's log line says how many steps were taken. Applies "
+                                    "to every direct solve of the run")
                                    .into_values({"AUTO", "SANS", "MINI", "FORCE"})
                                    .def("AUTO"),
                                elim_lagr({"OUI", "NON", "LAGR2"}, "LAGR2"),

@@ -119,7 +119,7 @@ void read_direct_solver(const Args& solveur, engine::NewtonOptions& options) {
   if (solveur.has("RESI_RELA")) options.direct_solve_tolerance = solveur.real("RESI_RELA");
   using R = engine::NewtonOptions::Refinement;
   const std::string post = solveur.text("POSTTRAITEMENTS");
-  options.refinement = post == "SANS" ? R::None : post == "MINI" ? R::Once : post == "FORCE" ? R::Force : R::Auto;
+  options.refinement = post == "SANS" ? R::None : post == "MINI" ? R::Two : post == "FORCE" ? R::Force : R::Auto;
   options.preprocessing = solveur.text("PRETRAITEMENTS") == "AUTO";
   const std::string type = solveur.text("TYPE_RESOL");
   options.factorisation_by_kind = type == "AUTO";

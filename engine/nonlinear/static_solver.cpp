@@ -1241,8 +1241,11 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         // their own round-off.
         using R = NewtonOptions::Refinement;
         const R policy = options_.refinement;
-        const int steps = policy == R::None ? 0 : policy == R::Once ? 1 : policy == R::Force ? 10 : 3;
-        const bool stop_when_stable = policy != R::Force;
+        // code_aster's MUMPS settings: AUTO ICNTL(10) = 4 with CNTL(2) = 1e-14 (the backward
+        // error that stops it), MINI ICNTL(10) = -2 (two steps, no test), FORCE ICNTL(10) = 10
+        // with no backward-error stop. A step that does not lower the residual is not kept.
+        const int steps = policy == R::None ? 0 : policy == R::Two ? 2 : policy == R::Force ? 10 : 4;
+        const bool stop_when_stable = policy == R::Auto;
         accuracy = solve_with_refinement(*solver, system_product, -r_free, du, steps,
                                          !stop_when_stable ? 0.0 : whole ? 1e-14 : 1e-10,
                                          whole && stop_when_stable ? &abs_product : nullptr,

@@ -59,10 +59,10 @@ struct NewtonOptions {
   /// residual alone judges. Iterative backends keep their own tolerance.
   double direct_solve_tolerance = 1e-6;
   /// Iterative refinement of the direct solves (code_aster's SOLVEUR POSTTRAITEMENTS of MUMPS).
-  /// Auto: up to 3 steps, until the solve is backward stable row by row (or no step gains);
-  /// None: none; Once: one step at most, with the same stop; Force: up to 10 steps, each kept
-  /// while it lowers the residual, backward stable or not.
-  enum class Refinement { Auto, None, Once, Force } refinement = Refinement::Auto;
+  /// Auto: up to 4 steps, until the solve is backward stable row by row (or no step gains);
+  /// None: none; Two: two steps, backward stable or not; Force: up to 10 steps, backward stable
+  /// or not. A step is kept only while it lowers the residual.
+  enum class Refinement { Auto, None, Two, Force } refinement = Refinement::Auto;
   /// MUMPS's automatic scaling and permutations of the matrix before its analysis (code_aster's
   /// SOLVEUR PRETRAITEMENTS = 'AUTO'); false: the matrix as assembled ('SANS').
   bool preprocessing = true;

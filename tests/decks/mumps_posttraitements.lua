@@ -6,15 +6,15 @@
 -- translated by DY = -0.1 (NPREC = 12, RESI_RELA = -1: no check of the solve itself). The first
 -- solve leaves a relative residual of about 3e-6 that refinement lowers. Three runs:
 --   RSANS: POSTTRAITEMENTS = 'SANS', no refinement (the log line of the instant names no step);
---   RMINI: 'MINI', one step (the log says 1 refinement step);
---   RAUTO: 'AUTO' (code_aster's default), up to 3 steps until the solve is backward stable or a
+--   RMINI: 'MINI', two steps (code_aster's ICNTL(10) = -2; the log says 2 refinement steps);
+--   RAUTO: 'AUTO' (code_aster's default), up to 4 steps until the solve is backward stable or a
 --          step gains nothing (the log says how many).
 -- Then the same assembly with both blocks stiff (a well-conditioned system, solved backward stable
 -- straight from the factors), two runs: 'AUTO' takes no step; 'FORCE' refines all the same, until
 -- a step gains nothing (10 at most).
 -- tests/CMakeLists.txt checks the five log lines in that order (test log.mumps_posttraitements).
 -- Reference: analytical, DY = -0.1 everywhere. What we get, in the run this deck was written
--- from: without refinement 7.6e-6 (MIN over GH) and 1.3e-5 (MAX) off; with one step or more
+-- from: without refinement 7.6e-6 (MIN over GH) and 1.3e-5 (MAX) off; with refinement
 -- 6.1e-6 and 1.1e-5. The tolerance is 1e-4, what the conditioning allows; the well-conditioned
 -- runs are exact to round-off (checked at 1e-10). Units SI.
 DEBUT()
