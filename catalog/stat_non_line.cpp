@@ -195,6 +195,26 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                     "to every direct solve of the run")
                                    .into_values({"AUTO", "SANS", "MINI", "FORCE"})
                                    .def("AUTO"),
+                               text("ACCELERATION",
+                                    "MUMPS's factorisation in full or block low rank, as code_aster runs it on a "
+                                    "public MUMPS: AUTO and FR in full rank; LR in block low rank (ICNTL(35) = 1): "
+                                    "the off-diagonal blocks of the large fronts keep the rank their singular "
+                                    "values leave above LOW_RANK_SEUIL, which makes the factors approximate to "
+                                    "about that threshold (POSTTRAITEMENTS' refinement takes each solve back to "
+                                    "round-off) and can save factor memory and operations on large 3D systems. "
+                                    "The log says how many factor entries the compression kept. FR+, FR++, LR+ "
+                                    "and LR++ add settings of the MUMPS consortium's version, not in Debian's: "
+                                    "they run as FR or LR, and the log says so")
+                                   .into_values({"AUTO", "FR", "FR+", "FR++", "LR", "LR+", "LR++"})
+                                   .def("AUTO"),
+                               real("LOW_RANK_SEUIL",
+                                    "Threshold of the block low-rank factorisation (ACCELERATION = 'LR'; CNTL(7)): "
+                                    "a block's singular values below it are dropped; 0 keeps every one (no "
+                                    "compression, no loss), 1e-9 to 1e-12 are usual. Negative: the same threshold "
+                                    "(its absolute value) with the UCFS variant, compressing before the updates "
+                                    "(ICNTL(36) = 1), as in code_aster. Given beside a full-rank ACCELERATION "
+                                    "it would do nothing: refused")
+                                   .def(0.0),
                                elim_lagr({"OUI", "NON", "LAGR2"}, "LAGR2"),
                                integer("PCENT_PIVOT",
                                        "Working space of MUMPS's factorisation beyond its analysis's estimate, in "

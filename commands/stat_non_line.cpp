@@ -1,5 +1,7 @@
 // STAT_NON_LINE: quasi-static incremental analysis (Newton), with contact.
 #include <algorithm>
+#include <cstdio>
+#include <functional>
 #include <memory>
 #include <set>
 
@@ -92,8 +94,10 @@ void read_petsc(const Args& solveur, engine::IterativeSettings& settings) {
 
 /// SOLVEUR NPREC and STOP_SINGULIER (the factorising methods), RENUM (the fill-reducing
 /// ordering, by code_aster's names for each METHODE) and, for MUMPS, GESTION_MEMOIRE,
-/// MATR_DISTRIBUEE, PCENT_PIVOT, RESI_RELA, PRETRAITEMENTS, POSTTRAITEMENTS and TYPE_RESOL.
-void read_direct_solver(const Args& solveur, engine::NewtonOptions& options) {
+/// MATR_DISTRIBUEE, PCENT_PIVOT, RESI_RELA, PRETRAITEMENTS, POSTTRAITEMENTS, TYPE_RESOL,
+/// ACCELERATION and LOW_RANK_SEUIL. `say` takes the lines the log gets about them.
+void read_direct_solver(const Args& solveur, engine::NewtonOptions& options,
+                        const std::function<void(const std::string&)>& say) {
   using O = engine::FactorOrdering;
   const std::string methode = solveur.text("METHODE");
   if (solveur.has("NPREC")) {  // the methods that factorise (catalogue default 8, code_aster's)
@@ -121,6 +125,24 @@ void read_direct_solver(const Args& solveur, engine::NewtonOptions& options) {
   const std::string post = solveur.text("POSTTRAITEMENTS");
   options.refinement = post == "SANS" ? R::None : post == "MINI" ? R::Two : post == "FORCE" ? R::Force : R::Auto;
   options.preprocessing = solveur.text("PRETRAITEMENTS") == "AUTO";
+  // ACCELERATION as code_aster runs it on a public MUMPS (Debian's 5.5): AUTO and FR in full
+  // rank, LR in block low rank at LOW_RANK_SEUIL; FR+, FR++, LR+ and LR++ add settings of the
+  // MUMPS consortium's version, so code_aster falls back to FR or LR and says so, as here.
+  const std::string acceleration = solveur.text("ACCELERATION");
+  const bool low_rank = acceleration.rfind("LR", 0) == 0;
+  const double threshold = solveur.real("LOW_RANK_SEUIL");
+  if (!low_rank && threshold != 0.0) {
+    char given[32];
+    std::snprintf(given, sizeof given, "%g", threshold);
+    throw solveur.error("LOW_RANK_SEUIL", "0 (its default) with ACCELERATION = '" + acceleration + "' (full rank)",
+                        given,
+                        {"LOW_RANK_SEUIL is the threshold of the block low-rank factorisation: give ACCELERATION "
+                         "= 'LR' beside it, or remove it"});
+  }
+  options.low_rank = {low_rank, threshold};
+  if (acceleration.size() > 2 && acceleration != "AUTO")
+    say("  SOLVEUR ACCELERATION = '" + acceleration + "': its extra settings are the MUMPS consortium's, not in "
+        "Debian's MUMPS; factorising with '" + acceleration.substr(0, 2) + "', as code_aster does with a public MUMPS");
   const std::string type = solveur.text("TYPE_RESOL");
   options.factorisation_by_kind = type == "AUTO";
   options.factorisation = type == "NONSYM"   ? engine::MatrixKind::General
@@ -238,7 +260,7 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
   options.solver = solver_kind(args.factor("SOLVEUR").text("METHODE"));
   options.auto_solver = args.factor("SOLVEUR").text("METHODE") == "AUTO";
   if (options.solver == engine::SolverKind::Petsc) read_petsc(args.factor("SOLVEUR"), options.iterative);
-  read_direct_solver(args.factor("SOLVEUR"), options);
+  read_direct_solver(args.factor("SOLVEUR"), options, [&session](const std::string& line) { session.log().info(line); });
   options.krylov_history = args.integer("INFO") >= 2;
   read_newton(args.factor("NEWTON"), contact != nullptr, options);
   const std::vector<double> times = instants(args.factor("INCREMENT"), options);

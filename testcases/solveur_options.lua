@@ -5,7 +5,10 @@
 -- PRETRAITEMENTS = 'SANS' (no scaling nor permutation before the analysis; NPREC = -1, as the
 -- unscaled pivots of the contact multipliers would fail the null-pivot test) and POSTTRAITEMENTS =
 -- 'FORCE' (iterative refinement until a step gains nothing), TYPE_RESOL = 'NONSYM' (an LU of the
--- symmetric systems) and 'SYMGEN' (LDL^T with pivoting, also of the SPD one);
+-- symmetric systems) and 'SYMGEN' (LDL^T with pivoting, also of the SPD one), ACCELERATION = 'LR'
+-- with LOW_RANK_SEUIL = 1e-9 (block low-rank factors; the log says how many entries they kept)
+-- and 'LR+' with -1e-9 (the UCFS variant; LR+'s consortium settings fall back to LR, as the log
+-- says);
 -- METHODE='MULT_FRONT' with RENUM METIS, MD, MDA; METHODE='LDLT' with RENUM RCMK (reverse
 -- Cuthill-McKee) and SANS (no reordering). The log names the ordering used and says when the
 -- factors are out of core.
@@ -26,7 +29,9 @@
 -- Solvers.MumpsWorkspaceRelaxationIsAllocatedAndSaid; what PRETRAITEMENTS changes by
 -- Singularity.MumpsWithoutPreprocessingTestsPivotsAsAssembled, TYPE_RESOL's factorisations by
 -- Solvers.MumpsFactorisesAsAskedWhereTheSystemAllowsIt, POSTTRAITEMENTS's steps by
--- tests/decks/mumps_posttraitements.lua.
+-- tests/decks/mumps_posttraitements.lua, the low-rank compression by
+-- Solvers.MumpsBlockLowRankCompressesTheFactorsAndRefinementRestoresTheSolve and the log lines of
+-- ACCELERATION by CTest's log.solveur_acceleration.
 -- Reference: analytical.
 -- Runtime label: fast, 3D, contact, solver.
 DEBUT()
@@ -41,6 +46,8 @@ local others = {
   { METHODE = 'MUMPS', GESTION_MEMOIRE = 'AUTO' }, { METHODE = 'MUMPS', PCENT_PIVOT = 50 },
   { METHODE = 'MUMPS', PRETRAITEMENTS = 'SANS', NPREC = -1 }, { METHODE = 'MUMPS', POSTTRAITEMENTS = 'FORCE' },
   { METHODE = 'MUMPS', TYPE_RESOL = 'NONSYM' }, { METHODE = 'MUMPS', TYPE_RESOL = 'SYMGEN' },
+  { METHODE = 'MUMPS', ACCELERATION = 'LR', LOW_RANK_SEUIL = 1.0e-9 },
+  { METHODE = 'MUMPS', ACCELERATION = 'LR+', LOW_RANK_SEUIL = -1.0e-9 },
   { METHODE = 'MULT_FRONT', RENUM = 'METIS' }, { METHODE = 'MULT_FRONT', RENUM = 'MD' },
   { METHODE = 'MULT_FRONT', RENUM = 'MDA' }, { METHODE = 'LDLT', RENUM = 'RCMK' }, { METHODE = 'LDLT', RENUM = 'SANS' },
 }
@@ -51,7 +58,9 @@ local function label(s)
          (s.PRETRAITEMENTS and ' PRETRAITEMENTS=' .. s.PRETRAITEMENTS or '') ..
          (s.NPREC and ' NPREC=' .. s.NPREC or '') ..
          (s.POSTTRAITEMENTS and ' POSTTRAITEMENTS=' .. s.POSTTRAITEMENTS or '') ..
-         (s.TYPE_RESOL and ' TYPE_RESOL=' .. s.TYPE_RESOL or '')
+         (s.TYPE_RESOL and ' TYPE_RESOL=' .. s.TYPE_RESOL or '') ..
+         (s.ACCELERATION and ' ACCELERATION=' .. s.ACCELERATION or '') ..
+         (s.LOW_RANK_SEUIL and ' LOW_RANK_SEUIL=' .. s.LOW_RANK_SEUIL or '')
 end
 
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'meshes/glued3d_hexa20.med' }

@@ -46,6 +46,10 @@ mkdir -p "$m"
 "$gen" --upper quad4:12 --lower quad4:11 --top tria6:5 -o "$m/mortar_two_zones_2d.med"
 "$gen" --v1 hexa8:5x5x2 --v2 hexa20:3x3x2 --v3 penta6:4x4x2 -o "$m/mortar_two_zones_3d.med"
 
+# A unit block of 12^3 HEXA8, fronts large enough for MUMPS's block low-rank compression
+# (testcases/errors/mumps_low_rank_too_coarse.lua)
+"$gen" --block hexa8:12 -o "$m/block_hexa8_12.med"
+
 # Distorted unit blocks for patch tests
 for t in quad4 quad8 tria3 tria6; do
   "$gen" --block "$t:3" --distort 0.2 -o "$m/patch_$t.med"

@@ -1109,6 +1109,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         backend_solver->set_memory(options_.memory);
         backend_solver->set_workspace_relaxation(options_.workspace_relaxation);
         backend_solver->set_preprocessing(options_.preprocessing);
+        backend_solver->set_low_rank(options_.low_rank);
         backend_solver->set_factorisation(options_.factorisation, options_.factorisation_by_kind);
         backend_solver->set_singularity_test(options_.singularity);
       }
@@ -1202,6 +1203,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         analysis_logged_ = solver->analysis_note();
         if (const std::string memory = solver->memory_used(); !memory.empty())
           say_once("  " + solver->name() + " factors: " + memory, memory_logged_);
+        if (const std::string compressed = solver->low_rank_note(); !compressed.empty())
+          say_once("  " + solver->name() + ": " + compressed, low_rank_logged_);
         if (via_interface)
           log_.info("  linear solve: Schur complement of the " + std::to_string(interface_->interface().size()) +
                     " surface equations factorised on the kept elastic factorisation");
@@ -1272,12 +1275,21 @@ void StaticSolver::solve_instant(double t, Vector& u) {
                                                                       : std::numeric_limits<double>::infinity();
       if (!(solve_error <= accepted)) {
         restore_elastic();
-        throw diagnose(
+        SolveError found = diagnose(
             cons,
             SolveError("the linear solver returned no accurate solution (relative residual of the solve " +
                        sci(raw_error) + ", " + sci(solve_error) + " after iterative refinement; accepted below " +
                        sci(accepted) + ")"),
             t);
+        if (options_.low_rank.on && !iterative) {  // the likeliest cause first
+          std::vector<std::string> hints = found.hints();
+          hints.insert(hints.begin(), "the factors were compressed in block low rank (threshold " +
+                                          sci(std::abs(options_.low_rank.threshold)) +
+                                          "), too coarsely for this system: lower the threshold, refine more, or "
+                                          "factorise in full rank");
+          found.set_hints(std::move(hints));
+        }
+        throw found;
       }
       for (int eq = 0; eq < n; ++eq)
         if (cons.free_index[eq] >= 0) u[eq] += du[cons.free_index[eq]];

@@ -66,6 +66,9 @@ struct NewtonOptions {
   /// MUMPS's automatic scaling and permutations of the matrix before its analysis (code_aster's
   /// SOLVEUR PRETRAITEMENTS = 'AUTO'); false: the matrix as assembled ('SANS').
   bool preprocessing = true;
+  /// Block low-rank factors for MUMPS (code_aster's SOLVEUR ACCELERATION = 'LR' and
+  /// LOW_RANK_SEUIL); off: full rank.
+  LowRank low_rank;
   /// The factorisation MUMPS uses (code_aster's SOLVEUR TYPE_RESOL): by the matrix's kind when
   /// `factorisation_by_kind`, else `factorisation` (see LinearSolver::set_factorisation).
   bool factorisation_by_kind = true;
@@ -236,6 +239,7 @@ class StaticSolver {
   std::string ordering_logged_;  ///< the last ordering line of the log (an ordering asked for)
   std::string factorisation_logged_;  ///< the last factorisation line of the log (one asked for)
   std::string memory_logged_;    ///< the last line of the log on where the factors are
+  std::string low_rank_logged_;  ///< the last line of the log on the block low-rank compression
   std::string analysis_logged_;  ///< the last symbolic analysis said in the log (verbosity 2)
   long interface_reference_ = -1;  ///< elastic generation of the factorised reference
   SystemState interface_state_;

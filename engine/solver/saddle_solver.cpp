@@ -156,6 +156,11 @@ class SaddleSolver final : public LinearSolver {
     preprocessing_ = automatic;
     if (direct_) direct_->set_preprocessing(automatic);
   }
+  void set_low_rank(LowRank low_rank) override {
+    low_rank_ = low_rank;
+    if (direct_) direct_->set_low_rank(low_rank);
+  }
+  std::string low_rank_note() const override { return split_ || !direct_ ? std::string() : direct_->low_rank_note(); }
   void set_singularity_test(SingularityTest test) override {
     test_ = test;
     split_data_->schur->set_singularity_test(test);
@@ -189,6 +194,7 @@ class SaddleSolver final : public LinearSolver {
       direct_->set_memory(memory_);
       direct_->set_workspace_relaxation(relaxation_);
       direct_->set_preprocessing(preprocessing_);
+      direct_->set_low_rank(low_rank_);
       direct_->set_singularity_test(test_);
       if (has_layout_) direct_->set_layout(std::move(layout_)), has_layout_ = false;
     }
@@ -314,6 +320,7 @@ class SaddleSolver final : public LinearSolver {
   FactorMemory memory_ = FactorMemory::Auto;
   int relaxation_ = 0;
   bool preprocessing_ = true;
+  LowRank low_rank_;
   SingularityTest test_;
   mutable SystemLayout layout_;  ///< given before the direct backend existed
   mutable bool has_layout_ = false;
