@@ -215,6 +215,16 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                     "(ICNTL(36) = 1), as in code_aster. Given beside a full-rank ACCELERATION "
                                     "it would do nothing: refused")
                                    .def(0.0),
+                               text("MIXER_PRECISION",
+                                    "OUI: MUMPS factorises in single precision (half the factor memory, fewer "
+                                    "bytes moved), and the iterative refinement of POSTTRAITEMENTS, in double "
+                                    "precision on the matrix as assembled, takes each solve to the accuracy "
+                                    "asked (RESI_RELA). For systems whose condition number single precision can "
+                                    "carry (about 1e6 and below after MUMPS's scaling): beyond, the refinement "
+                                    "does not converge and the run stops saying so. The log names the "
+                                    "factorisation 'MUMPS in single precision'. NON (default): double precision")
+                                   .into_values({"OUI", "NON"})
+                                   .def("NON"),
                                elim_lagr({"OUI", "NON", "LAGR2"}, "LAGR2"),
                                integer("PCENT_PIVOT",
                                        "Working space of MUMPS's factorisation beyond its analysis's estimate, in "

@@ -112,7 +112,7 @@ void say_in_keywords(Error& err) {
         if (h.rfind("this reader reads MED files", 0) == 0) h = "LIRE_MAILLAGE reads MED files; use FORMAT='GMSH' for .msh";
       break;
   }
-  for (auto& h : hints) {  // whatever the failure: MUMPS settings (TYPE_RESOL, PRETRAITEMENTS, ACCELERATION) the system did not fit
+  for (auto& h : hints) {  // whatever the failure: MUMPS settings (TYPE_RESOL, PRETRAITEMENTS, ACCELERATION, MIXER_PRECISION) the system did not fit
     if (h.rfind("ask for a symmetric indefinite or general factorisation", 0) == 0)
       h = "use SOLVEUR TYPE_RESOL='SYMGEN' or 'NONSYM', or 'AUTO' (the default: by the system)";
     else if (h.rfind("ask for a general (LU) factorisation", 0) == 0)
@@ -120,6 +120,9 @@ void say_in_keywords(Error& err) {
     else if (h.rfind("the factors were compressed in block low rank", 0) == 0)
       h = "SOLVEUR ACCELERATION='LR' compressed the factors too coarsely for this system: lower LOW_RANK_SEUIL "
           "(1e-9 to 1e-12 are usual), use POSTTRAITEMENTS='FORCE', or ACCELERATION='FR' (full rank)";
+    else if (h.rfind("the factors were computed in single precision", 0) == 0)
+      h = "SOLVEUR MIXER_PRECISION='OUI' factorised in single precision, too coarse for this system's "
+          "conditioning: use POSTTRAITEMENTS='FORCE', or MIXER_PRECISION='NON' (the default)";
     else if (h.rfind("the matrix was factorised as assembled", 0) == 0)
       h = "the matrix was factorised as assembled (SOLVEUR PRETRAITEMENTS='SANS'), so NPREC tested its pivots "
           "unscaled: a multiplier's pivot, small in absolute terms, counts as null; use PRETRAITEMENTS='AUTO' (the "

@@ -8,7 +8,7 @@
 -- symmetric systems) and 'SYMGEN' (LDL^T with pivoting, also of the SPD one), ACCELERATION = 'LR'
 -- with LOW_RANK_SEUIL = 1e-9 (block low-rank factors; the log says how many entries they kept)
 -- and 'LR+' with -1e-9 (the UCFS variant; LR+'s consortium settings fall back to LR, as the log
--- says);
+-- says), MIXER_PRECISION = 'OUI' (single-precision factors, each solve refined in double precision);
 -- METHODE='MULT_FRONT' with RENUM METIS, MD, MDA; METHODE='LDLT' with RENUM RCMK (reverse
 -- Cuthill-McKee) and SANS (no reordering). The log names the ordering used and says when the
 -- factors are out of core.
@@ -30,8 +30,9 @@
 -- Singularity.MumpsWithoutPreprocessingTestsPivotsAsAssembled, TYPE_RESOL's factorisations by
 -- Solvers.MumpsFactorisesAsAskedWhereTheSystemAllowsIt, POSTTRAITEMENTS's steps by
 -- tests/decks/mumps_posttraitements.lua, the low-rank compression by
--- Solvers.MumpsBlockLowRankCompressesTheFactorsAndRefinementRestoresTheSolve and the log lines of
--- ACCELERATION by CTest's log.solveur_acceleration.
+-- Solvers.MumpsBlockLowRankCompressesTheFactorsAndRefinementRestoresTheSolve, the single precision
+-- by Solvers.MumpsInSinglePrecisionIsRefinedToTheDoublePrecisionSolution, and the log lines of
+-- ACCELERATION and MIXER_PRECISION by CTest's log.solveur_acceleration.
 -- Reference: analytical.
 -- Runtime label: fast, 3D, contact, solver.
 DEBUT()
@@ -47,7 +48,7 @@ local others = {
   { METHODE = 'MUMPS', PRETRAITEMENTS = 'SANS', NPREC = -1 }, { METHODE = 'MUMPS', POSTTRAITEMENTS = 'FORCE' },
   { METHODE = 'MUMPS', TYPE_RESOL = 'NONSYM' }, { METHODE = 'MUMPS', TYPE_RESOL = 'SYMGEN' },
   { METHODE = 'MUMPS', ACCELERATION = 'LR', LOW_RANK_SEUIL = 1.0e-9 },
-  { METHODE = 'MUMPS', ACCELERATION = 'LR+', LOW_RANK_SEUIL = -1.0e-9 },
+  { METHODE = 'MUMPS', ACCELERATION = 'LR+', LOW_RANK_SEUIL = -1.0e-9 }, { METHODE = 'MUMPS', MIXER_PRECISION = 'OUI' },
   { METHODE = 'MULT_FRONT', RENUM = 'METIS' }, { METHODE = 'MULT_FRONT', RENUM = 'MD' },
   { METHODE = 'MULT_FRONT', RENUM = 'MDA' }, { METHODE = 'LDLT', RENUM = 'RCMK' }, { METHODE = 'LDLT', RENUM = 'SANS' },
 }
@@ -60,7 +61,8 @@ local function label(s)
          (s.POSTTRAITEMENTS and ' POSTTRAITEMENTS=' .. s.POSTTRAITEMENTS or '') ..
          (s.TYPE_RESOL and ' TYPE_RESOL=' .. s.TYPE_RESOL or '') ..
          (s.ACCELERATION and ' ACCELERATION=' .. s.ACCELERATION or '') ..
-         (s.LOW_RANK_SEUIL and ' LOW_RANK_SEUIL=' .. s.LOW_RANK_SEUIL or '')
+         (s.LOW_RANK_SEUIL and ' LOW_RANK_SEUIL=' .. s.LOW_RANK_SEUIL or '') ..
+         (s.MIXER_PRECISION and ' MIXER_PRECISION=' .. s.MIXER_PRECISION or '')
 end
 
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'meshes/glued3d_hexa20.med' }

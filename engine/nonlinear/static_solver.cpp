@@ -19,6 +19,7 @@
 #include "engine/nonlinear/nodal_forces.hpp"
 #include "engine/nonlinear/rigid_body.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
+#include "engine/solver/backends.hpp"
 #include "engine/solver/krylov.hpp"
 #include "engine/solver/saddle_solver.hpp"
 #include "engine/solver/singularity.hpp"
@@ -1103,6 +1104,10 @@ void StaticSolver::solve_instant(double t, Vector& u) {
                                                         [this](const std::string& line) { log_.info(line); });
         else if (saddle_ && (backend == SolverKind::Mumps || backend == SolverKind::Umfpack))
           backend_solver = make_saddle_solver(backend, [this](const std::string& line) { log_.info(line); });
+        else if (backend == SolverKind::Mumps && options_.single_precision) {
+          backend_solver = make_mumps_solver(true);
+          log_.info("  linear solver: MUMPS in single precision, each solve refined in double precision");
+        }
         else
           backend_solver = make_linear_solver(backend, settings);
         backend_solver->set_ordering(options_.ordering);
@@ -1281,14 +1286,17 @@ void StaticSolver::solve_instant(double t, Vector& u) {
                        sci(raw_error) + ", " + sci(solve_error) + " after iterative refinement; accepted below " +
                        sci(accepted) + ")"),
             t);
-        if (options_.low_rank.on && !iterative) {  // the likeliest cause first
-          std::vector<std::string> hints = found.hints();
+        // Approximate factors asked for are the likeliest cause: said first.
+        std::vector<std::string> hints = found.hints();
+        if (options_.single_precision && !iterative)
+          hints.insert(hints.begin(), "the factors were computed in single precision, too coarse for this system's "
+                                      "conditioning: refine more, or factorise in double precision");
+        if (options_.low_rank.on && !iterative)
           hints.insert(hints.begin(), "the factors were compressed in block low rank (threshold " +
                                           sci(std::abs(options_.low_rank.threshold)) +
                                           "), too coarsely for this system: lower the threshold, refine more, or "
                                           "factorise in full rank");
-          found.set_hints(std::move(hints));
-        }
+        found.set_hints(std::move(hints));
         throw found;
       }
       for (int eq = 0; eq < n; ++eq)

@@ -69,6 +69,9 @@ struct NewtonOptions {
   /// Block low-rank factors for MUMPS (code_aster's SOLVEUR ACCELERATION = 'LR' and
   /// LOW_RANK_SEUIL); off: full rank.
   LowRank low_rank;
+  /// MUMPS factorises in single precision (code_aster's SOLVEUR MIXER_PRECISION = 'OUI'): half
+  /// the factor memory; the refinement of each solve, in double precision, makes up the rest.
+  bool single_precision = false;
   /// The factorisation MUMPS uses (code_aster's SOLVEUR TYPE_RESOL): by the matrix's kind when
   /// `factorisation_by_kind`, else `factorisation` (see LinearSolver::set_factorisation).
   bool factorisation_by_kind = true;

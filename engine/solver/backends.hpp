@@ -11,8 +11,9 @@ namespace lunaster::engine {
 std::unique_ptr<LinearSolver> make_cholmod_solver();
 /// UMFPACK unsymmetric multifrontal LU (any square matrix).
 std::unique_ptr<LinearSolver> make_umfpack_solver();
-/// MUMPS (LDL^T for symmetric kinds, LU otherwise), on every rank of the run.
-std::unique_ptr<LinearSolver> make_mumps_solver();
+/// MUMPS (LDL^T for symmetric kinds, LU otherwise), on every rank of the run; in single
+/// precision when asked (code_aster's SOLVEUR MIXER_PRECISION = 'OUI').
+std::unique_ptr<LinearSolver> make_mumps_solver(bool single_precision = false);
 /// PETSc Krylov solver and preconditioner, from the module loaded on first use.
 std::unique_ptr<LinearSolver> make_petsc_solver(const IterativeSettings& settings);
 

@@ -7,6 +7,7 @@
 /// and no rank ever holds the whole matrix. Null-pivot detection (ICNTL(24) = 1, its threshold from the
 /// SingularityTest) reports singular matrices and the first null pivot's equation, or sets the null
 /// pivots aside when the run goes on past them.
+#include <dlfcn.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -16,8 +17,10 @@
 #include <dmumps_c.h>
 #include <iomanip>
 #include <optional>
+#include <smumps_c.h>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "engine/core/error.hpp"
@@ -74,8 +77,32 @@ std::vector<int> shared_matrix_ordering(const SparseMatrix& mine, FactorOrdering
   return given_ordering(whole, give);
 }
 
+void mumps_call(DMUMPS_STRUC_C* id) { dmumps_c(id); }
+void mumps_call(SMUMPS_STRUC_C* id) {
+  // SMUMPS serves SOLVEUR MIXER_PRECISION only: loaded on its first call rather than linked,
+  // which would map it into every run (about 1.5 ms of each start).
+  using Call = void (*)(SMUMPS_STRUC_C*);
+  static const Call call = [] {
+    void* handle = dlopen(LUNASTER_SMUMPS_LIBRARY, RTLD_NOW | RTLD_GLOBAL);
+    void* symbol = handle ? dlsym(handle, "smumps_c") : nullptr;
+    if (!symbol)
+      throw SolveError(std::string("MUMPS in single precision: cannot load ") + LUNASTER_SMUMPS_LIBRARY + ": " +
+                           dlerror(),
+                       {"install Debian's libmumps-5.5 (scripts/install-deps.sh), or factorise in double precision"});
+    return reinterpret_cast<Call>(symbol);
+  }();
+  call(id);
+}
+
+/// MUMPS in the precision of its instance `Id`: DMUMPS_STRUC_C (double, the default) or
+/// SMUMPS_STRUC_C (single: code_aster's SOLVEUR MIXER_PRECISION = 'OUI', the factors in half the
+/// memory, each solve's right-hand side and solution rounded to single precision; the
+/// driver's iterative refinement, in double precision, takes the solve to the accuracy asked).
+template <class Id>
 class MumpsSolver final : public LinearSolver {
  public:
+  using Real = std::remove_pointer_t<decltype(Id::a)>;
+  static constexpr bool kSingle = std::is_same_v<Real, float>;
   MumpsSolver() = default;
   ~MumpsSolver() override { release(); }
   MumpsSolver(const MumpsSolver&) = delete;
@@ -83,7 +110,7 @@ class MumpsSolver final : public LinearSolver {
 
   void factorize(const SparseMatrix& a, MatrixKind kind) override;
   Vector solve(const Vector& b) const override;
-  std::string name() const override { return "MUMPS"; }
+  std::string name() const override { return kSingle ? "MUMPS in single precision" : "MUMPS"; }
   int failed_column() const override { return failed_; }
   void set_layout(SystemLayout layout) override { distributed_ = layout.distributed(); }
   void set_ordering(FactorOrdering ordering) override { ordering_ = ordering; }
@@ -110,7 +137,7 @@ class MumpsSolver final : public LinearSolver {
   void release() {
     if (!initialised_) return;
     id_.job = -2;
-    dmumps_c(&id_);
+    mumps_call(&id_);
     initialised_ = false;
     analysed_ = false;
   }
@@ -128,7 +155,7 @@ class MumpsSolver final : public LinearSolver {
     id_.cntl[4] = detect ? 1e20 : 0.0;
     id_.job = 2;
     const WideBlas threads(wide_);
-    dmumps_c(&id_);
+    mumps_call(&id_);
   }
   void choose_memory();
   static bool workspace_too_small(int infog1) {
@@ -149,11 +176,11 @@ class MumpsSolver final : public LinearSolver {
                      ", INFOG(2) = " + std::to_string(detail));
   }
 
-  mutable DMUMPS_STRUC_C id_{};
+  mutable Id id_{};
   bool initialised_ = false;
   bool analysed_ = false;  ///< the analysis in id_ is valid for (sym, irn_, jcn_)
   std::vector<MUMPS_INT> irn_, jcn_;
-  std::vector<double> val_;
+  std::vector<Real> val_;
   std::vector<MUMPS_INT> perm_in_;  ///< ICNTL(7) = 1: each equation's place in the given order
   int failed_ = -1;
   bool distributed_ = false;  ///< the matrices given are this rank's columns (ICNTL(18) = 3)
@@ -226,7 +253,8 @@ double available_megabytes() {
   return bytes / (1024.0 * 1024.0);
 }
 
-void MumpsSolver::choose_memory() {
+template <class Id>
+void MumpsSolver<Id>::choose_memory() {
   // After the analysis, before the factorisation: INFOG(16) is the largest per-process
   // estimate of the in-core factorisation (MB), INFOG(26) the same out of core.
   memory_note_.clear();
@@ -252,7 +280,8 @@ void MumpsSolver::choose_memory() {
                                    : ")");
 }
 
-void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
+template <class Id>
+void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
   failed_ = -1;
   LUNASTER_ASSERT(a.rows() == a.cols(), "MUMPS: matrix is not square");
   int sym = kind == MatrixKind::SymmetricPositiveDefinite ? 1 : (kind == MatrixKind::SymmetricIndefinite ? 2 : 0);
@@ -276,7 +305,7 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   // then factorised as symmetric indefinite.
   if (sym == 1 && !test_.stop && test_.digits >= 0) sym = 2;
   std::vector<MUMPS_INT> irn, jcn;
-  std::vector<double> val;
+  std::vector<Real> val;
   mumps_entries(a, sym, irn, jcn, val);
   // The Newton and contact loops of a step factorise matrices of one pattern again and
   // again: keep MUMPS's analysis (ordering, symbolic factorisation) while it holds.
@@ -294,12 +323,12 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     factorise_numerically();  // the analysis kept
   } else {
     release();
-    id_ = DMUMPS_STRUC_C{};
+    id_ = Id{};
     id_.comm_fortran = parallel::fortran_comm_world();
     id_.par = 1;
     id_.sym = sym;
     id_.job = -1;
-    dmumps_c(&id_);
+    mumps_call(&id_);
     check("initialisation");
     initialised_ = true;
     id_.icntl[0] = -1;  // ICNTL(1..4): silence error, diagnostic, global output and statistics
@@ -378,7 +407,7 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
     id_.n = static_cast<MUMPS_INT>(a.rows());
     hand_over();
     id_.job = 1;  // analysis
-    dmumps_c(&id_);
+    mumps_call(&id_);
     // A factorisation estimated at over 5e10 operations (RINFOG(1): the refined 3D CONTINUE
     // benchmark's 2.0e12) has fronts large enough for two BLAS threads; the CONTINUE 3D
     // benchmark's (1.0e10) ran no faster on two.
@@ -424,7 +453,8 @@ void MumpsSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   }
 }
 
-std::string MumpsSolver::low_rank_note() const {
+template <class Id>
+std::string MumpsSolver<Id>::low_rank_note() const {
   if (!initialised_ || !low_rank_.on || id_.infog[0] < 0) return {};
   // INFOG(35): the factor entries the compressed factorisation kept; INFOG(29): the same
   // factorisation's entries in full rank. Negative: in millions.
@@ -437,7 +467,8 @@ std::string MumpsSolver::low_rank_note() const {
   return out.str();
 }
 
-std::string MumpsSolver::ordering_used() const {
+template <class Id>
+std::string MumpsSolver<Id>::ordering_used() const {
   if (!initialised_) return {};
   switch (id_.infog[6]) {  // INFOG(7): the ordering the analysis used
     case 0: return "AMD";
@@ -451,21 +482,34 @@ std::string MumpsSolver::ordering_used() const {
   }
 }
 
-Vector MumpsSolver::solve(const Vector& b) const {
+template <class Id>
+Vector MumpsSolver<Id>::solve(const Vector& b) const {
   if (!initialised_) throw InternalError("MUMPS: solve called without a valid factorisation");
   Vector x = b;
-  id_.rhs = x.data();
-  id_.nrhs = 1;
-  id_.lrhs = static_cast<MUMPS_INT>(x.size());
-  id_.job = 3;
-  dmumps_c(&id_);
-  check("solve");
+  auto run = [this](Real* rhs, Eigen::Index n) {
+    id_.rhs = rhs;
+    id_.nrhs = 1;
+    id_.lrhs = static_cast<MUMPS_INT>(n);
+    id_.job = 3;
+    mumps_call(&id_);
+    check("solve");
+  };
+  if constexpr (kSingle) {
+    std::vector<float> rhs(b.data(), b.data() + b.size());
+    run(rhs.data(), b.size());
+    std::copy(rhs.begin(), rhs.end(), x.data());
+  } else {
+    run(x.data(), x.size());
+  }
   parallel::broadcast(x.data(), x.size());  // the solution is on the host
   return x;
 }
 
 }  // namespace
 
-std::unique_ptr<LinearSolver> make_mumps_solver() { return std::make_unique<MumpsSolver>(); }
+std::unique_ptr<LinearSolver> make_mumps_solver(bool single_precision) {
+  if (single_precision) return std::make_unique<MumpsSolver<SMUMPS_STRUC_C>>();
+  return std::make_unique<MumpsSolver<DMUMPS_STRUC_C>>();
+}
 
 }  // namespace lunaster::engine

@@ -967,6 +967,29 @@ TEST(Solvers, MumpsBlockLowRankCompressesTheFactorsAndRefinementRestoresTheSolve
   EXPECT_LT((x - ref).norm(), 1e-9 * ref.norm());
 }
 
+TEST(Solvers, MumpsInSinglePrecisionIsRefinedToTheDoublePrecisionSolution) {
+  // MIXER_PRECISION = 'OUI': SMUMPS factorises the 3D saddle-point system in single precision;
+  // the solve straight from its factors is off by far more than double precision's round-off,
+  // and iterative refinement against the matrix in double precision takes it to the double
+  // factorisation's solution.
+  const SparseMatrix a = saddle_block();
+  const Vector f = rhs(static_cast<int>(a.rows()));
+  auto twice = make_mumps_solver(false);
+  twice->factorize(a, MatrixKind::SymmetricIndefinite);
+  const Vector ref = twice->solve(f);
+  auto single = make_mumps_solver(true);
+  EXPECT_EQ(single->name(), "MUMPS in single precision");
+  single->factorize(a, MatrixKind::SymmetricIndefinite);
+  const Vector raw = single->solve(f);
+  EXPECT_GT((raw - ref).norm(), 1e-10 * ref.norm());
+  EXPECT_LT((raw - ref).norm(), 1e-2 * ref.norm());
+  Vector x;
+  const RefinedSolve refined = solve_with_refinement(*single, a, f, x, 10, 0.0);
+  EXPECT_GE(refined.steps, 1);
+  EXPECT_LT((x - ref).norm(), 1e-9 * ref.norm());
+  EXPECT_LT((a * x - f).norm(), 1e-12 * (a * x).cwiseAbs().sum());
+}
+
 TEST(Solvers, MumpsOutOfCoreAgreesWithInCore) {
   // GESTION_MEMOIRE: the same LDL^T with its factors on disk (ICNTL(22) = 1) solves as in memory,
   // and says where they went; in memory, or left to AUTO with memory to spare, it says nothing.
