@@ -112,7 +112,9 @@ void say_in_keywords(Error& err) {
         if (h.rfind("this reader reads MED files", 0) == 0) h = "LIRE_MAILLAGE reads MED files; use FORMAT='GMSH' for .msh";
       break;
   }
-  for (auto& h : hints) {  // whatever the failure: MUMPS settings (TYPE_RESOL, PRETRAITEMENTS, ACCELERATION, MIXER_PRECISION) the system did not fit
+  // Whatever the failure: MUMPS settings the system did not fit (TYPE_RESOL, PRETRAITEMENTS,
+  // ACCELERATION, MIXER_PRECISION).
+  for (auto& h : hints) {
     if (h.rfind("ask for a symmetric indefinite or general factorisation", 0) == 0)
       h = "use SOLVEUR TYPE_RESOL='SYMGEN' or 'NONSYM', or 'AUTO' (the default: by the system)";
     else if (h.rfind("ask for a general (LU) factorisation", 0) == 0)

@@ -261,7 +261,8 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
   options.solver = solver_kind(args.factor("SOLVEUR").text("METHODE"));
   options.auto_solver = args.factor("SOLVEUR").text("METHODE") == "AUTO";
   if (options.solver == engine::SolverKind::Petsc) read_petsc(args.factor("SOLVEUR"), options.iterative);
-  read_direct_solver(args.factor("SOLVEUR"), options, [&session](const std::string& line) { session.log().info(line); });
+  read_direct_solver(args.factor("SOLVEUR"), options,
+                     [&session](const std::string& line) { session.log().info(line); });
   options.krylov_history = args.integer("INFO") >= 2;
   read_newton(args.factor("NEWTON"), contact != nullptr, options);
   const std::vector<double> times = instants(args.factor("INCREMENT"), options);

@@ -6,7 +6,8 @@
 /// holds its own columns): then each rank passes the entries of its columns (ICNTL(18) = 3),
 /// and no rank ever holds the whole matrix. Null-pivot detection (ICNTL(24) = 1, its threshold from the
 /// SingularityTest) reports singular matrices and the first null pivot's equation, or sets the null
-/// pivots aside when the run goes on past them.
+/// pivots aside when the run goes on past them. In double precision (DMUMPS), or in single
+/// (SMUMPS, SOLVEUR MIXER_PRECISION); in full rank, or in block low rank (SOLVEUR ACCELERATION).
 #include <dlfcn.h>
 #include <unistd.h>
 
