@@ -89,7 +89,8 @@ void mumps_call(SMUMPS_STRUC_C* id) {
     if (!symbol)
       throw SolveError(std::string("MUMPS in single precision: cannot load ") + LUNASTER_SMUMPS_LIBRARY + ": " +
                            dlerror(),
-                       {"install Debian's libmumps-5.5 (scripts/install-deps.sh), or factorise in double precision"});
+                       {"install Debian's libmumps-dev (scripts/install-deps.sh names it), or factorise in "
+                        "double precision"});
     return reinterpret_cast<Call>(symbol);
   }();
   call(id);
