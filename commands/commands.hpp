@@ -1,5 +1,8 @@
 #pragma once
 /// Every command handler (one per file in commands/), listed in register_all.cpp.
+#include <cstdio>
+#include <string>
+
 #include "catalog/args.hpp"
 #include "commands/session.hpp"
 
@@ -7,6 +10,13 @@ namespace lunaster::cmd {
 
 using catalog::Args;
 using catalog::ConceptPtr;
+
+/// A number as the commands' messages print it (printf's %g: 1e-09, 0.25, 1e+08).
+inline std::string number_text(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
 
 ConceptPtr debut(const Args& args, Session& session);
 ConceptPtr fin(const Args& args, Session& session);

@@ -1,5 +1,4 @@
 // DEFI_FONCTION: piecewise linear function given as (x, y) pairs.
-#include <cstdio>
 
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
@@ -7,11 +6,6 @@
 namespace lunaster::cmd {
 
 namespace {
-std::string number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", x);
-  return buf;
-}
 char prolongation(const std::string& name) { return name == "CONSTANT" ? 'C' : name == "LINEAIRE" ? 'L' : 'E'; }
 }  // namespace
 
@@ -25,8 +19,9 @@ ConceptPtr defi_fonction(const Args& args, Session&) {
     // Finite values are the catalogue's check; the order of the pairs is the command's.
     if (!f->abscissas.empty() && vale[i] <= f->abscissas.back())
       throw args.error("VALE", "strictly increasing abscissas x1 < x2 < ...",
-                       "x" + std::to_string(i / 2 + 1) + " = " + number(vale[i]) + " after x" + std::to_string(i / 2) +
-                           " = " + number(f->abscissas.back()) + " (value " + std::to_string(i + 1) + " of VALE)");
+                       "x" + std::to_string(i / 2 + 1) + " = " + number_text(vale[i]) + " after x" +
+                           std::to_string(i / 2) + " = " + number_text(f->abscissas.back()) + " (value " +
+                           std::to_string(i + 1) + " of VALE)");
     f->abscissas.push_back(vale[i]);
     f->ordinates.push_back(vale[i + 1]);
   }

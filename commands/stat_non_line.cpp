@@ -1,6 +1,5 @@
 // STAT_NON_LINE: quasi-static incremental analysis (Newton), with contact.
 #include <algorithm>
-#include <cstdio>
 #include <functional>
 #include <memory>
 #include <set>
@@ -131,14 +130,11 @@ void read_direct_solver(const Args& solveur, engine::NewtonOptions& options,
   const std::string acceleration = solveur.text("ACCELERATION");
   const bool low_rank = acceleration.rfind("LR", 0) == 0;
   const double threshold = solveur.real("LOW_RANK_SEUIL");
-  if (!low_rank && threshold != 0.0) {
-    char given[32];
-    std::snprintf(given, sizeof given, "%g", threshold);
+  if (!low_rank && threshold != 0.0)
     throw solveur.error("LOW_RANK_SEUIL", "0 (its default) with ACCELERATION = '" + acceleration + "' (full rank)",
-                        given,
+                        number_text(threshold),
                         {"LOW_RANK_SEUIL is the threshold of the block low-rank factorisation: give ACCELERATION "
                          "= 'LR' beside it, or remove it"});
-  }
   options.low_rank = {low_rank, threshold};
   options.single_precision = solveur.text("MIXER_PRECISION") == "OUI";
   if (acceleration.size() > 2 && acceleration != "AUTO")
