@@ -100,13 +100,13 @@ void read_direct_solver(const Args& solveur, engine::NewtonOptions& options,
   using O = engine::FactorOrdering;
   const std::string methode = solveur.text("METHODE");
   if (solveur.has("NPREC")) {  // the methods that factorise (catalogue default 8, code_aster's)
-    options.singularity.digits = static_cast<int>(solveur.integer("NPREC"));
-    options.singularity.stop = solveur.text("STOP_SINGULIER") == "OUI";
+    options.factor.singularity.digits = static_cast<int>(solveur.integer("NPREC"));
+    options.factor.singularity.stop = solveur.text("STOP_SINGULIER") == "OUI";
   }
   if (methode == "MULT_FRONT" || methode == "LDLT") {
     if (!solveur.has("RENUM")) return;  // lunaster's choice
     const std::string renum = solveur.text("RENUM");
-    options.ordering = renum == "METIS"  ? O::Metis
+    options.factor.ordering = renum == "METIS"  ? O::Metis
                        : renum == "RCMK" ? O::Rcm
                        : renum == "SANS" ? O::Natural
                                          : O::Amd;  // MD, MDA
@@ -114,16 +114,16 @@ void read_direct_solver(const Args& solveur, engine::NewtonOptions& options,
   }
   if (methode != "MUMPS") return;
   const std::string memory = solveur.text("GESTION_MEMOIRE");
-  options.memory = memory == "IN_CORE"       ? engine::FactorMemory::InCore
+  options.factor.memory = memory == "IN_CORE"       ? engine::FactorMemory::InCore
                    : memory == "OUT_OF_CORE" ? engine::FactorMemory::OutOfCore
                                              : engine::FactorMemory::Auto;
   options.share_model = solveur.text("MATR_DISTRIBUEE") == "OUI";
-  if (solveur.has("PCENT_PIVOT")) options.workspace_relaxation = static_cast<int>(solveur.integer("PCENT_PIVOT"));
+  if (solveur.has("PCENT_PIVOT")) options.factor.workspace_relaxation = static_cast<int>(solveur.integer("PCENT_PIVOT"));
   if (solveur.has("RESI_RELA")) options.direct_solve_tolerance = solveur.real("RESI_RELA");
   using R = engine::NewtonOptions::Refinement;
   const std::string post = solveur.text("POSTTRAITEMENTS");
   options.refinement = post == "SANS" ? R::None : post == "MINI" ? R::Two : post == "FORCE" ? R::Force : R::Auto;
-  options.preprocessing = solveur.text("PRETRAITEMENTS") == "AUTO";
+  options.factor.preprocessing = solveur.text("PRETRAITEMENTS") == "AUTO";
   // ACCELERATION as code_aster runs it on a public MUMPS (Debian's 5.5): AUTO and FR in full
   // rank, LR in block low rank at LOW_RANK_SEUIL; FR+, FR++, LR+ and LR++ add settings of the
   // MUMPS consortium's version, so code_aster falls back to FR or LR and says so, as here.
@@ -135,18 +135,18 @@ void read_direct_solver(const Args& solveur, engine::NewtonOptions& options,
                         number_text(threshold),
                         {"LOW_RANK_SEUIL is the threshold of the block low-rank factorisation: give ACCELERATION "
                          "= 'LR' beside it, or remove it"});
-  options.low_rank = {low_rank, threshold};
+  options.factor.low_rank = {low_rank, threshold};
   options.single_precision = solveur.text("MIXER_PRECISION") == "OUI";
   if (acceleration.size() > 2 && acceleration != "AUTO")
     say("  SOLVEUR ACCELERATION = '" + acceleration + "': its extra settings are the MUMPS consortium's, not in "
         "Debian's MUMPS; factorising with '" + acceleration.substr(0, 2) + "', as code_aster does with a public MUMPS");
   const std::string type = solveur.text("TYPE_RESOL");
-  options.factorisation_by_kind = type == "AUTO";
-  options.factorisation = type == "NONSYM"   ? engine::MatrixKind::General
+  options.factor.by_kind = type == "AUTO";
+  options.factor.factorisation = type == "NONSYM"   ? engine::MatrixKind::General
                           : type == "SYMDEF" ? engine::MatrixKind::SymmetricPositiveDefinite
                                              : engine::MatrixKind::SymmetricIndefinite;
   const std::string renum = solveur.text("RENUM");
-  options.ordering = renum == "METIS" ? O::Metis
+  options.factor.ordering = renum == "METIS" ? O::Metis
                      : renum == "AMD" ? O::Amd
                      : renum == "AMF" ? O::Amf
                      : renum == "QAMD" ? O::Qamd

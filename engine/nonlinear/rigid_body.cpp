@@ -103,7 +103,9 @@ std::optional<SolveError> find_rigid_body_mode(const FeModel& model, const DofMa
   SparseMatrix k = restrict_matrix(elastic, reduced, static_cast<int>(back.size()));
   auto chol = make_linear_solver(SolverKind::Cholmod);
   test.stop = true;
-  chol->set_singularity_test(test);
+  FactorSettings settings;
+  settings.singularity = test;
+  chol->configure(settings);
   int column = -1;
   Failure pivot;
   try {

@@ -372,7 +372,7 @@ SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err
     return diagnose_singular_system(model_, dofs_, cons.free_index, whole.ff, err, t, diagnosis_test(),
                                     contact_ != nullptr);
   }();
-  if (!options_.preprocessing && options_.singularity.digits >= 0)
+  if (!options_.factor.preprocessing && options_.factor.singularity.digits >= 0)
     found.add_hint("the matrix was factorised as assembled (MUMPS without preprocessing), so its pivots were tested "
                    "unscaled: a multiplier's pivot, small in absolute terms, counts as null; let MUMPS scale the "
                    "matrix, or turn the pivot test off");
@@ -383,7 +383,7 @@ SingularityTest StaticSolver::diagnosis_test() const {
   // A failure's culprit is looked for with the run's digits, or code_aster's default 8 when
   // the run asked for no test; the diagnosis always stops at it.
   SingularityTest test;
-  if (options_.singularity.digits >= 0) test.digits = options_.singularity.digits;
+  if (options_.factor.singularity.digits >= 0) test.digits = options_.factor.singularity.digits;
   return test;
 }
 
@@ -625,7 +625,9 @@ void StaticSolver::choose_interface(const Constraints& cons, const std::vector<T
   on_interface_.assign(cons.n_free, 0);
   for (int j : eqs) on_interface_[j] = 1;
   interface_ = make_interface_solver(std::move(eqs));
-  interface_->set_singularity_test(options_.singularity);
+  FactorSettings settings;  // the interface solver reads the singularity test alone
+  settings.singularity = options_.factor.singularity;
+  interface_->configure(settings);
   interface_use_ = 1;
 }
 
@@ -1056,16 +1058,16 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         }
         // Going on past a singular matrix was asked for: a body held by nothing is a warning.
         const auto report = [this](const SolveError& rigid) {
-          if (options_.singularity.stop) throw rigid;
+          if (options_.factor.singularity.stop) throw rigid;
           log_.warning("going on as asked with a singular system: " + rigid.message());
         };
         const auto unheld = find_unheld_body(model_, dofs_, cons.free_index, related, t);
         if (unheld) report(*unheld);
         if (!unheld && !held_by_relations && interface_use_ != 1 && backend != SolverKind::Cholmod &&
-            backend != SolverKind::Petsc && !distributed_ && options_.singularity.digits >= 0) {
+            backend != SolverKind::Petsc && !distributed_ && options_.factor.singularity.digits >= 0) {
           Stopwatch watch(stats_.assemble_seconds);
           restore_elastic();  // K_ff itself, without this iteration's terms
-          if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, elastic_.ff, t, options_.singularity))
+          if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, elastic_.ff, t, options_.factor.singularity))
             report(*rigid);
           update_system(cons, k_contact, condensed, eliminated_eqs);  // the terms again
         }
@@ -1110,13 +1112,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         }
         else
           backend_solver = make_linear_solver(backend, settings);
-        backend_solver->set_ordering(options_.ordering);
-        backend_solver->set_memory(options_.memory);
-        backend_solver->set_workspace_relaxation(options_.workspace_relaxation);
-        backend_solver->set_preprocessing(options_.preprocessing);
-        backend_solver->set_low_rank(options_.low_rank);
-        backend_solver->set_factorisation(options_.factorisation, options_.factorisation_by_kind);
-        backend_solver->set_singularity_test(options_.singularity);
+        backend_solver->configure(options_.factor);
       }
       LinearSolver* const solver = via_interface ? interface_.get() : backend_solver.get();
       const bool iterative = solver->iterative();
@@ -1199,7 +1195,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           if (line != said) log_.info(line);
           said = line;
         };
-        if (options_.ordering != FactorOrdering::Auto)
+        if (options_.factor.ordering != FactorOrdering::Auto)
           say_once("  " + solver->name() + " ordering: " + solver->ordering_used(), ordering_logged_);
         if (const std::string f = solver->factorisation_used(); !f.empty())
           say_once("  " + solver->name() + " factorisation: " + f, factorisation_logged_);
@@ -1291,9 +1287,9 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         if (options_.single_precision && !iterative)
           hints.insert(hints.begin(), "the factors were computed in single precision, too coarse for this system's "
                                       "conditioning: refine more, or factorise in double precision");
-        if (options_.low_rank.on && !iterative)
+        if (options_.factor.low_rank.on && !iterative)
           hints.insert(hints.begin(), "the factors were compressed in block low rank (threshold " +
-                                          sci(std::abs(options_.low_rank.threshold)) +
+                                          sci(std::abs(options_.factor.low_rank.threshold)) +
                                           "), too coarsely for this system: lower the threshold, refine more, or "
                                           "factorise in full rank");
         found.set_hints(std::move(hints));

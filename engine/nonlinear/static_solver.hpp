@@ -44,16 +44,12 @@ struct NewtonOptions {
   bool share_model = true;
   /// SolverKind::Petsc: the Krylov method, preconditioner and tolerance.
   IterativeSettings iterative;
-  /// The direct backends' fill-reducing ordering (SOLVEUR RENUM).
-  FactorOrdering ordering = FactorOrdering::Auto;
-  /// Where MUMPS keeps its factors (SOLVEUR GESTION_MEMOIRE).
-  FactorMemory memory = FactorMemory::Auto;
-  /// MUMPS's working space beyond its estimate, in % (SOLVEUR PCENT_PIVOT, ICNTL(14)); 0: its default.
-  int workspace_relaxation = 0;
-  /// Which pivots make a factorisation singular, and whether a singular one stops the run
-  /// (SOLVEUR NPREC, STOP_SINGULIER). Not stopping also lets a body that no condition holds
-  /// through, with a warning: the factorisation then chooses its position.
-  SingularityTest singularity;
+  /// How the direct backends analyse and factorise (SOLVEUR RENUM, NPREC, STOP_SINGULIER and,
+  /// for MUMPS, GESTION_MEMOIRE, PCENT_PIVOT, PRETRAITEMENTS, ACCELERATION, LOW_RANK_SEUIL,
+  /// TYPE_RESOL). Its singularity test also says whether a body that no condition holds stops
+  /// the run: not stopping lets it through with a warning, the factorisation then choosing
+  /// its position.
+  FactorSettings factor;
   /// The relative residual |A du - b| / |b| a direct solve must reach after iterative
   /// refinement (code_aster's SOLVEUR RESI_RELA of MUMPS); <= 0: not checked, Newton's
   /// residual alone judges. Iterative backends keep their own tolerance.
@@ -63,19 +59,9 @@ struct NewtonOptions {
   /// None: none; Two: two steps, backward stable or not; Force: up to 10 steps, backward stable
   /// or not. A step is kept only while it lowers the residual.
   enum class Refinement { Auto, None, Two, Force } refinement = Refinement::Auto;
-  /// MUMPS's automatic scaling and permutations of the matrix before its analysis (code_aster's
-  /// SOLVEUR PRETRAITEMENTS = 'AUTO'); false: the matrix as assembled ('SANS').
-  bool preprocessing = true;
-  /// Block low-rank factors for MUMPS (code_aster's SOLVEUR ACCELERATION = 'LR' and
-  /// LOW_RANK_SEUIL); off: full rank.
-  LowRank low_rank;
   /// MUMPS factorises in single precision (code_aster's SOLVEUR MIXER_PRECISION = 'OUI'): half
   /// the factor memory; the refinement of each solve, in double precision, makes up the rest.
   bool single_precision = false;
-  /// The factorisation MUMPS uses (code_aster's SOLVEUR TYPE_RESOL): by the matrix's kind when
-  /// `factorisation_by_kind`, else `factorisation` (see LinearSolver::set_factorisation).
-  bool factorisation_by_kind = true;
-  MatrixKind factorisation = MatrixKind::SymmetricIndefinite;
   /// Print each Krylov iteration's residual in the log (code_aster's INFO=2).
   bool krylov_history = false;
   int subdivide_levels = 0;  ///< on a Newton failure, split the step this many times at most

@@ -63,14 +63,15 @@ class CholmodSolver final : public LinearSolver {
   Vector solve(const Vector& b) const override;
   std::string name() const override { return "CHOLMOD"; }
   int failed_column() const override { return failed_; }
-  void set_ordering(FactorOrdering ordering) override {
-    LUNASTER_ASSERT(any_backend_orders_by(ordering), "CHOLMOD orders by AMD, METIS, reverse Cuthill-McKee or not at all");
-    if (ordering != ordering_ && factor_) cholmod_free_factor(&factor_, &common_);  // analyse again
-    ordering_ = ordering;
+  void configure(const FactorSettings& settings) override {  // the ordering and the singularity test
+    LUNASTER_ASSERT(any_backend_orders_by(settings.ordering),
+                    "CHOLMOD orders by AMD, METIS, reverse Cuthill-McKee or not at all");
+    if (settings.ordering != ordering_ && factor_) cholmod_free_factor(&factor_, &common_);  // analyse again
+    ordering_ = settings.ordering;
+    test_ = settings.singularity;
   }
   std::string ordering_used() const override { return ordering_used_; }
   std::string analysis_note() const override { return analysis_note_; }
-  void set_singularity_test(SingularityTest test) override { test_ = test; }
   int singular_column() const override { return past_ ? past_->singular_column() : singular_; }
   std::string singular_note() const override {
     if (!past_) return singular_note_;
@@ -533,7 +534,9 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   if (common_.status == CHOLMOD_NOT_POSDEF) {
     if (!test_.stop && test_.digits >= 0) {
       past_ = make_linear_solver(SolverKind::Mumps);
-      past_->set_singularity_test(test_);
+      FactorSettings settings;  // MUMPS's own ordering, the same test
+      settings.singularity = test_;
+      past_->configure(settings);
       past_->factorize(*m, MatrixKind::SymmetricIndefinite);
       ready_ = true;
       return;
@@ -620,7 +623,7 @@ class CholmodInterfaceSolver final : public InterfaceSolver {
   std::string name() const override { return "CHOLMOD with the contact interface condensed"; }
   std::string analysis_note() const override { return analysis_note_; }
   const std::vector<int>& interface() const override { return interface_; }
-  void set_singularity_test(SingularityTest test) override { test_ = test; }
+  void configure(const FactorSettings& settings) override { test_ = settings.singularity; }
 
  private:
   std::vector<int> interface_;

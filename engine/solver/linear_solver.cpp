@@ -80,7 +80,9 @@ class IterativeWithFallback final : public LinearSolver {
   }
   bool multiply(const Vector& x, Vector& y) const override { return !fallen_ && iterative_->multiply(x, y); }
   int iterations() const override { return fallen_ ? 0 : iterative_->iterations(); }
-  void set_singularity_test(SingularityTest test) override { test_ = test; }  // the factorisation's, if it comes
+  void configure(const FactorSettings& settings) override {  // the factorisation's singularity test, if it comes
+    test_ = settings.singularity;
+  }
   int singular_column() const override { return fallen_ ? direct_->singular_column() : -1; }
   std::string singular_note() const override { return fallen_ ? direct_->singular_note() : std::string(); }
 
@@ -88,7 +90,9 @@ class IterativeWithFallback final : public LinearSolver {
   void fall_back(const std::string& why) const {
     fallen_ = true;
     direct_ = make_linear_solver(direct_kind_);
-    direct_->set_singularity_test(test_);
+    FactorSettings settings;
+    settings.singularity = test_;
+    direct_->configure(settings);
     if (note_)
       note_("  solver chosen automatically: " + iterative_->name() + " failed (" + why + "); " + direct_->name() +
             " factorises the system from now on");

@@ -110,6 +110,37 @@ struct LowRank {
   double threshold = 0.0;
 };
 
+/// How a direct backend analyses and factorises, handed over once by configure() (code_aster's
+/// SOLVEUR keywords of the factorising methods). Each backend reads what applies to it:
+/// CHOLMOD the ordering and the singularity test, UMFPACK the ordering, MUMPS all of it.
+struct FactorSettings {
+  /// The fill-reducing ordering of the next analyses (RENUM).
+  FactorOrdering ordering = FactorOrdering::Auto;
+  /// Where MUMPS keeps its factors (GESTION_MEMOIRE); the others keep them in memory.
+  FactorMemory memory = FactorMemory::Auto;
+  /// The working space MUMPS's factorisations start with, as a percentage added to the
+  /// analysis's estimate (ICNTL(14), PCENT_PIVOT); 0: MUMPS's default. MUMPS doubles it when a
+  /// factorisation runs short. The others size their workspace exactly.
+  int workspace_relaxation = 0;
+  /// Whether MUMPS's analyses scale the matrix and permute it for large diagonal entries as
+  /// MUMPS sees fit (automatic ICNTL(6), (8), (12); PRETRAITEMENTS = 'AUTO', the default) or
+  /// leave it as assembled ('SANS').
+  bool preprocessing = true;
+  /// Whether MUMPS compresses the factors (ACCELERATION, LOW_RANK_SEUIL); the others factorise
+  /// in full rank.
+  LowRank low_rank{};
+  /// The factorisation MUMPS uses whatever the matrix's kind (TYPE_RESOL): by the kind when
+  /// `by_kind`; else `factorisation`: General an LU of every entry; SymmetricIndefinite an
+  /// LDL^T with pivoting (refused for a matrix that is not symmetric);
+  /// SymmetricPositiveDefinite an LDL^T without pivoting (refused for a matrix that is not
+  /// known positive definite). The other backends factorise by the kind.
+  bool by_kind = true;
+  MatrixKind factorisation = MatrixKind::SymmetricIndefinite;
+  /// Which pivots the factorisations call singular, and whether that stops them (NPREC,
+  /// STOP_SINGULIER; UMFPACK and PETSc keep their own tests).
+  SingularityTest singularity{};
+};
+
 /// Direct solver: factorise once, solve for many right-hand sides.
 class LinearSolver {
  public:
@@ -145,38 +176,16 @@ class LinearSolver {
   virtual bool multiply(const Vector& /*x*/, Vector& /*y*/) const { return false; }
   /// Krylov iterations of the last solve (0 for a direct backend).
   virtual int iterations() const { return 0; }
-  /// The fill-reducing ordering of the next analyses (the direct backends; PETSc has none).
-  virtual void set_ordering(FactorOrdering /*ordering*/) {}
-  /// Where the next factorisations keep their factors (MUMPS; the others in memory).
-  virtual void set_memory(FactorMemory /*memory*/) {}
-  /// The working space the next factorisations start with, as a percentage added to the
-  /// analysis's estimate (MUMPS's ICNTL(14), code_aster's PCENT_PIVOT); 0: the backend's
-  /// default. MUMPS doubles it when a factorisation runs short, as before. The others size
-  /// their workspace exactly and ignore it.
-  virtual void set_workspace_relaxation(int /*percent*/) {}
-  /// Whether the next analyses scale the matrix and permute it for large diagonal entries as
-  /// the backend sees fit (MUMPS's automatic ICNTL(6), (8), (12); code_aster's PRETRAITEMENTS
-  /// = 'AUTO', the default) or leave it as assembled ('SANS'). The other backends keep theirs.
-  virtual void set_preprocessing(bool /*automatic*/) {}
-  /// Whether the next analyses and factorisations compress the factors (MUMPS; the other
-  /// backends factorise in full rank).
-  virtual void set_low_rank(LowRank /*low_rank*/) {}
+  /// How the next analyses and factorisations are done (FactorSettings). Each direct backend
+  /// reads what applies to it; PETSc has none of it.
+  virtual void configure(const FactorSettings& /*settings*/) {}
   /// What the compression of the last factorisation came to ("block low-rank factors
   /// (threshold 1e-09): 3.1e+06 entries against 5e+06 in full rank (62.0 %)"); empty when it
   /// was in full rank.
   virtual std::string low_rank_note() const { return {}; }
-  /// The factorisation the next ones use whatever the matrix's kind (MUMPS; code_aster's
-  /// TYPE_RESOL): Auto by the kind; General an LU of every entry; SymmetricIndefinite an LDL^T
-  /// with pivoting (refused for a matrix that is not symmetric); SymmetricPositiveDefinite an
-  /// LDL^T without pivoting (refused for a matrix that is not known positive definite). The
-  /// other backends factorise by the kind.
-  virtual void set_factorisation(MatrixKind /*kind*/, bool /*automatic*/) {}
   /// The factorisation the last one used, when it was asked for ("LU", "LDL^T with pivoting",
   /// "LDL^T"); empty otherwise.
   virtual std::string factorisation_used() const { return {}; }
-  /// Which pivots the next factorisations call singular, and whether that stops them (the
-  /// direct backends; UMFPACK and PETSc keep their own tests).
-  virtual void set_singularity_test(SingularityTest /*test*/) {}
   /// What the last factorisation found singular and went past (SingularityTest::stop false):
   /// the first such equation (this system's numbering), or -1 when it found none.
   virtual int singular_column() const { return -1; }

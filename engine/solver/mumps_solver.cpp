@@ -17,7 +17,6 @@
 #include <cstdlib>
 #include <dmumps_c.h>
 #include <iomanip>
-#include <optional>
 #include <smumps_c.h>
 #include <sstream>
 #include <string>
@@ -115,23 +114,15 @@ class MumpsSolver final : public LinearSolver {
   std::string name() const override { return kSingle ? "MUMPS in single precision" : "MUMPS"; }
   int failed_column() const override { return failed_; }
   void set_layout(SystemLayout layout) override { distributed_ = layout.distributed(); }
-  void set_ordering(FactorOrdering ordering) override { ordering_ = ordering; }
+  void configure(const FactorSettings& settings) override { settings_ = settings; }
   std::string ordering_used() const override;
-  void set_memory(FactorMemory memory) override { memory_ = memory; }
-  void set_workspace_relaxation(int percent) override { relaxation_ = percent; }
-  void set_preprocessing(bool automatic) override { preprocessing_ = automatic; }
-  void set_low_rank(LowRank low_rank) override { low_rank_ = low_rank; }
   std::string low_rank_note() const override;
-  void set_factorisation(MatrixKind kind, bool automatic) override {
-    forced_ = automatic ? std::nullopt : std::optional<MatrixKind>(kind);
-  }
   std::string factorisation_used() const override {
-    if (!forced_ || !initialised_) return {};
+    if (settings_.by_kind || !initialised_) return {};
     return id_.sym == 0 ? "LU (SYM = 0)" : id_.sym == 2 ? "LDL^T with pivoting (SYM = 2)" : "LDL^T (SYM = 1)";
   }
   std::string memory_used() const override { return memory_note_; }
   bool takes_distributed() const override { return true; }
-  void set_singularity_test(SingularityTest test) override { test_ = test; }
   int singular_column() const override { return singular_; }
   std::string singular_note() const override { return singular_note_; }
 
@@ -151,9 +142,9 @@ class MumpsSolver final : public LinearSolver {
     // the units), set to 1e20 (CNTL(5)) so that the solution is zero along them; NPREC < 0: no
     // detection. A symmetric positive definite factorisation (SYM = 1) detects none (it stops
     // on an exact zero only): the driver's check factorises K_ff with CHOLMOD for it.
-    const bool detect = test_.digits >= 0;
+    const bool detect = settings_.singularity.digits >= 0;
     id_.icntl[23] = detect ? 1 : 0;  // ICNTL(24)
-    id_.cntl[2] = detect ? -test_.pivot_ratio() : 0.0;
+    id_.cntl[2] = detect ? -settings_.singularity.pivot_ratio() : 0.0;
     id_.cntl[4] = detect ? 1e20 : 0.0;
     id_.job = 2;
     const WideBlas threads(wide_);
@@ -187,16 +178,12 @@ class MumpsSolver final : public LinearSolver {
   int failed_ = -1;
   bool distributed_ = false;  ///< the matrices given are this rank's columns (ICNTL(18) = 3)
   bool wide_ = false;         ///< factorised with two BLAS threads (per analysis)
-  FactorOrdering ordering_ = FactorOrdering::Auto;
+  /// Ordering, memory, ICNTL(14), preprocessing, block low rank, TYPE_RESOL and the null-pivot
+  /// test (ICNTL(24), CNTL(3), CNTL(5)) of the next analyses and factorisations.
+  FactorSettings settings_;
   FactorOrdering given_ = FactorOrdering::Auto;  ///< the ordering given to the last analysis (ICNTL(7) = 1)
-  SingularityTest test_;  ///< null pivots (ICNTL(24), CNTL(3), CNTL(5)), and whether they stop
   int singular_ = -1;     ///< the first null pivot the last factorisation went past, or -1
   std::string singular_note_;
-  FactorMemory memory_ = FactorMemory::Auto;
-  int relaxation_ = 0;       ///< ICNTL(14) for the next analyses; 0: MUMPS's default
-  bool preprocessing_ = true;  ///< MUMPS's automatic scaling and permutations; false: none
-  LowRank low_rank_;            ///< block low-rank factors (ICNTL(35), (36), CNTL(7)); off: full rank
-  std::optional<MatrixKind> forced_;  ///< the kind whose factorisation was asked for; none: the matrix's
   std::string memory_note_;  ///< memory_used() of the last analysis
 };
 
@@ -260,9 +247,9 @@ void MumpsSolver<Id>::choose_memory() {
   // After the analysis, before the factorisation: INFOG(16) is the largest per-process
   // estimate of the in-core factorisation (MB), INFOG(26) the same out of core.
   memory_note_.clear();
-  bool out = memory_ == FactorMemory::OutOfCore;
+  bool out = settings_.memory == FactorMemory::OutOfCore;
   double available = -1.0;
-  if (memory_ == FactorMemory::Auto) {
+  if (settings_.memory == FactorMemory::Auto) {
     available = available_megabytes();
     double short_of_memory = available >= 0.0 && id_.infog[15] > 0.8 * available ? 1.0 : 0.0;
     if (parallel::size() > 1) short_of_memory = parallel::max_over_ranks(short_of_memory);  // every rank alike
@@ -287,8 +274,8 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
   failed_ = -1;
   LUNASTER_ASSERT(a.rows() == a.cols(), "MUMPS: matrix is not square");
   int sym = kind == MatrixKind::SymmetricPositiveDefinite ? 1 : (kind == MatrixKind::SymmetricIndefinite ? 2 : 0);
-  if (forced_) {  // TYPE_RESOL: the factorisation asked for, where the matrix allows it
-    const MatrixKind asked = *forced_;
+  if (!settings_.by_kind) {  // TYPE_RESOL: the factorisation asked for, where the matrix allows it
+    const MatrixKind asked = settings_.factorisation;
     if (asked == MatrixKind::General) {
       sym = 0;
     } else if (kind == MatrixKind::General) {
@@ -305,7 +292,7 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
   // Going on past null pivots needs them detected and set aside, which SYM = 1 does not do
   // (its round-off pivot along a free body's motion would move it by 1e13): an SPD system is
   // then factorised as symmetric indefinite.
-  if (sym == 1 && !test_.stop && test_.digits >= 0) sym = 2;
+  if (sym == 1 && !settings_.singularity.stop && settings_.singularity.digits >= 0) sym = 2;
   std::vector<MUMPS_INT> irn, jcn;
   std::vector<Real> val;
   mumps_entries(a, sym, irn, jcn, val);
@@ -339,18 +326,18 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
     id_.icntl[3] = 0;
     // ICNTL(14): the working space beyond the analysis's estimate (PCENT_PIVOT). MUMPS's own
     // default unless one was asked for (5.5 on one process: 5 % for SYM = 1, 20 % otherwise).
-    if (relaxation_ > 0) id_.icntl[13] = relaxation_;
+    if (settings_.workspace_relaxation > 0) id_.icntl[13] = settings_.workspace_relaxation;
     // PRETRAITEMENTS = 'SANS': the matrix as assembled, no scaling (ICNTL(8) = 0), no
     // permutation to a zero-free or heavy diagonal (ICNTL(6) = 0) and no 2x2 pivots chosen
     // by it (ICNTL(12) = 1). MUMPS's own choices otherwise (77, 7 and 0, its defaults).
-    if (!preprocessing_) id_.icntl[5] = 0, id_.icntl[7] = 0, id_.icntl[11] = 1;
+    if (!settings_.preprocessing) id_.icntl[5] = 0, id_.icntl[7] = 0, id_.icntl[11] = 1;
     // ACCELERATION = 'LR': block low-rank factors, as code_aster sets them with a public MUMPS
     // (ICNTL(35) = 1, MUMPS's automatic BLR; CNTL(7) the dropping threshold, LOW_RANK_SEUIL;
     // a negative LOW_RANK_SEUIL asks for the UCFS variant, ICNTL(36) = 1). Fixed at the analysis.
-    if (low_rank_.on) {
+    if (settings_.low_rank.on) {
       id_.icntl[34] = 1;
-      id_.icntl[35] = low_rank_.threshold < 0.0 ? 1 : 0;
-      id_.cntl[6] = std::abs(low_rank_.threshold);
+      id_.icntl[35] = settings_.low_rank.threshold < 0.0 ? 1 : 0;
+      id_.cntl[6] = std::abs(settings_.low_rank.threshold);
     }
     // ICNTL(7): the fill-reducing ordering. On sparse rows (2D meshes: 18 to 26 entries a row
     // for QUAD4/QUAD8) AMD beat the automatic choice (PORD's nested dissection: Debian 12's
@@ -372,13 +359,13 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
     perm_in_.clear();
     given_ = FactorOrdering::Auto;
     FactorOrdering give = FactorOrdering::Auto;
-    switch (ordering_) {
+    switch (settings_.ordering) {
       case FactorOrdering::Auto:
         if (sym != 0 && entries_per_row >= 40.0 && a.rows() >= 10000) give = FactorOrdering::Metis;
         break;
       case FactorOrdering::Metis:
       case FactorOrdering::Rcm:
-      case FactorOrdering::Natural: give = ordering_; break;
+      case FactorOrdering::Natural: give = settings_.ordering; break;
       case FactorOrdering::Amd: id_.icntl[6] = 0; break;
       case FactorOrdering::Amf: id_.icntl[6] = 2; break;
       case FactorOrdering::Qamd: id_.icntl[6] = 6; break;
@@ -401,7 +388,7 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
         }
         id_.icntl[6] = 1;
         given_ = give;
-      } else if (ordering_ != FactorOrdering::Auto) {
+      } else if (settings_.ordering != FactorOrdering::Auto) {
         throw SolveError("MUMPS: the " + ordering_name(give) + " ordering failed");
       }
     }
@@ -428,7 +415,7 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
   }
   // An asked-for relaxation: what the factorisation allocated with it, in memory (INFOG(18), the
   // largest process's MB), and the relaxation it ended with (doubled if it ran short).
-  if (relaxation_ > 0 && id_.infog[0] >= 0 && id_.icntl[21] == 0)
+  if (settings_.workspace_relaxation > 0 && id_.infog[0] >= 0 && id_.icntl[21] == 0)
     memory_note_ = "in memory, " + std::to_string(id_.infog[17]) + " MB a process (working space: the analysis's "
                    "estimate + " + std::to_string(id_.icntl[13]) + " %)";
   analysed_ = id_.infog[0] >= 0;  // reuse an analysis only after a good factorisation
@@ -443,9 +430,9 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
   check("factorisation");
   singular_ = -1;
   singular_note_.clear();
-  if (id_.infog[27] > 0 && !test_.stop) {  // INFOG(28): number of null pivots; kept as asked
+  if (id_.infog[27] > 0 && !settings_.singularity.stop) {  // INFOG(28): number of null pivots; kept as asked
     singular_ = id_.pivnul_list ? id_.pivnul_list[0] - 1 : -1;
-    singular_note_ = std::to_string(id_.infog[27]) + " null pivot(s) below 1e-" + std::to_string(test_.digits) +
+    singular_note_ = std::to_string(id_.infog[27]) + " null pivot(s) below 1e-" + std::to_string(settings_.singularity.digits) +
                      " in the scaled matrix, set to 1e20: the solution is zero along them";
   } else if (id_.infog[27] > 0) {
     failed_ = id_.pivnul_list ? id_.pivnul_list[0] - 1 : -1;
@@ -457,14 +444,14 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
 
 template <class Id>
 std::string MumpsSolver<Id>::low_rank_note() const {
-  if (!initialised_ || !low_rank_.on || id_.infog[0] < 0) return {};
+  if (!initialised_ || !settings_.low_rank.on || id_.infog[0] < 0) return {};
   // INFOG(35): the factor entries the compressed factorisation kept; INFOG(29): the same
   // factorisation's entries in full rank. Negative: in millions.
   auto entries = [](MUMPS_INT v) { return v < 0 ? -1e6 * v : static_cast<double>(v); };
   const double kept = entries(id_.infog[34]), full = entries(id_.infog[28]);
   std::ostringstream out;
-  out << std::setprecision(3) << "block low-rank factors (threshold " << std::abs(low_rank_.threshold)
-      << (low_rank_.threshold < 0.0 ? ", UCFS" : "") << "): " << kept << " entries against " << full
+  out << std::setprecision(3) << "block low-rank factors (threshold " << std::abs(settings_.low_rank.threshold)
+      << (settings_.low_rank.threshold < 0.0 ? ", UCFS" : "") << "): " << kept << " entries against " << full
       << " in full rank (" << std::setprecision(1) << std::fixed << 100.0 * kept / std::max(1.0, full) << " %)";
   return out.str();
 }

@@ -90,8 +90,10 @@ class SaddleSolver final : public LinearSolver {
         // nested dissection, which CHOLMOD's AUTO would only choose after an AMD analysis:
         // on the SSNP121 3D contact benchmark METIS needs 1.13e10 operations, AMD 2.72e10.
         const double per_column = static_cast<double>(schur_.nonZeros()) / std::max<double>(1.0, schur_.cols());
-        const bool nested = ordering_ == FactorOrdering::Auto && per_column > 40.0 && schur_.cols() > 10000;
-        split_data_->schur->set_ordering(nested ? FactorOrdering::Metis : ordering_);
+        const bool nested = settings_.ordering == FactorOrdering::Auto && per_column > 40.0 && schur_.cols() > 10000;
+        FactorSettings schur_settings = settings_;
+        if (nested) schur_settings.ordering = FactorOrdering::Metis;
+        split_data_->schur->configure(schur_settings);
         split_data_->schur->factorize(schur_, MatrixKind::SymmetricPositiveDefinite);
         split_ = true;
         return;
@@ -139,33 +141,12 @@ class SaddleSolver final : public LinearSolver {
   }
   int failed_column() const override { return direct_ && !split_ ? direct_->failed_column() : -1; }
   int iterations() const override { return split_ ? iterations_ : 0; }
-  void set_ordering(FactorOrdering ordering) override {
-    ordering_ = ordering;
-    split_data_->schur->set_ordering(ordering);
-    if (direct_) direct_->set_ordering(ordering);
-  }
-  void set_memory(FactorMemory memory) override {
-    memory_ = memory;
-    if (direct_) direct_->set_memory(memory);
-  }
-  void set_workspace_relaxation(int percent) override {
-    relaxation_ = percent;
-    if (direct_) direct_->set_workspace_relaxation(percent);
-  }
-  void set_preprocessing(bool automatic) override {
-    preprocessing_ = automatic;
-    if (direct_) direct_->set_preprocessing(automatic);
-  }
-  void set_low_rank(LowRank low_rank) override {
-    low_rank_ = low_rank;
-    if (direct_) direct_->set_low_rank(low_rank);
+  void configure(const FactorSettings& settings) override {
+    settings_ = settings;
+    split_data_->schur->configure(settings);
+    if (direct_) direct_->configure(settings);
   }
   std::string low_rank_note() const override { return split_ || !direct_ ? std::string() : direct_->low_rank_note(); }
-  void set_singularity_test(SingularityTest test) override {
-    test_ = test;
-    split_data_->schur->set_singularity_test(test);
-    if (direct_) direct_->set_singularity_test(test);
-  }
   int singular_column() const override {
     if (!split_) return direct_ ? direct_->singular_column() : -1;
     const int c = split_data_->schur->singular_column();  // S's own numbering: the displacements'
@@ -190,12 +171,7 @@ class SaddleSolver final : public LinearSolver {
   LinearSolver& direct() const {
     if (!direct_) {
       direct_ = make_linear_solver(direct_kind_);
-      direct_->set_ordering(ordering_);
-      direct_->set_memory(memory_);
-      direct_->set_workspace_relaxation(relaxation_);
-      direct_->set_preprocessing(preprocessing_);
-      direct_->set_low_rank(low_rank_);
-      direct_->set_singularity_test(test_);
+      direct_->configure(settings_);
       if (has_layout_) direct_->set_layout(std::move(layout_)), has_layout_ = false;
     }
     return *direct_;
@@ -316,12 +292,7 @@ class SaddleSolver final : public LinearSolver {
 
   SolverKind direct_kind_;
   std::function<void(const std::string&)> note_;
-  FactorOrdering ordering_ = FactorOrdering::Auto;
-  FactorMemory memory_ = FactorMemory::Auto;
-  int relaxation_ = 0;
-  bool preprocessing_ = true;
-  LowRank low_rank_;
-  SingularityTest test_;
+  FactorSettings settings_;  ///< the direct backend's; S's CHOLMOD reads the ordering and the singularity test
   mutable SystemLayout layout_;  ///< given before the direct backend existed
   mutable bool has_layout_ = false;
   std::unique_ptr<Split> split_data_ = std::make_unique<Split>();

@@ -26,7 +26,8 @@ class UmfpackSolver final : public LinearSolver {
   Vector solve(const Vector& b) const override;
   std::string name() const override { return "UMFPACK"; }
   int failed_column() const override { return failed_; }
-  void set_ordering(FactorOrdering ordering) override {
+  void configure(const FactorSettings& settings) override {  // the ordering alone
+    const FactorOrdering ordering = settings.ordering;
     LUNASTER_ASSERT(any_backend_orders_by(ordering), "UMFPACK orders by AMD, METIS, reverse Cuthill-McKee or not at all");
     ordering_ = ordering;
     release();  // analyse again

@@ -478,7 +478,7 @@ SparseMatrix chain_with_soft_link(int n, double soft) {
 TEST(Singularity, CholmodCallsAPivotSingularByTheDigitsItLost) {
   const SparseMatrix a = chain_with_soft_link(10, 1e-9);  // loses about 9 digits at one pivot
   auto s = make_linear_solver(SolverKind::Cholmod);
-  s->set_singularity_test({8, true});
+  s->configure({.singularity = {8, true}});
   try {
     s->factorize(a, MatrixKind::SymmetricPositiveDefinite);
     FAIL() << "a pivot that lost about 9 digits passed a test of 8";
@@ -490,7 +490,7 @@ TEST(Singularity, CholmodCallsAPivotSingularByTheDigitsItLost) {
     EXPECT_NE(std::string(e.what()).find("significant digits (more than 8)"), std::string::npos) << e.what();
   }
   for (const SingularityTest test : {SingularityTest{10, true}, SingularityTest{-1, true}, SingularityTest{8, false}}) {
-    s->set_singularity_test(test);
+    s->configure({.singularity = test});
     s->factorize(a, MatrixKind::SymmetricPositiveDefinite);
     const Vector x = s->solve(rhs(10));
     EXPECT_LT((a * x - rhs(10)).norm() / rhs(10).norm(), 1e-6) << test.digits << (test.stop ? " stop" : " go on");
@@ -511,7 +511,7 @@ TEST(Singularity, CholmodHandsAPivotItCannotTakeToMumpsWhenToldToGoOn) {
   const SparseMatrix a = singular_zero_column(20, dead);
   auto s = make_linear_solver(SolverKind::Cholmod);
   EXPECT_THROW(s->factorize(a, MatrixKind::SymmetricPositiveDefinite), SolveError);
-  s->set_singularity_test({8, false});
+  s->configure({.singularity = {8, false}});
   s->factorize(a, MatrixKind::SymmetricPositiveDefinite);
   EXPECT_EQ(s->singular_column(), dead);
   EXPECT_NE(s->singular_note().find("a pivot CHOLMOD cannot take (zero or negative), so MUMPS factorised the system: "
@@ -545,18 +545,18 @@ TEST(Solvers, MumpsFactorisesAsAskedWhereTheSystemAllowsIt) {
                         Case{MatrixKind::General, MatrixKind::SymmetricIndefinite, &indefinite, "LU (SYM = 0)"}}) {
     auto m = make_linear_solver(SolverKind::Mumps);
     EXPECT_TRUE(m->factorisation_used().empty());
-    m->set_factorisation(c.asked, false);
+    m->configure({.by_kind = false, .factorisation = c.asked});
     m->factorize(*c.a, c.kind);
     EXPECT_EQ(m->factorisation_used(), c.said);
     const Vector b = rhs(static_cast<int>(c.a->rows()));
     EXPECT_LT((*c.a * m->solve(b) - b).norm() / b.norm(), 1e-12) << c.said;
   }
   auto m = make_linear_solver(SolverKind::Mumps);
-  m->set_factorisation(MatrixKind::SymmetricPositiveDefinite, false);
+  m->configure({.by_kind = false, .factorisation = MatrixKind::SymmetricPositiveDefinite});
   EXPECT_THROW(m->factorize(indefinite, MatrixKind::SymmetricIndefinite), DeckError);
-  m->set_factorisation(MatrixKind::SymmetricIndefinite, false);
+  m->configure({.by_kind = false, .factorisation = MatrixKind::SymmetricIndefinite});
   EXPECT_THROW(m->factorize(spd, MatrixKind::General), DeckError);
-  m->set_factorisation(MatrixKind::General, true);  // by the kind again: said by no one
+  m->configure({});  // by the kind again: said by no one
   m->factorize(spd, MatrixKind::SymmetricPositiveDefinite);
   EXPECT_TRUE(m->factorisation_used().empty());
 }
@@ -570,15 +570,14 @@ TEST(Singularity, MumpsWithoutPreprocessingTestsPivotsAsAssembled) {
   const SparseMatrix big = chain_with_soft_link(10, 1e-9) * 2e6, small = chain_with_soft_link(10, 1e-9) * 1e-6;
   for (const bool automatic : {true, false}) {
     auto m = make_linear_solver(SolverKind::Mumps);
-    m->set_preprocessing(automatic);
-    m->set_singularity_test({8, true});
+    m->configure({.preprocessing = automatic, .singularity = {8, true}});
     if (automatic) {
       EXPECT_THROW(m->factorize(big, MatrixKind::SymmetricIndefinite), SolveError);
     } else {
       EXPECT_NO_THROW(m->factorize(big, MatrixKind::SymmetricIndefinite));
       EXPECT_LT((big * m->solve(rhs(10)) - rhs(10)).norm() / rhs(10).norm(), 1e-6);
     }
-    m->set_singularity_test({12, true});
+    m->configure({.preprocessing = automatic, .singularity = {12, true}});
     if (automatic) {
       EXPECT_NO_THROW(m->factorize(small, MatrixKind::SymmetricIndefinite));
     } else {
@@ -596,7 +595,7 @@ TEST(Singularity, MumpsSetsANullPivotAsideWhenToldToGoOn) {
   auto s = make_linear_solver(SolverKind::Mumps);
   EXPECT_THROW(s->factorize(a, MatrixKind::SymmetricIndefinite), SolveError);
   EXPECT_EQ(s->failed_column(), dead);
-  s->set_singularity_test({8, false});
+  s->configure({.singularity = {8, false}});
   s->factorize(a, MatrixKind::SymmetricIndefinite);
   EXPECT_EQ(s->singular_column(), dead);
   EXPECT_NE(s->singular_note().find("1 null pivot(s) below 1e-8"), std::string::npos) << s->singular_note();
@@ -611,7 +610,7 @@ TEST(Singularity, MumpsSetsANullPivotAsideWhenToldToGoOn) {
     const SparseMatrix soft = chain_with_soft_link(10, 1e-9) * units;
     auto m = make_linear_solver(SolverKind::Mumps);
     EXPECT_THROW(m->factorize(soft, MatrixKind::SymmetricIndefinite), SolveError) << units;
-    m->set_singularity_test({12, true});
+    m->configure({.singularity = {12, true}});
     m->factorize(soft, MatrixKind::SymmetricIndefinite);
     const Vector y = m->solve(rhs(10));
     EXPECT_LT((soft * y - rhs(10)).norm() / rhs(10).norm(), 1e-6) << units;
@@ -920,7 +919,7 @@ TEST(Solvers, MumpsTakesTheOrderingAskedForAndAgreesWithUmfpackIn3d) {
       {FactorOrdering::Natural, "natural (the equations' own order), given"}};
   for (const auto& [ordering, name] : cases) {
     auto mumps = make_linear_solver(SolverKind::Mumps);
-    mumps->set_ordering(ordering);
+    mumps->configure({.ordering = ordering});
     mumps->factorize(a, MatrixKind::SymmetricIndefinite);
     EXPECT_EQ(mumps->ordering_used(), name);
     const Vector x = mumps->solve(f);
@@ -945,7 +944,7 @@ TEST(Solvers, MumpsBlockLowRankCompressesTheFactorsAndRefinementRestoresTheSolve
     return at == std::string::npos ? -1.0 : std::stod(note.substr(at + before.size()));
   };
   auto lossless = make_linear_solver(SolverKind::Mumps);
-  lossless->set_low_rank({true, 0.0});
+  lossless->configure({.low_rank = {true, 0.0}});
   lossless->factorize(a, MatrixKind::SymmetricIndefinite);
   const std::string kept_all = lossless->low_rank_note();
   EXPECT_EQ(kept_all.rfind("block low-rank factors (threshold 0): ", 0), 0u) << kept_all;
@@ -953,7 +952,7 @@ TEST(Solvers, MumpsBlockLowRankCompressesTheFactorsAndRefinementRestoresTheSolve
   EXPECT_LT((lossless->solve(f) - ref).norm(), 1e-12 * ref.norm());
 
   auto compressed = make_linear_solver(SolverKind::Mumps);
-  compressed->set_low_rank({true, 1e-4});
+  compressed->configure({.low_rank = {true, 1e-4}});
   compressed->factorize(a, MatrixKind::SymmetricIndefinite);
   const std::string note = compressed->low_rank_note();
   const double kept = entries(note, "): "), whole = entries(note, "against ");
@@ -998,7 +997,7 @@ TEST(Solvers, MumpsOutOfCoreAgreesWithInCore) {
   Vector in_core;
   for (FactorMemory memory : {FactorMemory::InCore, FactorMemory::Auto, FactorMemory::OutOfCore}) {
     auto mumps = make_linear_solver(SolverKind::Mumps);
-    mumps->set_memory(memory);
+    mumps->configure({.memory = memory});
     mumps->factorize(a, MatrixKind::SymmetricIndefinite);
     const Vector x = mumps->solve(f);
     if (memory == FactorMemory::OutOfCore) {
@@ -1053,7 +1052,7 @@ TEST(Solvers, MumpsWorkspaceRelaxationIsAllocatedAndSaid) {
   const int percents[2] = {20, 400};
   for (int k = 0; k < 2; ++k) {
     auto mumps = make_linear_solver(SolverKind::Mumps);
-    mumps->set_workspace_relaxation(percents[k]);
+    mumps->configure({.workspace_relaxation = percents[k]});
     mumps->factorize(a, MatrixKind::SymmetricIndefinite);
     const std::string note = mumps->memory_used();
     const std::string tail = " MB a process (working space: the analysis's estimate + " + std::to_string(percents[k]) + " %)";
@@ -1082,14 +1081,14 @@ TEST(Solvers, CholmodAndUmfpackTakeTheOrderingAskedFor) {
   for (FactorOrdering ordering :
        {FactorOrdering::Metis, FactorOrdering::Amd, FactorOrdering::Rcm, FactorOrdering::Natural}) {
     auto cholmod = make_linear_solver(SolverKind::Cholmod);
-    cholmod->set_ordering(ordering);
+    cholmod->configure({.ordering = ordering});
     cholmod->factorize(k, MatrixKind::SymmetricPositiveDefinite);
     EXPECT_EQ(cholmod->ordering_used(), ordering_name(ordering));
     const Vector x = cholmod->solve(f);
     EXPECT_LT((x - ref).norm(), 1e-9 * ref.norm()) << ordering_name(ordering);
 
     auto umfpack = make_linear_solver(SolverKind::Umfpack);
-    umfpack->set_ordering(ordering);
+    umfpack->configure({.ordering = ordering});
     umfpack->factorize(s, MatrixKind::SymmetricIndefinite);
     const std::string expected = ordering == FactorOrdering::Amd     ? "AMD or COLAMD"
                                  : ordering == FactorOrdering::Metis ? "METIS (UMFPACK's, on the graph of the equations)"
