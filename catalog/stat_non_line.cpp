@@ -225,6 +225,18 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                     "factorisation 'MUMPS in single precision'. NON (default): double precision")
                                    .into_values({"OUI", "NON"})
                                    .def("NON"),
+                               real("FILTRAGE_MATRICE",
+                                    "Positive: MUMPS factorises the matrix without its entries |a_ij| <= "
+                                    "FILTRAGE_MATRICE (|a_ii| + |a_jj|), as code_aster's MUMPS driver filters "
+                                    "them: sparser factors, approximate to about that ratio; the iterative "
+                                    "refinement of POSTTRAITEMENTS, on the matrix as assembled, takes each "
+                                    "solve to the accuracy asked (RESI_RELA) or the run stops saying so. The "
+                                    "log says how many entries were left out. The entries kept may differ "
+                                    "from one matrix to the next, and MUMPS analyses again when they do. "
+                                    "Below 0.5 (from 0.5 every diagonal entry would go). Zero or negative "
+                                    "(default -1): every entry kept")
+                                   .def(-1.0)
+                                   .below(0.5),
                                elim_lagr({"OUI", "NON", "LAGR2"}, "LAGR2"),
                                integer("PCENT_PIVOT",
                                        "Working space of MUMPS's factorisation beyond its analysis's estimate, in "

@@ -113,7 +113,7 @@ void say_in_keywords(Error& err) {
       break;
   }
   // Whatever the failure: MUMPS settings the system did not fit (TYPE_RESOL, PRETRAITEMENTS,
-  // ACCELERATION, MIXER_PRECISION).
+  // ACCELERATION, MIXER_PRECISION, FILTRAGE_MATRICE).
   for (auto& h : hints) {
     if (h.rfind("ask for a symmetric indefinite or general factorisation", 0) == 0)
       h = "use SOLVEUR TYPE_RESOL='SYMGEN' or 'NONSYM', or 'AUTO' (the default: by the system)";
@@ -122,6 +122,12 @@ void say_in_keywords(Error& err) {
     else if (h.rfind("the factors were compressed in block low rank", 0) == 0)
       h = "SOLVEUR ACCELERATION='LR' compressed the factors too coarsely for this system: lower LOW_RANK_SEUIL "
           "(1e-9 to 1e-12 are usual), use POSTTRAITEMENTS='FORCE', or ACCELERATION='FR' (full rank)";
+    else if (h.rfind("the matrix was factorised without its smallest entries", 0) == 0)
+      h = std::string("SOLVEUR FILTRAGE_MATRICE left out entries this system needs") +
+          (h.find("contact couplings") != std::string::npos
+               ? " (its contact couplings are small beside the stiffness's diagonal)"
+               : "") +
+          ": lower it, or remove it (the default, -1, keeps every entry)";
     else if (h.rfind("the factors were computed in single precision", 0) == 0)
       h = "SOLVEUR MIXER_PRECISION='OUI' factorised in single precision, too coarse for this system's "
           "conditioning: use POSTTRAITEMENTS='FORCE', or MIXER_PRECISION='NON' (the default)";

@@ -94,7 +94,8 @@ void read_petsc(const Args& solveur, engine::IterativeSettings& settings) {
 /// SOLVEUR NPREC and STOP_SINGULIER (the factorising methods), RENUM (the fill-reducing
 /// ordering, by code_aster's names for each METHODE) and, for MUMPS, GESTION_MEMOIRE,
 /// MATR_DISTRIBUEE, PCENT_PIVOT, RESI_RELA, PRETRAITEMENTS, POSTTRAITEMENTS, TYPE_RESOL,
-/// ACCELERATION, LOW_RANK_SEUIL and MIXER_PRECISION. `say` takes the lines the log gets about them.
+/// ACCELERATION, LOW_RANK_SEUIL, MIXER_PRECISION and FILTRAGE_MATRICE. `say` takes the lines
+/// the log gets about them.
 void read_direct_solver(const Args& solveur, engine::NewtonOptions& options,
                         const std::function<void(const std::string&)>& say) {
   using O = engine::FactorOrdering;
@@ -137,6 +138,7 @@ void read_direct_solver(const Args& solveur, engine::NewtonOptions& options,
                          "= 'LR' beside it, or remove it"});
   options.factor.low_rank = {low_rank, threshold};
   options.single_precision = solveur.text("MIXER_PRECISION") == "OUI";
+  options.factor.filter = solveur.real("FILTRAGE_MATRICE");
   if (acceleration.size() > 2 && acceleration != "AUTO")
     say("  SOLVEUR ACCELERATION = '" + acceleration + "': its extra settings are the MUMPS consortium's, not in "
         "Debian's MUMPS; factorising with '" + acceleration.substr(0, 2) + "', as code_aster does with a public MUMPS");

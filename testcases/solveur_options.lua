@@ -8,7 +8,9 @@
 -- symmetric systems) and 'SYMGEN' (LDL^T with pivoting, also of the SPD one), ACCELERATION = 'LR'
 -- with LOW_RANK_SEUIL = 1e-9 (block low-rank factors; the log says how many entries they kept)
 -- and 'LR+' with -1e-9 (the UCFS variant; LR+'s consortium settings fall back to LR, as the log
--- says), MIXER_PRECISION = 'OUI' (single-precision factors, each solve refined in double precision);
+-- says), MIXER_PRECISION = 'OUI' (single-precision factors, each solve refined in double precision),
+-- FILTRAGE_MATRICE = 1e-3 on the glued scene (MUMPS factorises the matrix without its entries
+-- |a_ij| <= 1e-3 (|a_ii| + |a_jj|), the log counts them, and refinement makes up for them);
 -- METHODE='MULT_FRONT' with RENUM METIS, MD, MDA; METHODE='LDLT' with RENUM RCMK (reverse
 -- Cuthill-McKee) and SANS (no reordering). The log names the ordering used and says when the
 -- factors are out of core.
@@ -31,8 +33,9 @@
 -- Solvers.MumpsFactorisesAsAskedWhereTheSystemAllowsIt, POSTTRAITEMENTS's steps by
 -- tests/decks/mumps_posttraitements.lua, the low-rank compression by
 -- Solvers.MumpsBlockLowRankCompressesTheFactorsAndRefinementRestoresTheSolve, the single precision
--- by Solvers.MumpsInSinglePrecisionIsRefinedToTheDoublePrecisionSolution, and the log lines of
--- ACCELERATION and MIXER_PRECISION by CTest's log.solveur_acceleration.
+-- by Solvers.MumpsInSinglePrecisionIsRefinedToTheDoublePrecisionSolution, the filtering by
+-- Solvers.MumpsFiltersTheMatrixAsCodeAsterDoesAndRefinementRestoresTheSolve, and the log lines of
+-- ACCELERATION, MIXER_PRECISION and FILTRAGE_MATRICE by CTest's log.solveur_acceleration.
 -- Reference: analytical.
 -- Runtime label: fast, 3D, contact, solver.
 DEBUT()
@@ -52,6 +55,9 @@ local others = {
   { METHODE = 'MULT_FRONT', RENUM = 'METIS' }, { METHODE = 'MULT_FRONT', RENUM = 'MD' },
   { METHODE = 'MULT_FRONT', RENUM = 'MDA' }, { METHODE = 'LDLT', RENUM = 'RCMK' }, { METHODE = 'LDLT', RENUM = 'SANS' },
 }
+-- FILTRAGE_MATRICE on the glued scene only: SSNP121 A's contact couplings are below 1e-9 of the
+-- stiffness's diagonal (testcases/errors/mumps_filtrage_matrice_contact.lua).
+local glued_only = { { METHODE = 'MUMPS', FILTRAGE_MATRICE = 1.0e-3 } }
 local function label(s)
   return s.METHODE .. (s.RENUM and ' RENUM=' .. s.RENUM or '') ..
          (s.GESTION_MEMOIRE and ' GESTION_MEMOIRE=' .. s.GESTION_MEMOIRE or '') ..
@@ -62,7 +68,8 @@ local function label(s)
          (s.TYPE_RESOL and ' TYPE_RESOL=' .. s.TYPE_RESOL or '') ..
          (s.ACCELERATION and ' ACCELERATION=' .. s.ACCELERATION or '') ..
          (s.LOW_RANK_SEUIL and ' LOW_RANK_SEUIL=' .. s.LOW_RANK_SEUIL or '') ..
-         (s.MIXER_PRECISION and ' MIXER_PRECISION=' .. s.MIXER_PRECISION or '')
+         (s.MIXER_PRECISION and ' MIXER_PRECISION=' .. s.MIXER_PRECISION or '') ..
+         (s.FILTRAGE_MATRICE and ' FILTRAGE_MATRICE=' .. s.FILTRAGE_MATRICE or '')
 end
 
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'meshes/glued3d_hexa20.med' }
@@ -71,7 +78,7 @@ CM = AFFE_MATERIAU{ MAILLAGE = MA, AFFE = _F{ GROUP_MA = { 'V1', 'V2' }, MATER =
 CH = AFFE_CHAR_MECA{ MODELE = MO, DDL_IMPO = { _F{ GROUP_NO = 'ENCAST', DX = 0.0, DY = 0.0, DZ = 0.0 },
                                                _F{ GROUP_NO = 'SURCHA', DX = 0.0, DY = 0.0, DZ = -0.1 } } }
 for _, command in ipairs({ 'STAT_NON_LINE', 'MECA_NON_LINE' }) do
-  for _, list in ipairs({ renums, others }) do
+  for _, list in ipairs({ renums, others, glued_only }) do
     for _, s in ipairs(list) do
       local solve = command == 'STAT_NON_LINE' and STAT_NON_LINE or MECA_NON_LINE
       local R = solve{ MODELE = MO, CHAM_MATER = CM, EXCIT = _F{ CHARGE = CH }, COMPORTEMENT = _F{ RELATION = 'ELAS' },

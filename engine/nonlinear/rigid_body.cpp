@@ -207,20 +207,28 @@ std::optional<SolveError> find_unheld_body(const FeModel& model, const DofMap& d
 
 SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, const std::vector<int>& free_index,
                                     const SparseMatrix& elastic, const SolveError& original, double t,
-                                    SingularityTest test, bool contact_terms) {
+                                    SingularityTest test, bool contact_terms, const std::string& approximations) {
   if (auto rigid = find_rigid_body_mode(model, dofs, free_index, elastic, t, test)) return *rigid;
   char inst[32];
   std::snprintf(inst, sizeof inst, "%.6e", t);
+  // Factors approximate by request: the approximation is named, not the system's conditioning.
+  const std::string approximate = approximations.empty() ? std::string()
+                                  : "the system at instant " + std::string(inst) + ", factorised approximately as "
+                                        "asked (" + approximations + "), could not be solved to the accuracy asked: ";
   if (!contact_terms) {
-    SolveError err("the system at instant " + std::string(inst) +
-                       " is too ill-conditioned for the accuracy asked of its solve: " + original.message(),
+    SolveError err((approximate.empty() ? "the system at instant " + std::string(inst) +
+                                              " is too ill-conditioned for the accuracy asked of its solve: "
+                                        : approximate) +
+                       original.message(),
                    {"the stiffness is regular (no rigid-body mode) but its solve did not reach the accuracy asked: "
                     "a part far softer than another, or an accuracy below round-off"});
     err.failure().what = Failure::What::SolveAccuracy;
     return err;
   }
-  SolveError err("the system at instant " + std::string(inst) +
-                     " is singular or too ill-conditioned for the linear solver: " + original.message(),
+  SolveError err((approximate.empty() ? "the system at instant " + std::string(inst) +
+                                            " is singular or too ill-conditioned for the linear solver: "
+                                      : approximate) +
+                     original.message(),
                  {"the elastic stiffness alone is regular, so the trouble comes from the contact terms",
                   "check that the contact surfaces face each other, and that the penalty or augmentation "
                   "coefficient is not many orders of magnitude above the material stiffness E / h: the condition "

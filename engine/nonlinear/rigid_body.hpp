@@ -40,9 +40,12 @@ std::optional<SolveError> find_unheld_body(const FeModel& model, const DofMap& d
                                            double t);
 
 /// `contact_terms`: the failed system had contact terms besides K (then, with K regular,
-/// they are blamed; otherwise the solve's accuracy is).
+/// they are blamed; otherwise the solve's accuracy is). `approximations`: how the factors were
+/// approximate by request ("in single precision"), which the message then names; empty
+/// when they were exact.
 SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, const std::vector<int>& free_index,
                                     const SparseMatrix& elastic, const SolveError& original, double t,
-                                    SingularityTest test = {}, bool contact_terms = true);
+                                    SingularityTest test = {}, bool contact_terms = true,
+                                    const std::string& approximations = {});
 
 }  // namespace lunaster::engine

@@ -365,18 +365,47 @@ SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err
   SolveError found = [&] {
     if (whole_here)
       return diagnose_singular_system(model_, dofs_, cons.free_index, elastic_.ff, err, t, diagnosis_test(),
-                                      contact_ != nullptr);
+                                      contact_ != nullptr, approximations());
     SplitMatrix whole;
     SparseMatrix k = assemble_stiffness_matrix(model_, dofs_);
     split_matrix(k, elastic_.constrained, whole);
     return diagnose_singular_system(model_, dofs_, cons.free_index, whole.ff, err, t, diagnosis_test(),
-                                    contact_ != nullptr);
+                                    contact_ != nullptr, approximations());
   }();
+  // Approximate factors asked for are the likeliest cause: said first.
+  if (options_.solver == SolverKind::Mumps) {
+    std::vector<std::string> said;
+    if (options_.factor.filter > 0.0)
+      said.push_back("the matrix was factorised without its smallest entries (filter " + sci(options_.factor.filter) +
+                     "), which this system needs" +
+                     (contact_ ? ": its contact couplings are small beside the stiffness's diagonal" : "") +
+                     "; lower the filter, or keep every entry");
+    if (options_.factor.low_rank.on)
+      said.push_back("the factors were compressed in block low rank (threshold " +
+                     sci(std::abs(options_.factor.low_rank.threshold)) +
+                     "), too coarsely for this system: lower the threshold, refine more, or factorise in full rank");
+    if (options_.single_precision)
+      said.push_back("the factors were computed in single precision, too coarse for this system's conditioning: "
+                     "refine more, or factorise in double precision");
+    std::vector<std::string> hints = found.hints();
+    hints.insert(hints.begin(), said.begin(), said.end());
+    found.set_hints(std::move(hints));
+  }
   if (!options_.factor.preprocessing && options_.factor.singularity.digits >= 0)
     found.add_hint("the matrix was factorised as assembled (MUMPS without preprocessing), so its pivots were tested "
                    "unscaled: a multiplier's pivot, small in absolute terms, counts as null; let MUMPS scale the "
                    "matrix, or turn the pivot test off");
   return found;
+}
+
+std::string StaticSolver::approximations() const {
+  if (options_.solver != SolverKind::Mumps) return {};
+  std::string said;
+  auto add = [&said](const char* what) { said += (said.empty() ? "" : ", ") + std::string(what); };
+  if (options_.factor.filter > 0.0) add("without its smallest entries");
+  if (options_.factor.low_rank.on) add("in block low rank");
+  if (options_.single_precision) add("in single precision");
+  return said;
 }
 
 SingularityTest StaticSolver::diagnosis_test() const {
@@ -1204,8 +1233,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         analysis_logged_ = solver->analysis_note();
         if (const std::string memory = solver->memory_used(); !memory.empty())
           say_once("  " + solver->name() + " factors: " + memory, memory_logged_);
-        if (const std::string compressed = solver->low_rank_note(); !compressed.empty())
-          say_once("  " + solver->name() + ": " + compressed, low_rank_logged_);
+        if (const std::string approximate = solver->approximation_note(); !approximate.empty())
+          say_once("  " + solver->name() + ": " + approximate, approximation_logged_);
         if (via_interface)
           log_.info("  linear solve: Schur complement of the " + std::to_string(interface_->interface().size()) +
                     " surface equations factorised on the kept elastic factorisation");
@@ -1282,17 +1311,6 @@ void StaticSolver::solve_instant(double t, Vector& u) {
                        sci(raw_error) + ", " + sci(solve_error) + " after iterative refinement; accepted below " +
                        sci(accepted) + ")"),
             t);
-        // Approximate factors asked for are the likeliest cause: said first.
-        std::vector<std::string> hints = found.hints();
-        if (options_.single_precision && !iterative)
-          hints.insert(hints.begin(), "the factors were computed in single precision, too coarse for this system's "
-                                      "conditioning: refine more, or factorise in double precision");
-        if (options_.factor.low_rank.on && !iterative)
-          hints.insert(hints.begin(), "the factors were compressed in block low rank (threshold " +
-                                          sci(std::abs(options_.factor.low_rank.threshold)) +
-                                          "), too coarsely for this system: lower the threshold, refine more, or "
-                                          "factorise in full rank");
-        found.set_hints(std::move(hints));
         throw found;
       }
       for (int eq = 0; eq < n; ++eq)

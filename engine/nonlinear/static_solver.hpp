@@ -187,6 +187,9 @@ class StaticSolver {
   SolveError diagnose(const Constraints& cons, const SolveError& err, double t) const;
   /// The singularity test a diagnosis factorises with.
   SingularityTest diagnosis_test() const;
+  /// The approximate factorisation the run asked for, in words ("without its smallest entries,
+  /// in single precision"); empty when the factors are exact.
+  std::string approximations() const;
 
   /// The elastic stiffness K split by the Dirichlet conditions of the run (one set for every
   /// instant, only the imposed values follow the load functions): K_ff (numbered as
@@ -228,7 +231,7 @@ class StaticSolver {
   std::string ordering_logged_;  ///< the last ordering line of the log (an ordering asked for)
   std::string factorisation_logged_;  ///< the last factorisation line of the log (one asked for)
   std::string memory_logged_;    ///< the last line of the log on where the factors are
-  std::string low_rank_logged_;  ///< the last line of the log on the block low-rank compression
+  std::string approximation_logged_;  ///< the last line of the log on the filtering and compression asked for
   std::string analysis_logged_;  ///< the last symbolic analysis said in the log (verbosity 2)
   long interface_reference_ = -1;  ///< elastic generation of the factorised reference
   SystemState interface_state_;

@@ -139,6 +139,11 @@ struct FactorSettings {
   /// Which pivots the factorisations call singular, and whether that stops them (NPREC,
   /// STOP_SINGULIER; UMFPACK and PETSc keep their own tests).
   SingularityTest singularity{};
+  /// MUMPS leaves out of the matrix it factorises each entry with |a_ij| <= filter (|a_ii| +
+  /// |a_jj|), zeros included, as code_aster's MUMPS driver does for SOLVEUR FILTRAGE_MATRICE:
+  /// sparser factors, approximate to about that ratio (iterative refinement against the
+  /// matrix as assembled makes up the rest). <= 0: every entry kept.
+  double filter = -1.0;
 };
 
 /// Direct solver: factorise once, solve for many right-hand sides.
@@ -179,10 +184,11 @@ class LinearSolver {
   /// How the next analyses and factorisations are done (FactorSettings). Each direct backend
   /// reads what applies to it; PETSc has none of it.
   virtual void configure(const FactorSettings& /*settings*/) {}
-  /// What the compression of the last factorisation came to ("block low-rank factors
-  /// (threshold 1e-09): 3.1e+06 entries against 5e+06 in full rank (62.0 %)"); empty when it
-  /// was in full rank.
-  virtual std::string low_rank_note() const { return {}; }
+  /// What the approximations asked for came to in the last factorisation: the matrix's
+  /// entries left out ("matrix filtered (1e-06): 1204 of 88410 entries left out") and the
+  /// compression of the factors ("block low-rank factors (threshold 1e-09): 3.1e+06 entries
+  /// against 5e+06 in full rank (62.0 %)"), "; " between them; empty when it made none.
+  virtual std::string approximation_note() const { return {}; }
   /// The factorisation the last one used, when it was asked for ("LU", "LDL^T with pivoting",
   /// "LDL^T"); empty otherwise.
   virtual std::string factorisation_used() const { return {}; }

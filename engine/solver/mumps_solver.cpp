@@ -116,7 +116,7 @@ class MumpsSolver final : public LinearSolver {
   void set_layout(SystemLayout layout) override { distributed_ = layout.distributed(); }
   void configure(const FactorSettings& settings) override { settings_ = settings; }
   std::string ordering_used() const override;
-  std::string low_rank_note() const override;
+  std::string approximation_note() const override;
   std::string factorisation_used() const override {
     if (settings_.by_kind || !initialised_) return {};
     return id_.sym == 0 ? "LU (SYM = 0)" : id_.sym == 2 ? "LDL^T with pivoting (SYM = 2)" : "LDL^T (SYM = 1)";
@@ -151,6 +151,8 @@ class MumpsSolver final : public LinearSolver {
     mumps_call(&id_);
   }
   void choose_memory();
+  void filter_entries(const SparseMatrix& a, std::vector<MUMPS_INT>& irn, std::vector<MUMPS_INT>& jcn,
+                      std::vector<Real>& val);
   static bool workspace_too_small(int infog1) {
     return infog1 == -8 || infog1 == -9 || infog1 == -14 || infog1 == -15 || infog1 == -17 || infog1 == -20;
   }
@@ -183,6 +185,7 @@ class MumpsSolver final : public LinearSolver {
   FactorSettings settings_;
   FactorOrdering given_ = FactorOrdering::Auto;  ///< the ordering given to the last analysis (ICNTL(7) = 1)
   int singular_ = -1;     ///< the first null pivot the last factorisation went past, or -1
+  std::pair<double, double> filtered_;  ///< the last matrix's entries left out and entries, over the ranks
   std::string singular_note_;
   std::string memory_note_;  ///< memory_used() of the last analysis
 };
@@ -270,6 +273,29 @@ void MumpsSolver<Id>::choose_memory() {
 }
 
 template <class Id>
+void MumpsSolver<Id>::filter_entries(const SparseMatrix& a, std::vector<MUMPS_INT>& irn, std::vector<MUMPS_INT>& jcn,
+                                     std::vector<Real>& val) {
+  // code_aster's MUMPS driver (FILTRAGE_MATRICE): each row's share filter |a_ii|, and an entry
+  // is kept when it is larger than the sum of its row's and its column's shares. A column may
+  // lie on several ranks (its parts summed by MUMPS): so are the diagonal's parts here.
+  Vector share = Vector::Zero(a.rows());
+  for (int c = 0; c < a.outerSize(); ++c)
+    for (SparseMatrix::InnerIterator it(a, c); it; ++it)
+      if (it.row() == c) share[c] += it.value();
+  if (distributed_) parallel::sum_over_ranks(share.data(), share.size());
+  share = settings_.filter * share.cwiseAbs();
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < val.size(); ++k) {
+    if (!(std::abs(static_cast<double>(val[k])) > share[irn[k] - 1] + share[jcn[k] - 1])) continue;
+    irn[kept] = irn[k], jcn[kept] = jcn[k], val[kept] = val[k];
+    ++kept;
+  }
+  filtered_ = {static_cast<double>(val.size() - kept), static_cast<double>(val.size())};
+  irn.resize(kept), jcn.resize(kept), val.resize(kept);
+  if (distributed_) parallel::sum_over_ranks(&filtered_.first, 1), parallel::sum_over_ranks(&filtered_.second, 1);
+}
+
+template <class Id>
 void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
   failed_ = -1;
   LUNASTER_ASSERT(a.rows() == a.cols(), "MUMPS: matrix is not square");
@@ -296,6 +322,7 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
   std::vector<MUMPS_INT> irn, jcn;
   std::vector<Real> val;
   mumps_entries(a, sym, irn, jcn, val);
+  if (settings_.filter > 0.0) filter_entries(a, irn, jcn, val);
   // The Newton and contact loops of a step factorise matrices of one pattern again and
   // again: keep MUMPS's analysis (ordering, symbolic factorisation) while it holds.
   bool same_pattern = analysed_ && sym == id_.sym && static_cast<MUMPS_INT>(a.rows()) == id_.n &&
@@ -443,13 +470,19 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
 }
 
 template <class Id>
-std::string MumpsSolver<Id>::low_rank_note() const {
-  if (!initialised_ || !settings_.low_rank.on || id_.infog[0] < 0) return {};
+std::string MumpsSolver<Id>::approximation_note() const {
+  if (!initialised_ || id_.infog[0] < 0) return {};
+  std::ostringstream out;
+  if (settings_.filter > 0.0)
+    out << std::setprecision(3) << "matrix filtered (" << settings_.filter
+        << "): " << static_cast<long long>(filtered_.first) << " of " << static_cast<long long>(filtered_.second)
+        << " entries left out";
+  if (!settings_.low_rank.on) return out.str();
+  if (settings_.filter > 0.0) out << "; ";
   // INFOG(35): the factor entries the compressed factorisation kept; INFOG(29): the same
   // factorisation's entries in full rank. Negative: in millions.
   auto entries = [](MUMPS_INT v) { return v < 0 ? -1e6 * v : static_cast<double>(v); };
   const double kept = entries(id_.infog[34]), full = entries(id_.infog[28]);
-  std::ostringstream out;
   out << std::setprecision(3) << "block low-rank factors (threshold " << std::abs(settings_.low_rank.threshold)
       << (settings_.low_rank.threshold < 0.0 ? ", UCFS" : "") << "): " << kept << " entries against " << full
       << " in full rank (" << std::setprecision(1) << std::fixed << 100.0 * kept / std::max(1.0, full) << " %)";

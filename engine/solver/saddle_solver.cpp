@@ -146,7 +146,7 @@ class SaddleSolver final : public LinearSolver {
     split_data_->schur->configure(settings);
     if (direct_) direct_->configure(settings);
   }
-  std::string low_rank_note() const override { return split_ || !direct_ ? std::string() : direct_->low_rank_note(); }
+  std::string approximation_note() const override { return split_ || !direct_ ? std::string() : direct_->approximation_note(); }
   int singular_column() const override {
     if (!split_) return direct_ ? direct_->singular_column() : -1;
     const int c = split_data_->schur->singular_column();  // S's own numbering: the displacements'

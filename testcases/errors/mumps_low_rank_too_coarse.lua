@@ -3,7 +3,7 @@
 -- ask: the compression drops a fifth of the factor entries, and the four refinement steps of
 -- POSTTRAITEMENTS = 'AUTO' do not take the solve to the accuracy every direct solve must reach
 -- (RESI_RELA). The error says so and names the low-rank setting first, with what to do.
--- EXPECT_ERROR: mumps_low_rank_too_coarse\.lua:17: STAT_NON_LINE: .*the linear solver returned no accurate solution
+-- EXPECT_ERROR: mumps_low_rank_too_coarse\.lua:17: STAT_NON_LINE: the system at instant 1\.0+e\+00, factorised approximately as asked \(in block low rank\), could not be solved to the accuracy asked: the linear solver returned no accurate solution
 -- EXPECT_ERROR: SOLVEUR ACCELERATION='LR' compressed the factors too coarsely for this system: lower LOW_RANK_SEUIL \(1e-9 to 1e-12 are usual\), use POSTTRAITEMENTS='FORCE', or ACCELERATION='FR' \(full rank\)
 -- EXPECT_STATUS: 3
 DEBUT()

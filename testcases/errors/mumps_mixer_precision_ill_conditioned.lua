@@ -5,7 +5,7 @@
 -- solve to the accuracy every direct solve must reach (RESI_RELA). The error says so and names
 -- MIXER_PRECISION first, with what to do. (tests/decks/mumps_posttraitements.lua solves the same
 -- scene in double precision.)
--- EXPECT_ERROR: mumps_mixer_precision_ill_conditioned\.lua:20: STAT_NON_LINE: .*the linear solver returned no accurate solution
+-- EXPECT_ERROR: mumps_mixer_precision_ill_conditioned\.lua:20: STAT_NON_LINE: the system at instant 1\.0+e\+00, factorised approximately as asked \(in single precision\), could not be solved to the accuracy asked: the linear solver returned no accurate solution
 -- EXPECT_ERROR: SOLVEUR MIXER_PRECISION='OUI' factorised in single precision, too coarse for this system's conditioning: use POSTTRAITEMENTS='FORCE', or MIXER_PRECISION='NON' \(the default\)
 -- EXPECT_STATUS: 3
 DEBUT()
