@@ -12,10 +12,9 @@ std::vector<Keyword> zone_surfaces() {
                "How far outside a master cell the projection of a slave point may fall and still pair it, in the "
                "cell's reference coordinates (its reference segment or face spans 2 units along each direction, "
                "0.5 is a quarter of it): within it the projection is brought back onto the cell's boundary; "
-               "beyond it on every master cell the point is not paired (no contact there). 0: no projection "
-               "outside a cell is taken. code_aster's default 0.5; its negative values are not offered")
-              .def(0.5)
-              .range(0.0, std::nullopt)};
+               "beyond it on every master cell the point is not paired (no contact there). 0, or negative as "
+               "code_aster spells it: no projection outside a cell is taken. code_aster's default 0.5")
+              .def(0.5)};
 }
 
 Keyword continuous_zone() {

@@ -1,5 +1,6 @@
 #include "commands/contact_keywords.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "commands/selection.hpp"
@@ -59,7 +60,9 @@ engine::ContactZone read_contact_zone(const catalog::Args& zone, const engine::M
   z.slave_group = zone.text("GROUP_MA_ESCL");
   z.master_group = zone.text("GROUP_MA_MAIT");
   read_integration(zone, z);
-  if (opt(zone, "TOLE_PROJ_EXT")) z.tole_proj_ext = zone.real("TOLE_PROJ_EXT");
+  // code_aster marks a negative TOLE_PROJ_EXT as -1: any projection outside the cell is
+  // excluded, as with 0 (a point inside is 0 outside).
+  if (opt(zone, "TOLE_PROJ_EXT")) z.tole_proj_ext = std::max(0.0, zone.real("TOLE_PROJ_EXT"));
   if (opt(zone, "COEF_CONT")) z.coef_cont = zone.real("COEF_CONT");
   if (opt(zone, "COEF_REGU_CONT")) z.coef_cont = zone.real("COEF_REGU_CONT");
   if (opt(zone, "E_N")) z.coef_pena = zone.real("E_N");

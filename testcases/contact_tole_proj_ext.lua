@@ -5,7 +5,8 @@
 --          of the slave side AB (x = 1.06 at the end) overhangs the end F of the master side EF
 --          (x = 1). EF has 11 cells of 2/11 m, so B's projection lies 0.06 / (1/11) = 0.66
 --          reference units outside the last master cell (whose reference segment spans 2).
---          - TOLE_PROJ_EXT = 0.5 (code_aster's default; also 0): B is not paired, no contact there
+--          - TOLE_PROJ_EXT = 0.5 (code_aster's default; also 0, and -1: code_aster's negative
+--            values forbid any projection outside a cell): B is not paired, no contact there
 --            (CONT_NOEU CONT = 0) and B, beyond the lower block, sinks past the master's level.
 --          - TOLE_PROJ_EXT = 1: B's projection is brought back onto F, B is paired and pressed
 --            there (CONT = 1, a pressure).
@@ -27,6 +28,7 @@ L = DEFI_LIST_REEL{ DEBUT = 0.0, INTERVALLE = _F{ JUSQU_A = 1.0, NOMBRE = 1 } }
 local cases = {
   { tole = nil, cont_b = 0.0, lags_b = -5.365257317, dy_b = -6.169329853e-02 },  -- the default, 0.5
   { tole = 0.0, cont_b = 0.0, lags_b = -5.365257317, dy_b = -6.169329853e-02 },
+  { tole = -1.0, cont_b = 0.0, lags_b = -5.365257317, dy_b = -6.169329853e-02 },
   { tole = 1.0, cont_b = 1.0, lags_b = -5.785478439e+04, dy_b = -5.765733174e-02 },
 }
 for _, case in ipairs(cases) do
