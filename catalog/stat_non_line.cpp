@@ -122,10 +122,24 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                    .def(1e-6)
                    .above(0.0)
                    .below(1.0),
-               integer("NMAX_ITER", "Largest number of Krylov iterations per solve; 0: no limit but 10,000")
+               integer("NMAX_ITER", "Largest number of Krylov iterations per solve; 0: 100 with PRE_COND = "
+                                    "'LDLT_SP' (code_aster's), otherwise no limit but 10,000")
                    .def(0LL)
                    .range(0, std::nullopt)},
               {}},
+                        Block{"PRE_COND",
+                              {"LDLT_SP"},
+                              {integer("REAC_PRECOND",
+                                       "The single-precision factorisation serves as preconditioner for the next "
+                                       "matrices of the run (Newton iterations, contact passes, instants) while each "
+                                       "solve takes at most REAC_PRECOND Krylov iterations; a solve that does not "
+                                       "converge on a kept factorisation factorises its own matrix and solves again, "
+                                       "as code_aster does. The log's linear-solve lines say when it was kept. 0: "
+                                       "every matrix factorised (what code_aster's MECA_NON_LINE does whatever is "
+                                       "given)")
+                                   .def(30LL)
+                                   .range(0, std::nullopt)},
+                              {}},
                         Block{"METHODE",
                               {"MUMPS"},
                               {text("RENUM",

@@ -89,6 +89,11 @@ void read_petsc(const Args& solveur, engine::IterativeSettings& settings) {
                                                   : S::Preconditioner::LdltSp;
   settings.relative_residual = solveur.real("RESI_RELA");
   settings.max_iterations = static_cast<int>(solveur.integer("NMAX_ITER"));
+  // code_aster's LDLT_SP: 100 iterations when NMAX_ITER is 0, and REAC_PRECOND.
+  if (settings.preconditioner == S::Preconditioner::LdltSp) {
+    if (settings.max_iterations == 0) settings.max_iterations = 100;
+    settings.reac_precond = static_cast<int>(solveur.integer("REAC_PRECOND"));
+  }
 }
 
 /// SOLVEUR NPREC and STOP_SINGULIER (the factorising methods), RENUM (the fill-reducing

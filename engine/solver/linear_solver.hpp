@@ -35,6 +35,11 @@ struct IterativeSettings {
   Preconditioner preconditioner = Preconditioner::LdltSp;
   double relative_residual = 1e-6;  ///< |b - A x| / |b| to reach (true residual, not preconditioned)
   int max_iterations = 0;           ///< 0: no limit but the backend's own (10,000)
+  /// LdltSp: its single-precision factorisation is kept for the next matrices of the run while
+  /// each solve takes at most this many Krylov iterations, and a solve that does not converge
+  /// on a kept one factorises its own matrix and solves again (code_aster's REAC_PRECOND).
+  /// 0: every matrix factorised.
+  int reac_precond = 0;
   /// Receives one line per Krylov iteration (iteration, residual) when set.
   std::function<void(const std::string&)> history;
 };

@@ -156,13 +156,22 @@ class PetscSolver final : public LinearSolver {
 
   void factorize(const SparseMatrix& a, MatrixKind kind) override { set_up(a, kind, nullptr); }
   bool factorize_taking(SparseMatrix& a, MatrixKind kind) override {
+    // A kept LDLT_SP preconditioner may have to factorise this matrix during a solve: the
+    // caller keeps it.
+    if (may_keep_preconditioner()) {
+      set_up(a, kind, nullptr);
+      return false;
+    }
     set_up(a, kind, &a);
     return true;
   }
   bool multiply(const Vector& x, Vector& y) const override;
   Vector solve(const Vector& b) const override;
   std::string name() const override {
-    return std::string("PETSc ") + krylov_name(settings_.krylov) + " + " + preconditioner_name(settings_.preconditioner);
+    return std::string("PETSc ") + krylov_name(settings_.krylov) + " + " + preconditioner_name(settings_.preconditioner) +
+           (kept_      ? " (kept from an earlier matrix)"
+            : renewed_ ? " (factorised again: the kept one did not converge)"
+                       : "");
   }
   bool iterative() const override { return true; }
   void set_layout(SystemLayout layout) override { layout_ = std::move(layout); }
@@ -195,6 +204,11 @@ class PetscSolver final : public LinearSolver {
   void for_each_local_row(const SparseMatrix& a, Row row, bool sorted = true) const;
   void set_symmetry_options(MatrixKind kind);
   void attach_near_null_space();
+  bool may_keep_preconditioner() const {
+    return settings_.preconditioner == Settings::Preconditioner::LdltSp && settings_.reac_precond > 0;
+  }
+  /// KSPSolve of b into x; false when it did not converge (what it reached in `detail`).
+  bool krylov_solve(Vec b, Vec x, std::string& detail) const;
   bool multigrid() const {
     return settings_.preconditioner == Settings::Preconditioner::Gamg ||
            settings_.preconditioner == Settings::Preconditioner::Ml ||
@@ -227,6 +241,17 @@ class PetscSolver final : public LinearSolver {
   mutable double rhs_norm_ = 1.0;  ///< |b| of the solve in progress (the history's scale)
   mutable int iterations_ = 0;
   std::unique_ptr<SinglePrecisionFactor> single_;
+  /// REAC_PRECOND: the matrix of the last set-up (alive until the next: the caller keeps it)
+  /// and its kind, which a solve on a kept factorisation may have to factorise; the size of the
+  /// matrix `single_` factorised; whether the preconditioner is an earlier matrix's, and
+  /// whether the next set-up factorises (the last solve took more than REAC_PRECOND
+  /// iterations).
+  const SparseMatrix* source_ = nullptr;
+  MatrixKind kind_ = MatrixKind::SymmetricPositiveDefinite;
+  Eigen::Index single_n_ = -1;
+  mutable bool kept_ = false;
+  mutable bool renew_ = true;
+  mutable bool renewed_ = false;  ///< the last solve factorised its matrix after a kept one failed
 };
 
 void PetscSolver::number_rows(int n_equations) {
@@ -605,8 +630,17 @@ void PetscSolver::set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* t
       break;
     }
     case Settings::Preconditioner::LdltSp:
-      single_ = std::make_unique<SinglePrecisionFactor>();
-      single_->factorize(a, kind, layout_.distributed());
+      // REAC_PRECOND: the last factorisation serves again while the solves it preconditions
+      // stay within that many iterations (every rank takes the same branch: the iterations
+      // are the KSP's, collective).
+      kept_ = settings_.reac_precond > 0 && single_ && !renew_ && single_n_ == a.rows();
+      renewed_ = false;
+      if (!kept_) {
+        single_ = std::make_unique<SinglePrecisionFactor>();
+        single_->factorize(a, kind, layout_.distributed());
+        single_n_ = a.rows();
+      }
+      source_ = &a, kind_ = kind;
       check(PCSetType(pc, PCSHELL), "PCSetType");
       check(PCShellSetContext(pc, this), "PCShellSetContext");
       check(PCShellSetApply(pc, &PetscSolver::apply_single_precision), "PCShellSetApply");
@@ -659,6 +693,23 @@ bool PetscSolver::multiply(const Vector& x, Vector& y) const {
   return true;
 }
 
+bool PetscSolver::krylov_solve(Vec b, Vec x, std::string& detail) const {
+  check(KSPSolve(ksp_, b, x), "KSPSolve");
+  KSPConvergedReason reason;
+  PetscInt its = 0;
+  PetscReal rnorm = 0.0;
+  KSPGetConvergedReason(ksp_, &reason);
+  KSPGetIterationNumber(ksp_, &its);
+  KSPGetResidualNorm(ksp_, &rnorm);
+  iterations_ = static_cast<int>(its);
+  if (reason >= 0) return true;
+  char text[160];
+  std::snprintf(text, sizeof text, "relative residual %.3e after %d iterations, %.1e asked (%s)", rnorm / rhs_norm_,
+                static_cast<int>(its), settings_.relative_residual, KSPConvergedReasons[reason]);
+  detail = text;
+  return false;
+}
+
 Vector PetscSolver::solve(const Vector& b) const {
   if (!ksp_) throw InternalError("PETSc: solve called before factorize");
   Vec bv = nullptr, xv = nullptr;
@@ -668,24 +719,30 @@ Vector PetscSolver::solve(const Vector& b) const {
   iterations_ = 0;
   Vector out = Vector::Zero(b.size());
   if (b.norm() > 0.0) {
-    check(KSPSolve(ksp_, bv, xv), "KSPSolve");
-    KSPConvergedReason reason;
-    PetscInt its = 0;
-    PetscReal rnorm = 0.0;
-    KSPGetConvergedReason(ksp_, &reason);
-    KSPGetIterationNumber(ksp_, &its);
-    KSPGetResidualNorm(ksp_, &rnorm);
-    iterations_ = static_cast<int>(its);
-    if (reason < 0) {
-      char detail[160];
-      std::snprintf(detail, sizeof detail, "relative residual %.3e after %d iterations, %.1e asked (%s)",
-                    rnorm / rhs_norm_, static_cast<int>(its), settings_.relative_residual, KSPConvergedReasons[reason]);
+    std::string detail;
+    bool converged = krylov_solve(bv, xv, detail);
+    int spent = iterations_;
+    if (!converged && kept_) {
+      // An earlier matrix's factorisation no longer preconditions this one (REAC_PRECOND, as
+      // code_aster does): factorise this matrix and solve again.
+      if (settings_.history)
+        settings_.history("    LDLT_SP: the kept factorisation did not converge (" + detail + "); factorised again");
+      single_->factorize(*source_, kind_, layout_.distributed());
+      kept_ = false, renewed_ = true;
+      converged = krylov_solve(bv, xv, detail);
+      spent += iterations_;
+    }
+    const int last = iterations_;  // code_aster's count: the solve that gave the solution
+    iterations_ = spent;
+    if (!converged) {
       VecDestroy(&bv);
       VecDestroy(&xv);
+      renew_ = true;
       throw iterative_failure(std::string("the iterative solver ") + name() + " did not converge: " + detail,
                               {"allow more iterations, a larger tolerance, another preconditioner, or use a direct "
                                "solver"});
     }
+    renew_ = last > settings_.reac_precond;
     from_petsc(xv, out);
   }
   VecDestroy(&bv);

@@ -206,6 +206,66 @@ TEST(Solvers, PetscTakesTheMatrixAndMultipliesByItsCopy) {
   EXPECT_FALSE(direct->multiply(rhs(50), y));
 }
 
+TEST(Solvers, PetscKeepsTheSinglePrecisionFactorisationAsCodeAsterReacPrecondSays) {
+  // REAC_PRECOND = 30 with LDLT_SP: after a solve of a few iterations the next matrix (A's
+  // diagonal scaled by 1.001) is preconditioned by A's factorisation, kept, and still solved to
+  // the tolerance. A matrix that factorisation no longer preconditions within 20 iterations
+  // (A's diagonal scaled row by row by 1 to 181, ten different factors) is factorised during
+  // its solve, which then converges, and that factorisation is kept in turn. A factorisation is
+  // kept only for a matrix of the same size; after a solve that took more than REAC_PRECOND
+  // iterations the next matrix is factorised, and REAC_PRECOND = 0 keeps none. With a kept
+  // factorisation possible the caller keeps its matrix (factorize_taking returns false).
+  using S = IterativeSettings;
+  constexpr int n = 200;
+  const SparseMatrix a = spd_matrix(n);
+  auto scaled_diagonal = [&a](auto factor) {
+    SparseMatrix m = a;
+    for (int i = 0; i < n; ++i) m.coeffRef(i, i) *= factor(i);
+    return m;
+  };
+  const SparseMatrix near = scaled_diagonal([](int) { return 1.001; });
+  const SparseMatrix far = scaled_diagonal([](int i) { return 1.0 + 20.0 * (i % 10); });
+  IterativeSettings settings = petsc(S::Krylov::FGMRES, S::Preconditioner::LdltSp, 20);
+  settings.reac_precond = 30;
+  auto s = make_linear_solver(SolverKind::Petsc, settings);
+  SparseMatrix first = a;
+  EXPECT_FALSE(s->factorize_taking(first, MatrixKind::SymmetricPositiveDefinite));
+  EXPECT_EQ(first.nonZeros(), a.nonZeros());
+  check_solution(a, s->solve(rhs(n)), s->name());
+  EXPECT_EQ(s->name(), "PETSc FGMRES + LDLT_SP");
+  s->factorize(near, MatrixKind::SymmetricPositiveDefinite);
+  EXPECT_EQ(s->name(), "PETSc FGMRES + LDLT_SP (kept from an earlier matrix)");
+  check_solution(near, s->solve(rhs(n)), s->name());
+  EXPECT_LE(s->iterations(), 20);
+  s->factorize(far, MatrixKind::SymmetricPositiveDefinite);
+  EXPECT_EQ(s->name(), "PETSc FGMRES + LDLT_SP (kept from an earlier matrix)");
+  check_solution(far, s->solve(rhs(n)), s->name());
+  EXPECT_EQ(s->name(), "PETSc FGMRES + LDLT_SP (factorised again: the kept one did not converge)");
+  EXPECT_GT(s->iterations(), 20);  // the kept factorisation's 20, then the solve on far's own
+  s->factorize(far, MatrixKind::SymmetricPositiveDefinite);
+  EXPECT_EQ(s->name(), "PETSc FGMRES + LDLT_SP (kept from an earlier matrix)");  // far's own, kept
+  check_solution(far, s->solve(rhs(n)), s->name());
+  EXPECT_LE(s->iterations(), 5);
+  const SparseMatrix smaller = spd_matrix(50);
+  s->factorize(smaller, MatrixKind::SymmetricPositiveDefinite);
+  EXPECT_EQ(s->name(), "PETSc FGMRES + LDLT_SP");
+  check_solution(smaller, s->solve(rhs(50)), s->name());
+
+  settings.reac_precond = 1;  // a solve takes 2 iterations or more
+  auto strict = make_linear_solver(SolverKind::Petsc, settings);
+  strict->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+  check_solution(a, strict->solve(rhs(n)), strict->name());
+  EXPECT_GT(strict->iterations(), 1);
+  strict->factorize(near, MatrixKind::SymmetricPositiveDefinite);
+  EXPECT_EQ(strict->name(), "PETSc FGMRES + LDLT_SP");
+
+  auto every = make_linear_solver(SolverKind::Petsc, petsc(S::Krylov::FGMRES, S::Preconditioner::LdltSp, 20));
+  every->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+  every->solve(rhs(n));
+  every->factorize(near, MatrixKind::SymmetricPositiveDefinite);
+  EXPECT_EQ(every->name(), "PETSc FGMRES + LDLT_SP");
+}
+
 TEST(Solvers, PetscSaddlePointNeedsAFactorisationAsPreconditioner) {
   using S = IterativeSettings;
   const SparseMatrix a = saddle_matrix(30);
