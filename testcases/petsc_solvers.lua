@@ -5,10 +5,11 @@
 -- rigid-body modes as near null space; FGMRES + LDLT_SP (code_aster's default for PETSC), GMRES + SOR
 -- and GMRES + JACOBI as well. The last run is SSNP121 A's saddle-point system (CONTINUE, contact
 -- multipliers), which only a factorisation preconditions: FGMRES + LDLT_SP, with INFO=2 printing
--- each Krylov iteration. There REAC_PRECOND (default 30) keeps the single-precision factorisation
--- for the next contact pass, and when a kept one does not converge in NMAX_ITER (100 by default
--- with LDLT_SP) the solve factorises its own matrix (CTest log.petsc_reac_precond checks the
--- log); the same scene through MECA_NON_LINE with REAC_PRECOND = 0 factorises every matrix.
+-- each Krylov iteration. There REAC_PRECOND = 30 (code_aster's default) keeps the single-precision
+-- factorisation for the next contact pass, and when a kept one has not converged after 30
+-- iterations the solve factorises its own matrix (CTest log.petsc_reac_precond checks the log);
+-- the same scene through MECA_NON_LINE with REAC_PRECOND = 0 (lunaster's default) factorises
+-- every matrix.
 -- Reference: analytical, uniform strain -0.05: LAGS_C = -1e5 Pa and DZ = -0.05 m on the interface.
 -- RESI_RELA = 1e-12, so the mortar checks hold at 1e-8 as with a direct solver; SSNP121 A's
 -- at code_aster's 1 % (the method's own error, as in ssnp121a.lua).
@@ -77,7 +78,7 @@ RESU2 = STAT_NON_LINE{ MODELE = MO2, CHAM_MATER = CHMAT2, CONTACT = CONT2, INFO 
                        EXCIT = _F{ CHARGE = CHA2, FONC_MULT = RAMPE }, COMPORTEMENT = _F{ RELATION = 'ELAS' },
                        INCREMENT = _F{ LIST_INST = L_INST },
                        CONVERGENCE = _F{ RESI_GLOB_MAXI = 2e-8, ITER_GLOB_MAXI = 30 },
-                       SOLVEUR = _F{ METHODE = 'PETSC', RESI_RELA = 1.0e-12 } }
+                       SOLVEUR = _F{ METHODE = 'PETSC', RESI_RELA = 1.0e-12, REAC_PRECOND = 30 } }
 RESU3 = MECA_NON_LINE{ MODELE = MO2, CHAM_MATER = CHMAT2, CONTACT = _F{ DEFINITION = CONT2 },
                        EXCIT = _F{ CHARGE = CHA2, FONC_MULT = RAMPE }, COMPORTEMENT = _F{ RELATION = 'ELAS' },
                        INCREMENT = _F{ LIST_INST = L_INST },
