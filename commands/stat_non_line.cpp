@@ -124,7 +124,8 @@ void read_direct_solver(const Args& solveur, engine::NewtonOptions& options,
                    : memory == "OUT_OF_CORE" ? engine::FactorMemory::OutOfCore
                                              : engine::FactorMemory::Auto;
   options.share_model = solveur.text("MATR_DISTRIBUEE") == "OUI";
-  if (solveur.has("PCENT_PIVOT")) options.factor.workspace_relaxation = static_cast<int>(solveur.integer("PCENT_PIVOT"));
+  if (solveur.has("PCENT_PIVOT"))
+    options.factor.workspace_relaxation = static_cast<int>(solveur.integer("PCENT_PIVOT"));
   if (solveur.has("RESI_RELA")) options.direct_solve_tolerance = solveur.real("RESI_RELA");
   using R = engine::NewtonOptions::Refinement;
   const std::string post = solveur.text("POSTTRAITEMENTS");

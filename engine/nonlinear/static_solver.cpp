@@ -1096,7 +1096,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
             backend != SolverKind::Petsc && !distributed_ && options_.factor.singularity.digits >= 0) {
           Stopwatch watch(stats_.assemble_seconds);
           restore_elastic();  // K_ff itself, without this iteration's terms
-          if (auto rigid = find_rigid_body_mode(model_, dofs_, cons.free_index, elastic_.ff, t, options_.factor.singularity))
+          if (auto rigid =
+                  find_rigid_body_mode(model_, dofs_, cons.free_index, elastic_.ff, t, options_.factor.singularity))
             report(*rigid);
           update_system(cons, k_contact, condensed, eliminated_eqs);  // the terms again
         }

@@ -180,8 +180,8 @@ class MumpsSolver final : public LinearSolver {
   int failed_ = -1;
   bool distributed_ = false;  ///< the matrices given are this rank's columns (ICNTL(18) = 3)
   bool wide_ = false;         ///< factorised with two BLAS threads (per analysis)
-  /// Ordering, memory, ICNTL(14), preprocessing, block low rank, TYPE_RESOL and the null-pivot
-  /// test (ICNTL(24), CNTL(3), CNTL(5)) of the next analyses and factorisations.
+  /// Ordering, memory, ICNTL(14), preprocessing, block low rank, TYPE_RESOL, the null-pivot test
+  /// (ICNTL(24), CNTL(3), CNTL(5)) and the filter of the next analyses and factorisations.
   FactorSettings settings_;
   FactorOrdering given_ = FactorOrdering::Auto;  ///< the ordering given to the last analysis (ICNTL(7) = 1)
   int singular_ = -1;     ///< the first null pivot the last factorisation went past, or -1
@@ -459,7 +459,8 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
   singular_note_.clear();
   if (id_.infog[27] > 0 && !settings_.singularity.stop) {  // INFOG(28): number of null pivots; kept as asked
     singular_ = id_.pivnul_list ? id_.pivnul_list[0] - 1 : -1;
-    singular_note_ = std::to_string(id_.infog[27]) + " null pivot(s) below 1e-" + std::to_string(settings_.singularity.digits) +
+    singular_note_ = std::to_string(id_.infog[27]) + " null pivot(s) below 1e-" +
+                     std::to_string(settings_.singularity.digits) +
                      " in the scaled matrix, set to 1e20: the solution is zero along them";
   } else if (id_.infog[27] > 0) {
     failed_ = id_.pivnul_list ? id_.pivnul_list[0] - 1 : -1;

@@ -146,7 +146,9 @@ class SaddleSolver final : public LinearSolver {
     split_data_->schur->configure(settings);
     if (direct_) direct_->configure(settings);
   }
-  std::string approximation_note() const override { return split_ || !direct_ ? std::string() : direct_->approximation_note(); }
+  std::string approximation_note() const override {
+    return split_ || !direct_ ? std::string() : direct_->approximation_note();
+  }
   int singular_column() const override {
     if (!split_) return direct_ ? direct_->singular_column() : -1;
     const int c = split_data_->schur->singular_column();  // S's own numbering: the displacements'

@@ -2,9 +2,10 @@
 -- without its entries |a_ij| <= FILTRAGE_MATRICE (|a_ii| + |a_jj|), as code_aster's MUMPS driver
 -- filters them. SSNP121 A's contact couplings are integration weights (lengths, in m) beside a
 -- diagonal of the order of E = 2e6 Pa, and at 1e-9 the filter leaves out some that hold the
--- multipliers: the first pass (no point in contact) solves, the next one cannot reach RESI_RELA. The run stops naming the approximation first,
--- then FILTRAGE_MATRICE as the cause and the remedy.
--- EXPECT_ERROR: mumps_filtrage_matrice_contact\.lua:22: STAT_NON_LINE: the system at instant 1\.0+e\+00, factorised approximately as asked \(without its smallest entries\), could not be solved to the accuracy asked
+-- multipliers: the first pass (no point in contact) solves, the next one cannot reach
+-- RESI_RELA. The run stops naming the approximation first, then FILTRAGE_MATRICE as the cause
+-- and the remedy.
+-- EXPECT_ERROR: mumps_filtrage_matrice_contact\.lua:23: STAT_NON_LINE: the system at instant 1\.0+e\+00, factorised approximately as asked \(without its smallest entries\), could not be solved to the accuracy asked
 -- EXPECT_ERROR: SOLVEUR FILTRAGE_MATRICE left out entries this system needs \(its contact couplings are small beside the stiffness's diagonal\): lower it, or remove it \(the default, -1, keeps every entry\)
 -- EXPECT_STATUS: 3
 DEBUT()

@@ -168,7 +168,8 @@ class PetscSolver final : public LinearSolver {
   bool multiply(const Vector& x, Vector& y) const override;
   Vector solve(const Vector& b) const override;
   std::string name() const override {
-    return std::string("PETSc ") + krylov_name(settings_.krylov) + " + " + preconditioner_name(settings_.preconditioner) +
+    return std::string("PETSc ") + krylov_name(settings_.krylov) + " + " +
+           preconditioner_name(settings_.preconditioner) +
            (kept_      ? " (kept from an earlier matrix)"
             : renewed_ ? " (factorised again: the kept one did not converge)"
                        : "");

@@ -1031,8 +1031,9 @@ TEST(Solvers, MumpsFiltersTheMatrixAsCodeAsterDoesAndRefinementRestoresTheSolve)
   // |a_jj|). On the 3D saddle-point system a filter of 1e-4 leaves out 7 % of the entries MUMPS
   // is given (the upper triangle: the note counts them), the solve straight from those factors
   // is off by a relative residual near 1, and refinement against the matrix as assembled takes
-  // it to the unfiltered solution (8 steps; 1e-3 leaves out 22 % and 10 steps get to 1e-4). A filter of 1e-30 leaves out
-  // nothing (no entry is that small), and without a filter nothing is said.
+  // it to the unfiltered solution (8 steps; 1e-3 leaves out 22 % and 10 steps get to 1e-4). A
+  // filter of 1e-30 leaves out nothing (no entry is that small), and without a filter nothing
+  // is said.
   const SparseMatrix a = saddle_block();
   const Vector f = rhs(static_cast<int>(a.rows()));
   auto whole = make_linear_solver(SolverKind::Mumps);
