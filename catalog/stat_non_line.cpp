@@ -141,7 +141,20 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                        "was faster (a pass whose statuses changed is not preconditioned by the last "
                                        "one's factors; tests/bench/README.md)")
                                    .def(0LL)
-                                   .range(0, std::nullopt)},
+                                   .range(0, std::nullopt),
+                               integer("PCENT_PIVOT",
+                                       "Working space of the single-precision factorisation beyond MUMPS's estimate, "
+                                       "in percent (ICNTL(14)); doubled and the factorisation redone when short "
+                                       "(three times at most). code_aster's default 20, MUMPS's own for these systems")
+                                   .def(20LL)
+                                   .range(1, std::nullopt),
+                               real("LOW_RANK_SEUIL",
+                                    "Non-zero: the single-precision factors in block low rank (ICNTL(35) = 1), "
+                                    "off-diagonal blocks compressed to the singular values above |LOW_RANK_SEUIL| "
+                                    "(CNTL(7); negative: the UCFS variant, ICNTL(36) = 1), as code_aster passes it "
+                                    "to MUMPS. The preconditioner gets cheaper and coarser: the Krylov iterations "
+                                    "make up for it. The linear-solve lines of the log name the threshold. 0: full rank")
+                                   .def(0.0)},
                               {}},
                         Block{"METHODE",
                               {"MUMPS"},

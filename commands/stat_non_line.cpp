@@ -89,10 +89,14 @@ void read_petsc(const Args& solveur, engine::IterativeSettings& settings) {
                                                   : S::Preconditioner::LdltSp;
   settings.relative_residual = solveur.real("RESI_RELA");
   settings.max_iterations = static_cast<int>(solveur.integer("NMAX_ITER"));
-  // code_aster's LDLT_SP: 100 iterations when NMAX_ITER is 0, and REAC_PRECOND.
+  // code_aster's LDLT_SP: 100 iterations when NMAX_ITER is 0, REAC_PRECOND, PCENT_PIVOT and
+  // LOW_RANK_SEUIL (block low rank when not zero).
   if (settings.preconditioner == S::Preconditioner::LdltSp) {
     if (settings.max_iterations == 0) settings.max_iterations = 100;
     settings.reac_precond = static_cast<int>(solveur.integer("REAC_PRECOND"));
+    settings.workspace_relaxation = static_cast<int>(solveur.integer("PCENT_PIVOT"));
+    const double threshold = solveur.real("LOW_RANK_SEUIL");
+    settings.low_rank = {threshold != 0.0, threshold};
   }
 }
 

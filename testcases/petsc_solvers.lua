@@ -9,7 +9,8 @@
 -- factorisation for the next contact pass, and when a kept one has not converged after 30
 -- iterations the solve factorises its own matrix (CTest log.petsc_reac_precond checks the log);
 -- the same scene through MECA_NON_LINE with REAC_PRECOND = 0 (lunaster's default) factorises
--- every matrix.
+-- every matrix. LDLT_SP also runs with its factors in block low rank (LOW_RANK_SEUIL = 1e-8,
+-- the log's linear-solve lines name it) and PCENT_PIVOT = 50, through both commands.
 -- Reference: analytical, uniform strain -0.05: LAGS_C = -1e5 Pa and DZ = -0.05 m on the interface.
 -- RESI_RELA = 1e-12, so the mortar checks hold at 1e-8 as with a direct solver; SSNP121 A's
 -- at code_aster's 1 % (the method's own error, as in ssnp121a.lua).
@@ -38,14 +39,17 @@ local calc = {
   GMRES_JACOBI = { -1.0e5, -0.05, -1.0e5, -0.05 },
 }
 local checks = {}
-local function run(algorithm, precond, command)
+-- `extra`: more SOLVEUR keywords (LDLT_SP's LOW_RANK_SEUIL and PCENT_PIVOT).
+local function run(algorithm, precond, command, extra)
+  local solveur = { METHODE = 'PETSC', ALGORITHME = algorithm, PRE_COND = precond, RESI_RELA = 1.0e-12,
+                    NMAX_ITER = 500 }
+  for k, v in pairs(extra or {}) do solveur[k] = v end
   local resu = command{ MODELE = MO, CHAM_MATER = CHMAT,
                         CONTACT = command == MECA_NON_LINE and _F{ DEFINITION = CONT } or CONT,
                         EXCIT = _F{ CHARGE = CHA1, FONC_MULT = RAMPE },
                         COMPORTEMENT = _F{ RELATION = 'ELAS' },
                         INCREMENT = _F{ LIST_INST = L_INST },
-                        SOLVEUR = _F{ METHODE = 'PETSC', ALGORITHME = algorithm, PRE_COND = precond,
-                                      RESI_RELA = 1.0e-12, NMAX_ITER = 500 } }
+                        SOLVEUR = _F(solveur) }
   local values = calc[algorithm .. '_' .. precond]
   for k, point in ipairs({ 'A21', 'A24' }) do
     checks[#checks + 1] = _F{ RESULTAT = resu, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', NOM_CMP = 'LAGS_C', GROUP_NO = point,
@@ -60,6 +64,9 @@ run('CG', 'GAMG', STAT_NON_LINE)
 run('CG', 'ML', STAT_NON_LINE)
 run('CG', 'BOOMER', MECA_NON_LINE)
 run('FGMRES', 'LDLT_SP', STAT_NON_LINE)
+for _, command in ipairs({ STAT_NON_LINE, MECA_NON_LINE }) do
+  run('FGMRES', 'LDLT_SP', command, { LOW_RANK_SEUIL = 1.0e-8, PCENT_PIVOT = 50 })
+end
 run('GMRES', 'SOR', STAT_NON_LINE)
 run('GMRES', 'JACOBI', STAT_NON_LINE)
 TEST_RESU{ RESU = checks }

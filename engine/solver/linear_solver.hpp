@@ -24,6 +24,17 @@ enum class MatrixKind { SymmetricPositiveDefinite, SymmetricIndefinite, General 
 enum class SolverKind { Cholmod, Umfpack, Mumps, Petsc };
 constexpr int kSolverKinds = 4;
 
+/// Block low-rank factorisation (MUMPS's BLR; code_aster's SOLVEUR ACCELERATION = 'LR' with
+/// LOW_RANK_SEUIL). Off: full rank. On: the off-diagonal blocks of the large fronts are
+/// compressed to the rank their singular values leave above `threshold` (ICNTL(35) = 1,
+/// CNTL(7) = |threshold|); a negative threshold asks for the UCFS variant (ICNTL(36) = 1,
+/// compressing before the updates) as code_aster's does. The factors are then approximate
+/// to about that threshold: iterative refinement takes the solves back to round-off.
+struct LowRank {
+  bool on = false;
+  double threshold = 0.0;
+};
+
 /// What an iterative backend does: code_aster's SOLVEUR METHODE='PETSC' keywords.
 struct IterativeSettings {
   enum class Krylov { CG, GMRES, FGMRES };
@@ -36,10 +47,15 @@ struct IterativeSettings {
   double relative_residual = 1e-6;  ///< |b - A x| / |b| to reach (true residual, not preconditioned)
   int max_iterations = 0;           ///< 0: no limit but the backend's own (10,000)
   /// LdltSp: its single-precision factorisation is kept for the next matrices of the run while
-  /// each solve takes at most this many Krylov iterations, and a solve that does not converge
-  /// on a kept one factorises its own matrix and solves again (code_aster's REAC_PRECOND).
-  /// 0: every matrix factorised.
+  /// each solve takes at most this many Krylov iterations, and a solve on a kept one that has
+  /// not converged after that many factorises its own matrix and solves again (code_aster's
+  /// REAC_PRECOND, which waits for the iteration limit). 0: every matrix factorised.
   int reac_precond = 0;
+  /// LdltSp: the working space of its factorisation beyond MUMPS's estimate, in percent
+  /// (ICNTL(14), code_aster's PCENT_PIVOT; 20 is MUMPS's own for these systems), and its factors
+  /// in block low rank (code_aster's LOW_RANK_SEUIL of LDLT_SP; off: full rank).
+  int workspace_relaxation = 20;
+  LowRank low_rank{};
   /// Receives one line per Krylov iteration (iteration, residual) when set.
   std::function<void(const std::string&)> history;
 };
@@ -102,17 +118,6 @@ struct SingularityTest {
   int digits = 8;
   bool stop = true;
   double pivot_ratio() const;  ///< 10^-digits; 0 when digits < 0
-};
-
-/// Block low-rank factorisation (MUMPS's BLR; code_aster's SOLVEUR ACCELERATION = 'LR' with
-/// LOW_RANK_SEUIL). Off: full rank. On: the off-diagonal blocks of the large fronts are
-/// compressed to the rank their singular values leave above `threshold` (ICNTL(35) = 1,
-/// CNTL(7) = |threshold|); a negative threshold asks for the UCFS variant (ICNTL(36) = 1,
-/// compressing before the updates) as code_aster's does. The factors are then approximate
-/// to about that threshold: iterative refinement takes the solves back to round-off.
-struct LowRank {
-  bool on = false;
-  double threshold = 0.0;
 };
 
 /// How a direct backend analyses and factorises, handed over once by configure() (code_aster's

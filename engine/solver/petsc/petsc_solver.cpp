@@ -94,8 +94,10 @@ class SinglePrecisionFactor {
   ~SinglePrecisionFactor() { release(); }
 
   /// `distributed`: each rank's `a` holds its own columns (SystemLayout::owner), passed
-  /// from every rank; otherwise the host's whole matrix.
-  void factorize(const SparseMatrix& a, MatrixKind kind, bool distributed) {
+  /// from every rank; otherwise the host's whole matrix. `workspace`: ICNTL(14), the percent
+  /// of working space beyond the analysis's estimate (doubled, up to three times, when short);
+  /// `low_rank`: block low-rank factors (ICNTL(35), CNTL(7), and ICNTL(36) when negative).
+  void factorize(const SparseMatrix& a, MatrixKind kind, bool distributed, int workspace, LowRank low_rank) {
     release();
     id_ = SMUMPS_STRUC_C{};
     id_.comm_fortran = parallel::fortran_comm_world();
@@ -107,6 +109,12 @@ class SinglePrecisionFactor {
     id_.icntl[0] = id_.icntl[1] = id_.icntl[2] = -1;
     id_.icntl[3] = 0;
     id_.icntl[6] = 7;
+    id_.icntl[13] = workspace;
+    if (low_rank.on) {  // as the MUMPS backend sets ACCELERATION = 'LR'
+      id_.icntl[34] = 1;
+      id_.icntl[35] = low_rank.threshold < 0.0 ? 1 : 0;
+      id_.cntl[6] = std::abs(low_rank.threshold);
+    }
     id_.icntl[17] = distributed ? 3 : 0;  // ICNTL(18): each rank's entries
     if (distributed || parallel::rank() == 0) {
       mumps_entries(a, id_.sym, irn_, jcn_, val_);
@@ -169,7 +177,7 @@ class PetscSolver final : public LinearSolver {
   Vector solve(const Vector& b) const override;
   std::string name() const override {
     return std::string("PETSc ") + krylov_name(settings_.krylov) + " + " +
-           preconditioner_name(settings_.preconditioner) +
+           preconditioner_name(settings_.preconditioner) + low_rank_name() +
            (kept_      ? " (kept from an earlier matrix)"
             : renewed_ ? " (factorised again: the kept one did not converge)"
                        : "");
@@ -205,6 +213,14 @@ class PetscSolver final : public LinearSolver {
   void for_each_local_row(const SparseMatrix& a, Row row, bool sorted = true) const;
   void set_symmetry_options(MatrixKind kind);
   void attach_near_null_space();
+  /// " in block low rank (threshold 1e-08)" for LDLT_SP's compressed factors, else empty.
+  std::string low_rank_name() const {
+    if (settings_.preconditioner != Settings::Preconditioner::LdltSp || !settings_.low_rank.on) return {};
+    char text[64];
+    std::snprintf(text, sizeof text, " in block low rank (threshold %g%s)", std::abs(settings_.low_rank.threshold),
+                  settings_.low_rank.threshold < 0.0 ? ", UCFS" : "");
+    return text;
+  }
   int iteration_limit() const { return settings_.max_iterations > 0 ? settings_.max_iterations : 10000; }
   bool may_keep_preconditioner() const {
     return settings_.preconditioner == Settings::Preconditioner::LdltSp && settings_.reac_precond > 0;
@@ -637,7 +653,7 @@ void PetscSolver::set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* t
       renewed_ = false;
       if (!kept_) {
         single_ = std::make_unique<SinglePrecisionFactor>();
-        single_->factorize(a, kind, layout_.distributed());
+        single_->factorize(a, kind, layout_.distributed(), settings_.workspace_relaxation, settings_.low_rank);
         single_n_ = a.rows();
       }
       source_ = &a, kind_ = kind;
@@ -753,7 +769,7 @@ Vector PetscSolver::solve(const Vector& b) const {
       // code_aster does): factorise this matrix and solve again.
       if (settings_.history)
         settings_.history("    LDLT_SP: the kept factorisation did not converge (" + detail + "); factorised again");
-      single_->factorize(*source_, kind_, layout_.distributed());
+      single_->factorize(*source_, kind_, layout_.distributed(), settings_.workspace_relaxation, settings_.low_rank);
       kept_ = false, renewed_ = true;
       check(KSPSetTolerances(ksp_, settings_.relative_residual, 0.0, 1e100, iteration_limit()), "KSPSetTolerances");
       converged = krylov_solve(bv, xv, detail);

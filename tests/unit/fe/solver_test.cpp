@@ -1072,6 +1072,28 @@ TEST(Solvers, MumpsFiltersTheMatrixAsCodeAsterDoesAndRefinementRestoresTheSolve)
                                                  << " from " << refined.raw_residual;
 }
 
+TEST(Solvers, PetscLdltSpInBlockLowRankPreconditionsWithCoarserFactors) {
+  // LDLT_SP's LOW_RANK_SEUIL: the single-precision factors of the 3D saddle-point system in
+  // block low rank. A coarse threshold (1e-2) gives a coarser preconditioner: more Krylov
+  // iterations than in full rank, the same solution to the tolerance; the name says so.
+  using S = IterativeSettings;
+  const SparseMatrix a = saddle_block();
+  const Vector f = rhs(static_cast<int>(a.rows()));
+  auto full = make_linear_solver(SolverKind::Petsc, petsc(S::Krylov::FGMRES, S::Preconditioner::LdltSp, 200));
+  full->factorize(a, MatrixKind::SymmetricIndefinite);
+  const Vector ref = full->solve(f);
+  IterativeSettings settings = petsc(S::Krylov::FGMRES, S::Preconditioner::LdltSp, 200);
+  settings.low_rank = {true, 1e-2};
+  settings.workspace_relaxation = 50;
+  auto compressed = make_linear_solver(SolverKind::Petsc, settings);
+  EXPECT_EQ(compressed->name(), "PETSc FGMRES + LDLT_SP in block low rank (threshold 0.01)");
+  compressed->factorize(a, MatrixKind::SymmetricIndefinite);
+  const Vector x = compressed->solve(f);
+  EXPECT_GT(compressed->iterations(), full->iterations());
+  EXPECT_LT((x - ref).norm(), 1e-9 * ref.norm());
+  EXPECT_LT((a * x - f).norm(), 1e-12 * f.norm());
+}
+
 TEST(Solvers, MumpsInSinglePrecisionIsRefinedToTheDoublePrecisionSolution) {
   // MIXER_PRECISION = 'OUI': SMUMPS factorises the 3D saddle-point system in single precision;
   // the solve straight from its factors is off by far more than double precision's round-off,
