@@ -132,12 +132,12 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                               {integer("REAC_PRECOND",
                                        "The single-precision factorisation serves as preconditioner for the next "
                                        "matrices of the run (Newton iterations, contact passes, instants) while each "
-                                       "solve takes at most REAC_PRECOND Krylov iterations; a solve that does not "
-                                       "converge on a kept factorisation factorises its own matrix and solves again, "
-                                       "as code_aster does, but at once when REAC_PRECOND iterations did not do "
-                                       "(code_aster waits for NMAX_ITER). The log's linear-solve lines say when it "
-                                       "was kept. 0 (lunaster's default; code_aster's is 30, and its MECA_NON_LINE "
-                                       "always takes 0): every matrix factorised, which on the contact benchmarks "
+                                       "solve takes at most REAC_PRECOND Krylov iterations; a solve on a kept "
+                                       "factorisation that has not converged after REAC_PRECOND iterations factorises "
+                                       "its own matrix and solves again (code_aster does so after NMAX_ITER). The "
+                                       "log's linear-solve lines say when it was kept. 0 (lunaster's default; "
+                                       "code_aster's is 30, and its MECA_NON_LINE always takes 0): every matrix "
+                                       "factorised, which on the contact benchmarks "
                                        "was faster (a pass whose statuses changed is not preconditioned by the last "
                                        "one's factors; tests/bench/README.md)")
                                    .def(0LL)
@@ -152,8 +152,8 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                     "Non-zero: the single-precision factors in block low rank (ICNTL(35) = 1), "
                                     "off-diagonal blocks compressed to the singular values above |LOW_RANK_SEUIL| "
                                     "(CNTL(7); negative: the UCFS variant, ICNTL(36) = 1), as code_aster passes it "
-                                    "to MUMPS. The preconditioner gets cheaper and coarser: the Krylov iterations "
-                                    "make up for it. The linear-solve lines of the log name the threshold. 0: full rank")
+                                    "to MUMPS. The preconditioner is coarser: the Krylov iterations make up for "
+                                    "it. The linear-solve lines of the log name the threshold. 0: full rank")
                                    .def(0.0)},
                               {}},
                         Block{"METHODE",
@@ -258,7 +258,7 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                                real("FILTRAGE_MATRICE",
                                     "Positive: MUMPS factorises the matrix without its entries |a_ij| <= "
                                     "FILTRAGE_MATRICE (|a_ii| + |a_jj|), as code_aster's MUMPS driver filters "
-                                    "them: sparser factors, approximate to about that ratio; the iterative "
+                                    "them: a sparser matrix, approximate factors; the iterative "
                                     "refinement of POSTTRAITEMENTS, on the matrix as assembled, takes each "
                                     "solve to the accuracy asked (RESI_RELA) or the run stops saying so. The "
                                     "log says how many entries were left out. The entries kept may differ "
