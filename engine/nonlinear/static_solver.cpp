@@ -359,36 +359,28 @@ Vector StaticSolver::stiffness_times(const Vector& u) const {
 }
 
 SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err, double t) const {
+  // Approximate factors asked for are the likeliest cause: named in the first line, their
+  // hints said first.
+  const std::vector<Approximation> approximate = approximations();
+  std::string named;
+  for (const auto& a : approximate) named += (named.empty() ? "" : ", ") + a.what;
   // elastic_.ff is the whole K_ff unless the model is shared or K_ff went to the backend
   // (also when the backend failed after taking it).
   const bool whole_here = !distributed_ && !elastic_in_solver_ && (elastic_.ff.nonZeros() > 0 || elastic_.equation.empty());
   SolveError found = [&] {
     if (whole_here)
       return diagnose_singular_system(model_, dofs_, cons.free_index, elastic_.ff, err, t, diagnosis_test(),
-                                      contact_ != nullptr, approximations());
+                                      contact_ != nullptr, named);
     SplitMatrix whole;
     SparseMatrix k = assemble_stiffness_matrix(model_, dofs_);
     split_matrix(k, elastic_.constrained, whole);
     return diagnose_singular_system(model_, dofs_, cons.free_index, whole.ff, err, t, diagnosis_test(),
-                                    contact_ != nullptr, approximations());
+                                    contact_ != nullptr, named);
   }();
-  // Approximate factors asked for are the likeliest cause: said first.
-  if (options_.solver == SolverKind::Mumps) {
-    std::vector<std::string> said;
-    if (options_.factor.filter > 0.0)
-      said.push_back("the matrix was factorised without its smallest entries (filter " + sci(options_.factor.filter) +
-                     "), which this system needs" +
-                     (contact_ ? ": its contact couplings are small beside the stiffness's diagonal" : "") +
-                     "; lower the filter, or keep every entry");
-    if (options_.factor.low_rank.on)
-      said.push_back("the factors were compressed in block low rank (threshold " +
-                     sci(std::abs(options_.factor.low_rank.threshold)) +
-                     "), too coarsely for this system: lower the threshold, refine more, or factorise in full rank");
-    if (options_.single_precision)
-      said.push_back("the factors were computed in single precision, too coarse for this system's conditioning: "
-                     "refine more, or factorise in double precision");
-    std::vector<std::string> hints = found.hints();
-    hints.insert(hints.begin(), said.begin(), said.end());
+  if (!approximate.empty()) {
+    std::vector<std::string> hints;
+    for (const auto& a : approximate) hints.push_back(a.hint);
+    hints.insert(hints.end(), found.hints().begin(), found.hints().end());
     found.set_hints(std::move(hints));
   }
   if (!options_.factor.preprocessing && options_.factor.singularity.digits >= 0)
@@ -398,14 +390,25 @@ SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err
   return found;
 }
 
-std::string StaticSolver::approximations() const {
-  if (options_.solver != SolverKind::Mumps) return {};
-  std::string said;
-  auto add = [&said](const char* what) { said += (said.empty() ? "" : ", ") + std::string(what); };
-  if (options_.factor.filter > 0.0) add("without its smallest entries");
-  if (options_.factor.low_rank.on) add("in block low rank");
-  if (options_.single_precision) add("in single precision");
-  return said;
+std::vector<StaticSolver::Approximation> StaticSolver::approximations() const {
+  std::vector<Approximation> out;
+  if (options_.solver != SolverKind::Mumps) return out;
+  if (options_.factor.filter > 0.0)
+    out.push_back({"without its smallest entries",
+                   "the matrix was factorised without its smallest entries (filter " + sci(options_.factor.filter) +
+                       "), which this system needs" +
+                       (contact_ ? ": its contact couplings are small beside the stiffness's diagonal" : "") +
+                       "; lower the filter, or keep every entry"});
+  if (options_.factor.low_rank.on)
+    out.push_back({"in block low rank", "the factors were compressed in block low rank (threshold " +
+                                            sci(std::abs(options_.factor.low_rank.threshold)) +
+                                            "), too coarsely for this system: lower the threshold, refine more, or "
+                                            "factorise in full rank"});
+  if (options_.single_precision)
+    out.push_back({"in single precision",
+                   "the factors were computed in single precision, too coarse for this system's conditioning: "
+                   "refine more, or factorise in double precision"});
+  return out;
 }
 
 SingularityTest StaticSolver::diagnosis_test() const {

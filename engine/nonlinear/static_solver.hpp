@@ -187,9 +187,14 @@ class StaticSolver {
   SolveError diagnose(const Constraints& cons, const SolveError& err, double t) const;
   /// The singularity test a diagnosis factorises with.
   SingularityTest diagnosis_test() const;
-  /// The approximate factorisation the run asked for, in words ("without its smallest entries,
-  /// in single precision"); empty when the factors are exact.
-  std::string approximations() const;
+  /// One approximation of the factors the run asked for: how it factorised ("in single
+  /// precision"), and the hint a failure gives about it.
+  struct Approximation {
+    std::string what, hint;
+  };
+  /// The approximations of the factors the run asked for (MUMPS's filter, block low rank,
+  /// single precision); empty when the factors are exact.
+  std::vector<Approximation> approximations() const;
 
   /// The elastic stiffness K split by the Dirichlet conditions of the run (one set for every
   /// instant, only the imposed values follow the load functions): K_ff (numbered as

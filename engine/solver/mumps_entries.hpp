@@ -4,6 +4,7 @@
 /// (1-based) taken from a compressed matrix, and where MUMPS finds them.
 #include <mumps_c_types.h>
 
+#include <type_traits>
 #include <vector>
 
 #include "engine/solver/linear_solver.hpp"
@@ -26,6 +27,19 @@ void mumps_entries(const SparseMatrix& a, int sym, std::vector<MUMPS_INT>& irn, 
       jcn.push_back(static_cast<MUMPS_INT>(c + 1));
       val.push_back(static_cast<Real>(it.value()));
     }
+}
+
+/// Block low-rank factors for the next analysis of a MUMPS instance (DMUMPS_STRUC_C,
+/// SMUMPS_STRUC_C), as code_aster sets them with a public MUMPS: ICNTL(35) = 1 (MUMPS's
+/// automatic BLR), CNTL(7) = |threshold|, and ICNTL(36) = 1 (UCFS) when the threshold is
+/// negative. Nothing when off.
+template <class Instance>
+void set_low_rank(Instance& id, const LowRank& low_rank) {
+  if (!low_rank.on) return;
+  using Real = std::remove_reference_t<decltype(id.cntl[0])>;
+  id.icntl[34] = 1;
+  id.icntl[35] = low_rank.threshold < 0.0 ? 1 : 0;
+  id.cntl[6] = static_cast<Real>(low_rank.threshold < 0.0 ? -low_rank.threshold : low_rank.threshold);
 }
 
 /// Points a MUMPS instance (DMUMPS_STRUC_C, SMUMPS_STRUC_C) at the entries: the host's

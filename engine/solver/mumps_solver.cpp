@@ -361,11 +361,7 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
     // ACCELERATION = 'LR': block low-rank factors, as code_aster sets them with a public MUMPS
     // (ICNTL(35) = 1, MUMPS's automatic BLR; CNTL(7) the dropping threshold, LOW_RANK_SEUIL;
     // a negative LOW_RANK_SEUIL asks for the UCFS variant, ICNTL(36) = 1). Fixed at the analysis.
-    if (settings_.low_rank.on) {
-      id_.icntl[34] = 1;
-      id_.icntl[35] = settings_.low_rank.threshold < 0.0 ? 1 : 0;
-      id_.cntl[6] = std::abs(settings_.low_rank.threshold);
-    }
+    set_low_rank(id_, settings_.low_rank);
     // ICNTL(7): the fill-reducing ordering. On sparse rows (2D meshes: 18 to 26 entries a row
     // for QUAD4/QUAD8) AMD beat the automatic choice (PORD's nested dissection: Debian 12's
     // MUMPS 5.5 is built without METIS and SCOTCH, and says so when asked for them), whose

@@ -110,11 +110,7 @@ class SinglePrecisionFactor {
     id_.icntl[3] = 0;
     id_.icntl[6] = 7;
     id_.icntl[13] = workspace;
-    if (low_rank.on) {  // as the MUMPS backend sets ACCELERATION = 'LR'
-      id_.icntl[34] = 1;
-      id_.icntl[35] = low_rank.threshold < 0.0 ? 1 : 0;
-      id_.cntl[6] = std::abs(low_rank.threshold);
-    }
+    set_low_rank(id_, low_rank);  // as the MUMPS backend sets ACCELERATION = 'LR'
     id_.icntl[17] = distributed ? 3 : 0;  // ICNTL(18): each rank's entries
     if (distributed || parallel::rank() == 0) {
       mumps_entries(a, id_.sym, irn_, jcn_, val_);
