@@ -65,6 +65,39 @@ Keyword liaison_unif() {
       .with_rules({exactly_one({"GROUP_NO", "GROUP_MA"})});
 }
 
+Keyword liaison_mail() {
+  return factor(
+             "LIAISON_MAIL",
+             {text("GROUP_MA_MAIT", "Master cell groups: their cells of the model's dimension (volumes in 3D, faces in "
+                                    "2D) are those the slave nodes follow")
+                  .many()
+                  .required(),
+              text("GROUP_MA_ESCL", "Cell groups whose nodes are slave nodes").many(),
+              text("GROUP_NO_ESCL", "Node groups of slave nodes").many(),
+              text("TYPE_RACCORD", "Kind of gluing: solid to solid (each slave node follows the master cell that "
+                                   "holds it)")
+                  .into_values({"MASSIF"})
+                  .def("MASSIF"),
+              text("DDL", "Components tied; default: every displacement component of the model")
+                  .into_values({"DX", "DY", "DZ"})
+                  .many(),
+              real("DISTANCE_MAX", "Slave nodes farther than this from every master cell are not tied (m); default: "
+                                   "every slave node is tied, to the nearest master cell")
+                  .range(0.0, std::nullopt),
+              real("DISTANCE_ALARME", "A warning counts the slave nodes tied from farther than this outside their "
+                                      "master cell (m); default: a tenth of that cell's size")
+                  .range(0.0, std::nullopt),
+              text("ELIM_MULT", "'OUI': a slave node tied by an earlier LIAISON_MAIL of this AFFE_CHAR_MECA is left "
+                                "out; 'NON': it is tied again")
+                  .into_values({"OUI", "NON"})
+                  .def("OUI")},
+             "Glue a mesh to another that does not match it (code_aster's LIAISON_MAIL): each slave node follows the "
+             "master cell that holds it, or the nearest, u(node) = sum N_a(xi) u_a for each DDL, a linear relation "
+             "each (a Lagrange multiplier, or solved for the slave unknown with SOLVEUR ELIM_LAGR = 'OUI')")
+      .occurs(0, -1)
+      .with_rules({at_least_one({"GROUP_MA_ESCL", "GROUP_NO_ESCL"})});
+}
+
 /// The seed's contact syntax (code_aster 8): one zone with the method inside.
 Keyword contact() {
   std::vector<Keyword> children = {
@@ -109,8 +142,9 @@ const CommandSpec& affe_char_meca_spec() {
       "AFFE_CHAR_MECA", "char_meca",
       "Define mechanical loads: imposed displacements, linear relations, pressures, forces, contact",
       {concept_kw("MODELE", {"modele"}, "Model the loads apply to").required(), ddl_impo(), pres_rep(),
-       force_nodale(), liaison_ddl(), liaison_unif(), contact(), common::info()},
-      {at_least_one({"DDL_IMPO", "PRES_REP", "FORCE_NODALE", "LIAISON_DDL", "LIAISON_UNIF", "CONTACT"})});
+       force_nodale(), liaison_ddl(), liaison_unif(), liaison_mail(), contact(), common::info()},
+      {at_least_one(
+          {"DDL_IMPO", "PRES_REP", "FORCE_NODALE", "LIAISON_DDL", "LIAISON_UNIF", "LIAISON_MAIL", "CONTACT"})});
   return spec;
 }
 

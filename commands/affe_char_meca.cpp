@@ -1,11 +1,15 @@
 // AFFE_CHAR_MECA: imposed displacements, linear relations, pressures, nodal forces and (seed
 // syntax) contact.
 #include <algorithm>
+#include <cstdio>
+#include <set>
 
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
 #include "commands/contact_keywords.hpp"
 #include "commands/selection.hpp"
+#include "engine/fe/point_location.hpp"
+#include "engine/fe/shape.hpp"
 
 namespace lunaster::cmd {
 
@@ -146,6 +150,142 @@ void read_liaison_unif(const Args& occ, const Modele& mo, CharMeca& load) {
   }
 }
 
+/// LIAISON_MAIL, TYPE_RACCORD = 'MASSIF' (code_aster's gluing of meshes that do not match):
+/// each slave node follows the master cell that holds it, or the nearest one,
+/// u(node) - sum_a N_a(xi) u_a = 0 for each DDL, one relation each. As in code_aster: a slave
+/// node that is a node of its master cell would be tied to itself (no relation, a warning);
+/// beyond DISTANCE_MAX a node is not tied; ELIM_MULT = 'OUI' leaves out the nodes an earlier
+/// occurrence of this load tied (`tied`). Nodes tied from outside their cell by more than
+/// DISTANCE_ALARME (default: a tenth of the cell's size) are counted in a warning.
+void read_liaison_mail(const Args& occ, const Modele& mo, CharMeca& load, std::set<int>& tied, Session& session) {
+  const engine::Mesh& mesh = *mo.maillage->mesh;
+  std::vector<int> master;
+  for (const auto& name : occ.texts("GROUP_MA_MAIT"))
+    for (int c : cell_group(occ, "GROUP_MA_MAIT", mesh, name))
+      if (engine::cell_info(mesh.cell_types[c]).dim == mo.dim && mo.modelisation[c] != engine::Modelisation::None)
+        master.push_back(c);
+  std::sort(master.begin(), master.end());
+  master.erase(std::unique(master.begin(), master.end()), master.end());
+  if (master.empty())
+    throw occ.error("GROUP_MA_MAIT",
+                    std::string(mo.dim == 3 ? "volume cells (HEXA, PENTA, TETRA)" : "face cells (QUAD, TRIA)") +
+                        " of MODELE '" + mo.user_name + "'",
+                    "groups without any");
+  std::vector<int> slaves;
+  for (const auto& name : occ.texts("GROUP_MA_ESCL")) {
+    const std::vector<int> nodes = mesh.nodes_of_cells(cell_group(occ, "GROUP_MA_ESCL", mesh, name));
+    slaves.insert(slaves.end(), nodes.begin(), nodes.end());
+  }
+  for (const auto& name : occ.texts("GROUP_NO_ESCL")) {
+    const std::vector<int> nodes = node_group(occ, "GROUP_NO_ESCL", mesh, name);
+    slaves.insert(slaves.end(), nodes.begin(), nodes.end());
+  }
+  std::sort(slaves.begin(), slaves.end());
+  slaves.erase(std::unique(slaves.begin(), slaves.end()), slaves.end());
+  const std::string slave_kw = occ.has("GROUP_MA_ESCL") ? "GROUP_MA_ESCL" : "GROUP_NO_ESCL";
+  const std::vector<char> in_model = model_nodes(mo);
+  for (int n : slaves)
+    if (!in_model[n])
+      throw occ.error(slave_kw, "nodes of cells of MODELE '" + mo.user_name + "'",
+                      "node " + mesh.node_names[n] + ", on no cell of it");
+  if (occ.text("ELIM_MULT") == "OUI") {
+    const size_t before = slaves.size();
+    slaves.erase(std::remove_if(slaves.begin(), slaves.end(), [&](int n) { return tied.count(n) > 0; }),
+                 slaves.end());
+    if (slaves.empty())
+      throw occ.error(slave_kw, "slave nodes that no earlier LIAISON_MAIL of this AFFE_CHAR_MECA tied (ELIM_MULT = "
+                                "'OUI' leaves those out; 'NON' ties them again)",
+                      "all " + std::to_string(before) + " tied before");
+  }
+  std::vector<std::string> ddls = {"DX", "DY", "DZ"};
+  if (occ.has("DDL")) {
+    ddls = occ.texts("DDL");
+    for (size_t k = 0; k < ddls.size(); ++k)
+      if (std::find(ddls.begin(), ddls.begin() + k, ddls[k]) != ddls.begin() + k)
+        throw occ.error("DDL", "each component once", "'" + ddls[k] + "' twice");
+  } else if (mo.dim == 2) {
+    ddls.pop_back();
+  }
+  std::vector<int> components;
+  for (const auto& ddl : ddls) components.push_back(relation_component(occ, mo, ddl));
+
+  const engine::CellLocator locator(mesh, master);
+  const bool has_max = occ.has("DISTANCE_MAX");
+  const double distance_max = has_max ? occ.real("DISTANCE_MAX") : 0.0;
+  int n_tied = 0, n_self = 0, n_beyond = 0, n_far = 0;
+  double farthest = 0.0, nearest_beyond = 0.0;
+  int farthest_node = -1;
+  std::set<int> cells_used;
+  for (int s : slaves) {
+    const engine::PointLocation loc = locator.locate(mesh.node(s));
+    const int c = loc.cell;
+    const int nn = mesh.cell_n_nodes(c);
+    if (std::find(mesh.cell(c), mesh.cell(c) + nn, s) != mesh.cell(c) + nn) {
+      ++n_self;  // a node of its own master cell: u = u
+      continue;
+    }
+    if (has_max && loc.distance > distance_max) {
+      nearest_beyond = n_beyond++ ? std::min(nearest_beyond, loc.distance) : loc.distance;
+      continue;
+    }
+    double size = 0.0;  // the cell's size: its longest distance between two nodes
+    for (int a = 0; a < nn; ++a)
+      for (int b = a + 1; b < nn; ++b) {
+        double d2 = 0.0;
+        for (int i = 0; i < 3; ++i) {
+          const double d = mesh.node(mesh.cell(c)[a])[i] - mesh.node(mesh.cell(c)[b])[i];
+          d2 += d * d;
+        }
+        size = std::max(size, std::sqrt(d2));
+      }
+    const double alarm = occ.has("DISTANCE_ALARME") ? occ.real("DISTANCE_ALARME") : 0.1 * size;
+    if (loc.distance > alarm) ++n_far;
+    if (loc.distance > farthest) farthest = loc.distance, farthest_node = s;
+    double shape[engine::kMaxCellNodes];
+    engine::shape_functions(mesh.cell_types[c], loc.xi, shape, nullptr);
+    for (size_t k = 0; k < components.size(); ++k) {
+      engine::LinearRelation r;
+      r.terms.push_back({s, components[k], -1.0});
+      for (int a = 0; a < nn; ++a)
+        if (std::abs(shape[a]) > 1e-14) r.terms.push_back({mesh.cell(c)[a], components[k], shape[a]});
+      r.label = occ.where() + " (" + ddls[k] + " of node " + mesh.node_names[s] + " following cell " +
+                mesh.cell_names[c] + ")";
+      load.relations.push_back(std::move(r));
+    }
+    tied.insert(s);
+    cells_used.insert(c);
+    ++n_tied;
+  }
+  if (n_tied == 0) {
+    char nearest[96] = "";
+    if (n_beyond) std::snprintf(nearest, sizeof nearest, " (the nearest %.3g m from a master cell)", nearest_beyond);
+    throw occ.error(has_max && n_beyond ? "DISTANCE_MAX" : slave_kw,
+                    "slave nodes to tie: within DISTANCE_MAX of a master cell, and not nodes of their master cell",
+                    std::to_string(slaves.size()) + " slave node(s), " + std::to_string(n_beyond) +
+                        " beyond DISTANCE_MAX" + nearest + " and " + std::to_string(n_self) +
+                        " node(s) of their master cell");
+  }
+  char far_said[160] = "";
+  if (farthest_node >= 0)
+    std::snprintf(far_said, sizeof far_said, "; the farthest outside its cell: node %s, %.3g m",
+                  mesh.node_names[farthest_node].c_str(), farthest);
+  session.log().info("  AFFE_CHAR_MECA " + occ.where() + ": " + std::to_string(n_tied) + " slave node(s) follow " +
+                     std::to_string(cells_used.size()) + " master cell(s), " +
+                     std::to_string(n_tied * components.size()) + " linear relation(s)" +
+                     (n_beyond ? ", " + std::to_string(n_beyond) + " node(s) beyond DISTANCE_MAX left free" : "") +
+                     far_said);
+  if (n_self)
+    session.warn(occ.path(slave_kw) + ": " + std::to_string(n_self) +
+                 " slave node(s) are nodes of the master cell that holds them (each would be tied to itself): no "
+                 "relation for them");
+  if (n_far)
+    session.warn(occ.path(slave_kw) + ": " + std::to_string(n_far) +
+                 " slave node(s) lie outside every master cell, by more than " +
+                 (occ.has("DISTANCE_ALARME") ? std::string("DISTANCE_ALARME") : std::string("a tenth of the cell")) +
+                 "; each follows the nearest point of its nearest cell" + far_said +
+                 " (DISTANCE_MAX leaves such nodes free)");
+}
+
 engine::ContactMethod seed_method(const std::string& methode) {
   if (methode == "CONTRAINTE") return engine::ContactMethod::DiscreteLagrange;
   if (methode == "PENALISATION") return engine::ContactMethod::DiscretePenalty;
@@ -181,6 +321,8 @@ ConceptPtr affe_char_meca(const Args& args, Session& session) {
   for (const auto& occ : args.factors("FORCE_NODALE")) read_force_nodale(occ, mo, *load);
   for (const auto& occ : args.factors("LIAISON_DDL")) read_liaison_ddl(occ, mo, *load);
   for (const auto& occ : args.factors("LIAISON_UNIF")) read_liaison_unif(occ, mo, *load);
+  std::set<int> glued;  // slave nodes of the LIAISON_MAIL occurrences before (ELIM_MULT)
+  for (const auto& occ : args.factors("LIAISON_MAIL")) read_liaison_mail(occ, mo, *load, glued, session);
   if (args.count("CONTACT") > 0) {
     load->has_contact = true;
     auto& def = load->contact;

@@ -37,6 +37,7 @@ namespace {
 /// allowed value, so adding a second one without reading the keyword fails here.
 const std::map<std::string, std::string> kValidatorOnly = {
     {"AFFE_MODELE/AFFE/PHENOMENE", "only 'MECANIQUE', the one phenomenon"},
+    {"AFFE_CHAR_MECA/LIAISON_MAIL/TYPE_RACCORD", "only 'MASSIF': solid to solid, the one gluing built"},
     {"CALC_CHAMP/TOUT_ORDRE", "only 'OUI': every step, as when neither NUME_ORDRE nor INST is given"},
     {"POST_RELEVE_T/ACTION/TOUT_ORDRE", "only 'OUI': every step, as when neither NUME_ORDRE nor INST is given"},
     {"IMPR_TABLE/FORMAT", "only 'TABLEAU': the one table format (CSV is TABLEAU with SEPARATEUR)"},
