@@ -24,6 +24,8 @@
 --      follow the nearest point of its top edge (a rigid link across the gap); DISTANCE_ALARME =
 --      1e-4 m warns about both. E1 = E2 = 2e6 Pa.
 --   6. Scene 1 the other way round: the nodes of V2's coarse bottom face SURMAI follow V1's fine cells.
+--   7. 3D, TETRA4 4x4x2 under TETRA10 2x2x2 (liaison_mail_tetra.med): each slave node (SURESC) lies on
+--      a master node, but under TRIA6 master faces where the slave faces are TRIA3. E1 = E2 = 2e6 Pa.
 -- Reference: analytical, springs in series: p = 0.1 / (1/E1 + 1/E2), SIZZ (SIYY) = -p in both blocks,
 --          DZ (DY) = -p/E1 on the interface, both sides (1.5e5 Pa and 0.025 m; scenes 3 and 5: 1e5 Pa,
 --          0.05 m).
@@ -31,16 +33,20 @@
 --          shape functions reproduce it), and the forces a slave node passes to the master nodes,
 --          weighted by N_a, are the master face's own nodal forces of the uniform traction: nested
 --          meshes on linear master cells (each N_a is linear on every slave face, which the slave's
---          nodal forces integrate exactly), or coincident nodes.
--- Scenes 4 and 6: not exact, checked by VALE_CALC only (non-regression). Scene 4: passed through N_a,
+--          nodal forces integrate exactly), or matching faces (coincident nodes alone are not enough:
+--          scene 7).
+-- Scenes 4, 6 and 7: not exact, checked by VALE_CALC only (non-regression). Scene 4: passed through N_a,
 --          the slave forces are not the quadratic master face's nodal forces: node-to-cell ties fail
 --          the patch test, as node-to-segment contact does (mortar contact on this mesh is exact to
 --          1e-13: testcases/mortar_bimaterial_3d.lua). Scene 6: the fine face's nodes between the
 --          coarse face's are free, so its forces there go nowhere: choose the finer side as slave.
+--          Scene 7: the nodes match, the faces do not: a TRIA6 face takes a uniform traction on its
+--          mid-side nodes only, the TRIA3 faces on their vertices.
 -- What we get: scenes 1 to 3 and 5 within 2e-14 of the analytical values (relative), both ways of
 --          solving; scene 4 (both ways alike): DZ on the slave face from -0.0259 to -0.0223 m (up to
 --          11 % off), SIZZ from -1.63e5 to -1.17e5 Pa (up to 22 % off); scene 6: DZ from -0.0285 to
---          -0.0219 m (14 % off), SIZZ from -2.09e5 to -1.15e5 Pa (39 % off).
+--          -0.0219 m (14 % off), SIZZ from -2.09e5 to -1.15e5 Pa (39 % off); scene 7: DZ from -0.0512 to
+--          -0.0460 m (8 % off), SIZZ from -1.01e5 to -8.64e4 Pa (14 % off).
 -- Runtime label: fast.
 DEBUT()
 L_INST = DEFI_LIST_REEL{ DEBUT = 0.0, INTERVALLE = _F{ JUSQU_A = 1.0, NOMBRE = 1 } }
@@ -145,4 +151,10 @@ scene('coarse side as slave', 'meshes/liaison_mail_nested3d.med', 3, 6.0e6, 2.0e
       { _F{ GROUP_MA_MAIT = 'V1', GROUP_MA_ESCL = 'SURMAI' } },
       recorded({ ['DEPL DZ MIN'] = -2.848085082e-02, ['DEPL DZ MAX'] = -2.191035284e-02,
                  ['SIGM_NOEU SIZZ MIN'] = -2.085751133e+05, ['SIGM_NOEU SIZZ MAX'] = -1.147363574e+05 }))
+
+-- Scene 7: coincident nodes under faces of different orders.
+scene('TETRA4 under TETRA10', 'meshes/liaison_mail_tetra.med', 3, 2.0e6, 2.0e6,
+      { _F{ GROUP_MA_MAIT = 'V2', GROUP_MA_ESCL = 'SURESC' } },
+      recorded({ ['DEPL DZ MIN'] = -5.116997068e-02, ['DEPL DZ MAX'] = -4.595887702e-02,
+                 ['SIGM_NOEU SIZZ MIN'] = -1.014807999e+05, ['SIGM_NOEU SIZZ MAX'] = -8.636838826e+04 }))
 FIN()

@@ -42,9 +42,11 @@ mkdir -p "$m"
 
 # Non-matching 3D interface of different cell types and sizes (mortar_bimaterial_3d.lua)
 "$gen" --v1 penta6:5x5x2 --v2 hexa20:3x3x2 -o "$m/nonmatching3d_penta6_hexa20.med"
-# Nested non-matching interfaces: the slave face is the master face refined twice (liaison_mail.lua)
+# LIAISON_MAIL's scenes (liaison_mail.lua): nested interfaces (the slave face is the master face refined
+# twice), and nodes that match under faces that do not
 "$gen" --v1 hexa8:8x8x2 --v2 hexa8:4x4x2 -o "$m/liaison_mail_nested3d.med"
 "$gen" --upper quad4:16 --lower quad4:8 -o "$m/liaison_mail_nested2d.med"
+"$gen" --v1 tetra4:4x4x2 --v2 tetra10:2x2x2 -o "$m/liaison_mail_tetra.med"
 # Three stacked blocks, two non-matching interfaces (mortar_two_zones_2d.lua, mortar_two_zones_3d.lua)
 "$gen" --upper quad4:12 --lower quad4:11 --top tria6:5 -o "$m/mortar_two_zones_2d.med"
 "$gen" --v1 hexa8:5x5x2 --v2 hexa20:3x3x2 --v3 penta6:4x4x2 -o "$m/mortar_two_zones_3d.med"
