@@ -90,7 +90,11 @@ Keyword liaison_mail() {
               text("ELIM_MULT", "'OUI': a slave node tied by an earlier LIAISON_MAIL of this AFFE_CHAR_MECA is left "
                                 "out; 'NON': it is tied again")
                   .into_values({"OUI", "NON"})
-                  .def("OUI")},
+                  .def("OUI"),
+              real("TRAN", "Translation (m) added to each slave node's position before it is located in the master "
+                           "cells: glues a face to the master cells TRAN away (periodic conditions); one value per "
+                           "coordinate of the model")
+                  .count(2, 3)},
              "Glue a mesh to another that does not match it (code_aster's LIAISON_MAIL): each slave node follows the "
              "master cell that holds it, or the nearest, u(node) = sum N_a(xi) u_a for each DDL, a linear relation "
              "each (a Lagrange multiplier, or solved for the slave unknown with SOLVEUR ELIM_LAGR = 'OUI')")

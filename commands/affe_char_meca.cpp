@@ -156,7 +156,8 @@ void read_liaison_unif(const Args& occ, const Modele& mo, CharMeca& load) {
 /// node that is a node of its master cell would be tied to itself (no relation, a warning);
 /// beyond DISTANCE_MAX a node is not tied; ELIM_MULT = 'OUI' leaves out the nodes an earlier
 /// occurrence of this load tied (`tied`). Nodes tied from outside their cell by more than
-/// DISTANCE_ALARME (default: a tenth of the cell's size) are counted in a warning.
+/// DISTANCE_ALARME (default: a tenth of the cell's size) are counted in a warning. TRAN looks for
+/// each slave node TRAN away from it (periodic conditions, as code_aster's TRAN).
 void read_liaison_mail(const Args& occ, const Modele& mo, CharMeca& load, std::set<int>& tied, Session& session) {
   const engine::Mesh& mesh = *mo.maillage->mesh;
   std::vector<int> master;
@@ -209,6 +210,15 @@ void read_liaison_mail(const Args& occ, const Modele& mo, CharMeca& load, std::s
   std::vector<int> components;
   for (const auto& ddl : ddls) components.push_back(relation_component(occ, mo, ddl));
 
+  double tran[3] = {0.0, 0.0, 0.0};  // TRAN: where each slave node is looked for, from where it is
+  if (occ.has("TRAN")) {
+    const std::vector<double> t = occ.reals("TRAN");
+    if (static_cast<int>(t.size()) != mo.dim)
+      throw occ.error("TRAN", std::to_string(mo.dim) + " values (one per coordinate of the " +
+                                  std::to_string(mo.dim) + "D model)",
+                      std::to_string(t.size()));
+    std::copy(t.begin(), t.end(), tran);
+  }
   const engine::CellLocator locator(mesh, master);
   const bool has_max = occ.has("DISTANCE_MAX");
   const double distance_max = has_max ? occ.real("DISTANCE_MAX") : 0.0;
@@ -217,7 +227,8 @@ void read_liaison_mail(const Args& occ, const Modele& mo, CharMeca& load, std::s
   int farthest_node = -1;
   std::set<int> cells_used;
   for (int s : slaves) {
-    const engine::PointLocation loc = locator.locate(mesh.node(s));
+    const double at[3] = {mesh.node(s)[0] + tran[0], mesh.node(s)[1] + tran[1], mesh.node(s)[2] + tran[2]};
+    const engine::PointLocation loc = locator.locate(at);
     const int c = loc.cell;
     const int nn = mesh.cell_n_nodes(c);
     if (std::find(mesh.cell(c), mesh.cell(c) + nn, s) != mesh.cell(c) + nn) {
