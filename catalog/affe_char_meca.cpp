@@ -87,8 +87,8 @@ Keyword liaison_mail() {
               real("DISTANCE_ALARME", "A warning counts the slave nodes tied from farther than this outside their "
                                       "master cell (m); default: a tenth of that cell's size")
                   .range(0.0, std::nullopt),
-              text("ELIM_MULT", "'OUI': a slave node tied by an earlier LIAISON_MAIL of this AFFE_CHAR_MECA is left "
-                                "out; 'NON': it is tied again")
+              text("ELIM_MULT", "'OUI': the slave nodes of the earlier LIAISON_MAIL of this AFFE_CHAR_MECA with "
+                                "ELIM_MULT = 'OUI' are left out (tied there or not); 'NON': every slave node is tied")
                   .into_values({"OUI", "NON"})
                   .def("OUI"),
               real("TRAN", "Translation (m) added to each slave node's position before it is located in the master "

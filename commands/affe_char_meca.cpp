@@ -154,11 +154,12 @@ void read_liaison_unif(const Args& occ, const Modele& mo, CharMeca& load) {
 /// each slave node follows the master cell that holds it, or the nearest one,
 /// u(node) - sum_a N_a(xi) u_a = 0 for each DDL, one relation each. As in code_aster: a slave
 /// node that is a node of its master cell would be tied to itself (no relation, a warning);
-/// beyond DISTANCE_MAX a node is not tied; ELIM_MULT = 'OUI' leaves out the nodes an earlier
-/// occurrence of this load tied (`tied`). Nodes tied from outside their cell by more than
+/// beyond DISTANCE_MAX a node is not tied; an occurrence with ELIM_MULT = 'OUI' leaves out the
+/// slave nodes of the earlier ones with ELIM_MULT = 'OUI' (`listed`, tied or not: code_aster's
+/// list of nodes already used). Nodes tied from outside their cell by more than
 /// DISTANCE_ALARME (default: a tenth of the cell's size) are counted in a warning. TRAN looks for
 /// each slave node TRAN away from it (periodic conditions, as code_aster's TRAN).
-void read_liaison_mail(const Args& occ, const Modele& mo, CharMeca& load, std::set<int>& tied, Session& session) {
+void read_liaison_mail(const Args& occ, const Modele& mo, CharMeca& load, std::set<int>& listed, Session& session) {
   const engine::Mesh& mesh = *mo.maillage->mesh;
   std::vector<int> master;
   for (const auto& name : occ.texts("GROUP_MA_MAIT"))
@@ -191,12 +192,13 @@ void read_liaison_mail(const Args& occ, const Modele& mo, CharMeca& load, std::s
                       "node " + mesh.node_names[n] + ", on no cell of it");
   if (occ.text("ELIM_MULT") == "OUI") {
     const size_t before = slaves.size();
-    slaves.erase(std::remove_if(slaves.begin(), slaves.end(), [&](int n) { return tied.count(n) > 0; }),
+    slaves.erase(std::remove_if(slaves.begin(), slaves.end(), [&](int n) { return listed.count(n) > 0; }),
                  slaves.end());
     if (slaves.empty())
-      throw occ.error(slave_kw, "slave nodes that no earlier LIAISON_MAIL of this AFFE_CHAR_MECA tied (ELIM_MULT = "
+      throw occ.error(slave_kw, "slave nodes that no earlier LIAISON_MAIL of this AFFE_CHAR_MECA listed (ELIM_MULT = "
                                 "'OUI' leaves those out; 'NON' ties them again)",
-                      "all " + std::to_string(before) + " tied before");
+                      "all " + std::to_string(before) + " listed before");
+    listed.insert(slaves.begin(), slaves.end());
   }
   std::vector<std::string> ddls = {"DX", "DY", "DZ"};
   if (occ.has("DDL")) {
@@ -263,7 +265,6 @@ void read_liaison_mail(const Args& occ, const Modele& mo, CharMeca& load, std::s
                 mesh.cell_names[c] + ")";
       load.relations.push_back(std::move(r));
     }
-    tied.insert(s);
     cells_used.insert(c);
     ++n_tied;
   }
@@ -332,7 +333,7 @@ ConceptPtr affe_char_meca(const Args& args, Session& session) {
   for (const auto& occ : args.factors("FORCE_NODALE")) read_force_nodale(occ, mo, *load);
   for (const auto& occ : args.factors("LIAISON_DDL")) read_liaison_ddl(occ, mo, *load);
   for (const auto& occ : args.factors("LIAISON_UNIF")) read_liaison_unif(occ, mo, *load);
-  std::set<int> glued;  // slave nodes of the LIAISON_MAIL occurrences before (ELIM_MULT)
+  std::set<int> glued;  // slave nodes of the LIAISON_MAIL occurrences before with ELIM_MULT = 'OUI'
   for (const auto& occ : args.factors("LIAISON_MAIL")) read_liaison_mail(occ, mo, *load, glued, session);
   if (args.count("CONTACT") > 0) {
     load->has_contact = true;

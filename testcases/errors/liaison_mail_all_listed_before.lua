@@ -1,7 +1,7 @@
 -- Must-fail deck: two LIAISON_MAIL occurrences with the same slave nodes (AB). With ELIM_MULT = 'OUI'
--- (the default) the second leaves out the nodes the first tied, and has none left: the error says
+-- (the default) the second leaves out the nodes the first listed, and has none left: the error says
 -- so and names ELIM_MULT = 'NON' (which would tie them twice).
--- EXPECT_ERROR: liaison_mail_all_tied_before\.lua:9: AFFE_CHAR_MECA: LIAISON_MAIL\[2\]\.GROUP_MA_ESCL: expected slave nodes that no earlier LIAISON_MAIL of this AFFE_CHAR_MECA tied \(ELIM_MULT = 'OUI' leaves those out; 'NON' ties them again\), got all 17 tied before
+-- EXPECT_ERROR: liaison_mail_all_listed_before\.lua:9: AFFE_CHAR_MECA: LIAISON_MAIL\[2\]\.GROUP_MA_ESCL: expected slave nodes that no earlier LIAISON_MAIL of this AFFE_CHAR_MECA listed \(ELIM_MULT = 'OUI' leaves those out; 'NON' ties them again\), got all 17 listed before
 -- EXPECT_STATUS: 2
 DEBUT()
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = '../meshes/liaison_mail_nested2d.med' }
