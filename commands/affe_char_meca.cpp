@@ -268,15 +268,17 @@ void read_liaison_mail(const Args& occ, const Modele& mo, CharMeca& load, std::s
     cells_used.insert(c);
     ++n_tied;
   }
-  if (n_tied == 0) {
-    char nearest[96] = "";
-    if (n_beyond) std::snprintf(nearest, sizeof nearest, " (the nearest %.3g m from a master cell)", nearest_beyond);
-    throw occ.error(has_max && n_beyond ? "DISTANCE_MAX" : slave_kw,
-                    "slave nodes to tie: within DISTANCE_MAX of a master cell, and not nodes of their master cell",
-                    std::to_string(slaves.size()) + " slave node(s), " + std::to_string(n_beyond) +
-                        " beyond DISTANCE_MAX" + nearest + " and " + std::to_string(n_self) +
-                        " node(s) of their master cell");
+  if (n_tied == 0 && n_beyond) {
+    char nearest[96];
+    std::snprintf(nearest, sizeof nearest, " (the nearest %.3g m from a master cell)", nearest_beyond);
+    throw occ.error("DISTANCE_MAX", "slave nodes within DISTANCE_MAX of a master cell",
+                    std::to_string(n_beyond) + " slave node(s) beyond it" + nearest +
+                        (n_self ? " and " + std::to_string(n_self) + " node(s) of their own master cell" : ""));
   }
+  if (n_tied == 0)
+    throw occ.error(slave_kw, "slave nodes that are not nodes of the master cell holding them",
+                    std::to_string(n_self) + " slave node(s), each a node of its master cell (tied to itself)",
+                    {"GROUP_MA_MAIT names the cells the slave nodes follow: those of the other body"});
   char far_said[160] = "";
   if (farthest_node >= 0)
     std::snprintf(far_said, sizeof far_said, "; the farthest outside its cell: node %s, %.3g m",
