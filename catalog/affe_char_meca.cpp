@@ -78,8 +78,10 @@ Keyword liaison_mail() {
                                    "holds it)")
                   .into_values({"MASSIF"})
                   .def("MASSIF"),
-              text("DDL", "Components tied; default: every displacement component of the model")
-                  .into_values({"DX", "DY", "DZ"})
+              text("DDL", "Components tied; default: every displacement component of the model. 'DNOR' "
+                          "(alone, with GROUP_MA_ESCL's boundary cells): the component along the slave face's "
+                          "normal only, so that the faces may slide on each other")
+                  .into_values({"DX", "DY", "DZ", "DNOR"})
                   .many(),
               real("DISTANCE_MAX", "Slave nodes farther than this from every master cell are not tied (m); default: "
                                    "every slave node is tied, to the nearest master cell")

@@ -1,8 +1,10 @@
 // AFFE_CHAR_MECA: imposed displacements, linear relations, pressures, nodal forces and (seed
 // syntax) contact.
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <set>
+#include <unordered_map>
 
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
@@ -209,8 +211,39 @@ void read_liaison_mail(const Args& occ, const Modele& mo, CharMeca& load, std::s
   } else if (mo.dim == 2) {
     ddls.pop_back();
   }
+  // DDL = 'DNOR': the normal component alone, n . u(node) = n . sum N_a u_a, n the slave face's
+  // normal at the node (from the GROUP_MA_ESCL cells): the faces slide on each other.
+  const bool normal = std::find(ddls.begin(), ddls.end(), "DNOR") != ddls.end();
+  std::unordered_map<int, std::array<double, 3>> normals;
   std::vector<int> components;
-  for (const auto& ddl : ddls) components.push_back(relation_component(occ, mo, ddl));
+  if (normal) {
+    if (ddls.size() > 1)
+      throw occ.error("DDL", "'DNOR' alone (the normal component), or components among DX, DY, DZ",
+                      std::to_string(ddls.size()) + " components with 'DNOR'");
+    if (!occ.has("GROUP_MA_ESCL") || occ.has("GROUP_NO_ESCL"))
+      throw occ.error(occ.has("GROUP_NO_ESCL") ? "GROUP_NO_ESCL" : "GROUP_MA_ESCL",
+                      "with DDL = 'DNOR', the slave face as GROUP_MA_ESCL alone (its cells give the normal)",
+                      occ.has("GROUP_NO_ESCL") ? "GROUP_NO_ESCL" : "no GROUP_MA_ESCL");
+    std::vector<int> skin;
+    for (const auto& name : occ.texts("GROUP_MA_ESCL"))
+      for (int c : cell_group(occ, "GROUP_MA_ESCL", mesh, name))
+        if (engine::cell_info(mesh.cell_types[c]).dim == mo.dim - 1) skin.push_back(c);
+    if (skin.empty())
+      throw occ.error("GROUP_MA_ESCL",
+                      std::string("with DDL = 'DNOR', boundary cells (") + (mo.dim == 3 ? "TRIA, QUAD" : "SEG") +
+                          ") whose normal the slave nodes take",
+                      "groups without any");
+    normals = engine::node_normals(mesh, skin);
+    for (int s : slaves) {
+      auto it = normals.find(s);
+      if (it == normals.end() || (*it).second == std::array<double, 3>{0.0, 0.0, 0.0})
+        throw occ.error("GROUP_MA_ESCL", "slave nodes with a normal (on the boundary cells of GROUP_MA_ESCL)",
+                        "node " + mesh.node_names[s] + (it == normals.end() ? ", on none of them" :
+                                                                                ", where their normals cancel"));
+    }
+  } else {
+    for (const auto& ddl : ddls) components.push_back(relation_component(occ, mo, ddl));
+  }
 
   double tran[3] = {0.0, 0.0, 0.0};  // TRAN: where each slave node is looked for, from where it is
   if (occ.has("TRAN")) {
@@ -256,6 +289,17 @@ void read_liaison_mail(const Args& occ, const Modele& mo, CharMeca& load, std::s
     if (loc.distance > farthest) farthest = loc.distance, farthest_node = s;
     double shape[engine::kMaxCellNodes];
     engine::shape_functions(mesh.cell_types[c], loc.xi, shape, nullptr);
+    if (normal) {
+      const std::array<double, 3>& n = normals.at(s);
+      engine::LinearRelation r;
+      for (int k = 0; k < mo.dim; ++k)
+        if (std::abs(n[k]) > 1e-14) r.terms.push_back({s, k, -n[k]});
+      for (int a = 0; a < nn; ++a)
+        for (int k = 0; k < mo.dim; ++k)
+          if (std::abs(shape[a] * n[k]) > 1e-14) r.terms.push_back({mesh.cell(c)[a], k, shape[a] * n[k]});
+      r.label = occ.where() + " (DNOR of node " + mesh.node_names[s] + " following cell " + mesh.cell_names[c] + ")";
+      load.relations.push_back(std::move(r));
+    }
     for (size_t k = 0; k < components.size(); ++k) {
       engine::LinearRelation r;
       r.terms.push_back({s, components[k], -1.0});
@@ -285,7 +329,7 @@ void read_liaison_mail(const Args& occ, const Modele& mo, CharMeca& load, std::s
                   mesh.node_names[farthest_node].c_str(), farthest);
   session.log().info("  AFFE_CHAR_MECA " + occ.where() + ": " + std::to_string(n_tied) + " slave node(s) follow " +
                      std::to_string(cells_used.size()) + " master cell(s), " +
-                     std::to_string(n_tied * components.size()) + " linear relation(s)" +
+                     std::to_string(n_tied * (normal ? 1 : components.size())) + " linear relation(s)" +
                      (n_beyond ? ", " + std::to_string(n_beyond) + " node(s) beyond DISTANCE_MAX left free" : "") +
                      far_said);
   if (n_self)
