@@ -25,7 +25,7 @@
 #   elas3d_r3 / cont3d_r3   elas3d and cont3d one refinement down (HEXA8 15x15x3 under HEXA20
 #                  12x12x3, 8.4e3 free unknowns with contact: below MUMPS's 1e4)
 set -euo pipefail
-runs=3; cases="glued2d_k16,cont2d_k16,elas3d,cont3d"
+runs=3; cases="glued2d_k16,cont2d_k16,elas3d,glued3d,cont3d"
 while getopts "r:c:" opt; do case $opt in r) runs=$OPTARG ;; c) cases=$OPTARG ;; *) exit 2 ;; esac; done
 shift $((OPTIND - 1))
 [ $# -ge 1 ] || { echo "usage: $0 [-r R] [-c CASE,...] BINARY [BINARY2]" >&2; exit 2; }
