@@ -12,6 +12,8 @@
 #   glued2d_k16   SSNP121 2D geometry glued, 184 x 184 QUAD4 per block (about the unknowns of cont2d_k16)
 #   cont2d_k16    192 x 192 over 176 x 176 QUAD4 in contact, CONTINUE, SIMPSON ORDRE_INT=4, CONTACT_INIT='NON' (SSNP121 A)
 #   glued2d_k32 / cont2d_k32   the same with 368 and 384 / 352 cells per side
+#   glued2d_c16   cont2d_k16's own mesh glued: AFFE_CHAR_MECA LIAISON_MAIL (AB's nodes follow PLAQUE2's
+#                  cells), SOLVEUR ELIM_LAGR='OUI' (SPD, CHOLMOD): the glued solve of the same mesh
 #   elas3d        SSNP121 3D geometry, HEXA8 20x20x4 under HEXA20 16x16x4, interface displacement imposed
 #   cont3d        the same mesh in contact, CONTINUE, SIMPSON ORDRE_INT=4
 #   elas2d_1inst / elas2d_10inst   glued k=16, 1 instant against 10 instants of the same ramp (FONC_MULT:
@@ -36,8 +38,13 @@ gen="$(dirname "${bins[0]}")/lunaster-meshgen"
 work=$(mktemp -d); [ -n "${KEEP:-}" ] && echo "work: $work" >&2 || trap 'rm -rf "$work"' EXIT
 
 mesh2d() { [ -f "$work/$1.med" ] || "$gen" "${@:2}" -o "$work/$1.med" >/dev/null; }
-deck2d() {  # name mesh contact(0/1/mortar/mortar_non) n_instants
-  local contact="" excit="EXCIT = _F{ CHARGE = CH, FONC_MULT = F }"
+deck2d() {  # name mesh contact(0/1/mortar/mortar_non/glued) n_instants
+  local contact="" excit="EXCIT = _F{ CHARGE = CH, FONC_MULT = F }" glue="" solveur=""
+  if [ "$3" = glued ]; then
+    glue=",
+                   LIAISON_MAIL = _F{ GROUP_MA_MAIT = 'PLAQUE2', GROUP_MA_ESCL = 'AB' }"
+    solveur=", SOLVEUR = _F{ ELIM_LAGR = 'OUI' }"
+  fi
   if [ "$3" = mortar ] || [ "$3" = mortar_non ]; then
     local init=OUI; [ "$3" = mortar_non ] && init=NON
     contact="CONT = DEFI_CONT{ MODELE = MO, ZONE = _F{ APPARIEMENT = 'MORTAR', GROUP_MA_ESCL = 'AB', GROUP_MA_MAIT = 'EF',
@@ -57,12 +64,12 @@ MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE
 MAT = DEFI_MATERIAU{ ELAS = _F{ E = 2.0e6, NU = 0.0 } }
 CM = AFFE_MATERIAU{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', MATER = MAT } }
 CH = AFFE_CHAR_MECA{ MODELE = MO, DDL_IMPO = { _F{ GROUP_NO = 'CD', DX = 0.0, DY = -0.1 },
-                                               _F{ GROUP_NO = 'GH', DX = 0.0, DY = 0.0 } } }
+                                               _F{ GROUP_NO = 'GH', DX = 0.0, DY = 0.0 } }$glue }
 $contact
 L = DEFI_LIST_REEL{ DEBUT = 0.0, INTERVALLE = _F{ JUSQU_A = 1.0, NOMBRE = $4 } }
 F = DEFI_FONCTION{ NOM_PARA = 'INST', VALE = { 0.0, 0.0, 1.0, 1.0 } }
 R = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CM, $excit,
-                   COMPORTEMENT = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L } }
+                   COMPORTEMENT = _F{ RELATION = 'ELAS' }, INCREMENT = _F{ LIST_INST = L }$solveur }
 TEST_RESU{ RESU = _F{ RESULTAT = R, NUME_ORDRE = $4, NOM_CHAM = 'DEPL', GROUP_NO = 'CD', NOM_CMP = 'DY', TYPE_TEST = 'MIN',
                       REFERENCE = 'ANALYTIQUE', VALE_REFE = -0.1, PRECISION = 1.0e-8 } }
 FIN()
@@ -111,6 +118,7 @@ for c in "${list[@]}"; do
     glued2d_k16) mesh2d g16 --upper quad4:184 --lower quad4:184 --glued; deck2d "$c" g16 0 1 ;;
     glued2d_k32) mesh2d g32 --upper quad4:368 --lower quad4:368 --glued; deck2d "$c" g32 0 1 ;;
     cont2d_k16) mesh2d c16 --upper quad4:12 --lower quad4:11 --refine 16; deck2d "$c" c16 1 1 ;;
+    glued2d_c16) mesh2d c16 --upper quad4:12 --lower quad4:11 --refine 16; deck2d "$c" c16 glued 1 ;;
     cont2d_k32) mesh2d c32 --upper quad4:12 --lower quad4:11 --refine 32; deck2d "$c" c32 1 1 ;;
     elas2d_1inst) mesh2d g16 --upper quad4:184 --lower quad4:184 --glued; deck2d "$c" g16 0 1 ;;
     elas2d_10inst) mesh2d g16 --upper quad4:184 --lower quad4:184 --glued; deck2d "$c" g16 0 10 ;;
