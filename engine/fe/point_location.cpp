@@ -210,17 +210,30 @@ bool CellLocator::try_cell(int k, const double* point, PointLocation& out) const
   double xyz[3 * kMaxCellNodes];
   for (int a = 0; a < nn; ++a)
     for (int i = 0; i < 3; ++i) xyz[3 * a + i] = mesh_.node(mesh_.cell(c)[a])[i];
-  double xi[3];
-  if (!reference_coordinates(type, xyz, point, xi)) return false;
+  const int dim = cell_info(type).dim;
+  auto distance_to = [&](const double* x) {
+    double d2 = 0.0;
+    for (int i = 0; i < dim; ++i) d2 += (point[i] - x[i]) * (point[i] - x[i]);
+    return std::sqrt(d2);
+  };
+  double xi[3] = {0, 0, 0};
   out.cell = c;
+  if (!reference_coordinates(type, xyz, point, xi)) {
+    // Newton gave up (a point hundreds of cells away, or a degenerate cell): the cell's nearest
+    // node stands for its nearest point, so that a far point still finds its nearest cell.
+    out.inside = false;
+    out.distance = 1e300;
+    for (int a = 0; a < nn; ++a) {
+      const double d = distance_to(&xyz[3 * a]);
+      if (d < out.distance) out.distance = d, reference_node(type, a, out.xi);
+    }
+    return true;
+  }
   out.inside = inside_reference(type, xi, kInside);
   if (!out.inside) clamp_to_reference(type, xi);  // inside to 1e-10: xi as found, exact shape values
   double x[3];
   map_point(type, xyz, xi, x);
-  const int dim = cell_info(type).dim;
-  double d2 = 0.0;
-  for (int i = 0; i < dim; ++i) d2 += (point[i] - x[i]) * (point[i] - x[i]);
-  out.distance = std::sqrt(d2);
+  out.distance = distance_to(x);
   for (int i = 0; i < 3; ++i) out.xi[i] = xi[i];
   return true;
 }

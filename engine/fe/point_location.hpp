@@ -47,13 +47,15 @@ class CellLocator {
   CellLocator(const Mesh& mesh, std::vector<int> cells);
 
   /// The cell holding `point`; among several (a point on a shared face), the lowest cell
-  /// index; outside every cell, the nearest (by |point - x(clamped xi)|, then lowest index).
+  /// index; outside every cell, the nearest (by |point - x(clamped xi)|, then lowest index; a
+  /// cell where Newton gives up, the point far away, is measured by its nearest node, whose
+  /// reference coordinates `xi` then are). Never -1 when the set has cells.
   PointLocation locate(const double* point) const;
 
  private:
   std::int64_t key(const int* ijk) const;
   void bucket_of(const double* point, int* ijk) const;
-  /// Tries cell k of `cells_` against the point; true (and `out`) when converged.
+  /// Cell k of `cells_` against the point (`out`); false only for a cell without nodes.
   bool try_cell(int k, const double* point, PointLocation& out) const;
 
   const Mesh& mesh_;

@@ -2,10 +2,12 @@
 # Contact against glued (or elastic) runs on a machine whose speed drifts: whole runs of
 # `lunaster run DECK -q`, timed by /usr/bin/time, every deck once per round, R rounds. Prints
 # each round's wall times, then per deck the median wall and the median of the per-round
-# ratios to the first deck (runs of one round are seconds apart, so the ratio sees one speed).
+# ratios to the first deck, or to the REF-th (runs of one round are seconds apart, so the ratio
+# sees one speed).
 # The decks are those that `KEEP=1 tests/bench/contact_speed.sh -r 1 -c CASES BINARY` keeps. A
 # CalculiX input (NAME.inp, e.g. written by tests/bench/study/ccx/med2inp.py from the same mesh) is
-# run as `ccx -i NAME` in its folder, in the same rounds.
+# run as `ccx -i NAME` in its folder, in the same rounds (Debian's calculix-ccx, which
+# `scripts/install-deps.sh study` installs).
 #
 # Usage: [REF=K] tests/bench/interleave.sh BINARY R DECK|INP [DECK|INP ...]
 #   REF=K: the ratios are to the K-th deck (default 1, the first)

@@ -106,6 +106,15 @@ TEST(PointLocation, LocatorPicksTheCellThatHoldsThePointOrTheNearest) {
   loc = locator.locate(far_below);
   EXPECT_EQ(loc.cell, 0);
   EXPECT_NEAR(loc.distance, 5.0, 1e-13);
+
+  // Thousands of cell sizes away, where Newton gives up: the nearest cell by its nearest node.
+  const double very_far[3] = {3000.0, 0.0, 0.0};
+  loc = locator.locate(very_far);
+  EXPECT_EQ(loc.cell, 1);
+  EXPECT_FALSE(loc.inside);
+  EXPECT_NEAR(loc.distance, 2998.0, 1e-9);
+  EXPECT_EQ(loc.xi[0], 1.0);  // the node (2, 0, 0): reference (1, -1, -1) in the second cell
+  EXPECT_EQ(loc.xi[1], -1.0);
 }
 
 TEST(PointLocation, LocatorOnAGridOfQuadrangles) {
