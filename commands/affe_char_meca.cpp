@@ -10,6 +10,7 @@
 #include "commands/concepts.hpp"
 #include "commands/contact_keywords.hpp"
 #include "commands/selection.hpp"
+#include "engine/contact/surface_element.hpp"
 #include "engine/fe/point_location.hpp"
 #include "engine/fe/shape.hpp"
 
@@ -152,6 +153,47 @@ void read_liaison_unif(const Args& occ, const Modele& mo, CharMeca& load) {
   }
 }
 
+/// A cell's size: the longest distance between two of its nodes.
+double cell_size(const engine::Mesh& mesh, int c) {
+  double size = 0.0;
+  const int nn = mesh.cell_n_nodes(c);
+  for (int a = 0; a < nn; ++a)
+    for (int b = a + 1; b < nn; ++b) {
+      double d2 = 0.0;
+      for (int i = 0; i < 3; ++i) {
+        const double d = mesh.node(mesh.cell(c)[a])[i] - mesh.node(mesh.cell(c)[b])[i];
+        d2 += d * d;
+      }
+      size = std::max(size, std::sqrt(d2));
+    }
+  return size;
+}
+
+/// LIAISON_MAIL DDL = 'DNOR': the unit normal of the slave face (the boundary cells of
+/// GROUP_MA_ESCL) at each slave node.
+std::unordered_map<int, std::array<double, 3>> slave_normals(const Args& occ, const Modele& mo,
+                                                            const std::vector<int>& slaves) {
+  const engine::Mesh& mesh = *mo.maillage->mesh;
+  std::vector<int> skin;
+  for (const auto& name : occ.texts("GROUP_MA_ESCL"))
+    for (int c : cell_group(occ, "GROUP_MA_ESCL", mesh, name))
+      if (engine::cell_info(mesh.cell_types[c]).dim == mo.dim - 1) skin.push_back(c);
+  if (skin.empty())
+    throw occ.error("GROUP_MA_ESCL",
+                    std::string("with DDL = 'DNOR', boundary cells (") + (mo.dim == 3 ? "TRIA, QUAD" : "SEG") +
+                        ") whose normal the slave nodes take",
+                    "groups without any");
+  const auto normals = engine::contact::node_normals(mesh, skin);
+  for (int s : slaves) {
+    auto it = normals.find(s);
+    if (it == normals.end() || (*it).second == std::array<double, 3>{0.0, 0.0, 0.0})
+      throw occ.error("GROUP_MA_ESCL", "slave nodes with a normal (on the boundary cells of GROUP_MA_ESCL)",
+                      "node " + mesh.node_names[s] + (it == normals.end() ? ", on none of them" :
+                                                                              ", where their normals cancel"));
+  }
+  return normals;
+}
+
 /// LIAISON_MAIL, TYPE_RACCORD = 'MASSIF' (code_aster's gluing of meshes that do not match):
 /// each slave node follows the master cell that holds it, or the nearest one,
 /// u(node) - sum_a N_a(xi) u_a = 0 for each DDL, one relation each. As in code_aster: a slave
@@ -224,23 +266,7 @@ void read_liaison_mail(const Args& occ, const Modele& mo, CharMeca& load, std::s
       throw occ.error(occ.has("GROUP_NO_ESCL") ? "GROUP_NO_ESCL" : "GROUP_MA_ESCL",
                       "with DDL = 'DNOR', the slave face as GROUP_MA_ESCL alone (its cells give the normal)",
                       occ.has("GROUP_NO_ESCL") ? "GROUP_NO_ESCL" : "no GROUP_MA_ESCL");
-    std::vector<int> skin;
-    for (const auto& name : occ.texts("GROUP_MA_ESCL"))
-      for (int c : cell_group(occ, "GROUP_MA_ESCL", mesh, name))
-        if (engine::cell_info(mesh.cell_types[c]).dim == mo.dim - 1) skin.push_back(c);
-    if (skin.empty())
-      throw occ.error("GROUP_MA_ESCL",
-                      std::string("with DDL = 'DNOR', boundary cells (") + (mo.dim == 3 ? "TRIA, QUAD" : "SEG") +
-                          ") whose normal the slave nodes take",
-                      "groups without any");
-    normals = engine::node_normals(mesh, skin);
-    for (int s : slaves) {
-      auto it = normals.find(s);
-      if (it == normals.end() || (*it).second == std::array<double, 3>{0.0, 0.0, 0.0})
-        throw occ.error("GROUP_MA_ESCL", "slave nodes with a normal (on the boundary cells of GROUP_MA_ESCL)",
-                        "node " + mesh.node_names[s] + (it == normals.end() ? ", on none of them" :
-                                                                                ", where their normals cancel"));
-    }
+    normals = slave_normals(occ, mo, slaves);
   } else {
     for (const auto& ddl : ddls) components.push_back(relation_component(occ, mo, ddl));
   }
@@ -255,8 +281,9 @@ void read_liaison_mail(const Args& occ, const Modele& mo, CharMeca& load, std::s
     std::copy(t.begin(), t.end(), tran);
   }
   const engine::CellLocator locator(mesh, master);
-  const bool has_max = occ.has("DISTANCE_MAX");
+  const bool has_max = occ.has("DISTANCE_MAX"), has_alarm = occ.has("DISTANCE_ALARME");
   const double distance_max = has_max ? occ.real("DISTANCE_MAX") : 0.0;
+  const double alarm = has_alarm ? occ.real("DISTANCE_ALARME") : 0.0;
   int n_tied = 0, n_self = 0, n_beyond = 0, n_far = 0;
   double farthest = 0.0, nearest_beyond = 0.0;
   int farthest_node = -1;
@@ -274,18 +301,7 @@ void read_liaison_mail(const Args& occ, const Modele& mo, CharMeca& load, std::s
       nearest_beyond = n_beyond++ ? std::min(nearest_beyond, loc.distance) : loc.distance;
       continue;
     }
-    double size = 0.0;  // the cell's size: its longest distance between two nodes
-    for (int a = 0; a < nn; ++a)
-      for (int b = a + 1; b < nn; ++b) {
-        double d2 = 0.0;
-        for (int i = 0; i < 3; ++i) {
-          const double d = mesh.node(mesh.cell(c)[a])[i] - mesh.node(mesh.cell(c)[b])[i];
-          d2 += d * d;
-        }
-        size = std::max(size, std::sqrt(d2));
-      }
-    const double alarm = occ.has("DISTANCE_ALARME") ? occ.real("DISTANCE_ALARME") : 0.1 * size;
-    if (loc.distance > alarm) ++n_far;
+    if (loc.distance > 0.0 && loc.distance > (has_alarm ? alarm : 0.1 * cell_size(mesh, c))) ++n_far;
     if (loc.distance > farthest) farthest = loc.distance, farthest_node = s;
     double shape[engine::kMaxCellNodes];
     engine::shape_functions(mesh.cell_types[c], loc.xi, shape, nullptr);
@@ -339,7 +355,7 @@ void read_liaison_mail(const Args& occ, const Modele& mo, CharMeca& load, std::s
   if (n_far)
     session.warn(occ.path(slave_kw) + ": " + std::to_string(n_far) +
                  " slave node(s) lie outside every master cell, by more than " +
-                 (occ.has("DISTANCE_ALARME") ? std::string("DISTANCE_ALARME") : std::string("a tenth of the cell")) +
+                 (has_alarm ? std::string("DISTANCE_ALARME") : std::string("a tenth of the cell")) +
                  "; each follows the nearest point of its nearest cell" + far_said +
                  " (DISTANCE_MAX leaves such nodes free)");
 }

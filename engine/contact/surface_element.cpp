@@ -265,4 +265,31 @@ void clamp_to_cell(CellType type, double* xi) {
   xi[0] = best[0], xi[1] = best[1];
 }
 
+std::unordered_map<int, std::array<double, 3>> node_normals(const Mesh& mesh, const std::vector<int>& cells) {
+  std::unordered_map<int, std::array<double, 3>> sum;
+  double xyz[3 * kMaxSurfaceNodes];
+  for (int c : cells) {
+    const CellType type = mesh.cell_types[c];
+    const int nn = surface_n_nodes(type);
+    for (int a = 0; a < nn; ++a)
+      for (int i = 0; i < 3; ++i) xyz[3 * a + i] = mesh.node(mesh.cell(c)[a])[i];
+    for (int b = 0; b < nn; ++b) {
+      double xi[2];
+      surface_reference_node(type, b, xi);
+      const SurfacePoint sp = surface_point(type, xyz, xi);
+      if (sp.jacobian == 0.0) continue;
+      auto [it, fresh] = sum.try_emplace(mesh.cell(c)[b], std::array<double, 3>{0.0, 0.0, 0.0});
+      std::array<double, 3>& total = it->second;
+      const double agree = total[0] * sp.n[0] + total[1] * sp.n[1] + total[2] * sp.n[2];
+      const double sign = fresh || agree >= 0.0 ? 1.0 : -1.0;
+      for (int i = 0; i < 3; ++i) total[i] += sign * sp.n[i];
+    }
+  }
+  for (auto& [node, n] : sum) {
+    const double norm = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (double& v : n) v = norm > 1e-12 ? v / norm : 0.0;
+  }
+  return sum;
+}
+
 }  // namespace lunaster::engine::contact

@@ -9,7 +9,12 @@
 /// SEG [-1,1] (ends then middle); TRIA (0,0),(1,0),(0,1) then mid-edges
 /// 01, 12, 20; QUAD [-1,1]^2 corners counter-clockwise from (-1,-1) then
 /// mid-edges 01, 12, 23, 30.
+#include <array>
+#include <unordered_map>
+#include <vector>
+
 #include "engine/mesh/cell_type.hpp"
+#include "engine/mesh/mesh.hpp"
 
 namespace lunaster::engine::contact {
 
@@ -53,6 +58,12 @@ struct SurfacePoint {
 /// Evaluates the geometry at xi; `xyz` holds 3 coordinates per cell node.
 /// A degenerate cell gives jacobian 0 and a zero normal (never NaN).
 SurfacePoint surface_point(CellType type, const double* xyz, const double* xi);
+
+/// Unit normals at the nodes of surface cells (surface_point's normal at each node of each cell):
+/// at each node the sum of its cells' normals there, each turned to agree with the first one
+/// summed (a skin's cells may be oriented either way), then normalised. A node whose normals
+/// cancel gets a zero vector.
+std::unordered_map<int, std::array<double, 3>> node_normals(const Mesh& mesh, const std::vector<int>& cells);
 
 /// How far a reference point lies outside the reference cell (0 inside):
 /// segments max(0,|xi|-1); triangles max(0,-xi,-eta,xi+eta-1); quads max(0,|xi|-1,|eta|-1).

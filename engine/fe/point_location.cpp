@@ -111,41 +111,6 @@ void clamp_to_reference(CellType type, double* xi) {
   for (int i = 0; i < dim; ++i) xi[i] = std::clamp(xi[i], -1.0, 1.0);
 }
 
-std::unordered_map<int, std::array<double, 3>> node_normals(const Mesh& mesh, const std::vector<int>& cells) {
-  std::unordered_map<int, std::array<double, 3>> sum;
-  double dn[3 * kMaxCellNodes];
-  for (int c : cells) {
-    const CellType type = mesh.cell_types[c];
-    const int dim = cell_info(type).dim, nn = mesh.cell_n_nodes(c);
-    LUNASTER_ASSERT(dim == 1 || dim == 2, "node_normals: boundary cells (SEG in 2D, TRIA/QUAD in 3D)");
-    for (int b = 0; b < nn; ++b) {
-      double xi[3] = {0, 0, 0};
-      reference_node(type, b, xi);
-      shape_functions(type, xi, nullptr, dn);
-      double t[2][3] = {{0, 0, 0}, {0, 0, 0}};
-      for (int a = 0; a < nn; ++a)
-        for (int k = 0; k < dim; ++k)
-          for (int i = 0; i < 3; ++i) t[k][i] += mesh.node(mesh.cell(c)[a])[i] * dn[a * dim + k];
-      std::array<double, 3> n = dim == 1 ? std::array<double, 3>{t[0][1], -t[0][0], 0.0}
-                                         : std::array<double, 3>{t[0][1] * t[1][2] - t[0][2] * t[1][1],
-                                                                 t[0][2] * t[1][0] - t[0][0] * t[1][2],
-                                                                 t[0][0] * t[1][1] - t[0][1] * t[1][0]};
-      const double norm = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      if (norm == 0.0) continue;
-      auto [it, fresh] = sum.try_emplace(mesh.cell(c)[b], std::array<double, 3>{0.0, 0.0, 0.0});
-      std::array<double, 3>& total = it->second;
-      const double agree = total[0] * n[0] + total[1] * n[1] + total[2] * n[2];
-      const double sign = (fresh || agree >= 0.0 ? 1.0 : -1.0) / norm;
-      for (int i = 0; i < 3; ++i) total[i] += sign * n[i];
-    }
-  }
-  for (auto& [node, n] : sum) {
-    const double norm = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    for (double& v : n) v = norm > 1e-12 ? v / norm : 0.0;
-  }
-  return sum;
-}
-
 CellLocator::CellLocator(const Mesh& mesh, std::vector<int> cells) : mesh_(mesh), cells_(std::move(cells)) {
   if (cells_.empty()) return;
   boxes_.resize(6 * cells_.size());

@@ -3,7 +3,6 @@
 /// that holds a point and the point's reference coordinates in it, or, for a point outside
 /// every cell, the nearest cell and the point of it nearest in reference coordinates. Used to
 /// tie nodes to a mesh they do not belong to (LIAISON_MAIL: u(node) = sum N_a(xi) u_a).
-#include <array>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -31,12 +30,6 @@ bool inside_reference(CellType type, const double* xi, double tolerance);
 /// Moves reference coordinates into the reference cell (the nearest point of it for
 /// QUAD/HEXA and along each axis for the simplices' faces).
 void clamp_to_reference(CellType type, double* xi);
-
-/// Unit normals at the nodes of boundary cells (SEG2/SEG3 in 2D, TRIA and QUAD faces in 3D): at each
-/// node the sum of its cells' normals there, each turned to agree with the first one summed (a
-/// skin's cells may be oriented either way), then normalised. A node whose normals cancel (an edge
-/// between opposite faces) gets a zero vector.
-std::unordered_map<int, std::array<double, 3>> node_normals(const Mesh& mesh, const std::vector<int>& cells);
 
 /// A set of cells of one dimension with a uniform grid over their bounding boxes, so that a
 /// point is tried against nearby cells only.

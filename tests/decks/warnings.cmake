@@ -1,29 +1,23 @@
 # Decks whose output must carry a warning (include(decks/warnings.cmake) from tests/CMakeLists.txt).
 # The incompatible SSNP121 pairings (a quadrangle slave facing a TRIA6 master) must warn exactly once,
-# name the pairing to use instead, and still finish with every TEST_RESU check OK. PASS_REGULAR_EXPRESSION
-# replaces the exit-status test, hence the final "0 NOOK" line in the pattern; the deck.* test of the same
-# deck checks the exit status.
+# name the pairing to use instead, and still finish with every TEST_RESU check OK (lunaster_log_test,
+# tests/CMakeLists.txt; the deck.* test of the same deck checks the exit status).
 foreach(case ssnp121f_quad8_on_tria6 ssnp121k_quad4_on_tria6)
-  add_test(NAME warning.${case}
-           COMMAND lunaster run ${CMAKE_SOURCE_DIR}/testcases/${case}.lua --out ${CMAKE_BINARY_DIR}/deck-out/warning-${case})
-  set_tests_properties(warning.${case} PROPERTIES LABELS "deck;warning"
-    PASS_REGULAR_EXPRESSION "<A> [^\n]*does not satisfy the compatibility conditions[^\n]*TRIA6 slave on.*lunaster: [0-9]+ check\\(s\\) OK, 0 NOOK"
-    FAIL_REGULAR_EXPRESSION "compatibility conditions.*compatibility conditions;\nNOOK (ANALYTIQUE|NON_REGRESSION)")
+  lunaster_log_test(warning.${case} ${CMAKE_SOURCE_DIR}/testcases/${case}.lua "deck;warning"
+    "<A> [^\n]*does not satisfy the compatibility conditions[^\n]*TRIA6 slave on.*lunaster: [0-9]+ check\\(s\\) OK, 0 NOOK"
+    "compatibility conditions.*compatibility conditions;\nNOOK (ANALYTIQUE|NON_REGRESSION)")
 endforeach()
 
 # SOLVEUR STOP_SINGULIER='NON' (testcases/solver_singularity.lua): the free block must be named in a
 # warning, CHOLMOD's weak pivot and MUMPS's null pivot by node and component (with the digits lost, the
 # pivots set aside), and every check must still pass.
-add_test(NAME warning.solver_singularity
-         COMMAND lunaster run ${CMAKE_SOURCE_DIR}/testcases/solver_singularity.lua --out ${CMAKE_BINARY_DIR}/deck-out/warning-solver_singularity)
-set_tests_properties(warning.solver_singularity PROPERTIES LABELS "deck;warning"
-  PASS_REGULAR_EXPRESSION "<A> going on as asked with a singular system: [^\n]*the body BLOCK \\(9 cells\\) has a rigid-body mode \\(free to move along DX[^\n]*\n<A> singular matrix at instant 1\\.000000e\\+00 at node N[0-9]+, component DX, going on as asked: CHOLMOD: (pivot lost [0-9.]+ significant digits \\(more than 8\\)|a pivot CHOLMOD cannot take[^\n]*null pivot)[^\n]*\n.*<A> singular matrix at instant 1\\.000000e\\+00 at node N[0-9]+, component DX, going on as asked: MUMPS: [0-9]+ null pivot\\(s\\) below 1e-8 in the scaled matrix, set to 1e20.*lunaster: 12 check\\(s\\) OK, 0 NOOK")
+lunaster_log_test(warning.solver_singularity ${CMAKE_SOURCE_DIR}/testcases/solver_singularity.lua
+  "deck;warning"
+  "<A> going on as asked with a singular system: [^\n]*the body BLOCK \\(9 cells\\) has a rigid-body mode \\(free to move along DX[^\n]*\n<A> singular matrix at instant 1\\.000000e\\+00 at node N[0-9]+, component DX, going on as asked: CHOLMOD: (pivot lost [0-9.]+ significant digits \\(more than 8\\)|a pivot CHOLMOD cannot take[^\n]*null pivot)[^\n]*\n.*<A> singular matrix at instant 1\\.000000e\\+00 at node N[0-9]+, component DX, going on as asked: MUMPS: [0-9]+ null pivot\\(s\\) below 1e-8 in the scaled matrix, set to 1e20.*lunaster: 12 check\\(s\\) OK, 0 NOOK")
 
 # A linear relation on a mortar slave node's normal component (testcases/ssnp121a_mortar_relation.lua):
 # the run must name the node and component once, and every check must still pass.
-add_test(NAME warning.ssnp121a_mortar_relation
-         COMMAND lunaster run ${CMAKE_SOURCE_DIR}/testcases/ssnp121a_mortar_relation.lua
-                 --out ${CMAKE_BINARY_DIR}/deck-out/warning-ssnp121a_mortar_relation)
-set_tests_properties(warning.ssnp121a_mortar_relation PROPERTIES LABELS "deck;warning"
-  PASS_REGULAR_EXPRESSION "<A> mortar contact: a linear relation ties the displacement along the contact normal of slave node\\(s\\) N1 \\(DY\\):.*lunaster: 16 check\\(s\\) OK, 0 NOOK"
-  FAIL_REGULAR_EXPRESSION "contact normal of slave node.*contact normal of slave node")
+lunaster_log_test(warning.ssnp121a_mortar_relation ${CMAKE_SOURCE_DIR}/testcases/ssnp121a_mortar_relation.lua
+  "deck;warning"
+  "<A> mortar contact: a linear relation ties the displacement along the contact normal of slave node\\(s\\) N1 \\(DY\\):.*lunaster: 16 check\\(s\\) OK, 0 NOOK"
+  "contact normal of slave node.*contact normal of slave node")
