@@ -86,6 +86,9 @@ class Session {
   /// ... and, with `--vale-calc=report`, prints those comparisons without counting them as
   /// checks (the VALE_REFE checks alone decide OK/NOOK).
   bool vale_calc_report = false;
+  /// `--solveur=MUMPS` on the command line: every STAT_NON_LINE factorises with MUMPS, the model
+  /// shared among the ranks under mpirun, whatever its SOLVEUR says (empty: the deck decides).
+  std::string solveur_override;
   /// One comparison of a .comm's VALE_CALC (code_aster's value) with lunaster's.
   struct Comparison {
     std::string what;

@@ -271,6 +271,15 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
   if (options.solver == engine::SolverKind::Petsc) read_petsc(args.factor("SOLVEUR"), options.iterative);
   read_direct_solver(args.factor("SOLVEUR"), options,
                      [&session](const std::string& line) { session.log().info(line); });
+  if (session.solveur_override == "MUMPS") {
+    // --solveur=MUMPS on the command line: MUMPS whatever the deck asked for, the model shared
+    // among the ranks (each assembles its own nodes' stiffness, MUMPS takes the matrix given
+    // distributed), as METHODE='MUMPS' with MATR_DISTRIBUEE='OUI' would.
+    const std::string asked = args.factor("SOLVEUR").text("METHODE");
+    options.solver = engine::SolverKind::Mumps, options.auto_solver = false, options.share_model = true;
+    session.log().info("  SOLVEUR METHODE = 'MUMPS', MATR_DISTRIBUEE = 'OUI' from the command line (--solveur=MUMPS)" +
+                       (asked == "MUMPS" ? std::string() : ", in place of the deck's METHODE = '" + asked + "'"));
+  }
   options.krylov_history = args.integer("INFO") >= 2;
   read_newton(args.factor("NEWTON"), contact != nullptr, options);
   const std::vector<double> times = instants(args.factor("INCREMENT"), options);

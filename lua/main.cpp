@@ -33,10 +33,10 @@ namespace {
 
 constexpr const char* kUsage = R"(usage:
   lunaster run DECK [--out DIR] [-v|-q] [--time-limit S] [--memory-limit MB] [--vale-calc=check|report]
-                                              run a deck: DECK.lua, a code_aster DECK.comm, or a DECK.export
+                  [--solveur=MUMPS]           run a deck: DECK.lua, a code_aster DECK.comm, or a DECK.export
                                               naming a .comm, its units and limits (output: ./out/<deck name>)
   lunaster verify [PATHS...] [-j N] [--np N] [--out DIR] [--junit FILE] [--json FILE] [--time-limit S]
-                  [--memory-limit MB] [--vale-calc=check|report]
+                  [--memory-limit MB] [--vale-calc=check|report] [--solveur=MUMPS]
                                               run decks (.lua, .export, and .comm without an .export;
                                               default: testcases/) and summarise TEST_RESU
                                               (--np N: each deck as `mpirun -np N lunaster run ...`)
@@ -53,6 +53,9 @@ code_aster VALE_CALC: in a .comm they are code_aster's results, checked as CODE_
   --vale-calc=report prints them as SAME/DIFF report lines instead (the VALE_REFE checks decide)
 MPI: `mpirun -np N lunaster run DECK` runs the deck on N ranks (MUMPS factorises across them); rank 0
   alone prints and writes files, every rank returns the same exit status; verify is not run by mpirun
+--solveur=MUMPS: every STAT_NON_LINE / MECA_NON_LINE solves with MUMPS whatever its SOLVEUR says, the
+  model shared among the ranks under mpirun (as SOLVEUR=_F{METHODE='MUMPS', MATR_DISTRIBUEE='OUI'});
+  the deck's other SOLVEUR keywords that MUMPS reads are kept
 exit status: 0 OK, 1 some TEST_RESU NOOK, 2 deck error, 3 solve error, 4 internal error,
   5 time limit exceeded, 6 memory limit exceeded (or out of memory)
 )";
@@ -143,11 +146,28 @@ bool budget_option(const std::string& verb, const std::string& option, const std
 
 bool is_budget_option(const std::string& word) { return word == "--time-limit" || word == "--memory-limit"; }
 
+bool is_solveur_option(const std::string& word) { return word.rfind("--solveur", 0) == 0; }
+
+/// --solveur=METHODE: the method every STAT_NON_LINE solves with, whatever its SOLVEUR says.
+/// MUMPS alone: every system the engine builds (symmetric or not, multipliers or not) is one
+/// it factorises, and under mpirun it takes the model shared among the ranks.
+bool solveur_option(const char* command, const std::string& word, std::string& solveur) {
+  const std::string value = word.rfind("--solveur=", 0) == 0 ? word.substr(10) : std::string();
+  if (value != "MUMPS") {
+    std::cerr << "lunaster: " << command << ": --solveur expects --solveur=MUMPS (every STAT_NON_LINE then "
+              << "factorises with MUMPS, the model shared among the ranks under mpirun), got '" << word << "'\n";
+    return false;
+  }
+  solveur = value;
+  return true;
+}
+
 int run_command(const std::vector<std::string>& args) {
   std::string deck;
   fs::path out;
   int verbosity = 1;
   bool vale_calc_report = false;
+  std::string solveur;
   lua::Budget budget;
   for (std::size_t i = 0; i < args.size(); ++i) {
     if (is_budget_option(args[i]) && i + 1 < args.size()) {
@@ -156,6 +176,9 @@ int run_command(const std::vector<std::string>& args) {
     } else if (args[i] == "--out" && i + 1 < args.size()) out = args[++i];
     else if (args[i] == "--vale-calc=report" || args[i] == "--vale-calc=check")
       vale_calc_report = args[i] == "--vale-calc=report";
+    else if (is_solveur_option(args[i])) {
+      if (!solveur_option("run", args[i], solveur)) return static_cast<int>(ErrorKind::Deck);
+    }
     else if (args[i] == "-v") verbosity = 2;
     else if (args[i] == "-q") verbosity = 0;
     else if (deck.empty() && args[i][0] != '-') deck = args[i];
@@ -187,6 +210,7 @@ int run_command(const std::vector<std::string>& args) {
   session.deck_path = deck;
   session.output_dir = out;
   session.vale_calc_report = vale_calc_report;
+  session.solveur_override = solveur;
   // A run's time limit counts from the process's creation, as verify counts it from the spawn;
   // under mpirun, from the deck's start (verify gives mpirun's own start-up a grace of its own,
   // kVerifyMpiKillGraceSeconds, and a rank cannot know when mpirun started).
@@ -233,7 +257,9 @@ int verify_command(const std::vector<std::string>& args) {
     else if (args[i] == "--json" && has_value) options.json_file = args[++i];
     else if (args[i] == "--vale-calc=report" || args[i] == "--vale-calc=check")
       options.vale_calc_report = args[i] == "--vale-calc=report";
-    else if (args[i] == "--out" && has_value) options.out_dir = args[++i];
+    else if (is_solveur_option(args[i])) {
+      if (!solveur_option("verify", args[i], options.solveur)) return static_cast<int>(ErrorKind::Deck);
+    } else if (args[i] == "--out" && has_value) options.out_dir = args[++i];
     else if (args[i][0] == '-') return usage_error("verify: unexpected option '" + args[i] + "'");
     else options.paths.emplace_back(args[i]);
   }

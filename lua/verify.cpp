@@ -429,6 +429,7 @@ int verify(const VerifyOptions& options, std::ostream& out) {
   std::atomic<std::size_t> next{0};
   std::vector<std::string> extra;
   if (options.vale_calc_report) extra.push_back("--vale-calc=report");
+  if (!options.solveur.empty()) extra.push_back("--solveur=" + options.solveur);
   auto worker = [&] {
     for (std::size_t i = next++; i < decks.size(); i = next++)
       outcomes[i] = run_child(options.executable, decks[i], deck_out_dir(options.out_dir, decks[i]),

@@ -3,8 +3,11 @@
 check by check: the same decks, the same deck statuses, the same checks in the same order
 with the same status (OK/NOOK, SAME/DIFF), and every computed value (calc=) equal to
 REL relative, with an absolute floor ABS near zero: |a - b| <= max(REL * max(|a|, |b|), ABS).
+With --field-scale the floor is also REL times the field's scale in the deck: the largest |calc|
+of the reference's checks of that field (NOM_CHAM), so that a component which is zero analytically
+(its round-off) is compared at the size of the field it belongs to.
 
-usage: compare_checks.py REFERENCE.json OTHER.json [--rel 1e-8] [--abs 1e-8]
+usage: compare_checks.py REFERENCE.json OTHER.json [--rel 1e-8] [--abs 1e-8] [--field-scale]
 Exit 0 if everything matches, 1 otherwise (every difference is listed). Standard library only.
 """
 import argparse
@@ -37,10 +40,25 @@ def close(a, b, rel, floor):
     return abs(a - b) <= max(rel * max(abs(a), abs(b)), floor)
 
 
-def compare(reference, other, rel, floor):
-    """The list of differences between two reports (empty when they match) and statistics."""
+def field_scales(found):
+    """Per field (the first word of a check's description: DEPL, SIGM_NOEU ...), the largest |calc|."""
+    scales = {}
+    for _, _, what, calc in found:
+        field = what.split()[0] if what.split() else ""
+        scales[field] = max(scales.get(field, 0.0), abs(calc))
+    return scales
+
+
+def compare(reference, other, rel, floor, field_scale=False, status_only=()):
+    """The list of differences between two reports (empty when they match) and statistics.
+    field_scale: the floor of each value is also rel times its field's scale in the reference
+    deck (field_scales). status_only: (deck, check number from 1) pairs whose value is not
+    compared (their status, kind and description are). stats["differing"]: the (deck, check
+    number) pairs whose values differ; stats["largest_share"]: the largest difference as a share of
+    the one allowed."""
     problems = []
-    stats = {"decks": 0, "checks": 0, "largest_rel": 0.0, "largest_where": ""}
+    stats = {"decks": 0, "checks": 0, "largest_rel": 0.0, "largest_where": "", "differing": [],
+             "largest_share": 0.0, "share_where": ""}
     for name in sorted(set(reference) - set(other)):
         problems.append(f"{name}: missing from the second report")
     for name in sorted(set(other) - set(reference)):
@@ -52,6 +70,7 @@ def compare(reference, other, rel, floor):
             problems.append(f"{name}: status {a['status']} (exit {a['exit_code']}) against "
                             f"{b['status']} (exit {b['exit_code']})")
         ca, cb = checks(a["output"]), checks(b["output"])
+        scales = field_scales(ca) if field_scale else {}
         if len(ca) != len(cb):
             problems.append(f"{name}: {len(ca)} check(s) against {len(cb)}")
         for i, (x, y) in enumerate(zip(ca, cb)):
@@ -59,13 +78,20 @@ def compare(reference, other, rel, floor):
             if x[:3] != y[:3]:
                 problems.append(f"{where}: '{' '.join(x[:3])}' against '{' '.join(y[:3])}'")
                 continue
+            if (name, i + 1) in status_only:
+                continue
             stats["checks"] += 1
+            value_floor = max(floor, rel * scales.get(x[2].split()[0] if x[2].split() else "", 0.0))
             scale = max(abs(x[3]), abs(y[3]))
-            if scale > floor:
+            if scale > value_floor:
                 relative = abs(x[3] - y[3]) / scale
                 if relative > stats["largest_rel"]:
                     stats["largest_rel"], stats["largest_where"] = relative, where
-            if not close(x[3], y[3], rel, floor):
+            share = abs(x[3] - y[3]) / max(rel * scale, value_floor)  # of what is allowed
+            if share > stats["largest_share"]:
+                stats["largest_share"], stats["share_where"] = share, where
+            if not close(x[3], y[3], rel, value_floor):
+                stats["differing"].append((name, i + 1))
                 problems.append(f"{where}: calc={x[3]:.9e} against calc={y[3]:.9e}")
     return problems, stats
 
@@ -76,8 +102,9 @@ def main():
     parser.add_argument("other")
     parser.add_argument("--rel", type=float, default=1e-8)
     parser.add_argument("--abs", type=float, default=1e-8, dest="floor")
+    parser.add_argument("--field-scale", action="store_true")
     args = parser.parse_args()
-    problems, stats = compare(decks(args.reference), decks(args.other), args.rel, args.floor)
+    problems, stats = compare(decks(args.reference), decks(args.other), args.rel, args.floor, args.field_scale)
     for p in problems:
         print("DIFFERENT  " + p)
     print(f"{stats['decks']} deck(s), {stats['checks']} check value(s) compared; largest relative difference "
