@@ -703,6 +703,25 @@ void StaticSolver::factorize_interface_reference(SystemCache& sys) {
 
 void StaticSolver::update_system(const Constraints& cons, const std::vector<Triplet>& contact,
                                  const std::vector<int>& condensed, const std::vector<int>& eliminated) {
+  const long pattern_before = system_ ? system_->pattern : 0;
+  update_own_system(cons, contact, condensed, eliminated);
+  if (!distributed_) return;
+  // Each rank keyed its own columns' terms: a rank with no contact point in its columns sees
+  // the same matrix when the others see a new one, and would skip a factorisation the others
+  // enter (MUMPS's and PETSc's are collective: the run would hang, as it did on three ranks).
+  // The whole system is new when any rank's part is, and its key is every rank's key.
+  SystemCache& sys = *system_;
+  const bool changed_here = sys.pattern != pattern_before;
+  sys.pattern = pattern_before + (parallel::max_over_ranks(changed_here ? 1.0 : 0.0) > 0.0 ? 1 : 0);
+  const std::vector<int> halves = {static_cast<int>(sys.values_key & 0xffffffffULL),
+                                   static_cast<int>(sys.values_key >> 32)};
+  ValuesKey key;
+  for (int half : parallel::gather_all(halves)) key.mix(static_cast<std::uint32_t>(half));
+  sys.values_key = key.h;
+}
+
+void StaticSolver::update_own_system(const Constraints& cons, const std::vector<Triplet>& contact,
+                                     const std::vector<int>& condensed, const std::vector<int>& eliminated) {
   if (!system_) system_ = std::make_unique<SystemCache>();
   restore_elastic();
   SystemCache& sys = *system_;

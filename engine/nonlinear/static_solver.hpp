@@ -166,8 +166,15 @@ class StaticSolver {
     std::uint64_t values_key = 0;      ///< key of the system's current values (*matrix; update_system)
     SystemState state[kSolverKinds];              ///< per backend (SolverKind)
   };
+  /// The system of this iteration in system_: K_ff with the contact terms, condensed and
+  /// eliminated equations. A shared model: collective, and its pattern counter and values key
+  /// are the whole system's, the same on every rank (a rank whose own columns kept their terms
+  /// must still factorise when another's changed: MUMPS and PETSc factorise on all of them).
   void update_system(const Constraints& cons, const std::vector<Triplet>& contact, const std::vector<int>& condensed,
                      const std::vector<int>& eliminated);
+  /// update_system() on this rank's columns alone.
+  void update_own_system(const Constraints& cons, const std::vector<Triplet>& contact,
+                         const std::vector<int>& condensed, const std::vector<int>& eliminated);
   /// elastic_.ff back to K_ff (the values update_system overwrote); nothing to do when it holds K_ff.
   void restore_elastic();
   std::vector<int> eliminate(const Constraints& cons, const std::vector<Elimination>& relations, const Vector& residual,

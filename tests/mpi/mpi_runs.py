@@ -6,9 +6,9 @@ usage: mpi_runs.py CASE LUNASTER MESHGEN SOURCE_DIR SCRATCH_DIR
                 --np 2, both with --json: every TEST_RESU value equal to 1e-8 (compare_checks.py),
                 the same decks, checks and statuses; the comparison itself is shown to fail on a
                 perturbed value, a missing check and a changed status
-  shared_suite  the same decks with every STAT_NON_LINE's model shared among 2 ranks (verify --np 2
-                --solveur=MUMPS: each rank assembles its own nodes, pairs its share of the contact
-                points, MUMPS takes the matrix distributed), against the serial run: every deck
+  shared_suite  the same decks with every STAT_NON_LINE's model shared among 2 ranks, then 3 (verify
+                --np N --solveur=MUMPS: each rank assembles its own nodes, pairs its share of the
+                contact points, MUMPS takes the matrix distributed), against the serial run: every deck
                 shares its model, the same statuses and checks, every value equal to 1e-8 of
                 itself or of its field's scale in the deck (a component zero analytically is
                 round-off of that size); the values that two serial solvers (AUTO, MUMPS) already
@@ -162,23 +162,21 @@ def verify_suite(exe, source, scratch):
 # ---------------------------------------------------------------------------------------------
 def shared_suite(exe, source, scratch):
     scratch.mkdir(parents=True)
-    common = ["verify", "testcases", "-j", "2", "--vale-calc=report"]
+    common = ["verify", "testcases", "--vale-calc=report"]
     reports, codes = {}, {}
-    for key, extra in (("serial", []), ("serial_mumps", ["--solveur=MUMPS"]),
-                       ("np2_mumps", ["--np", "2", "--solveur=MUMPS"])):
+    # Three ranks as well as two: a rank may then hold no contact column at all, and nodes are
+    # shared by three ranks (one decision taken on a rank's own columns hung such a run).
+    for key, extra in (("serial", ["-j", "2"]), ("serial_mumps", ["-j", "2", "--solveur=MUMPS"]),
+                       ("np2_mumps", ["-j", "2", "--np", "2", "--solveur=MUMPS"]),
+                       ("np3_mumps", ["-j", "1", "--np", "3", "--solveur=MUMPS"])):
         json_file = scratch / f"{key}.json"
-        codes[key], out, _, seconds = run([exe, *common, *extra, "--out", scratch / key, "--json", json_file], source)
+        codes[key], out, _, seconds = run([exe, *common, *extra, "--out", scratch / key, "--json", json_file], source,
+                                          timeout=600)
         print(f"  {key}: {seconds:.1f} s; " + " / ".join(out.strip().splitlines()[-1:]))
         reports[key] = compare_checks.decks(json_file)
-    s, m, p = reports["serial"], reports["serial_mumps"], reports["np2_mumps"]
-    check(len(set(codes.values())) == 1, f"the same verify exit status in the three runs ({codes})")
+    s, m = reports["serial"], reports["serial_mumps"]
+    check(len(set(codes.values())) == 1, f"the same verify exit status in the four runs ({codes})")
     check(len(s) > 50, f"the suite is the whole of testcases/ ({len(s)} decks)")
-    solving = [n for n, d in s.items() if "STAT_NON_LINE" in d["output"] or "MECA_NON_LINE" in d["output"]]
-    unshared = [n for n in solving if n not in p or "model shared among 2 ranks" not in p[n]["output"]]
-    check(len(solving) > 50 and not unshared,
-          f"every deck that solves ({len(solving)}) shares its model among the 2 ranks (not: {unshared[:5]})")
-    check(all("--solveur=MUMPS" in p[n]["output"] for n in solving if n in p),
-          "each of their STAT_NON_LINE says that the command line chose MUMPS")
     check(not any("model shared" in d["output"] for d in list(s.values()) + list(m.values())),
           "the serial runs share nothing")
     # Values two serial solvers give differently beyond 1e-8 of their field's scale: a deck made
@@ -189,16 +187,25 @@ def shared_suite(exe, source, scratch):
     print("  values ill-conditioned by design (two serial solvers differ): " +
           (", ".join(f"{d} check {i}" for d, i in sorted(ill)) or "none"))
     check(len(ill) <= 4, f"those are a handful of the checks ({len(ill)})")
-    problems, stats = compare_checks.compare(s, p, 1e-8, 1e-8, field_scale=True, status_only=ill)
-    for problem in problems[:40]:
-        print("  DIFFERENT  " + problem)
-    print(f"  {stats['decks']} decks, {stats['checks']} values; the largest difference is {stats['largest_share']:.2f} of "
-          f"the one allowed ({stats['share_where']})")
-    check(not problems, f"every value of the shared model on 2 ranks equals the serial one to 1e-8 of itself or of "
-                        f"its field's scale ({len(problems)} difference(s))")
-    check(stats["checks"] > 3000, f"the checks of every deck were compared ({stats['checks']})")
+    solving = [n for n, d in s.items() if "STAT_NON_LINE" in d["output"] or "MECA_NON_LINE" in d["output"]]
+    for ranks in (2, 3):
+        p = reports[f"np{ranks}_mumps"]
+        unshared = [n for n in solving if n not in p or f"model shared among {ranks} ranks" not in p[n]["output"]]
+        check(len(solving) > 50 and not unshared,
+              f"{ranks} ranks: every deck that solves ({len(solving)}) shares its model among them (not: {unshared[:5]})")
+        check(all("--solveur=MUMPS" in p[n]["output"] for n in solving if n in p),
+              f"{ranks} ranks: each of their STAT_NON_LINE says that the command line chose MUMPS")
+        problems, stats = compare_checks.compare(s, p, 1e-8, 1e-8, field_scale=True, status_only=ill)
+        for problem in problems[:40]:
+            print("  DIFFERENT  " + problem)
+        print(f"  {ranks} ranks: {stats['decks']} decks, {stats['checks']} values; the largest difference is "
+              f"{stats['largest_share']:.2f} of the one allowed ({stats['share_where']})")
+        check(not problems, f"{ranks} ranks: every value of the shared model equals the serial one to 1e-8 of itself "
+                            f"or of its field's scale ({len(problems)} difference(s))")
+        check(stats["checks"] > 3000, f"{ranks} ranks: the checks of every deck were compared ({stats['checks']})")
 
     # The field-scale floor still sees a near-zero value moved by 1e-7 of its field's scale.
+    p = reports["np2_mumps"]
     name, number, line = next((n, k + 1, l) for n in sorted(p) for k, l in enumerate(test_lines(p[n]["output"]))
                               if "refe=0.000000000e+00" in l and "SIGM_NOEU" in l)
     scale = compare_checks.field_scales(compare_checks.checks(s[name]["output"]))["SIGM_NOEU"]
