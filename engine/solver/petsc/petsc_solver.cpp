@@ -32,6 +32,19 @@ namespace {
 
 using Settings = IterativeSettings;
 
+/// Whether the user named option `name` (PETSC_OPTIONS, the command line): looked up the first
+/// time, before this code sets it in PETSc's options database, which the whole run shares.
+bool named_by_user(const char* name) {
+  static std::map<std::string, bool> user_named;
+  auto it = user_named.find(name);
+  if (it == user_named.end()) {
+    PetscBool set = PETSC_FALSE;
+    PetscOptionsHasName(nullptr, nullptr, name, &set);
+    it = user_named.emplace(name, set == PETSC_TRUE).first;
+  }
+  return it->second;
+}
+
 /// A solve that did not converge, or a preconditioner that cannot work on this system.
 SolveError iterative_failure(const std::string& message, std::vector<std::string> hints) {
   SolveError err(message, std::move(hints));
@@ -584,7 +597,17 @@ void PetscSolver::set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* t
       // couplings keeps the coarse grids sparse (PETSc's manual, elasticity section).
       check(PCGAMGSetThreshold(pc, std::vector<PetscReal>{0.01}.data(), 1), "PCGAMGSetThreshold");
       break;
-    case Settings::Preconditioner::Ml: check(PCSetType(pc, PCML), "PCSetType"); break;
+    case Settings::Preconditioner::Ml:
+      check(PCSetType(pc, PCML), "PCSetType");
+      // Each level smoothed by Chebyshev on the diagonal (GAMG's own default), not PETSc's
+      // default for ML, SOR within each rank and nothing between ranks: that sweep depends on
+      // the partition, and with three ranks it made the V-cycle indefinite on the mortar system
+      // of petsc_solvers.lua (CG stopped after 4 iterations, DIVERGED_INDEFINITE_PC; 23 and 31
+      // iterations on one rank and 22 and 33 on two, 32-48 with Chebyshev on one, two and three).
+      for (const auto& [name, value] : {std::pair<const char*, const char*>{"-mg_levels_ksp_type", "chebyshev"},
+                                        {"-mg_levels_pc_type", "jacobi"}})
+        if (!named_by_user(name)) PetscOptionsSetValue(nullptr, name, value);
+      break;
     case Settings::Preconditioner::Boomer: {
       check(PCSetType(pc, PCHYPRE), "PCSetType");
       check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
@@ -604,16 +627,6 @@ void PetscSolver::set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* t
       // HEXA8 block 5.3-5.8 s against 7.4-8.5 s (tests/bench/README.md).
       // These go into PETSc's options database, which the run shares: an option the user named
       // in PETSC_OPTIONS (looked up before this code set any) wins, ours follow each system.
-      static std::map<std::string, bool> user_named;
-      auto named_by_user = [](const char* name) {
-        auto it = user_named.find(name);
-        if (it == user_named.end()) {
-          PetscBool set = PETSC_FALSE;
-          PetscOptionsHasName(nullptr, nullptr, name, &set);
-          it = user_named.emplace(name, set == PETSC_TRUE).first;
-        }
-        return it->second;
-      };
       const bool relaxation_named = named_by_user("-pc_hypre_boomeramg_relax_type_all");
       for (const auto& [name, value] :
            {std::pair<const char*, const char*>{"-pc_hypre_boomeramg_coarsen_type", "HMIS"},
