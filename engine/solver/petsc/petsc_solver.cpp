@@ -599,14 +599,18 @@ void PetscSolver::set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* t
       break;
     case Settings::Preconditioner::Ml:
       check(PCSetType(pc, PCML), "PCSetType");
-      // Each level smoothed by Chebyshev on the diagonal (GAMG's own default), not PETSc's
-      // default for ML, SOR within each rank and nothing between ranks: that sweep depends on
-      // the partition, and with three ranks it made the V-cycle indefinite on the mortar system
-      // of petsc_solvers.lua (CG stopped after 4 iterations, DIVERGED_INDEFINITE_PC; 23 and 31
-      // iterations on one rank and 22 and 33 on two, 32-48 with Chebyshev on one, two and three).
-      for (const auto& [name, value] : {std::pair<const char*, const char*>{"-mg_levels_ksp_type", "chebyshev"},
-                                        {"-mg_levels_pc_type", "jacobi"}})
-        if (!named_by_user(name)) PetscOptionsSetValue(nullptr, name, value);
+      // On several ranks each level is smoothed by Chebyshev on the diagonal (GAMG's default),
+      // not by PETSc's default for ML, SOR within each rank and nothing between ranks: that
+      // sweep depends on the partition, and on three ranks it made the V-cycle of
+      // petsc_solvers.lua's mortar system indefinite (CG stopped after 4 iterations,
+      // DIVERGED_INDEFINITE_PC). Chebyshev converges there on any number of ranks (32-48
+      // iterations against SOR's 22-33 where SOR converged); on the 9e4-unknown HEXA8 block it
+      // costs 1.24 times SOR's time on two ranks (tests/bench/README.md). One process keeps SOR,
+      // a true symmetric Gauss-Seidel sweep there.
+      if (parallel::size() > 1)
+        for (const auto& [name, value] : {std::pair<const char*, const char*>{"-mg_levels_ksp_type", "chebyshev"},
+                                          {"-mg_levels_pc_type", "jacobi"}})
+          if (!named_by_user(name)) PetscOptionsSetValue(nullptr, name, value);
       break;
     case Settings::Preconditioner::Boomer: {
       check(PCSetType(pc, PCHYPRE), "PCSetType");
