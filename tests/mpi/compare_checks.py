@@ -40,12 +40,17 @@ def close(a, b, rel, floor):
     return abs(a - b) <= max(rel * max(abs(a), abs(b)), floor)
 
 
+def field_of(what):
+    """The field a check reads: the first word of its description (DEPL, SIGM_NOEU ...)."""
+    words = what.split()
+    return words[0] if words else ""
+
+
 def field_scales(found):
-    """Per field (the first word of a check's description: DEPL, SIGM_NOEU ...), the largest |calc|."""
+    """Per field (field_of), the largest |calc| among the checks `found`."""
     scales = {}
     for _, _, what, calc in found:
-        field = what.split()[0] if what.split() else ""
-        scales[field] = max(scales.get(field, 0.0), abs(calc))
+        scales[field_of(what)] = max(scales.get(field_of(what), 0.0), abs(calc))
     return scales
 
 
@@ -81,7 +86,7 @@ def compare(reference, other, rel, floor, field_scale=False, status_only=()):
             if (name, i + 1) in status_only:
                 continue
             stats["checks"] += 1
-            value_floor = max(floor, rel * scales.get(x[2].split()[0] if x[2].split() else "", 0.0))
+            value_floor = max(floor, rel * scales.get(field_of(x[2]), 0.0))
             scale = max(abs(x[3]), abs(y[3]))
             if scale > value_floor:
                 relative = abs(x[3] - y[3]) / scale
