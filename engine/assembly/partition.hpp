@@ -24,4 +24,16 @@ struct CellPartition {
 /// and node is rank 0's.
 CellPartition partition_cells(const Mesh& mesh, const std::vector<int>& cells, int dim);
 
+/// partition_cells' parts computed on this process alone (no MPI): per cell of `cells`, its
+/// part among `parts` (a short list, under 4 cells per part, in blocks). `around`: the cells
+/// around each node (mesh.node_cells(cells)). Throws SolveError when Scotch fails.
+std::vector<int> scotch_cell_parts(const Mesh& mesh, const std::vector<int>& cells, int dim, int parts,
+                                   const Mesh::NodeCells& around);
+
+/// partition_cells' node owners from the cells' parts: per mesh node, the part holding most
+/// of its cells (on a tie, the one owning fewer nodes so far), -1 for a node outside the
+/// cells; `interface_nodes`, if given, counts the nodes whose cells lie in several parts.
+std::vector<int> node_owners(int n_nodes, const std::vector<int>& cell_part, int parts, const Mesh::NodeCells& around,
+                             int* interface_nodes = nullptr);
+
 }  // namespace lunaster::engine
