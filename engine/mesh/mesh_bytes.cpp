@@ -103,7 +103,7 @@ constexpr std::uint32_t kMagic = 0x4c4d5348;  // "LMSH"
 
 }  // namespace
 
-std::string mesh_to_bytes(const Mesh& mesh) {
+std::string mesh_to_bytes(const Mesh& mesh, std::initializer_list<const std::vector<int>*> extra) {
   Writer w;
   w.value(kMagic);
   w.value<std::int32_t>(mesh.dim);
@@ -118,10 +118,12 @@ std::string mesh_to_bytes(const Mesh& mesh) {
   w.texts(mesh.cell_names);
   w.groups(mesh.node_groups);
   w.groups(mesh.cell_groups);
+  w.value<std::uint64_t>(extra.size());
+  for (const std::vector<int>* v : extra) w.array(*v);
   return w.take();
 }
 
-Mesh mesh_from_bytes(const std::string& bytes) {
+Mesh mesh_from_bytes(const std::string& bytes, std::initializer_list<std::vector<int>*> extra) {
   Reader r(bytes);
   LUNASTER_ASSERT(r.value<std::uint32_t>() == kMagic, "mesh bytes: not a mesh block");
   Mesh mesh;
@@ -140,6 +142,8 @@ Mesh mesh_from_bytes(const std::string& bytes) {
   mesh.cell_names = r.texts();
   mesh.node_groups = r.groups();
   mesh.cell_groups = r.groups();
+  LUNASTER_ASSERT(r.value<std::uint64_t>() == extra.size(), "mesh bytes: not the arrays asked for after the mesh");
+  for (std::vector<int>* v : extra) *v = r.array<int>();
   LUNASTER_ASSERT(r.done(), "mesh bytes: bytes left after the mesh");
   LUNASTER_ASSERT(mesh.coords.size() == 3 * mesh.node_names.size() &&
                       mesh.cell_offsets.size() == mesh.cell_types.size() + 1 &&

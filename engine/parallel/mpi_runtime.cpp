@@ -142,6 +142,68 @@ void broadcast(std::string& bytes) {
   in_chunks(n, [&](long long at, int count) { MPI_Bcast(bytes.data() + at, count, MPI_BYTE, 0, MPI_COMM_WORLD); });
 }
 
+void send_bytes(int to, const std::string& bytes) {
+  long long n = static_cast<long long>(bytes.size());
+  MPI_Send(&n, 1, MPI_LONG_LONG, to, 0, MPI_COMM_WORLD);
+  in_chunks(n, [&](long long at, int count) {
+    MPI_Send(bytes.data() + at, count, MPI_BYTE, to, 0, MPI_COMM_WORLD);
+  });
+}
+
+std::string receive_bytes(int from) {
+  long long n = 0;
+  MPI_Recv(&n, 1, MPI_LONG_LONG, from, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  std::string bytes(static_cast<size_t>(n), '\0');
+  in_chunks(n, [&](long long at, int count) {
+    MPI_Recv(bytes.data() + at, count, MPI_BYTE, from, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  });
+  return bytes;
+}
+
+std::vector<int> all_to_all(const std::vector<int>& mine) {
+  if (size() == 1) return mine;
+  std::vector<int> out(mine.size());
+  MPI_Alltoall(mine.data(), 1, MPI_INT, out.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  return out;
+}
+
+namespace {
+
+template <typename T>
+void exchange_with(const std::vector<int>& ranks, const std::vector<std::vector<T>>& sends,
+                   std::vector<std::vector<T>>& receives) {
+  if (ranks.empty()) return;
+  const MPI_Datatype type = std::is_same_v<T, double> ? MPI_DOUBLE : MPI_INT;
+  std::vector<MPI_Request> requests;
+  requests.reserve(2 * ranks.size());
+  constexpr int kTag = 7;
+  for (size_t k = 0; k < ranks.size(); ++k) {
+    if (receives[k].empty()) continue;
+    requests.emplace_back();
+    MPI_Irecv(receives[k].data(), static_cast<int>(receives[k].size()), type, ranks[k], kTag, MPI_COMM_WORLD,
+              &requests.back());
+  }
+  for (size_t k = 0; k < ranks.size(); ++k) {
+    if (sends[k].empty()) continue;
+    requests.emplace_back();
+    MPI_Isend(sends[k].data(), static_cast<int>(sends[k].size()), type, ranks[k], kTag, MPI_COMM_WORLD,
+              &requests.back());
+  }
+  MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+}
+
+}  // namespace
+
+void exchange(const std::vector<int>& ranks, const std::vector<std::vector<int>>& sends,
+              std::vector<std::vector<int>>& receives) {
+  exchange_with(ranks, sends, receives);
+}
+
+void exchange(const std::vector<int>& ranks, const std::vector<std::vector<double>>& sends,
+              std::vector<std::vector<double>>& receives) {
+  exchange_with(ranks, sends, receives);
+}
+
 void sum_over_ranks(double* data, long long n) {
   if (size() == 1) return;
   in_chunks(n, [&](long long at, int count) {

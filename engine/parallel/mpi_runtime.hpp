@@ -42,6 +42,19 @@ void broadcast(double* data, long long n);
 void broadcast(int* data, long long n);
 /// Rank 0's `bytes` on every rank (resized there; nothing on one rank).
 void broadcast(std::string& bytes);
+/// `bytes` to rank `to` (blocking; rank `to` calls receive_bytes(this rank)).
+void send_bytes(int to, const std::string& bytes);
+/// What rank `from` sent with send_bytes.
+std::string receive_bytes(int from);
+/// One int from every rank to every rank: out[r] is what rank r put in its mine[this rank].
+std::vector<int> all_to_all(const std::vector<int>& mine);
+/// Point-to-point exchange with some ranks: sends[k] goes to ranks[k], and receives[k],
+/// sized by the caller (both sides know the sizes), is filled from ranks[k]. Collective
+/// among the ranks named (each names the other).
+void exchange(const std::vector<int>& ranks, const std::vector<std::vector<int>>& sends,
+              std::vector<std::vector<int>>& receives);
+void exchange(const std::vector<int>& ranks, const std::vector<std::vector<double>>& sends,
+              std::vector<std::vector<double>>& receives);
 /// Every rank's `data` summed element by element, the sum on every rank (nothing on one rank).
 void sum_over_ranks(double* data, long long n);
 /// The largest of the ranks' `value`s, on every rank.

@@ -52,6 +52,20 @@ TEST(MeshBytes, TwoDimensionalAndEmptyMeshes) {
   expect_identical(empty, mesh_from_bytes(mesh_to_bytes(empty)));
 }
 
+TEST(MeshBytes, ArraysAfterTheMeshComeBackInOrder) {
+  const Mesh mesh = make_ssnp121_2d(Ssnp121Options2d{});
+  const std::vector<int> first{3, -1, 7}, empty, second{42};
+  const std::string bytes = mesh_to_bytes(mesh, {&first, &empty, &second});
+  std::vector<int> a{9}, b{9}, c;
+  expect_identical(mesh, mesh_from_bytes(bytes, {&a, &b, &c}));
+  EXPECT_EQ(a, first);
+  EXPECT_TRUE(b.empty());
+  EXPECT_EQ(c, second);
+  // Another count of arrays than written is refused, and so is a mesh read without them.
+  EXPECT_THROW(mesh_from_bytes(bytes, {&a, &b}), InternalError);
+  EXPECT_THROW(mesh_from_bytes(bytes), InternalError);
+}
+
 TEST(MeshBytes, TruncatedOrAlteredBlocksAreRefused) {
   const Mesh mesh = make_ssnp121_2d(Ssnp121Options2d{});
   const std::string bytes = mesh_to_bytes(mesh);

@@ -1,0 +1,69 @@
+#include "engine/assembly/halo.hpp"
+
+#include <algorithm>
+
+#include "engine/core/error.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
+
+namespace lunaster::engine {
+
+NodeHalo::NodeHalo(const MeshPart& part) {
+  const int parts = part.parts;
+  const int n_local = static_cast<int>(part.global_node.size());
+  // Ghosts by owner (ascending global number within each: the ghosts' local order).
+  std::vector<std::vector<int>> by_owner(parts);
+  for (int i = part.n_owned_nodes; i < n_local; ++i) by_owner[part.node_owner[i]].push_back(i);
+  LUNASTER_ASSERT(by_owner[part.rank].empty(), "NodeHalo: a ghost owned by its own rank");
+  std::vector<int> counts(parts);
+  for (int r = 0; r < parts; ++r) counts[r] = static_cast<int>(by_owner[r].size());
+  // How many of its nodes each rank holds as ghosts of this one's.
+  const std::vector<int> asked = parallel::all_to_all(counts);
+  for (int r = 0; r < parts; ++r)
+    if (counts[r] > 0 || asked[r] > 0) ranks_.push_back(r);
+  std::vector<std::vector<int>> sends(ranks_.size()), receives(ranks_.size());
+  ghosts_of_.resize(ranks_.size());
+  for (size_t k = 0; k < ranks_.size(); ++k) {
+    ghosts_of_[k] = by_owner[ranks_[k]];
+    for (int i : ghosts_of_[k]) sends[k].push_back(part.global_node[i]);
+    receives[k].resize(asked[ranks_[k]]);
+  }
+  parallel::exchange(ranks_, sends, receives);
+  // The owned nodes are in ascending global order: found by bisection.
+  const auto owned_begin = part.global_node.begin(), owned_end = owned_begin + part.n_owned_nodes;
+  shared_with_.resize(ranks_.size());
+  for (size_t k = 0; k < ranks_.size(); ++k)
+    for (int g : receives[k]) {
+      const auto at = std::lower_bound(owned_begin, owned_end, g);
+      LUNASTER_ASSERT(at != owned_end && *at == g, "NodeHalo: a rank holds a ghost this rank does not own");
+      shared_with_[k].push_back(static_cast<int>(at - owned_begin));
+    }
+}
+
+void NodeHalo::move(std::vector<double>& values, int block, const std::vector<std::vector<int>>& from,
+                    const std::vector<std::vector<int>>& to, bool add) const {
+  std::vector<std::vector<double>> sends(ranks_.size()), receives(ranks_.size());
+  for (size_t k = 0; k < ranks_.size(); ++k) {
+    sends[k].reserve(from[k].size() * block);
+    for (int i : from[k])
+      for (int b = 0; b < block; ++b) sends[k].push_back(values[static_cast<size_t>(i) * block + b]);
+    receives[k].resize(to[k].size() * block);
+  }
+  parallel::exchange(ranks_, sends, receives);
+  // In neighbour order: the same sums in every run.
+  for (size_t k = 0; k < ranks_.size(); ++k)
+    for (size_t j = 0; j < to[k].size(); ++j)
+      for (int b = 0; b < block; ++b) {
+        double& v = values[static_cast<size_t>(to[k][j]) * block + b];
+        v = add ? v + receives[k][j * block + b] : receives[k][j * block + b];
+      }
+}
+
+void NodeHalo::add_to_owners(std::vector<double>& values, int block) const {
+  move(values, block, ghosts_of_, shared_with_, true);
+}
+
+void NodeHalo::copy_to_ghosts(std::vector<double>& values, int block) const {
+  move(values, block, shared_with_, ghosts_of_, false);
+}
+
+}  // namespace lunaster::engine

@@ -1,0 +1,57 @@
+#pragma once
+/// A mesh distributed among the ranks of an MPI run: each rank holds its part, not the whole.
+///
+/// Rank 0 reads the mesh and cuts it: its volume cells (the cells of the mesh's dimension) are
+/// partitioned as partition_cells does (Scotch on their dual graph, each weighing its element
+/// matrix), and each node is owned by the rank holding most of its cells. Each rank then gets
+/// - its own volume cells (the ones it assembles);
+/// - the ghost layer: every other cell, volume or boundary, that touches a node it owns, so that
+///   the equations of its nodes are complete without another rank's help;
+/// - the nodes of those cells: the ones it owns first, then the others (its ghosts), each group
+///   in the whole mesh's order, with their owners;
+/// - every group of the whole mesh restricted to the part: a group with nothing here is kept,
+///   empty, so that a group name means the same thing on every rank.
+/// The part's `mesh` is an ordinary Mesh in local numbers (what elements, loads and groups read);
+/// global_node and global_cell give the whole mesh's numbers. With one rank the part is the
+/// whole mesh, in its own order.
+#include <vector>
+
+#include "engine/mesh/mesh.hpp"
+
+namespace lunaster::engine {
+
+struct MeshPart {
+  Mesh mesh;                     ///< the part, in local numbers
+  std::vector<int> global_node;  ///< per local node: its number in the whole mesh
+  std::vector<int> global_cell;  ///< per local cell: its number in the whole mesh
+  std::vector<int> node_owner;   ///< per local node: the rank owning its equations
+  std::vector<int> cell_part;    ///< per local cell: the rank assembling it; -1 below the mesh's dimension
+  int n_owned_nodes = 0;         ///< local nodes [0, n_owned_nodes) are this rank's
+  int n_global_nodes = 0;
+  int n_global_cells = 0;
+  int rank = 0;
+  int parts = 1;
+
+  bool owns(int local_node) const { return local_node < n_owned_nodes; }
+};
+
+/// How the whole mesh is cut among `parts` ranks: per cell of the whole mesh, the rank
+/// assembling it (-1 for a cell below the mesh's dimension); per node, its owner (rank 0 for a
+/// node outside every volume cell). No MPI. Throws SolveError when Scotch fails.
+struct MeshCut {
+  int parts = 1;
+  std::vector<int> cell_part;
+  std::vector<int> node_owner;
+};
+MeshCut cut_mesh(const Mesh& whole, int parts);
+
+/// Part `rank` of `whole` cut by `cut` (no MPI).
+MeshPart extract_part(const Mesh& whole, const MeshCut& cut, int rank);
+
+/// Collective: rank 0 passes the whole mesh (the others nullptr), cuts it among the ranks of
+/// the run and sends each rank its part; every rank returns its own. Rank 0 holds the whole
+/// mesh and one part at a time while it sends. A failure of the cut (Scotch) is thrown on
+/// every rank.
+MeshPart distribute_mesh(const Mesh* whole);
+
+}  // namespace lunaster::engine

@@ -1,0 +1,317 @@
+// A mesh distributed among the ranks (MeshPart) and the exchanges of its node vectors
+// (NodeHalo), run on 1, 2 and 3 ranks (CTest mpi.mesh_part_np*). Every rank builds the whole
+// mesh itself to check its part against it; distribute_mesh gets it on rank 0 only.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "engine/assembly/assembly.hpp"
+#include "engine/assembly/global_dofs.hpp"
+#include "engine/assembly/halo.hpp"
+#include "engine/assembly/mesh_part.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
+#include "tools/ssnp121_mesh.hpp"
+
+namespace lunaster::engine {
+namespace {
+
+struct Scene {
+  std::string name;
+  Mesh whole;
+};
+
+std::vector<Scene> scenes() {
+  std::vector<Scene> out;
+  tools::BlockOptions block;
+  block.cells = {CellType::Hexa8, {5, 4, 3}};
+  out.push_back({"hexa8 block", tools::make_block(block)});
+  tools::Ssnp121Options3d three;  // HEXA20 over HEXA8, their own interface nodes, faces and node groups
+  three.v1 = {CellType::Hexa20, {3, 3, 3}};
+  three.v2 = {CellType::Hexa8, {4, 4, 4}};
+  out.push_back({"ssnp121 3D", tools::make_ssnp121_3d(three)});
+  out.push_back({"ssnp121 2D", tools::make_ssnp121_2d({})});
+  return out;
+}
+
+MeshPart part_of(const Mesh& whole) { return distribute_mesh(parallel::rank() == 0 ? &whole : nullptr); }
+
+/// Per global node: how many ranks hold it (owned or ghost).
+std::vector<int> holders(const MeshPart& part) {
+  std::vector<int> count(part.n_global_nodes, 0);
+  for (int g : parallel::gather_all(part.global_node)) ++count[g];
+  return count;
+}
+
+TEST(MeshPart, IsTheWholeMeshRestrictedToItsCells) {
+  for (const Scene& scene : scenes()) {
+    SCOPED_TRACE(scene.name);
+    const Mesh& whole = scene.whole;
+    const MeshPart part = part_of(whole);
+    const Mesh& mesh = part.mesh;
+    EXPECT_EQ(part.parts, parallel::size());
+    EXPECT_EQ(part.rank, parallel::rank());
+    EXPECT_EQ(part.n_global_nodes, whole.n_nodes());
+    EXPECT_EQ(part.n_global_cells, whole.n_cells());
+    EXPECT_EQ(mesh.dim, whole.dim);
+    ASSERT_EQ(mesh.n_nodes(), static_cast<int>(part.global_node.size()));
+    ASSERT_EQ(mesh.n_cells(), static_cast<int>(part.global_cell.size()));
+    // Owned nodes first, then the ghosts, each in the whole mesh's order.
+    for (int i = 0; i < mesh.n_nodes(); ++i) {
+      EXPECT_EQ(part.node_owner[i] == part.rank, i < part.n_owned_nodes) << "local node " << i;
+      if (i + 1 != part.n_owned_nodes && i + 1 < mesh.n_nodes()) {
+        EXPECT_LT(part.global_node[i], part.global_node[i + 1]);
+      }
+      const int g = part.global_node[i];
+      EXPECT_EQ(mesh.node_names[i], whole.node_names[g]);
+      for (int k = 0; k < 3; ++k) EXPECT_EQ(mesh.node(i)[k], whole.node(g)[k]);
+    }
+    for (int c = 0; c < mesh.n_cells(); ++c) {
+      const int g = part.global_cell[c];
+      if (c > 0) {
+        EXPECT_LT(part.global_cell[c - 1], g);
+      }
+      EXPECT_EQ(mesh.cell_types[c], whole.cell_types[g]);
+      EXPECT_EQ(mesh.cell_names[c], whole.cell_names[g]);
+      ASSERT_EQ(mesh.cell_n_nodes(c), whole.cell_n_nodes(g));
+      for (int a = 0; a < mesh.cell_n_nodes(c); ++a) EXPECT_EQ(part.global_node[mesh.cell(c)[a]], whole.cell(g)[a]);
+      EXPECT_EQ(part.cell_part[c] >= 0, cell_info(mesh.cell_types[c]).dim == whole.dim);
+    }
+    // Every group, restricted to the part.
+    std::vector<int> local(whole.n_nodes(), -1), local_cell(whole.n_cells(), -1);
+    for (int i = 0; i < mesh.n_nodes(); ++i) local[part.global_node[i]] = i;
+    for (int c = 0; c < mesh.n_cells(); ++c) local_cell[part.global_cell[c]] = c;
+    ASSERT_EQ(mesh.node_groups.size(), whole.node_groups.size());
+    for (const auto& [name, members] : whole.node_groups) {
+      std::vector<int> expected;
+      for (int v : members)
+        if (local[v] >= 0) expected.push_back(local[v]);
+      std::sort(expected.begin(), expected.end());
+      ASSERT_TRUE(mesh.node_groups.count(name)) << name;
+      EXPECT_EQ(mesh.node_groups.at(name), expected) << name;
+    }
+    ASSERT_EQ(mesh.cell_groups.size(), whole.cell_groups.size());
+    for (const auto& [name, members] : whole.cell_groups) {
+      std::vector<int> expected;
+      for (int c : members)
+        if (local_cell[c] >= 0) expected.push_back(local_cell[c]);
+      ASSERT_TRUE(mesh.cell_groups.count(name)) << name;
+      EXPECT_EQ(mesh.cell_groups.at(name), expected) << name;
+    }
+    // Every cell touching an owned node is here (the rows of the owned nodes are complete).
+    std::vector<int> all(whole.n_cells());
+    for (int c = 0; c < whole.n_cells(); ++c) all[c] = c;
+    const Mesh::NodeCells around = whole.node_cells(all);
+    for (int i = 0; i < part.n_owned_nodes; ++i) {
+      const int g = part.global_node[i];
+      for (int p = around.start[g]; p < around.start[g + 1]; ++p)
+        EXPECT_GE(local_cell[around.positions[p]], 0) << "a cell around owned node " << g;
+    }
+  }
+}
+
+TEST(MeshPart, EveryNodeAndVolumeCellHasOneRank) {
+  for (const Scene& scene : scenes()) {
+    SCOPED_TRACE(scene.name);
+    const Mesh& whole = scene.whole;
+    const MeshPart part = part_of(whole);
+    std::vector<int> owned(part.global_node.begin(), part.global_node.begin() + part.n_owned_nodes), own_cells;
+    for (int c = 0; c < part.mesh.n_cells(); ++c)
+      if (part.cell_part[c] == part.rank) own_cells.push_back(part.global_cell[c]);
+    std::vector<int> nodes = parallel::gather_all(owned), cells = parallel::gather_all(own_cells);
+    std::sort(nodes.begin(), nodes.end());
+    std::sort(cells.begin(), cells.end());
+    std::vector<int> every_node(whole.n_nodes()), volume;
+    for (int v = 0; v < whole.n_nodes(); ++v) every_node[v] = v;
+    for (int c = 0; c < whole.n_cells(); ++c)
+      if (cell_info(whole.cell_types[c]).dim == whole.dim) volume.push_back(c);
+    EXPECT_EQ(nodes, every_node);
+    EXPECT_EQ(cells, volume);
+    // The cut is partition_cells' on the volume cells: more than one rank gets cells.
+    if (parallel::size() > 1) {
+      std::vector<int> counts = parallel::gather_all(std::vector<int>{static_cast<int>(own_cells.size())});
+      EXPECT_EQ(std::count(counts.begin(), counts.end(), 0), 0);
+    }
+  }
+}
+
+TEST(NodeHalo, GhostsGetTheirOwnersValues) {
+  for (const Scene& scene : scenes()) {
+    SCOPED_TRACE(scene.name);
+    const MeshPart part = part_of(scene.whole);
+    const NodeHalo halo(part);
+    const int block = 3;
+    std::vector<double> v(part.global_node.size() * block, -1.0);
+    for (int i = 0; i < part.n_owned_nodes; ++i)
+      for (int b = 0; b < block; ++b) v[i * block + b] = 10.0 * part.global_node[i] + b;
+    halo.copy_to_ghosts(v, block);
+    for (size_t i = 0; i < part.global_node.size(); ++i)
+      for (int b = 0; b < block; ++b) EXPECT_EQ(v[i * block + b], 10.0 * part.global_node[i] + b) << "node " << i;
+    EXPECT_EQ(halo.neighbours().empty(), parallel::size() == 1);
+  }
+}
+
+TEST(NodeHalo, OwnersGetTheSumOfEveryRanksValues) {
+  for (const Scene& scene : scenes()) {
+    SCOPED_TRACE(scene.name);
+    const MeshPart part = part_of(scene.whole);
+    const NodeHalo halo(part);
+    const std::vector<int> count = holders(part);
+    std::vector<double> v(part.global_node.size(), 1.0);
+    halo.add_to_owners(v, 1);
+    for (int i = 0; i < part.n_owned_nodes; ++i) EXPECT_EQ(v[i], count[part.global_node[i]]) << "node " << i;
+  }
+}
+
+/// A vector assembled cell by cell: each volume cell adds its measure-like weight (its number
+/// plus one, over its node count) to each of its nodes, in component 0, and its position in
+/// component 1.
+void add_cell(const Mesh& mesh, int c, int global_c, std::vector<double>& v) {
+  const int nn = mesh.cell_n_nodes(c);
+  for (int a = 0; a < nn; ++a) {
+    const int i = mesh.cell(c)[a];
+    v[2 * i] += (global_c + 1.0) / nn;
+    v[2 * i + 1] += mesh.node(i)[0] * (global_c % 7);
+  }
+}
+
+TEST(NodeHalo, AssemblyOfOwnCellsIsTheWholeOnes) {
+  for (const Scene& scene : scenes()) {
+    SCOPED_TRACE(scene.name);
+    const Mesh& whole = scene.whole;
+    const MeshPart part = part_of(whole);
+    std::vector<double> serial(2 * static_cast<size_t>(whole.n_nodes()), 0.0);
+    for (int c = 0; c < whole.n_cells(); ++c)
+      if (cell_info(whole.cell_types[c]).dim == whole.dim) add_cell(whole, c, c, serial);
+    // Own cells, then the ghosts' contributions summed into their owners, then copied back.
+    const NodeHalo halo(part);
+    std::vector<double> own(2 * part.global_node.size(), 0.0), layer(own.size(), 0.0);
+    for (int c = 0; c < part.mesh.n_cells(); ++c) {
+      if (part.cell_part[c] == part.rank) add_cell(part.mesh, c, part.global_cell[c], own);
+      if (part.cell_part[c] >= 0) add_cell(part.mesh, c, part.global_cell[c], layer);
+    }
+    halo.add_to_owners(own, 2);
+    halo.copy_to_ghosts(own, 2);
+    for (size_t i = 0; i < part.global_node.size(); ++i)
+      for (int b = 0; b < 2; ++b) {
+        const double expected = serial[2 * part.global_node[i] + b];
+        EXPECT_NEAR(own[2 * i + b], expected, 1e-12 * std::max(1.0, std::abs(expected))) << "node " << i;
+        // Without any exchange, own and ghost cells together give the owned nodes' whole value.
+        if (static_cast<int>(i) < part.n_owned_nodes) {
+          EXPECT_NEAR(layer[2 * i + b], expected, 1e-12 * std::max(1.0, std::abs(expected))) << "node " << i;
+        }
+      }
+  }
+}
+
+/// An elastic model of every volume cell of `mesh` (3D solid, or plane strain in 2D).
+FeModel elastic_model(const Mesh& mesh) {
+  FeModel model;
+  model.mesh = &mesh;
+  model.dim = mesh.dim;
+  model.materials = {{2.0e11, 0.3, 0.0}};
+  model.modelisation.assign(mesh.n_cells(), Modelisation::None);
+  model.material.assign(mesh.n_cells(), -1);
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    if (cell_info(mesh.cell_types[c]).dim == mesh.dim) {
+      model.modelisation[c] = mesh.dim == 3 ? Modelisation::Solid3D : Modelisation::PlaneStrain;
+      model.material[c] = 0;
+    }
+  return model;
+}
+
+/// A displacement that is no rigid motion: component k at x.
+double displacement(const double* x, int k) { return 1e-3 * (x[0] * x[1] + (k + 1) * x[2] - 0.5 * k * x[0] * x[0]); }
+
+TEST(GlobalDofs, EveryUnknownHasOneNumberOnEveryRank) {
+  for (const Scene& scene : scenes()) {
+    SCOPED_TRACE(scene.name);
+    const MeshPart part = part_of(scene.whole);
+    const FeModel model = elastic_model(part.mesh);
+    const DofMap dofs(part.mesh, model.volume_cells(), model.dim);
+    const GlobalDofs numbers = number_across_ranks(part, dofs, NodeHalo(part));
+    const FeModel whole_model = elastic_model(scene.whole);
+    EXPECT_EQ(numbers.n_global, DofMap(scene.whole, whole_model.volume_cells(), whole_model.dim).n_dofs());
+    // (global node, component, number) of every local unknown of every rank.
+    std::vector<int> mine;
+    for (int eq = 0; eq < dofs.n_dofs(); ++eq) {
+      if (eq < numbers.n_owned) {
+        EXPECT_EQ(numbers.global[eq], numbers.first + eq);
+      }
+      mine.insert(mine.end(), {part.global_node[dofs.node_of(eq)], dofs.component_of(eq),
+                               static_cast<int>(numbers.global[eq])});
+    }
+    const std::vector<int> all = parallel::gather_all(mine);
+    std::vector<long long> of_unknown(static_cast<size_t>(part.n_global_nodes) * N_COMPONENTS, -1);
+    std::vector<int> unknown_of(numbers.n_global, -1);
+    for (size_t k = 0; k < all.size(); k += 3) {
+      const size_t unknown = static_cast<size_t>(all[k]) * N_COMPONENTS + all[k + 1];
+      const int g = all[k + 2];
+      ASSERT_TRUE(g >= 0 && g < numbers.n_global);
+      if (of_unknown[unknown] < 0) of_unknown[unknown] = g;
+      EXPECT_EQ(of_unknown[unknown], g) << "node " << all[k] << " component " << all[k + 1];
+      if (unknown_of[g] < 0) unknown_of[g] = static_cast<int>(unknown);
+      EXPECT_EQ(unknown_of[g], static_cast<int>(unknown)) << "number " << g;
+    }
+    EXPECT_EQ(std::count(unknown_of.begin(), unknown_of.end(), -1), 0);
+  }
+}
+
+TEST(PartAssembly, StiffnessAndForcesOnPartsAreTheWholeModels) {
+  for (const Scene& scene : scenes()) {
+    SCOPED_TRACE(scene.name);
+    // The whole model, on every rank: K u and the internal forces.
+    const FeModel whole_model = elastic_model(scene.whole);
+    const DofMap whole_dofs(scene.whole, whole_model.volume_cells(), whole_model.dim);
+    Vector u_whole(whole_dofs.n_dofs());
+    for (int eq = 0; eq < whole_dofs.n_dofs(); ++eq)
+      u_whole[eq] = displacement(scene.whole.node(whole_dofs.node_of(eq)), whole_dofs.component_of(eq));
+    const Vector ku_whole = assemble_stiffness_matrix(whole_model, whole_dofs) * u_whole;
+    // The part: its owned columns (complete: the ghost layer), its own cells' forces.
+    const MeshPart part = part_of(scene.whole);
+    const FeModel model = elastic_model(part.mesh);
+    const DofMap dofs(part.mesh, model.volume_cells(), model.dim);
+    Vector u(dofs.n_dofs());
+    for (int eq = 0; eq < dofs.n_dofs(); ++eq) u[eq] = displacement(part.mesh.node(dofs.node_of(eq)), dofs.component_of(eq));
+    std::vector<char> owned(part.mesh.n_nodes(), 0);
+    for (int i = 0; i < part.n_owned_nodes; ++i) owned[i] = 1;
+    const SparseMatrix k = assemble_stiffness_matrix(model, dofs, &owned);
+    const Vector ku = k.transpose() * u;  // K symmetric: an owned column is the owned row
+    Vector f_int;
+    assemble_internal_forces(model, dofs, u, f_int, &part.cell_part);
+    const int block = model.dim;
+    std::vector<double> forces(static_cast<size_t>(part.mesh.n_nodes()) * block, 0.0);
+    for (int eq = 0; eq < dofs.n_dofs(); ++eq) forces[dofs.node_of(eq) * block + dofs.component_of(eq)] = f_int[eq];
+    NodeHalo(part).add_to_owners(forces, block);
+    const double scale = ku_whole.cwiseAbs().maxCoeff();
+    ASSERT_GT(scale, 0.0);
+    int compared = 0;
+    for (int eq = 0; eq < dofs.n_dofs(); ++eq) {
+      const int node = dofs.node_of(eq);
+      if (!part.owns(node)) continue;
+      const double expected = ku_whole[whole_dofs.dof(part.global_node[node], dofs.component_of(eq))];
+      EXPECT_NEAR(ku[eq], expected, 1e-12 * scale) << "K u, equation " << eq;
+      EXPECT_NEAR(forces[node * block + dofs.component_of(eq)], expected, 1e-12 * scale) << "f_int, equation " << eq;
+      ++compared;
+    }
+    const std::vector<int> counts = parallel::gather_all(std::vector<int>{compared});
+    int total = 0;
+    for (int c : counts) total += c;
+    EXPECT_EQ(total, whole_dofs.n_dofs());
+  }
+}
+
+}  // namespace
+}  // namespace lunaster::engine
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  lunaster::engine::parallel::ensure_initialised();
+  int failed = RUN_ALL_TESTS() != 0 ? 1 : 0;
+  // A failure on any rank fails every rank's exit status.
+  failed = lunaster::engine::parallel::max_over_ranks(failed) > 0.0 ? 1 : 0;
+  lunaster::engine::parallel::finalise();
+  return failed;
+}
