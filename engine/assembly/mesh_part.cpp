@@ -25,7 +25,17 @@ MeshCut cut_mesh(const Mesh& whole, int parts) {
   return cut;
 }
 
-MeshPart extract_part(const Mesh& whole, const MeshCut& cut, int rank) {
+namespace {
+
+/// Every cell of `whole` around each node (cell numbers).
+Mesh::NodeCells cells_around(const Mesh& whole) {
+  std::vector<int> all(whole.n_cells());
+  for (int c = 0; c < whole.n_cells(); ++c) all[c] = c;
+  return whole.node_cells(all);
+}
+
+/// extract_part with the cells around each node computed once for every part.
+MeshPart extract(const Mesh& whole, const MeshCut& cut, const Mesh::NodeCells& around, int rank) {
   LUNASTER_ASSERT(static_cast<int>(cut.cell_part.size()) == whole.n_cells() &&
                       static_cast<int>(cut.node_owner.size()) == whole.n_nodes() && rank >= 0 && rank < cut.parts,
                   "extract_part: a cut of another mesh");
@@ -35,9 +45,6 @@ MeshPart extract_part(const Mesh& whole, const MeshCut& cut, int rank) {
   part.n_global_nodes = whole.n_nodes();
   part.n_global_cells = whole.n_cells();
   // The cells: its own, and every cell touching a node it owns.
-  std::vector<int> all(whole.n_cells());
-  for (int c = 0; c < whole.n_cells(); ++c) all[c] = c;
-  const Mesh::NodeCells around = whole.node_cells(all);
   std::vector<char> in_part(whole.n_cells(), 0);
   for (int c = 0; c < whole.n_cells(); ++c) in_part[c] = cut.cell_part[c] == rank;
   for (int v = 0; v < whole.n_nodes(); ++v)
@@ -94,6 +101,12 @@ MeshPart extract_part(const Mesh& whole, const MeshCut& cut, int rank) {
   return part;
 }
 
+}  // namespace
+
+MeshPart extract_part(const Mesh& whole, const MeshCut& cut, int rank) {
+  return extract(whole, cut, cells_around(whole), rank);
+}
+
 MeshPart distribute_mesh(const Mesh* whole) {
   const int parts = parallel::size(), rank = parallel::rank();
   LUNASTER_ASSERT(rank != 0 || whole != nullptr, "distribute_mesh: rank 0 without the mesh");
@@ -111,13 +124,14 @@ MeshPart distribute_mesh(const Mesh* whole) {
   parallel::broadcast(failure);
   if (!failure.empty()) throw SolveError(failure);
   if (rank == 0) {
+    const Mesh::NodeCells around = cells_around(*whole);
     for (int r = 1; r < parts; ++r) {
-      const MeshPart part = extract_part(*whole, cut, r);
+      const MeshPart part = extract(*whole, cut, around, r);
       const std::vector<int> sizes{part.n_owned_nodes, part.n_global_nodes, part.n_global_cells};
       parallel::send_bytes(r, mesh_to_bytes(part.mesh, {&part.global_node, &part.global_cell, &part.node_owner,
                                                          &part.cell_part, &sizes}));
     }
-    return extract_part(*whole, cut, 0);
+    return extract(*whole, cut, around, 0);
   }
   MeshPart part;
   std::vector<int> sizes;
