@@ -124,10 +124,7 @@ void in_chunks(long long n, Call&& call) {
 
 }  // namespace
 
-void broadcast(double* data, long long n) {
-  if (size() == 1) return;
-  in_chunks(n, [&](long long at, int count) { MPI_Bcast(data + at, count, MPI_DOUBLE, 0, MPI_COMM_WORLD); });
-}
+void broadcast(double* data, long long n) { broadcast_from(0, data, n); }
 
 void broadcast(int* data, long long n) {
   if (size() == 1) return;
@@ -246,6 +243,13 @@ std::vector<int> gather_all(const std::vector<int>& mine) { return gather(mine, 
 std::vector<double> gather_all(const std::vector<double>& mine) { return gather(mine, true); }
 
 std::vector<int> gather_to_root(const std::vector<int>& mine) { return gather(mine, false); }
+
+std::vector<double> gather_to_root(const std::vector<double>& mine) { return gather(mine, false); }
+
+void broadcast_from(int root, double* data, long long n) {
+  if (size() == 1) return;
+  in_chunks(n, [&](long long at, int count) { MPI_Bcast(data + at, count, MPI_DOUBLE, root, MPI_COMM_WORLD); });
+}
 
 void finalise() {
   int finalised = 0;

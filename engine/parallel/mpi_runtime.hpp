@@ -64,6 +64,9 @@ std::vector<int> gather_all(const std::vector<int>& mine);
 std::vector<double> gather_all(const std::vector<double>& mine);
 /// Every rank's `mine` concatenated in rank order, on rank 0 only (empty elsewhere).
 std::vector<int> gather_to_root(const std::vector<int>& mine);
+std::vector<double> gather_to_root(const std::vector<double>& mine);
+/// Rank `root`'s values of `data` on every rank (nothing on one rank).
+void broadcast_from(int root, double* data, long long n);
 
 /// Finalises MPI if it was initialised (called once, at the end of main).
 void finalise();

@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
   const double cut_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const int part_kb = static_cast<int>(lunaster::engine::mesh_to_bytes(part.mesh).size() / 1000);
   const std::vector<int> all =
-      parallel::gather_to_root({part.mesh.n_nodes(), part.n_owned_nodes, part.mesh.n_cells(), part_kb});
+      parallel::gather_to_root(std::vector<int>{part.mesh.n_nodes(), part.n_owned_nodes, part.mesh.n_cells(), part_kb});
   if (parallel::rank() == 0) {
     // The cut alone, again (the same parts): how much of the time above is Scotch's.
     const auto t1 = std::chrono::steady_clock::now();

@@ -11,6 +11,7 @@
 #include "engine/assembly/assembly.hpp"
 #include "engine/assembly/global_dofs.hpp"
 #include "engine/assembly/halo.hpp"
+#include "engine/assembly/part_fields.hpp"
 #include "engine/assembly/mesh_part.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 #include "tools/ssnp121_mesh.hpp"
@@ -203,6 +204,52 @@ TEST(NodeHalo, AssemblyOfOwnCellsIsTheWholeOnes) {
           EXPECT_NEAR(layer[2 * i + b], expected, 1e-12 * std::max(1.0, std::abs(expected))) << "node " << i;
         }
       }
+  }
+}
+
+/// A value of (global entry, component).
+double field_value(int global, int k) { return 0.5 * global - 3.0 * k + 1.0; }
+
+TEST(PartFields, NodeAndCellFieldsComeBackWholeOnRankZero) {
+  for (const Scene& scene : scenes()) {
+    SCOPED_TRACE(scene.name);
+    const MeshPart part = part_of(scene.whole);
+    const int block = 2;
+    // Ghosts hold something else than their owners: what rank 0 gets must be the owners'.
+    std::vector<double> nodes(part.global_node.size() * block), cells(part.global_cell.size() * block);
+    for (size_t i = 0; i < part.global_node.size(); ++i)
+      for (int k = 0; k < block; ++k)
+        nodes[i * block + k] = part.owns(static_cast<int>(i)) ? field_value(part.global_node[i], k) : -7.0;
+    for (size_t c = 0; c < part.global_cell.size(); ++c)
+      for (int k = 0; k < block; ++k)
+        cells[c * block + k] = cell_giver(part, static_cast<int>(c)) == part.rank ? field_value(part.global_cell[c], k) : -7.0;
+    const std::vector<double> whole_nodes = gather_nodes_to_root(part, nodes, block);
+    const std::vector<double> whole_cells = gather_cells_to_root(part, cells, block);
+    if (parallel::rank() != 0) {
+      EXPECT_TRUE(whole_nodes.empty());
+      EXPECT_TRUE(whole_cells.empty());
+      continue;
+    }
+    ASSERT_EQ(whole_nodes.size(), static_cast<size_t>(scene.whole.n_nodes()) * block);
+    ASSERT_EQ(whole_cells.size(), static_cast<size_t>(scene.whole.n_cells()) * block);
+    for (int v = 0; v < scene.whole.n_nodes(); ++v)
+      for (int k = 0; k < block; ++k) EXPECT_EQ(whole_nodes[v * block + k], field_value(v, k)) << "node " << v;
+    for (int c = 0; c < scene.whole.n_cells(); ++c)
+      for (int k = 0; k < block; ++k) EXPECT_EQ(whole_cells[c * block + k], field_value(c, k)) << "cell " << c;
+  }
+}
+
+TEST(PartFields, ANodesValuesReachEveryRankFromItsOwner) {
+  for (const Scene& scene : scenes()) {
+    SCOPED_TRACE(scene.name);
+    const MeshPart part = part_of(scene.whole);
+    std::vector<double> nodes(part.global_node.size() * 3, -7.0);
+    for (int i = 0; i < part.n_owned_nodes; ++i)
+      for (int k = 0; k < 3; ++k) nodes[i * 3 + k] = field_value(part.global_node[i], k);
+    for (int g : {0, scene.whole.n_nodes() / 2, scene.whole.n_nodes() - 1}) {
+      const std::vector<double> got = node_values_everywhere(part, nodes, 3, g);
+      for (int k = 0; k < 3; ++k) EXPECT_EQ(got[k], field_value(g, k)) << "node " << g;
+    }
   }
 }
 
