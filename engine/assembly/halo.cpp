@@ -2,18 +2,19 @@
 
 #include <algorithm>
 
+#include "engine/assembly/global_dofs.hpp"
 #include "engine/core/error.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::engine {
 
-NodeHalo::NodeHalo(const MeshPart& part) {
-  const int parts = part.parts;
-  const int n_local = static_cast<int>(part.global_node.size());
-  // Ghosts by owner (ascending global number within each: the ghosts' local order).
+Halo::Halo(const std::vector<int>& global, const std::vector<int>& owner, int n_owned, int rank, int parts) {
+  const int n_local = static_cast<int>(global.size());
+  LUNASTER_ASSERT(owner.size() == global.size() && n_owned <= n_local, "Halo: owners and numbers of other entries");
+  // Ghosts by owner (in local order within each: both sides list them in it).
   std::vector<std::vector<int>> by_owner(parts);
-  for (int i = part.n_owned_nodes; i < n_local; ++i) by_owner[part.node_owner[i]].push_back(i);
-  LUNASTER_ASSERT(by_owner[part.rank].empty(), "NodeHalo: a ghost owned by its own rank");
+  for (int i = n_owned; i < n_local; ++i) by_owner[owner[i]].push_back(i);
+  LUNASTER_ASSERT(by_owner[rank].empty(), "Halo: a ghost owned by its own rank");
   std::vector<int> counts(parts);
   for (int r = 0; r < parts; ++r) counts[r] = static_cast<int>(by_owner[r].size());
   // How many of its nodes each rank holds as ghosts of this one's.
@@ -24,22 +25,22 @@ NodeHalo::NodeHalo(const MeshPart& part) {
   ghosts_of_.resize(ranks_.size());
   for (size_t k = 0; k < ranks_.size(); ++k) {
     ghosts_of_[k] = by_owner[ranks_[k]];
-    for (int i : ghosts_of_[k]) sends[k].push_back(part.global_node[i]);
+    for (int i : ghosts_of_[k]) sends[k].push_back(global[i]);
     receives[k].resize(asked[ranks_[k]]);
   }
   parallel::exchange(ranks_, sends, receives);
-  // The owned nodes are in ascending global order: found by bisection.
-  const auto owned_begin = part.global_node.begin(), owned_end = owned_begin + part.n_owned_nodes;
+  // The owned entries are in ascending global order: found by bisection.
+  const auto owned_begin = global.begin(), owned_end = owned_begin + n_owned;
   shared_with_.resize(ranks_.size());
   for (size_t k = 0; k < ranks_.size(); ++k)
     for (int g : receives[k]) {
       const auto at = std::lower_bound(owned_begin, owned_end, g);
-      LUNASTER_ASSERT(at != owned_end && *at == g, "NodeHalo: a rank holds a ghost this rank does not own");
+      LUNASTER_ASSERT(at != owned_end && *at == g, "Halo: a rank holds a ghost this rank does not own");
       shared_with_[k].push_back(static_cast<int>(at - owned_begin));
     }
 }
 
-void NodeHalo::move(std::vector<double>& values, int block, const std::vector<std::vector<int>>& from,
+void Halo::move(std::vector<double>& values, int block, const std::vector<std::vector<int>>& from,
                     const std::vector<std::vector<int>>& to, bool add) const {
   std::vector<std::vector<double>> sends(ranks_.size()), receives(ranks_.size());
   for (size_t k = 0; k < ranks_.size(); ++k) {
@@ -58,12 +59,29 @@ void NodeHalo::move(std::vector<double>& values, int block, const std::vector<st
       }
 }
 
-void NodeHalo::add_to_owners(std::vector<double>& values, int block) const {
+void Halo::add_to_owners(std::vector<double>& values, int block) const {
   move(values, block, ghosts_of_, shared_with_, true);
 }
 
-void NodeHalo::copy_to_ghosts(std::vector<double>& values, int block) const {
+void Halo::copy_to_ghosts(std::vector<double>& values, int block) const {
   move(values, block, shared_with_, ghosts_of_, false);
+}
+
+}  // namespace lunaster::engine
+
+namespace lunaster::engine {
+
+NodeHalo::NodeHalo(const MeshPart& part)
+    : Halo(part.global_node, part.node_owner, part.n_owned_nodes, part.rank, part.parts) {}
+
+Halo equation_halo(const MeshPart& part, const DofMap& dofs, const GlobalDofs& numbers) {
+  std::vector<int> global(numbers.global.size()), owner(numbers.global.size());
+  LUNASTER_ASSERT(numbers.n_global < (1LL << 31), "equation_halo: more unknowns than an int numbers");
+  for (size_t eq = 0; eq < global.size(); ++eq) {
+    global[eq] = static_cast<int>(numbers.global[eq]);
+    owner[eq] = part.node_owner[dofs.node_of(static_cast<int>(eq))];
+  }
+  return Halo(global, owner, numbers.n_owned, part.rank, part.parts);
 }
 
 }  // namespace lunaster::engine

@@ -350,6 +350,57 @@ TEST(PartAssembly, StiffnessAndForcesOnPartsAreTheWholeModels) {
   }
 }
 
+/// A boundary group of each scene: pressed faces (3D) or edges (2D).
+std::string pressed_group(const Scene& scene) {
+  return scene.name == "hexa8 block" ? "TOP" : scene.name == "ssnp121 3D" ? "SURCHA" : "CD";
+}
+
+TEST(PartAssembly, PressuresAndOwnedColumnsSumThroughTheEquationHalo) {
+  for (const Scene& scene : scenes()) {
+    SCOPED_TRACE(scene.name);
+    const std::string group = pressed_group(scene);
+    ASSERT_TRUE(scene.whole.cell_groups.count(group)) << group;
+    const FeModel whole_model = elastic_model(scene.whole);
+    const DofMap whole_dofs(scene.whole, whole_model.volume_cells(), whole_model.dim);
+    Vector u_whole(whole_dofs.n_dofs());
+    for (int eq = 0; eq < whole_dofs.n_dofs(); ++eq)
+      u_whole[eq] = displacement(scene.whole.node(whole_dofs.node_of(eq)), whole_dofs.component_of(eq));
+    const Vector ku_whole = assemble_stiffness_matrix(whole_model, whole_dofs) * u_whole;
+    Vector pressure_whole = Vector::Zero(whole_dofs.n_dofs());
+    assemble_pressure(scene.whole, whole_model.dim, scene.whole.cell_groups.at(group), 3.0e7, whole_dofs, pressure_whole);
+
+    const MeshPart part = part_of(scene.whole);
+    const FeModel model = elastic_model(part.mesh);
+    const DofMap dofs(part.mesh, model.volume_cells(), model.dim);
+    const GlobalDofs numbers = number_across_ranks(part, dofs, NodeHalo(part));
+    const Halo halo = equation_halo(part, dofs, numbers);
+    // The owned columns' contributions to every local row, summed into the owners.
+    Vector u(dofs.n_dofs());
+    for (int eq = 0; eq < dofs.n_dofs(); ++eq) u[eq] = displacement(part.mesh.node(dofs.node_of(eq)), dofs.component_of(eq));
+    std::vector<char> owned(part.mesh.n_nodes(), 0);
+    for (int i = 0; i < part.n_owned_nodes; ++i) owned[i] = 1;
+    const Vector ku_columns = assemble_stiffness_matrix(model, dofs, &owned) * u;
+    std::vector<double> ku(ku_columns.data(), ku_columns.data() + ku_columns.size());
+    halo.add_to_owners(ku, 1);
+    // The faces whose first node this rank owns, summed into the owners, then given to the ghosts.
+    Vector pressure_local = Vector::Zero(dofs.n_dofs());
+    assemble_pressure(part.mesh, model.dim, part.mesh.cell_groups.at(group), 3.0e7, dofs, pressure_local, false,
+                      &part.node_owner);
+    std::vector<double> pressure(pressure_local.data(), pressure_local.data() + pressure_local.size());
+    halo.add_to_owners(pressure, 1);
+    halo.copy_to_ghosts(pressure, 1);
+    const double scale = ku_whole.cwiseAbs().maxCoeff(), force = pressure_whole.cwiseAbs().maxCoeff();
+    ASSERT_GT(force, 0.0);
+    for (int eq = 0; eq < dofs.n_dofs(); ++eq) {
+      const int whole_eq = whole_dofs.dof(part.global_node[dofs.node_of(eq)], dofs.component_of(eq));
+      EXPECT_NEAR(pressure[eq], pressure_whole[whole_eq], 1e-12 * force) << "pressure, equation " << eq;
+      if (eq < numbers.n_owned) {
+        EXPECT_NEAR(ku[eq], ku_whole[whole_eq], 1e-12 * scale) << "K u, equation " << eq;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace lunaster::engine
 
