@@ -78,6 +78,7 @@ Halo equation_halo(const MeshPart& part, const DofMap& dofs, const GlobalDofs& n
   std::vector<int> global(numbers.global.size()), owner(numbers.global.size());
   LUNASTER_ASSERT(numbers.n_global < (1LL << 31), "equation_halo: more unknowns than an int numbers");
   for (size_t eq = 0; eq < global.size(); ++eq) {
+    LUNASTER_ASSERT(numbers.global[eq] >= 0, "equation_halo: a numbering of some unknowns only");
     global[eq] = static_cast<int>(numbers.global[eq]);
     owner[eq] = part.node_owner[dofs.node_of(static_cast<int>(eq))];
   }

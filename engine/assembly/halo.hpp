@@ -47,8 +47,8 @@ class NodeHalo : public Halo {
   explicit NodeHalo(const MeshPart& part);
 };
 
-/// The halo of a part's unknowns, numbered across the ranks by number_across_ranks (an unknown
-/// is owned by its node's owner).
+/// The halo of a part's unknowns, all numbered across the ranks by number_across_ranks (without
+/// a mask; an unknown is owned by its node's owner).
 Halo equation_halo(const MeshPart& part, const DofMap& dofs, const GlobalDofs& numbers);
 
 }  // namespace lunaster::engine

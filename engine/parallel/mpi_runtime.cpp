@@ -246,6 +246,18 @@ std::vector<int> gather_to_root(const std::vector<int>& mine) { return gather(mi
 
 std::vector<double> gather_to_root(const std::vector<double>& mine) { return gather(mine, false); }
 
+std::vector<double> scatter_from_root(const std::vector<double>& whole, int mine) {
+  if (size() == 1) return std::vector<double>(whole.begin(), whole.begin() + mine);
+  const int ranks = size();
+  std::vector<int> counts(ranks), offsets(ranks + 1, 0);
+  MPI_Gather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  for (int r = 0; r < ranks; ++r) offsets[r + 1] = offsets[r] + counts[r];
+  std::vector<double> out(mine);
+  MPI_Scatterv(whole.data(), counts.data(), offsets.data(), MPI_DOUBLE, out.data(), mine, MPI_DOUBLE, 0,
+               MPI_COMM_WORLD);
+  return out;
+}
+
 void broadcast_from(int root, double* data, long long n) {
   if (size() == 1) return;
   in_chunks(n, [&](long long at, int count) { MPI_Bcast(data + at, count, MPI_DOUBLE, root, MPI_COMM_WORLD); });

@@ -65,6 +65,9 @@ std::vector<double> gather_all(const std::vector<double>& mine);
 /// Every rank's `mine` concatenated in rank order, on rank 0 only (empty elsewhere).
 std::vector<int> gather_to_root(const std::vector<int>& mine);
 std::vector<double> gather_to_root(const std::vector<double>& mine);
+/// Rank 0's `whole` cut in the ranks' consecutive pieces: this rank gets its `mine` values
+/// (the pieces in rank order; `whole` is read on rank 0 only).
+std::vector<double> scatter_from_root(const std::vector<double>& whole, int mine);
 /// Rank `root`'s values of `data` on every rank (nothing on one rank).
 void broadcast_from(int root, double* data, long long n);
 

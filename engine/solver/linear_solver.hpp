@@ -77,8 +77,18 @@ struct SystemLayout {
   /// then holds only its own columns, and the system is the sum of the ranks' matrices.
   /// Empty: every rank holds the whole system.
   std::vector<int> owner;
+  /// A system of a mesh in parts (docs/distributed-model.md): the matrix and vectors are the
+  /// rank's own, in its local numbering, its owned equations first (their columns complete, the
+  /// others empty: the system is the sum of the ranks' matrices); per local equation its number
+  /// across the ranks (each rank's owned ones are first .. first + n_owned - 1, in rank order).
+  /// A solve takes and gives the owned equations' values (the others are the caller's to fill).
+  std::vector<long long> global;
+  long long first = 0;
+  long long n_global = 0;
+  int n_owned = 0;
   int n_blocks() const { return dim > 0 ? static_cast<int>(coords.size()) / dim : 0; }
   bool distributed() const { return !owner.empty(); }
+  bool in_parts() const { return !global.empty(); }
 };
 
 /// Fill-reducing ordering of a factorisation (code_aster's SOLVEUR RENUM). Auto: the
@@ -179,6 +189,8 @@ class LinearSolver {
   virtual void set_layout(SystemLayout /*layout*/) {}
   /// Whether the backend can factorise a system given as its ranks' columns (MUMPS, PETSc).
   virtual bool takes_distributed() const { return false; }
+  /// Whether set_layout() may give a system of a mesh in parts (SystemLayout::in_parts).
+  virtual bool takes_parts() const { return false; }
   /// factorize(), for a caller that needs the matrix only through multiply() afterwards: a
   /// backend that keeps a copy of its own may release A's storage (A keeps its size, with
   /// no entries) and returns true. The default keeps A and returns false.

@@ -113,7 +113,12 @@ class MumpsSolver final : public LinearSolver {
   Vector solve(const Vector& b) const override;
   std::string name() const override { return kSingle ? "MUMPS in single precision" : "MUMPS"; }
   int failed_column() const override { return failed_; }
-  void set_layout(SystemLayout layout) override { distributed_ = layout.distributed(); }
+  void set_layout(SystemLayout layout) override {
+    parts_ = layout.in_parts();
+    distributed_ = layout.distributed() || parts_;
+    global_ = std::move(layout.global);
+    first_ = layout.first, n_global_ = layout.n_global, n_owned_ = layout.n_owned;
+  }
   void configure(const FactorSettings& settings) override { settings_ = settings; }
   std::string ordering_used() const override;
   std::string approximation_note() const override;
@@ -123,6 +128,7 @@ class MumpsSolver final : public LinearSolver {
   }
   std::string memory_used() const override { return memory_note_; }
   bool takes_distributed() const override { return true; }
+  bool takes_parts() const override { return true; }
   int singular_column() const override { return singular_; }
   std::string singular_note() const override { return singular_note_; }
 
@@ -179,6 +185,23 @@ class MumpsSolver final : public LinearSolver {
   std::vector<MUMPS_INT> perm_in_;  ///< ICNTL(7) = 1: each equation's place in the given order
   int failed_ = -1;
   bool distributed_ = false;  ///< the matrices given are this rank's columns (ICNTL(18) = 3)
+  /// A system of a mesh in parts (SystemLayout::in_parts): the matrices are this rank's, in its
+  /// local numbering, global_ gives each equation's number across the ranks; the right-hand
+  /// sides and solutions are the owned equations' (first_ .. first_ + n_owned_ - 1), gathered on
+  /// the host for MUMPS's centralised solve and cut back into the ranks' pieces after it.
+  bool parts_ = false;
+  std::vector<long long> global_;
+  long long first_ = 0, n_global_ = 0;
+  int n_owned_ = 0;
+  /// The equations of this system (the whole system's with parts).
+  long long n_equations(const SparseMatrix& a) const { return parts_ ? n_global_ : a.rows(); }
+  /// A null pivot's equation (1-based across the ranks with parts) as this rank's equation, -1
+  /// if another rank's.
+  int local_equation(MUMPS_INT one_based) const {
+    if (!parts_) return one_based - 1;
+    const long long g = one_based - 1;
+    return g >= first_ && g < first_ + n_owned_ ? static_cast<int>(g - first_) : -1;
+  }
   bool wide_ = false;         ///< factorised with two BLAS threads (per analysis)
   /// Ordering, memory, ICNTL(14), preprocessing, block low rank, TYPE_RESOL, the null-pivot test
   /// (ICNTL(24), CNTL(3), CNTL(5)) and the filter of the next analyses and factorisations.
@@ -321,11 +344,30 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
   if (sym == 1 && !settings_.singularity.stop && settings_.singularity.digits >= 0) sym = 2;
   std::vector<MUMPS_INT> irn, jcn;
   std::vector<Real> val;
-  mumps_entries(a, sym, irn, jcn, val);
-  if (settings_.filter > 0.0) filter_entries(a, irn, jcn, val);
+  if (parts_) {
+    // The owned columns, numbered across the ranks; a symmetric kind keeps the upper triangle in
+    // that numbering, each entry on the one rank owning its column.
+    LUNASTER_ASSERT(static_cast<Eigen::Index>(global_.size()) == a.rows() && n_global_ < (1LL << 31),
+                    "MUMPS: a system in parts without its numbering");
+    if (settings_.filter > 0.0)
+      throw DeckError("MUMPS: FILTRAGE_MATRICE is not available on a mesh in parts",
+                      {"leave FILTRAGE_MATRICE out, or read the mesh whole (LIRE_MAILLAGE without PARTITIONNEUR)"});
+    for (int c = 0; c < a.outerSize(); ++c)
+      for (SparseMatrix::InnerIterator it(a, c); it; ++it) {
+        const long long gi = global_[it.row()], gj = global_[c];
+        if (sym != 0 && gi > gj) continue;
+        irn.push_back(static_cast<MUMPS_INT>(gi + 1));
+        jcn.push_back(static_cast<MUMPS_INT>(gj + 1));
+        val.push_back(static_cast<Real>(it.value()));
+      }
+  } else {
+    mumps_entries(a, sym, irn, jcn, val);
+    if (settings_.filter > 0.0) filter_entries(a, irn, jcn, val);
+  }
+  const long long n = n_equations(a);
   // The Newton and contact loops of a step factorise matrices of one pattern again and
   // again: keep MUMPS's analysis (ordering, symbolic factorisation) while it holds.
-  bool same_pattern = analysed_ && sym == id_.sym && static_cast<MUMPS_INT>(a.rows()) == id_.n &&
+  bool same_pattern = analysed_ && sym == id_.sym && static_cast<MUMPS_INT>(n) == id_.n &&
                       distributed_ == (id_.icntl[17] == 3) && irn == irn_ && jcn == jcn_;
   // Every rank takes the same branch (each sees only its part of the pattern).
   if (distributed_) same_pattern = parallel::max_over_ranks(same_pattern ? 0.0 : 1.0) == 0.0;
@@ -370,7 +412,7 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
     // contact case took 2.0 s against 3.2 s with AMD. tests/bench/README.md has the runs.
     double entries = static_cast<double>(val_.size());
     if (distributed_) parallel::sum_over_ranks(&entries, 1);
-    const double entries_per_row = 2.0 * entries / std::max<double>(1.0, static_cast<double>(a.rows()));
+    const double entries_per_row = 2.0 * entries / std::max<double>(1.0, static_cast<double>(n));
     id_.icntl[6] = sym != 0 && entries_per_row < 40.0 ? 0 : 7;
     // On 3D rows, nested dissection of the node graph (METIS, the ordering CHOLMOD uses there)
     // is given instead (ICNTL(7) = 1): fewer operations than PORD on the SSNP121 3D contact
@@ -382,9 +424,15 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
     perm_in_.clear();
     given_ = FactorOrdering::Auto;
     FactorOrdering give = FactorOrdering::Auto;
+    // A mesh in parts gives no ordering: MUMPS's own (its analysis gathers the pattern itself).
+    if (parts_ && (settings_.ordering == FactorOrdering::Metis || settings_.ordering == FactorOrdering::Rcm ||
+                   settings_.ordering == FactorOrdering::Natural))
+      throw DeckError("MUMPS: the " + ordering_name(settings_.ordering) + " ordering asked for (RENUM) is computed "
+                      "from the whole matrix's pattern on one process, which a mesh in parts does not gather",
+                      {"choose RENUM = 'AMD', 'AMF', 'QAMD', 'PORD' or 'AUTO', or read the mesh whole"});
     switch (settings_.ordering) {
       case FactorOrdering::Auto:
-        if (sym != 0 && entries_per_row >= 40.0 && a.rows() >= 10000) give = FactorOrdering::Metis;
+        if (!parts_ && sym != 0 && entries_per_row >= 40.0 && a.rows() >= 10000) give = FactorOrdering::Metis;
         break;
       case FactorOrdering::Metis:
       case FactorOrdering::Rcm:
@@ -416,7 +464,7 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
       }
     }
     id_.icntl[17] = distributed_ ? 3 : 0;  // ICNTL(18): distributed assembled entries, pattern and values
-    id_.n = static_cast<MUMPS_INT>(a.rows());
+    id_.n = static_cast<MUMPS_INT>(n);
     hand_over();
     id_.job = 1;  // analysis
     mumps_call(&id_);
@@ -454,12 +502,12 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
   singular_ = -1;
   singular_note_.clear();
   if (id_.infog[27] > 0 && !settings_.singularity.stop) {  // INFOG(28): number of null pivots; kept as asked
-    singular_ = id_.pivnul_list ? id_.pivnul_list[0] - 1 : -1;
+    singular_ = id_.pivnul_list ? local_equation(id_.pivnul_list[0]) : -1;
     singular_note_ = std::to_string(id_.infog[27]) + " null pivot(s) below 1e-" +
                      std::to_string(settings_.singularity.digits) +
                      " in the scaled matrix, set to 1e20: the solution is zero along them";
   } else if (id_.infog[27] > 0) {
-    failed_ = id_.pivnul_list ? id_.pivnul_list[0] - 1 : -1;
+    failed_ = id_.pivnul_list ? local_equation(id_.pivnul_list[0]) : -1;
     release();
     throw SolveError("MUMPS: singular matrix" + (failed_ >= 0 ? " at equation " + std::to_string(failed_) : std::string()),
                      {"check the boundary conditions (rigid-body modes) and the contact definition"});
@@ -504,6 +552,28 @@ std::string MumpsSolver<Id>::ordering_used() const {
 template <class Id>
 Vector MumpsSolver<Id>::solve(const Vector& b) const {
   if (!initialised_) throw InternalError("MUMPS: solve called without a valid factorisation");
+  if (parts_) {
+    // The owned equations' values, in rank order: the whole right-hand side on the host.
+    LUNASTER_ASSERT(b.size() == static_cast<Eigen::Index>(global_.size()), "MUMPS: a right-hand side of another part");
+    std::vector<double> host = parallel::gather_to_root(std::vector<double>(b.data(), b.data() + n_owned_));
+    if (parallel::rank() == 0) {
+      std::vector<Real> rhs(host.begin(), host.end());
+      id_.rhs = rhs.data();
+      id_.nrhs = 1;
+      id_.lrhs = static_cast<MUMPS_INT>(rhs.size());
+      id_.job = 3;
+      mumps_call(&id_);
+      std::copy(rhs.begin(), rhs.end(), host.begin());
+    } else {
+      id_.job = 3;
+      mumps_call(&id_);
+    }
+    check("solve");
+    const std::vector<double> mine = parallel::scatter_from_root(host, n_owned_);
+    Vector x = Vector::Zero(b.size());
+    std::copy(mine.begin(), mine.end(), x.data());
+    return x;
+  }
   Vector x = b;
   auto run = [this](Real* rhs, Eigen::Index n) {
     id_.rhs = rhs;

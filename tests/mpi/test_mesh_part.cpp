@@ -13,7 +13,11 @@
 #include "engine/assembly/halo.hpp"
 #include "engine/assembly/part_fields.hpp"
 #include "engine/assembly/mesh_part.hpp"
+#include "engine/core/error.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
+#include "engine/solver/backends.hpp"
+
+#include <Eigen/SparseCholesky>
 #include "tools/ssnp121_mesh.hpp"
 
 namespace lunaster::engine {
@@ -397,6 +401,125 @@ TEST(PartAssembly, PressuresAndOwnedColumnsSumThroughTheEquationHalo) {
       if (eq < numbers.n_owned) {
         EXPECT_NEAR(ku[eq], ku_whole[whole_eq], 1e-12 * scale) << "K u, equation " << eq;
       }
+    }
+  }
+}
+
+/// Blocks clamped on BOTTOM and pressed on TOP: 3D HEXA8, 3D HEXA20, plane strain QUAD8.
+std::vector<Scene> clamped_blocks() {
+  std::vector<Scene> out;
+  tools::BlockOptions block;
+  block.cells = {CellType::Hexa8, {4, 5, 3}};
+  out.push_back({"hexa8 block", tools::make_block(block)});
+  block.cells = {CellType::Hexa20, {2, 3, 2}};
+  out.push_back({"hexa20 block", tools::make_block(block)});
+  block.cells = {CellType::Quad8, {6, 5, 1}};
+  out.push_back({"quad8 block", tools::make_block(block)});
+  return out;
+}
+
+/// Per local equation: whether its node is on a cell of `group` (the part's own view: right for
+/// the nodes it owns, whose every cell it holds).
+std::vector<char> on_group(const Mesh& mesh, const DofMap& dofs, const std::string& group) {
+  std::vector<char> node_on(mesh.n_nodes(), 0);
+  for (int c : mesh.cell_groups.at(group))
+    for (int a = 0; a < mesh.cell_n_nodes(c); ++a) node_on[mesh.cell(c)[a]] = 1;
+  std::vector<char> out(dofs.n_dofs());
+  for (int eq = 0; eq < dofs.n_dofs(); ++eq) out[eq] = node_on[dofs.node_of(eq)];
+  return out;
+}
+
+/// K restricted to the equations kept (their order), and a vector likewise.
+SparseMatrix restricted(const SparseMatrix& k, const std::vector<int>& index, int n) {
+  std::vector<Eigen::Triplet<double>> t;
+  for (int c = 0; c < k.outerSize(); ++c)
+    for (SparseMatrix::InnerIterator it(k, c); it; ++it)
+      if (index[it.row()] >= 0 && index[c] >= 0) t.emplace_back(index[it.row()], index[c], it.value());
+  SparseMatrix out(n, n);
+  out.setFromTriplets(t.begin(), t.end());
+  return out;
+}
+
+TEST(PartSolve, MumpsSolvesASystemInPartsAsTheWholeOne) {
+  for (const Scene& scene : clamped_blocks()) {
+    SCOPED_TRACE(scene.name);
+    const double pressure = 1.0e8;
+    // The whole system, solved by a Cholesky factorisation on every rank.
+    const FeModel whole_model = elastic_model(scene.whole);
+    const DofMap whole_dofs(scene.whole, whole_model.volume_cells(), whole_model.dim);
+    const std::vector<char> whole_fixed = on_group(scene.whole, whole_dofs, "BOTTOM");
+    std::vector<int> whole_free(whole_dofs.n_dofs(), -1);
+    int n_free = 0;
+    for (int eq = 0; eq < whole_dofs.n_dofs(); ++eq)
+      if (!whole_fixed[eq]) whole_free[eq] = n_free++;
+    Vector f_whole = Vector::Zero(whole_dofs.n_dofs());
+    assemble_pressure(scene.whole, whole_model.dim, scene.whole.cell_groups.at("TOP"), pressure, whole_dofs, f_whole);
+    Vector b_whole(n_free);
+    for (int eq = 0; eq < whole_dofs.n_dofs(); ++eq)
+      if (whole_free[eq] >= 0) b_whole[whole_free[eq]] = f_whole[eq];
+    const Eigen::SimplicialLDLT<SparseMatrix> whole_factor(
+        restricted(assemble_stiffness_matrix(whole_model, whole_dofs), whole_free, n_free));
+    ASSERT_EQ(whole_factor.info(), Eigen::Success);
+    const Vector u_whole = whole_factor.solve(b_whole);
+
+    // The parts: Dirichlet conditions decided by the owners, the free unknowns numbered across
+    // the ranks, each rank's owned columns and owned right-hand side, MUMPS on the ranks.
+    const MeshPart part = part_of(scene.whole);
+    const FeModel model = elastic_model(part.mesh);
+    const DofMap dofs(part.mesh, model.volume_cells(), model.dim);
+    const NodeHalo node_halo(part);
+    std::vector<char> free(dofs.n_dofs());
+    const std::vector<char> fixed = on_group(part.mesh, dofs, "BOTTOM");
+    for (int eq = 0; eq < dofs.n_dofs(); ++eq) free[eq] = !fixed[eq];
+    const GlobalDofs numbers = number_across_ranks(part, dofs, node_halo, &free);
+    EXPECT_EQ(numbers.n_global, n_free);
+    // The system's local numbering: the numbered (free) local equations in their order, the
+    // owned ones first.
+    std::vector<int> local_free(dofs.n_dofs(), -1);
+    SystemLayout layout;
+    for (int eq = 0; eq < dofs.n_dofs(); ++eq)
+      if (numbers.global[eq] >= 0) local_free[eq] = static_cast<int>(layout.global.size()), layout.global.push_back(numbers.global[eq]);
+    layout.first = numbers.first, layout.n_global = numbers.n_global, layout.n_owned = numbers.n_owned;
+    for (int k = 0; k < layout.n_owned; ++k) ASSERT_EQ(layout.global[k], numbers.first + k);
+    std::vector<char> owned(part.mesh.n_nodes(), 0);
+    for (int i = 0; i < part.n_owned_nodes; ++i) owned[i] = 1;
+    const int n_local = static_cast<int>(layout.global.size());
+    const SparseMatrix k_local = restricted(assemble_stiffness_matrix(model, dofs, &owned), local_free, n_local);
+    Vector f_local = Vector::Zero(dofs.n_dofs());
+    assemble_pressure(part.mesh, model.dim, part.mesh.cell_groups.at("TOP"), pressure, dofs, f_local, false,
+                      &part.node_owner);
+    std::vector<double> f(f_local.data(), f_local.data() + f_local.size());
+    equation_halo(part, dofs, number_across_ranks(part, dofs, node_halo)).add_to_owners(f, 1);
+    Vector b = Vector::Zero(n_local);
+    for (int eq = 0; eq < dofs.n_dofs(); ++eq)
+      if (local_free[eq] >= 0) b[local_free[eq]] = f[eq];
+    std::unique_ptr<LinearSolver> mumps = make_mumps_solver();
+    ASSERT_TRUE(mumps->takes_parts());
+    mumps->set_layout(layout);
+    mumps->factorize(k_local, MatrixKind::SymmetricPositiveDefinite);
+    const Vector x = mumps->solve(b);
+    ASSERT_EQ(x.size(), n_local);
+    const double scale = u_whole.cwiseAbs().maxCoeff();
+    ASSERT_GT(scale, 0.0);
+    int compared = 0;
+    for (int eq = 0; eq < dofs.n_dofs(); ++eq) {
+      if (local_free[eq] < 0 || local_free[eq] >= layout.n_owned) continue;
+      const int whole_eq = whole_dofs.dof(part.global_node[dofs.node_of(eq)], dofs.component_of(eq));
+      ASSERT_GE(whole_free[whole_eq], 0);
+      EXPECT_NEAR(x[local_free[eq]], u_whole[whole_free[whole_eq]], 1e-10 * scale) << "equation " << eq;
+      ++compared;
+    }
+    EXPECT_EQ(compared, layout.n_owned);
+    // What needs the whole matrix on one process is refused in parts, on every rank alike.
+    FactorSettings filtered;
+    filtered.filter = 1e-12;
+    FactorSettings metis;
+    metis.ordering = FactorOrdering::Metis;
+    for (const FactorSettings& settings : {filtered, metis}) {
+      std::unique_ptr<LinearSolver> refusing = make_mumps_solver();
+      refusing->configure(settings);
+      refusing->set_layout(layout);
+      EXPECT_THROW(refusing->factorize(k_local, MatrixKind::SymmetricPositiveDefinite), DeckError);
     }
   }
 }
