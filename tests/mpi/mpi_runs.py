@@ -209,6 +209,35 @@ def shared_suite(exe, source, scratch):
         check(all("--solveur=MUMPS" in p[n]["output"] for n in solving if n in p),
               f"{ranks} ranks: each of their STAT_NON_LINE says that the command line chose MUMPS")
         problems, stats = compare_checks.compare(s, p, 1e-8, 1e-8, field_scale=True, status_only=ill)
+        if problems and ranks == 3:
+            # MUMPS on three processes chooses the processes that share a front's work from their
+            # load as it goes: two runs of one deck may round off differently (ssnp121d_discrete.lua's
+            # stresses moved by up to 3.5e-8 between two runs on a loaded machine; two ranks, and one,
+            # repeat bit for bit). The decks whose values differ are run again as they were: a value
+            # the two three-rank runs give differently is compared by status, as the ill-conditioned
+            # ones, and the serial value must lie between the two (within the rule); one they agree
+            # on must equal the serial one.
+            again = sorted({pr.split(":")[0] for pr in problems})
+            json_again = scratch / "np3_mumps_again.json"
+            run([exe, "verify", *again, "--vale-calc=report", "-j", "1", "--np", "3", "--solveur=MUMPS",
+                 "--out", scratch / "np3_mumps_again", "--json", json_again], source, timeout=600)
+            p2 = compare_checks.decks(json_again)
+            _, spread = compare_checks.compare({n: p[n] for n in again}, p2, 1e-8, 1e-8, field_scale=True)
+            unsteady = set(spread["differing"])
+            print("  values two three-rank runs give differently (MUMPS's dynamic choices): " +
+                  (", ".join(f"{d} check {i}" for d, i in sorted(unsteady)) or "none"))
+            check(len(unsteady) <= 20, f"3 ranks: those are a handful of the checks ({len(unsteady)})")
+            outside = []
+            for deck, number in sorted(unsteady):
+                scales = compare_checks.field_scales(compare_checks.checks(s[deck]["output"]))
+                x = compare_checks.checks(s[deck]["output"])[number - 1]
+                a = compare_checks.checks(p[deck]["output"])[number - 1][3]
+                b = compare_checks.checks(p2[deck]["output"])[number - 1][3]
+                allowed = max(1e-8 * abs(x[3]), 1e-8, 1e-8 * scales.get(compare_checks.field_of(x[2]), 0.0))
+                if not min(a, b) - allowed <= x[3] <= max(a, b) + allowed:
+                    outside.append(f"{deck}: check {number}: serial {x[3]:.9e} outside {a:.9e} .. {b:.9e}")
+            check(not outside, f"3 ranks: the serial value lies between the two runs' ({outside[:3]})")
+            problems, stats = compare_checks.compare(s, p, 1e-8, 1e-8, field_scale=True, status_only=ill | unsteady)
         for problem in problems[:40]:
             print("  DIFFERENT  " + problem)
         print(f"  {ranks} ranks: {stats['decks']} decks, {stats['checks']} values; the largest difference is "
