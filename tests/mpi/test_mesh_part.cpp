@@ -276,6 +276,21 @@ FeModel elastic_model(const Mesh& mesh) {
 /// A displacement that is no rigid motion: component k at x.
 double displacement(const double* x, int k) { return 1e-3 * (x[0] * x[1] + (k + 1) * x[2] - 0.5 * k * x[0] * x[0]); }
 
+/// The elastic model of a mesh, its unknowns, and displacement() at them.
+struct Displaced {
+  FeModel model;
+  DofMap dofs;
+  Vector u;
+};
+
+Displaced displaced(const Mesh& mesh) {
+  Displaced out{elastic_model(mesh), {}, {}};
+  out.dofs = DofMap(mesh, out.model.volume_cells(), out.model.dim);
+  out.u.resize(out.dofs.n_dofs());
+  for (int eq = 0; eq < out.dofs.n_dofs(); ++eq) out.u[eq] = displacement(mesh.node(out.dofs.node_of(eq)), out.dofs.component_of(eq));
+  return out;
+}
+
 TEST(GlobalDofs, EveryUnknownHasOneNumberOnEveryRank) {
   for (const Scene& scene : scenes()) {
     SCOPED_TRACE(scene.name);
@@ -314,18 +329,15 @@ TEST(PartAssembly, StiffnessAndForcesOnPartsAreTheWholeModels) {
   for (const Scene& scene : scenes()) {
     SCOPED_TRACE(scene.name);
     // The whole model, on every rank: K u and the internal forces.
-    const FeModel whole_model = elastic_model(scene.whole);
-    const DofMap whole_dofs(scene.whole, whole_model.volume_cells(), whole_model.dim);
-    Vector u_whole(whole_dofs.n_dofs());
-    for (int eq = 0; eq < whole_dofs.n_dofs(); ++eq)
-      u_whole[eq] = displacement(scene.whole.node(whole_dofs.node_of(eq)), whole_dofs.component_of(eq));
-    const Vector ku_whole = assemble_stiffness_matrix(whole_model, whole_dofs) * u_whole;
+    const Displaced whole = displaced(scene.whole);
+    const DofMap& whole_dofs = whole.dofs;
+    const Vector ku_whole = assemble_stiffness_matrix(whole.model, whole_dofs) * whole.u;
     // The part: its owned columns (complete: the ghost layer), its own cells' forces.
     const MeshPart part = part_of(scene.whole);
-    const FeModel model = elastic_model(part.mesh);
-    const DofMap dofs(part.mesh, model.volume_cells(), model.dim);
-    Vector u(dofs.n_dofs());
-    for (int eq = 0; eq < dofs.n_dofs(); ++eq) u[eq] = displacement(part.mesh.node(dofs.node_of(eq)), dofs.component_of(eq));
+    const Displaced local = displaced(part.mesh);
+    const FeModel& model = local.model;
+    const DofMap& dofs = local.dofs;
+    const Vector& u = local.u;
     std::vector<char> owned(part.mesh.n_nodes(), 0);
     for (int i = 0; i < part.n_owned_nodes; ++i) owned[i] = 1;
     const SparseMatrix k = assemble_stiffness_matrix(model, dofs, &owned);
@@ -364,23 +376,20 @@ TEST(PartAssembly, PressuresAndOwnedColumnsSumThroughTheEquationHalo) {
     SCOPED_TRACE(scene.name);
     const std::string group = pressed_group(scene);
     ASSERT_TRUE(scene.whole.cell_groups.count(group)) << group;
-    const FeModel whole_model = elastic_model(scene.whole);
-    const DofMap whole_dofs(scene.whole, whole_model.volume_cells(), whole_model.dim);
-    Vector u_whole(whole_dofs.n_dofs());
-    for (int eq = 0; eq < whole_dofs.n_dofs(); ++eq)
-      u_whole[eq] = displacement(scene.whole.node(whole_dofs.node_of(eq)), whole_dofs.component_of(eq));
-    const Vector ku_whole = assemble_stiffness_matrix(whole_model, whole_dofs) * u_whole;
+    const Displaced whole = displaced(scene.whole);
+    const DofMap& whole_dofs = whole.dofs;
+    const Vector ku_whole = assemble_stiffness_matrix(whole.model, whole_dofs) * whole.u;
     Vector pressure_whole = Vector::Zero(whole_dofs.n_dofs());
-    assemble_pressure(scene.whole, whole_model.dim, scene.whole.cell_groups.at(group), 3.0e7, whole_dofs, pressure_whole);
+    assemble_pressure(scene.whole, whole.model.dim, scene.whole.cell_groups.at(group), 3.0e7, whole_dofs, pressure_whole);
 
     const MeshPart part = part_of(scene.whole);
-    const FeModel model = elastic_model(part.mesh);
-    const DofMap dofs(part.mesh, model.volume_cells(), model.dim);
+    const Displaced local = displaced(part.mesh);
+    const FeModel& model = local.model;
+    const DofMap& dofs = local.dofs;
+    const Vector& u = local.u;
     const GlobalDofs numbers = number_across_ranks(part, dofs, NodeHalo(part));
     const Halo halo = equation_halo(part, dofs, numbers);
     // The owned columns' contributions to every local row, summed into the owners.
-    Vector u(dofs.n_dofs());
-    for (int eq = 0; eq < dofs.n_dofs(); ++eq) u[eq] = displacement(part.mesh.node(dofs.node_of(eq)), dofs.component_of(eq));
     std::vector<char> owned(part.mesh.n_nodes(), 0);
     for (int i = 0; i < part.n_owned_nodes; ++i) owned[i] = 1;
     const Vector ku_columns = assemble_stiffness_matrix(model, dofs, &owned) * u;
