@@ -17,7 +17,7 @@ Halo::Halo(const std::vector<int>& global, const std::vector<int>& owner, int n_
   LUNASTER_ASSERT(by_owner[rank].empty(), "Halo: a ghost owned by its own rank");
   std::vector<int> counts(parts);
   for (int r = 0; r < parts; ++r) counts[r] = static_cast<int>(by_owner[r].size());
-  // How many of its nodes each rank holds as ghosts of this one's.
+  // How many of this rank's entries each rank holds as ghosts.
   const std::vector<int> asked = parallel::all_to_all(counts);
   for (int r = 0; r < parts; ++r)
     if (counts[r] > 0 || asked[r] > 0) ranks_.push_back(r);
@@ -40,8 +40,8 @@ Halo::Halo(const std::vector<int>& global, const std::vector<int>& owner, int n_
     }
 }
 
-void Halo::move(std::vector<double>& values, int block, const std::vector<std::vector<int>>& from,
-                    const std::vector<std::vector<int>>& to, bool add) const {
+void Halo::move(double* values, int block, const std::vector<std::vector<int>>& from,
+                const std::vector<std::vector<int>>& to, bool add) const {
   std::vector<std::vector<double>> sends(ranks_.size()), receives(ranks_.size());
   for (size_t k = 0; k < ranks_.size(); ++k) {
     sends[k].reserve(from[k].size() * block);
@@ -59,17 +59,13 @@ void Halo::move(std::vector<double>& values, int block, const std::vector<std::v
       }
 }
 
-void Halo::add_to_owners(std::vector<double>& values, int block) const {
+void Halo::add_to_owners(double* values, int block) const {
   move(values, block, ghosts_of_, shared_with_, true);
 }
 
-void Halo::copy_to_ghosts(std::vector<double>& values, int block) const {
+void Halo::copy_to_ghosts(double* values, int block) const {
   move(values, block, shared_with_, ghosts_of_, false);
 }
-
-}  // namespace lunaster::engine
-
-namespace lunaster::engine {
 
 NodeHalo::NodeHalo(const MeshPart& part)
     : Halo(part.global_node, part.node_owner, part.n_owned_nodes, part.rank, part.parts) {}

@@ -21,9 +21,11 @@ class Halo {
 
   /// `values`: `block` values per local entry, entry after entry. Adds each ghost's values to
   /// its owner's; the ghosts' entries are left as they were. Collective.
-  void add_to_owners(std::vector<double>& values, int block) const;
+  void add_to_owners(double* values, int block) const;
+  void add_to_owners(std::vector<double>& values, int block) const { add_to_owners(values.data(), block); }
   /// Sets each ghost's `block` values to its owner's. Collective.
-  void copy_to_ghosts(std::vector<double>& values, int block) const;
+  void copy_to_ghosts(double* values, int block) const;
+  void copy_to_ghosts(std::vector<double>& values, int block) const { copy_to_ghosts(values.data(), block); }
 
   /// The ranks this one shares entries with, ascending.
   const std::vector<int>& neighbours() const { return ranks_; }
@@ -33,8 +35,8 @@ class Halo {
   const std::vector<int>& shared_with(int k) const { return shared_with_[k]; }
 
  private:
-  /// Sends `from` lists' values and adds (or writes) what arrives into the `to` lists' nodes.
-  void move(std::vector<double>& values, int block, const std::vector<std::vector<int>>& from,
+  /// Sends `from` lists' values and adds (or writes) what arrives into the `to` lists' entries.
+  void move(double* values, int block, const std::vector<std::vector<int>>& from,
             const std::vector<std::vector<int>>& to, bool add) const;
   std::vector<int> ranks_;
   std::vector<std::vector<int>> ghosts_of_;
