@@ -35,7 +35,8 @@ Vector internal_forces(const FeModel& model, const DofMap& dofs, const Vector& u
 }  // namespace
 
 Vector external_forces(const FeModel& model, const DofMap& dofs, const MechanicalLoads& loads, double t,
-                       const std::vector<int>* node_owner) {
+                       const std::vector<int>* node_owner, const Halo* halo) {
+  LUNASTER_ASSERT(!halo || node_owner, "external_forces: a halo without the part's owners");
   Vector f = Vector::Zero(dofs.n_dofs());
   for (const auto& p : loads.pressures)
     assemble_pressure(*model.mesh, model.dim, p.cells, p.pressure * loads.multipliers.at(p.load)(t), dofs, f,
@@ -49,7 +50,12 @@ Vector external_forces(const FeModel& model, const DofMap& dofs, const Mechanica
     if (node_owner && std::max(0, (*node_owner)[fn.node]) != me) continue;
     f[eq] += fn.value * loads.multipliers.at(fn.load)(t);
   }
-  if (node_owner) parallel::sum_over_ranks(f.data(), static_cast<long long>(f.size()));
+  if (halo) {
+    halo->add_to_owners(f.data(), 1);
+    halo->copy_to_ghosts(f.data(), 1);
+  } else if (node_owner) {
+    parallel::sum_over_ranks(f.data(), static_cast<long long>(f.size()));
+  }
   return f;
 }
 

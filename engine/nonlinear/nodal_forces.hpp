@@ -2,6 +2,7 @@
 /// Nodal forces of a converged state (code_aster's FORC_NODA and REAC_NODA) and the
 /// external load vector the Newton solver balances them against.
 #include "engine/assembly/dof_map.hpp"
+#include "engine/assembly/halo.hpp"
 #include "engine/fe/fe_model.hpp"
 #include "engine/fields/fields.hpp"
 #include "engine/nonlinear/loads.hpp"
@@ -13,9 +14,11 @@ namespace lunaster::engine {
 /// each scaled by its load multiplier. DeckError for a nodal force on a node without that
 /// displacement unknown. With `node_owner` (a shared model's owner rank per node) each rank
 /// computes the pressure cells and nodal forces of its own nodes and the ranks sum
-/// (collective): every rank ends with the whole vector.
+/// (collective): every rank ends with the whole vector. With `halo` as well (a mesh in parts:
+/// `node_owner` is the part's, the halo that of its unknowns), the ghosts' shares go to their
+/// owners and the owners' sums back to the ghosts instead: every rank ends with its part's vector.
 Vector external_forces(const FeModel& model, const DofMap& dofs, const MechanicalLoads& loads, double t,
-                       const std::vector<int>* node_owner = nullptr);
+                       const std::vector<int>* node_owner = nullptr, const Halo* halo = nullptr);
 
 /// Internal nodal forces B^T sigma (N, or N per unit thickness in 2D) of displacement `u`,
 /// assembled by the same element kernels as the solver's internal forces, as a nodal

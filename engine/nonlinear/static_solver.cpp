@@ -196,7 +196,20 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   system_.reset();
   for (auto& s : solvers_) s.reset();
   stats_.n_dofs = n;
-  distributed_ = shares_model();
+  in_parts_ = part_ != nullptr;
+  if (in_parts_) {
+    // What a mesh in parts does not do yet (docs/distributed-model.md): said alike on every rank.
+    LUNASTER_ASSERT(model_.mesh == &part_->mesh && part_->parts == parallel::size(),
+                    "a run in parts takes the model of this rank's part, one part per rank");
+    if (contact_ || !loads_.relations.empty())
+      throw DeckError("contact and linear relations are not available on a mesh in parts yet");
+    if (options_.auto_solver || options_.solver != SolverKind::Mumps)
+      throw DeckError("on a mesh in parts only MUMPS solves (SOLVEUR=_F{METHODE='MUMPS'}), not " +
+                      std::string(options_.auto_solver                          ? "METHODE='AUTO'"
+                                  : options_.solver == SolverKind::Petsc ? "PETSc yet"
+                                                                         : "a solver of one process"));
+  }
+  distributed_ = in_parts_ || shares_model();
   cell_rank_.clear();
   ghost_ = SparseMatrix();
   ghost_nodes_.clear();
@@ -204,10 +217,50 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   elastic_holder_ = nullptr;
   {
     Stopwatch watch(stats_.assemble_seconds);
-    const std::vector<int> constrained = constrained_equations(dofs_, loads_, *model_.mesh);
+    std::vector<int> constrained = constrained_equations(dofs_, loads_, *model_.mesh);
     elastic_.ff = SparseMatrix();  // the previous run's matrices go before these are built
     elastic_.c = SparseMatrix();
-    if (distributed_) {
+    equation_halo_.reset();
+    free_halo_.reset();
+    if (in_parts_) {
+      const Mesh& mesh = *model_.mesh;
+      node_owner_ = part_->node_owner;
+      cell_rank_ = part_->cell_part;
+      owned_nodes_.assign(mesh.n_nodes(), 0);
+      std::fill(owned_nodes_.begin(), owned_nodes_.begin() + part_->n_owned_nodes, 1);
+      const NodeHalo node_halo(*part_);
+      const GlobalDofs numbers = number_across_ranks(*part_, dofs_, node_halo);
+      owned_equations_ = numbers.n_owned;
+      stats_.n_dofs = static_cast<int>(numbers.n_global);
+      equation_halo_ = std::make_unique<Halo>(equation_halo(*part_, dofs_, numbers));
+      // The constrained set the owners decide; the free unknowns, numbered across the ranks in
+      // the order of the system's equations (free_index: ascending, the owned ones first).
+      {
+        Constraints owners;
+        owners.free_index.assign(n, 0);
+        for (int eq : constrained) owners.free_index[eq] = -1, owners.constrained.push_back(eq);
+        owners.values.assign(constrained.size(), 0.0);
+        take_owners_constraints(owners);
+        constrained = owners.constrained;
+      }
+      std::vector<char> free(n, 1);
+      for (int eq : constrained) free[eq] = 0;
+      free_numbers_ = number_across_ranks(*part_, dofs_, node_halo, &free);
+      std::vector<int> global, owner;
+      for (int eq = 0; eq < n; ++eq)
+        if (free[eq]) {
+          global.push_back(static_cast<int>(free_numbers_.global[eq]));
+          owner.push_back(node_owner_[dofs_.node_of(eq)]);
+        }
+      LUNASTER_ASSERT(free_numbers_.n_global < (1LL << 31), "more unknowns than an int numbers");
+      free_halo_ = std::make_unique<Halo>(global, owner, free_numbers_.n_owned, part_->rank, part_->parts);
+      std::string counts;
+      for (int owned : parallel::gather_all(std::vector<int>{part_->n_owned_nodes}))
+        counts += (counts.empty() ? "" : ", ") + std::to_string(owned);
+      log_.info("mesh in parts on " + std::to_string(part_->parts) + " ranks: owned nodes per rank " + counts + ", " +
+                std::to_string(numbers.n_global) + " unknowns; each rank assembles the stiffness of its own nodes and "
+                "holds its part's vectors");
+    } else if (distributed_) {
       const Mesh& mesh = *model_.mesh;
       const std::vector<int> cells = model_.volume_cells();
       const CellPartition part = partition_cells(mesh, cells, model_.dim);
@@ -328,7 +381,13 @@ SystemLayout StaticSolver::system_layout(const Constraints& cons, const std::vec
     layout.block[k] = block_of_node[node];
     layout.component[k] = c;
   }
-  if (distributed_) {
+  if (in_parts_) {
+    for (int eq = 0; eq < dofs_.n_dofs(); ++eq)
+      if (cons.free_index[eq] >= 0) layout.global.push_back(free_numbers_.global[eq]);
+    layout.first = free_numbers_.first;
+    layout.n_global = free_numbers_.n_global;
+    layout.n_owned = free_numbers_.n_owned;
+  } else if (distributed_) {
     layout.owner.assign(cons.n_free, -1);
     for (int eq = 0; eq < dofs_.n_dofs(); ++eq)
       if (cons.free_index[eq] >= 0) layout.owner[cons.free_index[eq]] = node_owner_[dofs_.node_of(eq)];
@@ -343,10 +402,42 @@ bool StaticSolver::shares_model() const {
   return (options_.solver == SolverKind::Mumps && options_.share_model) || options_.solver == SolverKind::Petsc;
 }
 
+void StaticSolver::take_owners_constraints(Constraints& c) const {
+  const int n = static_cast<int>(c.free_index.size());
+  // Per unknown: constrained or not, and its value, from its owner.
+  std::vector<double> said(2 * static_cast<size_t>(n), 0.0);
+  for (size_t i = 0; i < c.constrained.size(); ++i) said[2 * c.constrained[i]] = 1.0, said[2 * c.constrained[i] + 1] = c.values[i];
+  equation_halo_->copy_to_ghosts(said, 2);
+  c.constrained.clear(), c.values.clear();
+  c.n_free = 0;
+  for (int eq = 0; eq < n; ++eq)
+    if (said[2 * eq] != 0.0) {
+      c.free_index[eq] = -1;
+      c.constrained.push_back(eq);
+      c.values.push_back(said[2 * eq + 1]);
+    } else {
+      c.free_index[eq] = c.n_free++;
+    }
+}
+
+void StaticSolver::complete_part_vector(Vector& v) const {
+  equation_halo_->add_to_owners(v.data(), 1);
+  equation_halo_->copy_to_ghosts(v.data(), 1);
+}
+
+double StaticSolver::largest_entry(const Vector& v, int n_owned) const {
+  if (!in_parts_) return inf_norm(v);
+  const double here = n_owned > 0 ? v.head(n_owned).cwiseAbs().maxCoeff() : 0.0;
+  // A NaN stays a NaN over the ranks (max would drop it): the ranks stop alike.
+  const double bad = parallel::max_over_ranks(std::isfinite(here) ? 0.0 : 1.0);
+  return bad > 0.0 ? std::numeric_limits<double>::quiet_NaN() : parallel::max_over_ranks(here);
+}
+
 Vector StaticSolver::stiffness_times(const Vector& u) const {
   // With K_ff in the backend, elastic_.times() gives the constrained columns' part only.
   Vector ku = elastic_.times(u);
-  if (distributed_) parallel::sum_over_ranks(ku.data(), ku.size());
+  if (in_parts_) complete_part_vector(ku);
+  else if (distributed_) parallel::sum_over_ranks(ku.data(), ku.size());
   if (elastic_in_solver_) {
     const int nf = static_cast<int>(elastic_.equation.size());
     Vector u_free(nf), k_u_free;
@@ -366,6 +457,12 @@ SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err
   for (const auto& a : approximate) named += (named.empty() ? "" : ", ") + a.what;
   // elastic_.ff is the whole K_ff unless the model is shared or K_ff went to the backend
   // (also when the backend failed after taking it).
+  if (in_parts_) {
+    // The whole stiffness is on no rank: the failure is said as it is.
+    SolveError as_is = err;
+    as_is.add_hint("the model is in parts: no rank holds the whole stiffness to find the cause");
+    return as_is;
+  }
   const bool whole_here = !distributed_ && !elastic_in_solver_ && (elastic_.ff.nonZeros() > 0 || elastic_.equation.empty());
   SolveError found = [&] {
     if (whole_here)
@@ -957,10 +1054,15 @@ void StaticSolver::restore_elastic() {
 void StaticSolver::solve_instant(double t, Vector& u) {
   const int n = dofs_.n_dofs();
   log_.info("instant " + sci(t));
-  const Constraints cons = build_constraints(dofs_, loads_, t, *model_.mesh);
+  Constraints cons = build_constraints(dofs_, loads_, t, *model_.mesh);
+  if (in_parts_) take_owners_constraints(cons);
   for (size_t i = 0; i < cons.constrained.size(); ++i) u[cons.constrained[i]] = cons.values[i];
-  const Vector f_ext = external_forces(model_, dofs_, loads_, t, distributed_ ? &node_owner_ : nullptr);
-  stats_.n_free = std::max(stats_.n_free, cons.n_free);
+  const Vector f_ext = external_forces(model_, dofs_, loads_, t, distributed_ ? &node_owner_ : nullptr,
+                                       in_parts_ ? equation_halo_.get() : nullptr);
+  stats_.n_free = std::max(stats_.n_free, in_parts_ ? static_cast<int>(free_numbers_.n_global) : cons.n_free);
+  // The entries this rank answers for in the norms: all of them, or in parts its owned ones.
+  const int owned_eqs = in_parts_ ? owned_equations_ : n;
+  const int owned_free = in_parts_ ? free_numbers_.n_owned : cons.n_free;
   if (contact_) {
     Stopwatch watch(stats_.contact_seconds);
     contact_->set_instant(t);
@@ -999,18 +1101,21 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         if (!tangent_pending) contact_->add_to_system(u, k_contact, residual);
       }
       // Relative residual as code_aster's RESI_GLOB_RELA: free residual over the largest load or reaction.
-      double denom = inf_norm(f_ext);
+      double denom = largest_entry(f_ext, owned_eqs);
       Vector r_free(cons.n_free);
+      double reactions = 0.0;
       for (int eq = 0; eq < n; ++eq) {
         const int k = cons.free_index[eq];
         if (k >= 0) r_free[k] = residual[eq];
-        else denom = std::max(denom, std::abs(residual[eq]));
+        else if (eq < owned_eqs) reactions = std::max(reactions, std::abs(residual[eq]));
       }
-      resi_maxi = inf_norm(r_free);
+      if (in_parts_) reactions = parallel::max_over_ranks(reactions);
+      denom = std::max(denom, reactions);
+      resi_maxi = largest_entry(r_free, owned_free);
       // A load step where loads and reactions vanish (a body moving rigidly before
       // contact closes) has no natural reference: fall back to the size of the
       // terms that make up the internal forces, so that round-off counts as converged.
-      denom = std::max(denom, 1e-6 * k_scale_ * inf_norm(u));
+      denom = std::max(denom, 1e-6 * k_scale_ * largest_entry(u, owned_eqs));
       resi_rela = denom > 0.0 ? resi_maxi / denom : resi_maxi;
       char line[96];
       std::snprintf(line, sizeof line, "  | %4d |   %14.6e |   %14.6e |", iter, resi_rela, resi_maxi);
@@ -1112,7 +1217,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           if (options_.factor.singularity.stop) throw rigid;
           log_.warning("going on as asked with a singular system: " + rigid.message());
         };
-        const auto unheld = find_unheld_body(model_, dofs_, cons.free_index, related, t);
+        // (Not in parts: a part alone may look unheld.)
+        const auto unheld = in_parts_ ? std::optional<SolveError>() : find_unheld_body(model_, dofs_, cons.free_index, related, t);
         if (unheld) report(*unheld);
         if (!unheld && !held_by_relations && interface_use_ != 1 && backend != SolverKind::Cholmod &&
             backend != SolverKind::Petsc && !distributed_ && options_.factor.singularity.digits >= 0) {
@@ -1136,11 +1242,27 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       const bool a_is_k_ff = !contact_ && &a == &elastic_.ff;
       const MatrixProduct system_product = [&a, a_is_k_ff, this](const Vector& x) -> Vector {
         Vector y;
+        if (in_parts_) {
+          // x's owned entries are the solve's: its ghosts take their owners' before the product,
+          // whose owned entries are complete once the ranks' shares are summed into them.
+          Vector whole_x = x;
+          free_halo_->copy_to_ghosts(whole_x.data(), 1);
+          y = a * whole_x;
+          free_halo_->add_to_owners(y.data(), 1);
+          return y;
+        }
         if (elastic_in_solver_ && elastic_holder_->multiply(x, y)) return y;
         y = a_is_k_ff ? elastic_.ff_times(x) : Vector(a * x);
         if (system_->increment) y += elastic_.ff_times(x);  // a is C: the system is K_ff + C
         if (distributed_) parallel::sum_over_ranks(y.data(), y.size());
         return y;
+      };
+      // In parts, the residuals of a solve are measured on the owned entries over the ranks.
+      const int n_owned_free = owned_free;
+      const VectorNorm owned_norm = [n_owned_free](const Vector& v) {
+        double squares = v.head(n_owned_free).squaredNorm();
+        parallel::sum_over_ranks(&squares, 1);
+        return std::sqrt(squares);
       };
       // Condensed unknowns: decoupled rows (unit diagonal, zero right-hand side), set by recover().
       for (int eq : condensed)
@@ -1306,7 +1428,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
                                          !stop_when_stable ? 0.0 : whole ? 1e-14 : 1e-10,
                                          whole && stop_when_stable ? &abs_product : nullptr,
                                          options_.direct_solve_tolerance > 0.0 ? options_.direct_solve_tolerance
-                                                                               : kSolveTolerance);
+                                                                               : kSolveTolerance,
+                                         in_parts_ ? &owned_norm : nullptr);
         // A direct backend that iterates on a factorisation of another matrix (the
         // multipliers' Schur complement) says how many iterations its last solve took.
         if (const int its = solver->iterations(); its > 0) {
@@ -1336,6 +1459,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
             t);
         throw found;
       }
+      if (in_parts_) free_halo_->copy_to_ghosts(du.data(), 1);  // the solve gave the owned values
       for (int eq = 0; eq < n; ++eq)
         if (cons.free_index[eq] >= 0) u[eq] += du[cons.free_index[eq]];
       // Without contact or relations the residual is linear in u, and neither f nor u_C move

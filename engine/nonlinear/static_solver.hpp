@@ -8,6 +8,9 @@
 #include <vector>
 
 #include "engine/assembly/dof_map.hpp"
+#include "engine/assembly/global_dofs.hpp"
+#include "engine/assembly/halo.hpp"
+#include "engine/assembly/mesh_part.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/log.hpp"
 #include "engine/fe/fe_model.hpp"
@@ -119,6 +122,13 @@ class StaticSolver {
   /// With a model shared among the ranks: per mesh cell, the rank whose volume cell it is
   /// (-1 for other cells), for post-processing where the cells live; empty otherwise.
   const std::vector<int>& cell_ranks() const { return cell_rank_; }
+  /// Runs the next `run` on this rank's part of a mesh in parts (docs/distributed-model.md,
+  /// step 3): the model and the loads are on `part->mesh`, every rank of `part` calls `run`
+  /// (collective). Each rank assembles its own nodes' columns, the Dirichlet conditions of its
+  /// ghosts are their owners', and the results are on the part's nodes, ghosts included (they
+  /// hold their owners' values). MUMPS alone solves in parts; a SOLVEUR of another backend,
+  /// contact and linear relations are refused (DeckError). nullptr: the whole model again.
+  void set_part(const MeshPart* part) { part_ = part; }
 
  private:
   /// Advances u from instant t0 to t1, splitting the step on ConvergenceError.
@@ -228,6 +238,27 @@ class StaticSolver {
   /// system is K_ff itself and is never factorised again in the run.
   bool elastic_in_solver_ = false;
   const LinearSolver* elastic_holder_ = nullptr;
+  /// A mesh in parts (set_part), and in_parts_ while a run is on it: distributed_ too, but the
+  /// vectors are the part's (owned unknowns first, then the ghosts'); what the shared model sums
+  /// over the ranks goes to the owners and back to the ghosts through equation_halo_, the norms
+  /// are over the owned entries and then over the ranks, and the system's equations (its free
+  /// unknowns, the same order) are numbered across the ranks by free_numbers_ and exchanged
+  /// through free_halo_.
+  const MeshPart* part_ = nullptr;
+  bool in_parts_ = false;
+  std::unique_ptr<Halo> equation_halo_;
+  std::unique_ptr<Halo> free_halo_;
+  GlobalDofs free_numbers_;
+  int owned_equations_ = 0;  ///< in parts: the part's owned unknowns (the first ones)
+  /// In parts: the owners' Dirichlet conditions given to their ghosts (the part may miss a
+  /// ghost's constrained face), `c` rebuilt from them. Collective.
+  void take_owners_constraints(Constraints& c) const;
+  /// In parts: v's owned entries complete (the ranks' shares summed into them) and copied to the
+  /// ghosts. Collective.
+  void complete_part_vector(Vector& v) const;
+  /// The largest |v_i| over the entries this rank answers for: all of them, or in parts the
+  /// first n_owned, and then over the ranks. Collective in parts.
+  double largest_entry(const Vector& v, int n_owned) const;
   std::vector<int> node_owner_;
   std::vector<char> owned_nodes_;
   std::vector<int> cell_rank_;  ///< see cell_ranks()

@@ -167,14 +167,16 @@ Vector symmetric_times(const SparseMatrix& a, const Vector& x) {
 
 RefinedSolve solve_with_refinement(const LinearSolver& solver, const MatrixProduct& a, const Vector& b, Vector& x,
                                    int max_steps, double refine_above, const MatrixProduct* abs_product,
-                                   double accept) {
+                                   double accept, const VectorNorm* norm) {
   // One product A x per iterate: its residual serves the relative residual, the backward
   // error and the next step.
-  const double b_norm = std::max(b.norm(), std::numeric_limits<double>::min());
+  const auto size = [norm](const Vector& v) { return norm ? (*norm)(v) : v.norm(); };
+  const double b_norm = std::max(size(b), std::numeric_limits<double>::min());
   auto residual_of = [&](const Vector& v, Vector& r) {
-    if (!v.allFinite()) return std::numeric_limits<double>::infinity();
+    if (!norm && !v.allFinite()) return std::numeric_limits<double>::infinity();
     r = a(v) - b;
-    return r.norm() / b_norm;
+    const double relative = size(r) / b_norm;
+    return std::isfinite(relative) ? relative : std::numeric_limits<double>::infinity();
   };
   RefinedSolve out;
   x = solver.solve(b);

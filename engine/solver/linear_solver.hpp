@@ -245,6 +245,8 @@ std::unique_ptr<LinearSolver> make_iterative_with_fallback(const IterativeSettin
 /// y = A x for an operator A known only through its product (e.g. a matrix shared among
 /// MPI ranks, the product then summed over them).
 using MatrixProduct = std::function<Vector(const Vector&)>;
+/// The norm a solve's residuals are measured with (the 2-norm unless told otherwise).
+using VectorNorm = std::function<double(const Vector&)>;
 
 /// |A x - b| / |b| (2-norms); +inf if x is not finite.
 double relative_residual(const SparseMatrix& a, const Vector& x, const Vector& b);
@@ -273,11 +275,15 @@ struct RefinedSolve {
 /// (a two-rank MUMPS factorisation of SSNP121 E left one at 1e-9 relative to its terms,
 /// and LAGS_C 3e-8 off, where one step gives 1e-12). A residual beyond `accept` is still
 /// refined: a step may bring it within (a stiff penalty).
+/// With `norm` (a system of a mesh in parts: the 2-norm of the owned entries over the ranks,
+/// collective), every residual is measured with it and A x is formed for every iterate, finite
+/// or not, so that the ranks take the same steps.
 RefinedSolve solve_with_refinement(const LinearSolver& solver, const SparseMatrix& a, const Vector& b, Vector& x,
                                    int max_steps = 3, double refine_above = 1e-10);
 RefinedSolve solve_with_refinement(const LinearSolver& solver, const MatrixProduct& a, const Vector& b, Vector& x,
                                    int max_steps = 3, double refine_above = 1e-10,
-                                   const MatrixProduct* abs_product = nullptr, double accept = 1e-6);
+                                   const MatrixProduct* abs_product = nullptr, double accept = 1e-6,
+                                   const VectorNorm* norm = nullptr);
 /// Backward error (row by row) below which a solve is taken as exact to round-off.
 constexpr double kBackwardStable = 1e-14;
 /// |A| |x| for a compressed-column matrix (entry by entry), added to y.

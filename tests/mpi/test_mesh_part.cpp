@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,8 @@
 #include "engine/assembly/part_fields.hpp"
 #include "engine/assembly/mesh_part.hpp"
 #include "engine/core/error.hpp"
+#include "engine/core/log.hpp"
+#include "engine/nonlinear/static_solver.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 #include "engine/solver/backends.hpp"
 
@@ -531,6 +534,117 @@ TEST(PartSolve, MumpsSolvesASystemInPartsAsTheWholeOne) {
       EXPECT_THROW(refusing->factorize(k_local, MatrixKind::SymmetricPositiveDefinite), DeckError);
     }
   }
+}
+
+/// The loads of a clamped block on `mesh` (the whole mesh or a part, from its groups): BOTTOM
+/// clamped, LEFT pulled along x (DX imposed), TOP pressed, a force on the corner that is farthest
+/// from the origin; every load but the clamping follows the instant.
+MechanicalLoads block_loads(const Mesh& mesh) {
+  MechanicalLoads loads;
+  loads.multipliers = {[](double) { return 1.0; }, [](double t) { return t; }};
+  std::vector<char> bottom(mesh.n_nodes(), 0), left(mesh.n_nodes(), 0);
+  for (const auto& [group, on] : {std::pair<const char*, std::vector<char>*>{"BOTTOM", &bottom}, {"LEFT", &left}})
+    for (int c : mesh.cell_groups.at(group))
+      for (int a = 0; a < mesh.cell_n_nodes(c); ++a) (*on)[mesh.cell(c)[a]] = 1;
+  for (int v = 0; v < mesh.n_nodes(); ++v) {
+    if (bottom[v])
+      for (int k = 0; k < mesh.dim; ++k) loads.dirichlet.push_back({v, k, 0.0, 0});
+    else if (left[v])
+      loads.dirichlet.push_back({v, DX, -2.0e-4, 1});
+  }
+  loads.pressures.push_back({mesh.cell_groups.at("TOP"), 1.0e8, 1});
+  for (int v : mesh.node_groups.at(mesh.dim == 3 ? "C111" : "C11")) loads.forces.push_back({v, DY, -4.0e6, 1});
+  return loads;
+}
+
+NewtonOptions mumps_options() {
+  NewtonOptions options;
+  options.solver = SolverKind::Mumps;
+  options.resi_glob_rela = 1e-10;
+  return options;
+}
+
+TEST(PartNewton, StaticSolverOnPartsGivesTheWholeModelsDisplacement) {
+  std::ostringstream log_text;
+  const Log quiet(log_text, 0);
+  const std::vector<double> instants = {0.0, 0.5, 1.0};
+  for (const Scene& scene : clamped_blocks()) {
+    SCOPED_TRACE(scene.name);
+    // The whole model on every rank, by CHOLMOD (a model shared among the ranks only with
+    // MUMPS or PETSc named).
+    const FeModel whole_model = elastic_model(scene.whole);
+    const MechanicalLoads whole_loads = block_loads(scene.whole);
+    NewtonOptions whole_options = mumps_options();
+    whole_options.solver = SolverKind::Cholmod;
+    StaticSolver whole(whole_model, whole_loads, whole_options, nullptr, quiet);
+    const std::vector<ResultStep> whole_steps = whole.run(instants);
+
+    const MeshPart part = part_of(scene.whole);
+    const FeModel model = elastic_model(part.mesh);
+    const MechanicalLoads loads = block_loads(part.mesh);
+    StaticSolver solver(model, loads, mumps_options(), nullptr, quiet);
+    solver.set_part(&part);
+    const std::vector<ResultStep> steps = solver.run(instants);
+    ASSERT_EQ(steps.size(), whole_steps.size());
+    EXPECT_EQ(solver.stats().n_dofs, whole.stats().n_dofs);
+    EXPECT_EQ(solver.stats().n_free, whole.stats().n_free);
+    // Linear elasticity: one solve per instant, as the whole model's.
+    EXPECT_EQ(solver.stats().newton_iterations, whole.stats().newton_iterations);
+    for (size_t i = 1; i < steps.size(); ++i) {
+      const NodalField& depl = steps[i].nodal.at("DEPL");
+      const NodalField& expected = whole_steps[i].nodal.at("DEPL");
+      ASSERT_EQ(depl.n_components(), scene.whole.dim);
+      std::vector<double> values(static_cast<size_t>(part.mesh.n_nodes()) * scene.whole.dim);
+      for (int v = 0; v < part.mesh.n_nodes(); ++v)
+        for (int k = 0; k < scene.whole.dim; ++k) values[v * scene.whole.dim + k] = depl.value(v, k);
+      // Every ghost holds its owner's value.
+      std::vector<double> owners = values;
+      NodeHalo(part).copy_to_ghosts(owners, scene.whole.dim);
+      EXPECT_EQ(owners, values);
+      const std::vector<double> gathered = gather_nodes_to_root(part, values, scene.whole.dim);
+      if (parallel::rank() != 0) continue;
+      double scale = 0.0;
+      for (int v = 0; v < scene.whole.n_nodes(); ++v)
+        for (int k = 0; k < scene.whole.dim; ++k) scale = std::max(scale, std::abs(expected.value(v, k)));
+      ASSERT_GT(scale, 1e-5);
+      for (int v = 0; v < scene.whole.n_nodes(); ++v)
+        for (int k = 0; k < scene.whole.dim; ++k)
+          EXPECT_NEAR(gathered[v * scene.whole.dim + k], expected.value(v, k), 1e-10 * scale)
+              << "instant " << steps[i].inst << ", node " << v << ", component " << k;
+    }
+  }
+}
+
+TEST(PartNewton, WhatPartsDoNotDoYetIsRefusedOnEveryRank) {
+  std::ostringstream log_text;
+  const Log quiet(log_text, 0);
+  const Scene scene = clamped_blocks().front();
+  const MeshPart part = part_of(scene.whole);
+  const FeModel model = elastic_model(part.mesh);
+  const MechanicalLoads loads = block_loads(part.mesh);
+  // Another backend than MUMPS, or lunaster's choice.
+  for (SolverKind kind : {SolverKind::Cholmod, SolverKind::Petsc}) {
+    NewtonOptions options = mumps_options();
+    options.solver = kind;
+    StaticSolver solver(model, loads, options, nullptr, quiet);
+    solver.set_part(&part);
+    EXPECT_THROW(solver.run({0.0, 1.0}), DeckError);
+  }
+  NewtonOptions automatic = mumps_options();
+  automatic.auto_solver = true;
+  StaticSolver chosen(model, loads, automatic, nullptr, quiet);
+  chosen.set_part(&part);
+  EXPECT_THROW(chosen.run({0.0, 1.0}), DeckError);
+  // Linear relations (LIAISON_DDL).
+  MechanicalLoads related = loads;
+  related.relations.push_back(LinearRelation{});
+  StaticSolver with_relations(model, related, mumps_options(), nullptr, quiet);
+  with_relations.set_part(&part);
+  EXPECT_THROW(with_relations.run({0.0, 1.0}), DeckError);
+  // The same solver on the part runs once told.
+  StaticSolver solver(model, loads, mumps_options(), nullptr, quiet);
+  solver.set_part(&part);
+  EXPECT_EQ(solver.run({0.0, 1.0}).size(), 2u);
 }
 
 }  // namespace
