@@ -10,6 +10,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "engine/assembly/element_kernels.hpp"
+#include "engine/assembly/halo.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::engine {
@@ -115,6 +116,12 @@ NodalField elno_to_noeu(const Mesh& mesh, const ElnoField& elno) {
     if (count[n] == 0) continue;
     for (int k = 0; k < nc; ++k) out.set(n, k, sum[static_cast<size_t>(n) * nc + k] / count[n]);
   }
+  return out;
+}
+
+NodalField elno_to_noeu(const MeshPart& part, const ElnoField& elno) {
+  NodalField out = elno_to_noeu(part.mesh, elno);
+  NodeHalo(part).copy_to_ghosts(out.values, out.n_components());
   return out;
 }
 

@@ -70,4 +70,29 @@ NodalField reaction_forces(const FeModel& model, const DofMap& dofs, const Vecto
   return as_nodal_field(model, dofs, f_int - external_forces(model, dofs, loads, t));
 }
 
+namespace {
+
+Vector internal_forces(const FeModel& model, const DofMap& dofs, const Vector& u, const MeshPart& part,
+                       const Halo& equations) {
+  LUNASTER_ASSERT(model.mesh == &part.mesh, "internal forces in parts: a model of another mesh");
+  Vector f_int;
+  assemble_internal_forces(model, dofs, u, f_int, &part.cell_part);
+  equations.add_to_owners(f_int.data(), 1);
+  equations.copy_to_ghosts(f_int.data(), 1);
+  return f_int;
+}
+
+}  // namespace
+
+NodalField internal_nodal_forces(const FeModel& model, const DofMap& dofs, const Vector& u, const MeshPart& part,
+                                 const Halo& equations) {
+  return as_nodal_field(model, dofs, internal_forces(model, dofs, u, part, equations));
+}
+
+NodalField reaction_forces(const FeModel& model, const DofMap& dofs, const Vector& u, const MechanicalLoads& loads,
+                           double t, const MeshPart& part, const Halo& equations) {
+  const Vector f_int = internal_forces(model, dofs, u, part, equations);
+  return as_nodal_field(model, dofs, f_int - external_forces(model, dofs, loads, t, &part.node_owner, &equations));
+}
+
 }  // namespace lunaster::engine

@@ -3,6 +3,7 @@
 /// external load vector the Newton solver balances them against.
 #include "engine/assembly/dof_map.hpp"
 #include "engine/assembly/halo.hpp"
+#include "engine/assembly/mesh_part.hpp"
 #include "engine/fe/fe_model.hpp"
 #include "engine/fields/fields.hpp"
 #include "engine/nonlinear/loads.hpp"
@@ -33,5 +34,16 @@ NodalField internal_nodal_forces(const FeModel& model, const DofMap& dofs, const
 /// body, with the sign of a force the body applies on them (code_aster's REAC_NODA).
 NodalField reaction_forces(const FeModel& model, const DofMap& dofs, const Vector& u, const MechanicalLoads& loads,
                            double t, const std::vector<int>* cell_rank = nullptr);
+
+/// On a mesh in parts (docs/distributed-model.md): the part's own volume cells' internal forces
+/// summed into the owners and copied to the ghosts through `equations` (the halo of the part's
+/// unknowns, equation_halo): every local node holds the whole model's value. Collective.
+NodalField internal_nodal_forces(const FeModel& model, const DofMap& dofs, const Vector& u, const MeshPart& part,
+                                 const Halo& equations);
+
+/// reaction_forces on a mesh in parts: internal forces as above, the loads of the faces whose
+/// first node the rank owns and of its own nodes, both summed through `equations`. Collective.
+NodalField reaction_forces(const FeModel& model, const DofMap& dofs, const Vector& u, const MechanicalLoads& loads,
+                           double t, const MeshPart& part, const Halo& equations);
 
 }  // namespace lunaster::engine

@@ -203,11 +203,9 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
                     "a run in parts takes the model of this rank's part, one part per rank");
     if (contact_ || !loads_.relations.empty())
       throw DeckError("contact and linear relations are not available on a mesh in parts yet");
-    if (options_.auto_solver || options_.solver != SolverKind::Mumps)
-      throw DeckError("on a mesh in parts only MUMPS solves (SOLVEUR=_F{METHODE='MUMPS'}), not " +
-                      std::string(options_.auto_solver                          ? "METHODE='AUTO'"
-                                  : options_.solver == SolverKind::Petsc ? "PETSc yet"
-                                                                         : "a solver of one process"));
+    if (options_.auto_solver || (options_.solver != SolverKind::Mumps && options_.solver != SolverKind::Petsc))
+      throw DeckError("on a mesh in parts MUMPS or PETSc solves (SOLVEUR=_F{METHODE='MUMPS'} or 'PETSC'), not " +
+                      std::string(options_.auto_solver ? "METHODE='AUTO'" : "a solver of one process"));
   }
   distributed_ = in_parts_ || shares_model();
   cell_rank_.clear();
@@ -229,7 +227,8 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
       owned_nodes_.assign(mesh.n_nodes(), 0);
       std::fill(owned_nodes_.begin(), owned_nodes_.begin() + part_->n_owned_nodes, 1);
       const NodeHalo node_halo(*part_);
-      const GlobalDofs numbers = number_across_ranks(*part_, dofs_, node_halo);
+      unknown_numbers_ = number_across_ranks(*part_, dofs_, node_halo);
+      const GlobalDofs& numbers = unknown_numbers_;
       owned_equations_ = numbers.n_owned;
       stats_.n_dofs = static_cast<int>(numbers.n_global);
       equation_halo_ = std::make_unique<Halo>(equation_halo(*part_, dofs_, numbers));
@@ -387,6 +386,17 @@ SystemLayout StaticSolver::system_layout(const Constraints& cons, const std::vec
     layout.first = free_numbers_.first;
     layout.n_global = free_numbers_.n_global;
     layout.n_owned = free_numbers_.n_owned;
+    // Node blocks for PETSc: every unknown's number (the owned nodes' dim unknowns in a row).
+    for (int eq = 0; eq < dofs_.n_dofs(); ++eq)
+      if (cons.free_index[eq] >= 0) layout.row.push_back(unknown_numbers_.global[eq]);
+    layout.first_row = unknown_numbers_.first;
+    layout.n_rows = unknown_numbers_.n_global;
+    layout.n_owned_rows = unknown_numbers_.n_owned;
+    layout.row_coords.resize(unknown_numbers_.n_owned);
+    for (int eq = 0; eq < unknown_numbers_.n_owned; ++eq) {
+      LUNASTER_ASSERT(dofs_.component_of(eq) == eq % layout.dim, "in parts every node carries dim unknowns in order");
+      layout.row_coords[eq] = mesh.node(dofs_.node_of(eq))[dofs_.component_of(eq)];
+    }
   } else if (distributed_) {
     layout.owner.assign(cons.n_free, -1);
     for (int eq = 0; eq < dofs_.n_dofs(); ++eq)
@@ -436,7 +446,10 @@ double StaticSolver::largest_entry(const Vector& v, int n_owned) const {
 Vector StaticSolver::stiffness_times(const Vector& u) const {
   // With K_ff in the backend, elastic_.times() gives the constrained columns' part only.
   Vector ku = elastic_.times(u);
-  if (in_parts_) complete_part_vector(ku);
+  // In parts with K_ff in the backend, its product gives the owned rows whole: the ghosts'
+  // shares of the rest go to the owners first, the owners' sums to the ghosts last.
+  if (in_parts_ && elastic_in_solver_) equation_halo_->add_to_owners(ku.data(), 1);
+  else if (in_parts_) complete_part_vector(ku);
   else if (distributed_) parallel::sum_over_ranks(ku.data(), ku.size());
   if (elastic_in_solver_) {
     const int nf = static_cast<int>(elastic_.equation.size());
@@ -445,6 +458,7 @@ Vector StaticSolver::stiffness_times(const Vector& u) const {
     const bool done = elastic_holder_->multiply(u_free, k_u_free);
     LUNASTER_ASSERT(done, "the backend holding K_ff gave no product");
     for (int j = 0; j < nf; ++j) ku[elastic_.equation[j]] += k_u_free[j];
+    if (in_parts_) equation_halo_->copy_to_ghosts(ku.data(), 1);
   }
   return ku;
 }
@@ -1243,8 +1257,10 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       const MatrixProduct system_product = [&a, a_is_k_ff, this](const Vector& x) -> Vector {
         Vector y;
         if (in_parts_) {
-          // x's owned entries are the solve's: its ghosts take their owners' before the product,
-          // whose owned entries are complete once the ranks' shares are summed into them.
+          // The backend holding K_ff gives the owned rows whole. Otherwise x's owned entries
+          // are the solve's: its ghosts take their owners' before the product, whose owned
+          // entries are complete once the ranks' shares are summed into them.
+          if (elastic_in_solver_ && elastic_holder_->multiply(x, y)) return y;
           Vector whole_x = x;
           free_halo_->copy_to_ghosts(whole_x.data(), 1);
           y = a * whole_x;
@@ -1399,7 +1415,13 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         // there: no refinement on top.
         Stopwatch watch(stats_.solve_seconds);
         du = solver->solve(-r_free);
-        accuracy.raw_residual = accuracy.residual = relative_residual(system_product, du, -r_free);
+        if (in_parts_) {
+          const double b_norm = std::max(owned_norm(r_free), std::numeric_limits<double>::min());
+          const double error = owned_norm(Vector(system_product(du) + r_free)) / b_norm;
+          accuracy.raw_residual = accuracy.residual = std::isfinite(error) ? error : std::numeric_limits<double>::infinity();
+        } else {
+          accuracy.raw_residual = accuracy.residual = relative_residual(system_product, du, -r_free);
+        }
         stats_.krylov_iterations += solver->iterations();
         log_.info("  linear solve: " + solver->name() + ", " + std::to_string(solver->iterations()) +
                   " iteration(s), relative residual " + sci(accuracy.residual));

@@ -126,8 +126,9 @@ class StaticSolver {
   /// step 3): the model and the loads are on `part->mesh`, every rank of `part` calls `run`
   /// (collective). Each rank assembles its own nodes' columns, the Dirichlet conditions of its
   /// ghosts are their owners', and the results are on the part's nodes, ghosts included (they
-  /// hold their owners' values). MUMPS alone solves in parts; a SOLVEUR of another backend,
-  /// contact and linear relations are refused (DeckError). nullptr: the whole model again.
+  /// hold their owners' values). MUMPS and PETSc solve in parts; METHODE='AUTO', the backends
+  /// of one process, contact and linear relations are refused (DeckError). nullptr: the whole
+  /// model again.
   void set_part(const MeshPart* part) { part_ = part; }
 
  private:
@@ -249,6 +250,7 @@ class StaticSolver {
   std::unique_ptr<Halo> equation_halo_;
   std::unique_ptr<Halo> free_halo_;
   GlobalDofs free_numbers_;
+  GlobalDofs unknown_numbers_;  ///< every unknown of the part, numbered across the ranks (PETSc's rows)
   int owned_equations_ = 0;  ///< in parts: the part's owned unknowns (the first ones)
   /// In parts: the owners' Dirichlet conditions given to their ghosts (the part may miss a
   /// ghost's constrained face), `c` rebuilt from them. Collective.

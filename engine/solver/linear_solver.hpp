@@ -86,6 +86,16 @@ struct SystemLayout {
   long long first = 0;
   long long n_global = 0;
   int n_owned = 0;
+  /// In parts, the rows of a backend that keeps node blocks whole (PETSc): every displacement
+  /// unknown of the model numbered across the ranks, Dirichlet-fixed ones included (they become
+  /// identity rows), each rank's owned nodes' unknowns first_row .. first_row + n_owned_rows - 1,
+  /// node after node, `dim` to a node. Per local equation its row; per owned node (dim values) its
+  /// coordinates, for the rigid-body modes.
+  std::vector<long long> row;
+  long long first_row = 0;
+  long long n_rows = 0;
+  int n_owned_rows = 0;
+  std::vector<double> row_coords;
   int n_blocks() const { return dim > 0 ? static_cast<int>(coords.size()) / dim : 0; }
   bool distributed() const { return !owner.empty(); }
   bool in_parts() const { return !global.empty(); }

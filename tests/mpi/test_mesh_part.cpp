@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -16,6 +17,8 @@
 #include "engine/assembly/mesh_part.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/log.hpp"
+#include "engine/fe/stress.hpp"
+#include "engine/nonlinear/nodal_forces.hpp"
 #include "engine/nonlinear/static_solver.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 #include "engine/solver/backends.hpp"
@@ -615,6 +618,101 @@ TEST(PartNewton, StaticSolverOnPartsGivesTheWholeModelsDisplacement) {
   }
 }
 
+TEST(PartNewton, PetscSolvesOnPartsToItsTolerance) {
+  std::ostringstream log_text;
+  const Log quiet(log_text, 0);
+  const std::vector<double> instants = {0.0, 1.0};
+  using P = IterativeSettings::Preconditioner;
+  for (const Scene& scene : clamped_blocks()) {
+    const FeModel whole_model = elastic_model(scene.whole);
+    const MechanicalLoads whole_loads = block_loads(scene.whole);
+    NewtonOptions whole_options = mumps_options();
+    whole_options.solver = SolverKind::Cholmod;
+    StaticSolver whole(whole_model, whole_loads, whole_options, nullptr, quiet);
+    const NodalField expected = whole.run(instants).back().nodal.at("DEPL");
+    const MeshPart part = part_of(scene.whole);
+    const FeModel model = elastic_model(part.mesh);
+    const MechanicalLoads loads = block_loads(part.mesh);
+    for (P preconditioner : {P::Gamg, P::Boomer, P::Jacobi}) {
+      SCOPED_TRACE(scene.name + ", preconditioner " + std::to_string(static_cast<int>(preconditioner)));
+      NewtonOptions options = mumps_options();
+      options.solver = SolverKind::Petsc;
+      options.iterative.krylov = IterativeSettings::Krylov::CG;
+      options.iterative.preconditioner = preconditioner;
+      options.iterative.relative_residual = 1e-12;
+      options.iterative.max_iterations = 5000;
+      StaticSolver solver(model, loads, options, nullptr, quiet);
+      solver.set_part(&part);
+      const NodalField depl = solver.run(instants).back().nodal.at("DEPL");
+      EXPECT_GT(solver.stats().krylov_iterations, 0);
+      const int dim = scene.whole.dim;
+      std::vector<double> values(static_cast<size_t>(part.mesh.n_nodes()) * dim);
+      for (int v = 0; v < part.mesh.n_nodes(); ++v)
+        for (int k = 0; k < dim; ++k) values[v * dim + k] = depl.value(v, k);
+      const std::vector<double> gathered = gather_nodes_to_root(part, values, dim);
+      if (parallel::rank() != 0) continue;
+      double scale = 0.0;
+      for (int v = 0; v < scene.whole.n_nodes(); ++v)
+        for (int k = 0; k < dim; ++k) scale = std::max(scale, std::abs(expected.value(v, k)));
+      // CG to 1e-12 of the right-hand side: the displacement to about 1e-8 (the blocks'
+      // condition numbers are about 1e4).
+      for (int v = 0; v < scene.whole.n_nodes(); ++v)
+        for (int k = 0; k < dim; ++k)
+          EXPECT_NEAR(gathered[v * dim + k], expected.value(v, k), 1e-8 * scale) << "node " << v << ", component " << k;
+    }
+  }
+}
+
+/// `block` values per node of a nodal field, node after node (0 where undefined).
+std::vector<double> node_values(const NodalField& f) {
+  std::vector<double> out(static_cast<size_t>(f.n_nodes) * f.n_components(), 0.0);
+  for (int v = 0; v < f.n_nodes; ++v)
+    for (int k = 0; k < f.n_components(); ++k)
+      if (f.has(v, k)) out[static_cast<size_t>(v) * f.n_components() + k] = f.value(v, k);
+  return out;
+}
+
+TEST(PartFields, NodalForcesAndStressesOnPartsAreTheWholeModels) {
+  const double t = 0.75;
+  for (const Scene& scene : clamped_blocks()) {
+    SCOPED_TRACE(scene.name);
+    // One displacement, no rigid motion, on the whole mesh and on each part (by global node).
+    const Displaced whole = displaced(scene.whole);
+    const MechanicalLoads whole_loads = block_loads(scene.whole);
+    const std::map<std::string, std::vector<double>> expected = {
+        {"FORC_NODA", node_values(internal_nodal_forces(whole.model, whole.dofs, whole.u))},
+        {"REAC_NODA", node_values(reaction_forces(whole.model, whole.dofs, whole.u, whole_loads, t))},
+        {"SIGM_NOEU", node_values(elno_to_noeu(scene.whole, compute_sigm_elno(whole.model, whole.dofs, whole.u)))}};
+
+    const MeshPart part = part_of(scene.whole);
+    const Displaced local = displaced(part.mesh);
+    const MechanicalLoads loads = block_loads(part.mesh);
+    const Halo equations = equation_halo(part, local.dofs, number_across_ranks(part, local.dofs, NodeHalo(part)));
+    const std::map<std::string, NodalField> fields = {
+        {"FORC_NODA", internal_nodal_forces(local.model, local.dofs, local.u, part, equations)},
+        {"REAC_NODA", reaction_forces(local.model, local.dofs, local.u, loads, t, part, equations)},
+        {"SIGM_NOEU", elno_to_noeu(part, compute_sigm_elno(local.model, local.dofs, local.u))}};
+    for (const auto& [name, field] : fields) {
+      SCOPED_TRACE(name);
+      const int block = field.n_components();
+      const std::vector<double> values = node_values(field);
+      // Every ghost holds its owner's value, every node the whole model's.
+      std::vector<double> owners = values;
+      NodeHalo(part).copy_to_ghosts(owners, block);
+      EXPECT_EQ(owners, values);
+      const std::vector<double>& whole_values = expected.at(name);
+      double scale = 0.0;
+      for (double x : whole_values) scale = std::max(scale, std::abs(x));
+      ASSERT_GT(scale, 0.0);
+      for (int v = 0; v < part.mesh.n_nodes(); ++v)
+        for (int k = 0; k < block; ++k)
+          EXPECT_NEAR(values[static_cast<size_t>(v) * block + k],
+                      whole_values[static_cast<size_t>(part.global_node[v]) * block + k], 1e-12 * scale)
+              << "local node " << v << ", component " << k;
+    }
+  }
+}
+
 TEST(PartNewton, WhatPartsDoNotDoYetIsRefusedOnEveryRank) {
   std::ostringstream log_text;
   const Log quiet(log_text, 0);
@@ -622,8 +720,8 @@ TEST(PartNewton, WhatPartsDoNotDoYetIsRefusedOnEveryRank) {
   const MeshPart part = part_of(scene.whole);
   const FeModel model = elastic_model(part.mesh);
   const MechanicalLoads loads = block_loads(part.mesh);
-  // Another backend than MUMPS, or lunaster's choice.
-  for (SolverKind kind : {SolverKind::Cholmod, SolverKind::Petsc}) {
+  // A backend of one process, or lunaster's choice.
+  for (SolverKind kind : {SolverKind::Cholmod, SolverKind::Umfpack}) {
     NewtonOptions options = mumps_options();
     options.solver = kind;
     StaticSolver solver(model, loads, options, nullptr, quiet);
@@ -635,6 +733,13 @@ TEST(PartNewton, WhatPartsDoNotDoYetIsRefusedOnEveryRank) {
   StaticSolver chosen(model, loads, automatic, nullptr, quiet);
   chosen.set_part(&part);
   EXPECT_THROW(chosen.run({0.0, 1.0}), DeckError);
+  // PETSc preconditioned by a factorisation of the whole system on one rank.
+  NewtonOptions single = mumps_options();
+  single.solver = SolverKind::Petsc;
+  single.iterative.preconditioner = IterativeSettings::Preconditioner::LdltSp;
+  StaticSolver factorised(model, loads, single, nullptr, quiet);
+  factorised.set_part(&part);
+  EXPECT_THROW(factorised.run({0.0, 1.0}), DeckError);
   // Linear relations (LIAISON_DDL).
   MechanicalLoads related = loads;
   related.relations.push_back(LinearRelation{});
@@ -656,6 +761,6 @@ int main(int argc, char** argv) {
   int failed = RUN_ALL_TESTS() != 0 ? 1 : 0;
   // A failure on any rank fails every rank's exit status.
   failed = lunaster::engine::parallel::max_over_ranks(failed) > 0.0 ? 1 : 0;
-  lunaster::engine::parallel::finalise();
+  // MPI is finalised at exit, after PETSc (atexit, in reverse order of initialisation).
   return failed;
 }

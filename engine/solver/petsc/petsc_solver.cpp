@@ -211,6 +211,8 @@ class PetscSolver final : public LinearSolver {
   void to_petsc(const Vector& x, Vec v) const;
   void from_petsc(Vec v, Vector& x) const;
   void number_rows(int n_equations);
+  /// The system's equation of this rank's row r (0-based, local), -1 for an identity row.
+  int local_equation(PetscInt r) const { return layout_.in_parts() ? eq_of_[r] : eq_of_[first_row_ + r]; }
   void build_matrix(const SparseMatrix& a, MatrixKind kind);
   /// BoomerAMG's matrix: hypre's own (ParCSR), built from `a` directly. PCHYPRE would convert
   /// an AIJ matrix into one and keep both; this way the system is held once on PETSc's side.
@@ -282,6 +284,24 @@ class PetscSolver final : public LinearSolver {
 };
 
 void PetscSolver::number_rows(int n_equations) {
+  if (layout_.in_parts()) {
+    // A mesh in parts: this rank's rows are its owned nodes' unknowns, node blocks of dim (the
+    // Dirichlet-fixed ones identity rows), numbered across the ranks by the caller; eq_of_ is
+    // then indexed by the local row.
+    LUNASTER_ASSERT(static_cast<int>(layout_.row.size()) == n_equations && layout_.dim > 0 &&
+                        static_cast<int>(layout_.row_coords.size()) == layout_.n_owned_rows,
+                    "PETSc: a system in parts without its rows");
+    bs_ = layout_.dim;
+    n_ = static_cast<PetscInt>(layout_.n_rows);
+    first_row_ = static_cast<PetscInt>(layout_.first_row);
+    local_rows_ = layout_.n_owned_rows;
+    row_of_.assign(layout_.row.begin(), layout_.row.end());
+    eq_of_.assign(local_rows_, -1);
+    for (int eq = 0; eq < n_equations; ++eq)
+      if (row_of_[eq] >= first_row_ && row_of_[eq] < first_row_ + local_rows_) eq_of_[row_of_[eq] - first_row_] = eq;
+    block_of_group_.clear();
+    return;
+  }
   const bool blocks = multigrid() && layout_.dim > 1 && static_cast<int>(layout_.block.size()) == n_equations;
   const bool owned = layout_.distributed() && static_cast<int>(layout_.owner.size()) == n_equations;
   bs_ = blocks ? layout_.dim : 1;
@@ -361,13 +381,14 @@ void PetscSolver::for_each_local_row(const SparseMatrix& a, Row row, bool sorted
   const double* value = a.valuePtr();
   std::vector<std::pair<PetscInt, double>> entries;
   for (PetscInt r = 0; r < local_rows_; ++r) {
-    const int eq = eq_of_[first_row_ + r];
+    const int eq = local_equation(r);
     entries.clear();
     if (eq < 0) {
       entries.emplace_back(first_row_ + r, 1.0);  // padding: an identity row
     } else {
       for (int k = outer[eq]; k < outer[eq + 1]; ++k) entries.emplace_back(row_of_[inner[k]], value[k]);
-      if (sorted && bs_ > 1) std::sort(entries.begin(), entries.end());
+      // (In parts the local equations' rows are not in the local order.)
+      if (sorted && (bs_ > 1 || layout_.in_parts())) std::sort(entries.begin(), entries.end());
     }
     row(r, entries);
   }
@@ -400,7 +421,7 @@ void PetscSolver::build_matrix(const SparseMatrix& a, MatrixKind kind) {
   std::vector<PetscScalar>& va = va_;
   ia.assign(static_cast<size_t>(local_rows_) + 1, 0);
   for (PetscInt r = 0; r < local_rows_; ++r) {
-    const int eq = eq_of_[first_row_ + r];
+    const int eq = local_equation(r);
     ia[r + 1] = ia[r] + (eq < 0 ? 1 : outer[eq + 1] - outer[eq]);
   }
   ja.clear();
@@ -502,6 +523,10 @@ void PetscSolver::attach_near_null_space() {
   PetscScalar* x = nullptr;
   check(VecGetArray(coords, &x), "VecGetArray");
   for (PetscInt r = 0; r < local_rows_; ++r) {
+    if (layout_.in_parts()) {  // owned nodes in order, bs_ rows each
+      x[r] = layout_.row_coords[r];
+      continue;
+    }
     const PetscInt row = first_row_ + r;
     const int block = block_of_group_[row / bs_];
     x[r] = block >= 0 ? layout_.coords[static_cast<size_t>(block) * bs_ + row % bs_] : 0.0;
@@ -563,14 +588,20 @@ void PetscSolver::set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* t
                                 "positive definite)",
                             {"a saddle-point system (contact multipliers) needs a single-precision factorisation as "
                              "preconditioner with FGMRES or GMRES"});
+  // LDLT_SP factorises the whole system on the host and gathers every vector there.
+  if (layout_.in_parts() && factorised_pc)
+    throw DeckError("PRE_COND='LDLT_SP' is not available on a mesh in parts: it gathers the whole system on one "
+                    "rank; use an algebraic multigrid (GAMG, ML, BOOMER), JACOBI or SOR");
   release();
   if (settings_.preconditioner == Settings::Preconditioner::Boomer) build_hypre_matrix(a, kind);
   else build_matrix(a, kind);
   attach_near_null_space();
-  Vec local = nullptr;
-  check(MatCreateVecs(a_, &local, nullptr), "MatCreateVecs");
-  check(VecScatterCreateToAll(local, &scatter_, &gathered_), "VecScatterCreateToAll");
-  VecDestroy(&local);
+  if (!layout_.in_parts()) {  // in parts each rank reads its own rows, nothing is gathered
+    Vec local = nullptr;
+    check(MatCreateVecs(a_, &local, nullptr), "MatCreateVecs");
+    check(VecScatterCreateToAll(local, &scatter_, &gathered_), "VecScatterCreateToAll");
+    VecDestroy(&local);
+  }
 
   check(KSPCreate(PETSC_COMM_WORLD, &ksp_), "KSPCreate");
   check(KSPSetOperators(ksp_, a_, a_), "KSPSetOperators");
@@ -701,13 +732,21 @@ void PetscSolver::to_petsc(const Vector& x, Vec v) const {
   PetscScalar* mine = nullptr;
   check(VecGetArray(v, &mine), "VecGetArray");
   for (PetscInt r = 0; r < local_rows_; ++r) {
-    const int eq = eq_of_[first_row_ + r];
+    const int eq = local_equation(r);
     mine[r] = eq >= 0 ? x[eq] : 0.0;
   }
   check(VecRestoreArray(v, &mine), "VecRestoreArray");
 }
 
 void PetscSolver::from_petsc(Vec v, Vector& x) const {
+  if (layout_.in_parts()) {  // the owned equations' values; the others are the caller's
+    const PetscScalar* mine = nullptr;
+    check(VecGetArrayRead(v, &mine), "VecGetArrayRead");
+    for (PetscInt r = 0; r < local_rows_; ++r)
+      if (const int eq = local_equation(r); eq >= 0) x[eq] = mine[r];
+    VecRestoreArrayRead(v, &mine);
+    return;
+  }
   check(VecScatterBegin(scatter_, v, gathered_, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
   check(VecScatterEnd(scatter_, v, gathered_, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
   const PetscScalar* whole = nullptr;
@@ -723,7 +762,7 @@ bool PetscSolver::multiply(const Vector& x, Vector& y) const {
   check(MatCreateVecs(a_, &xv, &yv), "MatCreateVecs");
   to_petsc(x, xv);
   check(MatMult(a_, xv, yv), "MatMult");
-  y.resize(x.size());
+  y = Vector::Zero(x.size());
   from_petsc(yv, y);
   VecDestroy(&xv);
   VecDestroy(&yv);
@@ -770,10 +809,13 @@ Vector PetscSolver::solve(const Vector& b) const {
   Vec bv = nullptr, xv = nullptr;
   check(MatCreateVecs(a_, &xv, &bv), "MatCreateVecs");
   to_petsc(b, bv);
-  rhs_norm_ = std::max(b.norm(), 1e-300);
+  // In parts b holds this rank's equations: its norm is the PETSc vector's, over the ranks.
+  PetscReal b_norm = b.norm();
+  if (layout_.in_parts()) check(VecNorm(bv, NORM_2, &b_norm), "VecNorm");
+  rhs_norm_ = std::max(static_cast<double>(b_norm), 1e-300);
   iterations_ = 0;
   Vector out = Vector::Zero(b.size());
-  if (b.norm() > 0.0) {
+  if (b_norm > 0.0) {
     std::string detail;
     bool converged = krylov_solve(bv, xv, detail);
     int spent = iterations_;
