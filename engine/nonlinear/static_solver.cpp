@@ -416,7 +416,10 @@ void StaticSolver::take_owners_constraints(Constraints& c) const {
   const int n = static_cast<int>(c.free_index.size());
   // Per unknown: constrained or not, and its value, from its owner.
   std::vector<double> said(2 * static_cast<size_t>(n), 0.0);
-  for (size_t i = 0; i < c.constrained.size(); ++i) said[2 * c.constrained[i]] = 1.0, said[2 * c.constrained[i] + 1] = c.values[i];
+  for (size_t i = 0; i < c.constrained.size(); ++i) {
+    said[2 * c.constrained[i]] = 1.0;
+    said[2 * c.constrained[i] + 1] = c.values[i];
+  }
   equation_halo_->copy_to_ghosts(said, 2);
   c.constrained.clear(), c.values.clear();
   c.n_free = 0;
@@ -469,14 +472,14 @@ SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err
   const std::vector<Approximation> approximate = approximations();
   std::string named;
   for (const auto& a : approximate) named += (named.empty() ? "" : ", ") + a.what;
-  // elastic_.ff is the whole K_ff unless the model is shared or K_ff went to the backend
-  // (also when the backend failed after taking it).
   if (in_parts_) {
     // The whole stiffness is on no rank: the failure is said as it is.
     SolveError as_is = err;
     as_is.add_hint("the model is in parts: no rank holds the whole stiffness to find the cause");
     return as_is;
   }
+  // elastic_.ff is the whole K_ff unless the model is shared or K_ff went to the backend
+  // (also when the backend failed after taking it).
   const bool whole_here = !distributed_ && !elastic_in_solver_ && (elastic_.ff.nonZeros() > 0 || elastic_.equation.empty());
   SolveError found = [&] {
     if (whole_here)
@@ -1232,7 +1235,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           log_.warning("going on as asked with a singular system: " + rigid.message());
         };
         // (Not in parts: a part alone may look unheld.)
-        const auto unheld = in_parts_ ? std::optional<SolveError>() : find_unheld_body(model_, dofs_, cons.free_index, related, t);
+        const auto unheld =
+            in_parts_ ? std::optional<SolveError>() : find_unheld_body(model_, dofs_, cons.free_index, related, t);
         if (unheld) report(*unheld);
         if (!unheld && !held_by_relations && interface_use_ != 1 && backend != SolverKind::Cholmod &&
             backend != SolverKind::Petsc && !distributed_ && options_.factor.singularity.digits >= 0) {
@@ -1418,7 +1422,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         if (in_parts_) {
           const double b_norm = std::max(owned_norm(r_free), std::numeric_limits<double>::min());
           const double error = owned_norm(Vector(system_product(du) + r_free)) / b_norm;
-          accuracy.raw_residual = accuracy.residual = std::isfinite(error) ? error : std::numeric_limits<double>::infinity();
+          accuracy.raw_residual = accuracy.residual =
+              std::isfinite(error) ? error : std::numeric_limits<double>::infinity();
         } else {
           accuracy.raw_residual = accuracy.residual = relative_residual(system_product, du, -r_free);
         }
