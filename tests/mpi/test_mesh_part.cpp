@@ -633,11 +633,14 @@ TEST(PartNewton, PetscSolvesOnPartsToItsTolerance) {
     const MeshPart part = part_of(scene.whole);
     const FeModel model = elastic_model(part.mesh);
     const MechanicalLoads loads = block_loads(part.mesh);
-    for (P preconditioner : {P::Gamg, P::Boomer, P::Jacobi}) {
-      SCOPED_TRACE(scene.name + ", preconditioner " + std::to_string(static_cast<int>(preconditioner)));
+    using K = IterativeSettings::Krylov;
+    for (const auto& [preconditioner, krylov] : std::vector<std::pair<P, K>>{
+             {P::Gamg, K::CG}, {P::Boomer, K::CG}, {P::Ml, K::CG}, {P::Jacobi, K::CG}, {P::Sor, K::GMRES}}) {
+      SCOPED_TRACE(scene.name + ", preconditioner " + std::to_string(static_cast<int>(preconditioner)) +
+                   ", Krylov method " + std::to_string(static_cast<int>(krylov)));
       NewtonOptions options = mumps_options();
       options.solver = SolverKind::Petsc;
-      options.iterative.krylov = IterativeSettings::Krylov::CG;
+      options.iterative.krylov = krylov;
       options.iterative.preconditioner = preconditioner;
       options.iterative.relative_residual = 1e-12;
       options.iterative.max_iterations = 5000;
