@@ -71,13 +71,13 @@ NodeHalo::NodeHalo(const MeshPart& part)
     : Halo(part.global_node, part.node_owner, part.n_owned_nodes, part.rank, part.parts) {}
 
 Halo equation_halo(const MeshPart& part, const DofMap& dofs, const GlobalDofs& numbers) {
-  std::vector<int> global(numbers.global.size()), owner(numbers.global.size());
+  std::vector<int> global, owner;
   LUNASTER_ASSERT(numbers.n_global < (1LL << 31), "equation_halo: more unknowns than an int numbers");
-  for (size_t eq = 0; eq < global.size(); ++eq) {
-    LUNASTER_ASSERT(numbers.global[eq] >= 0, "equation_halo: a numbering of some unknowns only");
-    global[eq] = static_cast<int>(numbers.global[eq]);
-    owner[eq] = part.node_owner[dofs.node_of(static_cast<int>(eq))];
-  }
+  for (size_t eq = 0; eq < numbers.global.size(); ++eq)
+    if (numbers.global[eq] >= 0) {
+      global.push_back(static_cast<int>(numbers.global[eq]));
+      owner.push_back(part.node_owner[dofs.node_of(static_cast<int>(eq))]);
+    }
   return Halo(global, owner, numbers.n_owned, part.rank, part.parts);
 }
 

@@ -49,8 +49,9 @@ class NodeHalo : public Halo {
   explicit NodeHalo(const MeshPart& part);
 };
 
-/// The halo of a part's unknowns, all numbered across the ranks by number_across_ranks (without
-/// a mask; an unknown is owned by its node's owner).
+/// The halo of a part's unknowns numbered across the ranks by number_across_ranks (an unknown is
+/// owned by its node's owner). Its entries are the numbered unknowns in their local order: every
+/// equation of the DofMap without a mask, the kept ones with one (a system's free unknowns).
 Halo equation_halo(const MeshPart& part, const DofMap& dofs, const GlobalDofs& numbers);
 
 }  // namespace lunaster::engine

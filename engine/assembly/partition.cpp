@@ -119,10 +119,9 @@ CellPartition partition_cells(const Mesh& mesh, const std::vector<int>& cells, i
         failure = e.message();
       }
     }
-    // Every rank learns rank 0's status: a failure stops them all, none waits.
-    if (parallel::max_over_ranks(failure.empty() ? 0.0 : 1.0) > 0.0)
-      throw SolveError("Scotch could not partition the " + std::to_string(n) + " cells over " +
-                       std::to_string(out.parts) + " ranks");
+    // Every rank learns rank 0's failure, if any: it stops them all, none waits.
+    parallel::broadcast(failure);
+    if (!failure.empty()) throw SolveError(failure);
     parallel::broadcast(out.cell_part.data(), n);
   }
   out.node_owner = node_owners(mesh.n_nodes(), out.cell_part, out.parts, around, &out.interface_nodes);

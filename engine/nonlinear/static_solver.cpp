@@ -245,14 +245,7 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
       std::vector<char> free(n, 1);
       for (int eq : constrained) free[eq] = 0;
       free_numbers_ = number_across_ranks(*part_, dofs_, node_halo, &free);
-      std::vector<int> global, owner;
-      for (int eq = 0; eq < n; ++eq)
-        if (free[eq]) {
-          global.push_back(static_cast<int>(free_numbers_.global[eq]));
-          owner.push_back(node_owner_[dofs_.node_of(eq)]);
-        }
-      LUNASTER_ASSERT(free_numbers_.n_global < (1LL << 31), "more unknowns than an int numbers");
-      free_halo_ = std::make_unique<Halo>(global, owner, free_numbers_.n_owned, part_->rank, part_->parts);
+      free_halo_ = std::make_unique<Halo>(equation_halo(*part_, dofs_, free_numbers_));
       std::string counts;
       for (int owned : parallel::gather_all(std::vector<int>{part_->n_owned_nodes}))
         counts += (counts.empty() ? "" : ", ") + std::to_string(owned);
