@@ -13,6 +13,9 @@ class Concept {
   /// code_aster type name: "maillage", "modele", "mater", "cham_mater", "char_meca",
   /// "char_contact", "listr8", "list_inst", "fonction", "evol_noli", "table".
   virtual std::string type_name() const = 0;
+  /// True for a concept on a mesh in parts (LIRE_MAILLAGE's PARTITIONNEUR): only the commands
+  /// written for parts take it (docs/distributed-model.md).
+  virtual bool in_parts() const { return false; }
   /// Name of the deck variable the concept was assigned to (set by the runner), for messages.
   std::string user_name;
 };

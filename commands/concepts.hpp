@@ -7,6 +7,7 @@
 
 #include "catalog/args.hpp"
 #include "catalog/concept.hpp"
+#include "engine/assembly/mesh_part.hpp"
 #include "engine/contact/contact_definition.hpp"
 #include "engine/fe/fe_model.hpp"
 #include "engine/fields/fields.hpp"
@@ -21,9 +22,15 @@ using catalog::ConceptPtr;
 
 /// LIRE_MAILLAGE, DEFI_GROUP (reuse), MODI_MAILLAGE (reuse).
 struct Maillage : Concept {
+  /// The mesh the commands work on: the whole mesh, or this rank's part of a mesh in parts.
   std::shared_ptr<engine::Mesh> mesh = std::make_shared<engine::Mesh>();
   std::string source_file;  ///< file the mesh was read from, for messages
+  /// A mesh in parts (PARTITIONNEUR): this rank's part (`mesh` is its part.mesh), and on rank
+  /// 0 the whole mesh it read, which IMPR_RESU writes the gathered fields on. Null otherwise.
+  std::shared_ptr<engine::MeshPart> part;
+  std::shared_ptr<engine::Mesh> whole;
   std::string type_name() const override { return "maillage"; }
+  bool in_parts() const override { return part != nullptr; }
 };
 
 /// AFFE_MODELE: which cells carry which mechanical element.
@@ -32,6 +39,7 @@ struct Modele : Concept {
   int dim = 0;
   std::vector<engine::Modelisation> modelisation;  ///< per cell
   std::string type_name() const override { return "modele"; }
+  bool in_parts() const override { return maillage && maillage->in_parts(); }
 };
 
 /// DEFI_MATERIAU.
@@ -47,6 +55,7 @@ struct ChamMater : Concept {
   std::vector<int> material;                      ///< per cell, index into materials, -1 none
   std::vector<engine::ElasticMaterial> materials;
   std::string type_name() const override { return "cham_mater"; }
+  bool in_parts() const override { return maillage && maillage->in_parts(); }
 };
 
 /// AFFE_CHAR_MECA: Dirichlet values, pressures, nodal forces and (seed syntax) contact.
@@ -60,6 +69,7 @@ struct CharMeca : Concept {
   bool has_contact = false;
   engine::ContactDefinition contact;
   std::string type_name() const override { return "char_meca"; }
+  bool in_parts() const override { return modele && modele->in_parts(); }
 };
 
 /// DEFI_CONTACT.
@@ -67,6 +77,7 @@ struct CharContact : Concept {
   std::shared_ptr<Modele> modele;
   engine::ContactDefinition contact;
   std::string type_name() const override { return "char_contact"; }
+  bool in_parts() const override { return modele && modele->in_parts(); }
 };
 
 /// DEFI_LIST_REEL.
@@ -97,6 +108,7 @@ struct EvolNoli : Concept {
   /// computes each cell there); empty otherwise.
   std::vector<int> cell_rank;
   std::string type_name() const override { return "evol_noli"; }
+  bool in_parts() const override { return modele && modele->in_parts(); }
 };
 
 }  // namespace lunaster::cmd

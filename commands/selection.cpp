@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "commands/parts.hpp"
+
 namespace lunaster::cmd {
 
 namespace {
@@ -42,7 +44,9 @@ const std::vector<int>& cell_group(const catalog::Args& args, const std::string&
   auto it = mesh.cell_groups.find(group);
   if (it == mesh.cell_groups.end())
     throw args.error(kw, "a cell group of the mesh", "'" + group + "'", suggestion(group, keys_of(mesh.cell_groups)));
-  if (it->second.empty()) throw args.error(kw, "a non-empty cell group", "'" + group + "', which is empty");
+  // A part holds every group, maybe empty: whether the group is empty is the whole mesh's.
+  const bool filled = !it->second.empty();
+  require_somewhere(mesh, filled, filled ? DeckError("") : args.error(kw, "a non-empty cell group", "'" + group + "', which is empty"));
   return it->second;
 }
 
@@ -50,7 +54,9 @@ std::vector<int> node_group(const catalog::Args& args, const std::string& kw, co
                             const std::string& group) {
   auto it = mesh.node_groups.find(group);
   if (it != mesh.node_groups.end()) {
-    if (it->second.empty()) throw args.error(kw, "a non-empty node group", "'" + group + "', which is empty");
+    const bool filled = !it->second.empty();
+    require_somewhere(mesh, filled,
+                      filled ? DeckError("") : args.error(kw, "a non-empty node group", "'" + group + "', which is empty"));
     return it->second;
   }
   auto cit = mesh.cell_groups.find(group);
@@ -71,10 +77,13 @@ std::vector<int> named_cells(const catalog::Args& args, const engine::Mesh& mesh
     for (const auto& g : args.texts("GROUP_MA")) merge(cells, cell_group(args, "GROUP_MA", mesh, g));
   if (declared_and_present(args, "MAILLE"))
     for (const auto& name : args.texts("MAILLE")) {
+      // On a part, a cell another rank holds is not here: the ranks decide whether it exists.
       const int c = mesh.find_cell(name);
-      if (c < 0)
-        throw args.error("MAILLE", "a cell name of the mesh", "'" + name + "'", suggestion(name, mesh.cell_names));
-      cells.push_back(c);
+      require_somewhere(mesh, c >= 0,
+                        c >= 0 ? DeckError("")
+                               : args.error("MAILLE", "a cell name of the mesh", "'" + name + "'",
+                                            mesh.is_part ? std::vector<std::string>{} : suggestion(name, mesh.cell_names)));
+      if (c >= 0) cells.push_back(c);
     }
   return cells;
 }
@@ -105,13 +114,15 @@ std::vector<int> select_nodes(const catalog::Args& args, const engine::Mesh& mes
   if (declared_and_present(args, "NOEUD"))
     for (const auto& name : args.texts("NOEUD")) {
       const int n = mesh.find_node(name);
-      if (n < 0) {
-        if (mesh.node_groups.count(name))
-          throw args.error("NOEUD", "a node name of the mesh", "'" + name + "'",
-                           {"'" + name + "' is a node group: use GROUP_NO = '" + name + "'"});
-        throw args.error("NOEUD", "a node name of the mesh", "'" + name + "'", suggestion(name, mesh.node_names));
-      }
-      nodes.push_back(n);
+      if (n < 0 && mesh.node_groups.count(name))  // every part holds every group: the same on every rank
+        throw args.error("NOEUD", "a node name of the mesh", "'" + name + "'",
+                         {"'" + name + "' is a node group: use GROUP_NO = '" + name + "'"});
+      // On a part, a node another rank holds is not here: the ranks decide whether it exists.
+      require_somewhere(mesh, n >= 0,
+                        n >= 0 ? DeckError("")
+                               : args.error("NOEUD", "a node name of the mesh", "'" + name + "'",
+                                            mesh.is_part ? std::vector<std::string>{} : suggestion(name, mesh.node_names)));
+      if (n >= 0) nodes.push_back(n);
     }
   if (declared_and_present(args, "GROUP_MA") || declared_and_present(args, "MAILLE"))
     merge(nodes, mesh.nodes_of_cells(named_cells(args, mesh)));

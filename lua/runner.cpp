@@ -8,6 +8,7 @@
 
 #include "catalog/args.hpp"
 #include "catalog/lookup.hpp"
+#include "commands/parts.hpp"
 #include "lua/bridge.hpp"
 #include "lua/comm_convert.hpp"
 #include "lua/export_file.hpp"
@@ -37,6 +38,7 @@ ErrorContext call_site(lua_State* L, const std::string& command) {
 
 Runner::Runner(cmd::Session& session, HandlerLookup lookup, BudgetGuard* guard)
     : session_(session), lookup_(std::move(lookup)), guard_(guard) {
+  cmd::set_parts_in_run(false);  // a deck's commands agree over the ranks once it reads a mesh in parts
   state_ = luaL_newstate();
   if (!state_) throw InternalError("cannot create a Lua state");
   setup_state(state_, *this);
@@ -78,6 +80,24 @@ int Runner::call_command(lua_State* L, const catalog::CommandSpec& spec) {
   return 1;
 }
 
+namespace {
+
+/// DeckError at the first concept of `node` on a mesh in parts: `command` does not take one.
+void refuse_parts(const std::string& command, const catalog::KwNode& node, const std::string& path) {
+  for (const auto& [kw, values] : node.simple)
+    for (const auto& v : values)
+      if (const auto* c = std::get_if<catalog::ConceptPtr>(&v); c && *c && (*c)->in_parts())
+        throw DeckError::at(path + kw, "a concept on a whole mesh (" + command + " does not take a mesh in parts yet; "
+                                       "the commands that do: " + cmd::commands_taking_parts() + ")",
+                            "'" + (*c)->user_name + "', on a mesh read with PARTITIONNEUR",
+                            {"read the mesh without PARTITIONNEUR for this deck"});
+  for (const auto& [kw, occurrences] : node.factors)
+    for (size_t i = 0; i < occurrences.size(); ++i)
+      refuse_parts(command, occurrences[i], path + kw + (occurrences.size() > 1 ? "[" + std::to_string(i + 1) + "]" : "") + ".");
+}
+
+}  // namespace
+
 catalog::ConceptPtr Runner::execute(lua_State* L, const catalog::CommandSpec& spec, const ErrorContext& where) {
   const int n_args = lua_gettop(L);
   if (n_args > 1 || (n_args == 1 && !lua_istable(L, 1)))
@@ -109,19 +129,26 @@ catalog::ConceptPtr Runner::execute(lua_State* L, const catalog::CommandSpec& sp
     }
   } running{guard_};
   if (guard_) guard_->set_running(where.file + ":" + std::to_string(where.line) + ": " + spec.name);
+  // With a mesh in parts the ranks agree at the end of every command: one rank's failure (or a
+  // name no rank's part holds) stops every rank alike, never one alone (commands/parts.hpp).
+  cmd::forget_requirements();
+  std::exception_ptr failure;
   try {
+    if (!cmd::takes_parts(spec.name)) refuse_parts(spec.name, node, "");
     result = handler(args, session_);
   } catch (const Error&) {
-    throw;
+    failure = std::current_exception();
   } catch (const std::bad_alloc&) {
-    if (guard_ && guard_->budget().megabytes)
-      throw Error(ErrorKind::OutOfMemory, "out of memory (" + guard_->memory_message() + ")");
-    throw Error(ErrorKind::OutOfMemory, "out of memory: the machine refused an allocation");
+    failure = std::make_exception_ptr(
+        guard_ && guard_->budget().megabytes
+            ? Error(ErrorKind::OutOfMemory, "out of memory (" + guard_->memory_message() + ")")
+            : Error(ErrorKind::OutOfMemory, "out of memory: the machine refused an allocation"));
   } catch (const std::exception& e) {
-    throw InternalError(std::string("unexpected exception: ") + e.what());
+    failure = std::make_exception_ptr(InternalError(std::string("unexpected exception: ") + e.what()));
   } catch (...) {  // the handler never calls Lua, so this cannot swallow a Lua error
-    throw InternalError("unknown exception");
+    failure = std::make_exception_ptr(InternalError("unknown exception"));
   }
+  cmd::agree_over_ranks(failure);
   if (spec.result_type.empty()) return nullptr;
   if (!result) throw InternalError("the handler returned no " + spec.result_type + " concept");
   if (result->type_name() != spec.result_type)

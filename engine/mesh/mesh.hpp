@@ -15,6 +15,9 @@ class Mesh {
   /// Space dimension: 2 if every z coordinate is zero and no 3D cell exists, else 3.
   int dim = 3;
   std::string name = "MAIL";  ///< mesh name (MED mesh name)
+  /// One rank's part of a mesh in parts (engine/assembly/mesh_part.hpp, LIRE_MAILLAGE's
+  /// PARTITIONNEUR): what a command finds or misses in it is decided over the ranks.
+  bool is_part = false;
 
   // ---- nodes ----
   std::vector<double> coords;            ///< 3 per node (z = 0 in 2D), metres

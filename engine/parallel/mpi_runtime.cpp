@@ -131,12 +131,14 @@ void broadcast(int* data, long long n) {
   in_chunks(n, [&](long long at, int count) { MPI_Bcast(data + at, count, MPI_INT, 0, MPI_COMM_WORLD); });
 }
 
-void broadcast(std::string& bytes) {
+void broadcast(std::string& bytes) { broadcast_from(0, bytes); }
+
+void broadcast_from(int root, std::string& bytes) {
   if (size() == 1) return;
   long long n = static_cast<long long>(bytes.size());
-  MPI_Bcast(&n, 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD);
+  MPI_Bcast(&n, 1, MPI_LONG_LONG, root, MPI_COMM_WORLD);
   bytes.resize(static_cast<size_t>(n));
-  in_chunks(n, [&](long long at, int count) { MPI_Bcast(bytes.data() + at, count, MPI_BYTE, 0, MPI_COMM_WORLD); });
+  in_chunks(n, [&](long long at, int count) { MPI_Bcast(bytes.data() + at, count, MPI_BYTE, root, MPI_COMM_WORLD); });
 }
 
 void send_bytes(int to, const std::string& bytes) {

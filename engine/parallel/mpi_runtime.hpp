@@ -70,6 +70,7 @@ std::vector<double> gather_to_root(const std::vector<double>& mine);
 std::vector<double> scatter_from_root(const std::vector<double>& whole, int mine);
 /// Rank `root`'s values of `data` on every rank (nothing on one rank).
 void broadcast_from(int root, double* data, long long n);
+void broadcast_from(int root, std::string& bytes);
 
 /// Finalises MPI if it was initialised (called once, at the end of main).
 void finalise();
