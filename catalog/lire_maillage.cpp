@@ -10,6 +10,9 @@ const CommandSpec& lire_maillage_spec() {
        text("FORMAT", "File format").into_values({"MED", "GMSH"}).def("MED"),
        text("FICHIER", "Mesh file path, relative to the deck (overrides UNITE)"),
        text("NOM_MED", "Name of the mesh inside the MED file (default: the first one)"),
+       text("PARTITIONNEUR", "Read the mesh in parts, one per MPI rank (cut by Scotch on rank 0): each rank "
+                             "holds its cells, a ghost layer and their nodes; linear elasticity only")
+           .into_values({"PTSCOTCH"}),
        common::info()});
   return spec;
 }

@@ -9,6 +9,7 @@
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
 #include "commands/contact_keywords.hpp"
+#include "commands/parts.hpp"
 #include "commands/selection.hpp"
 #include "engine/contact/surface_element.hpp"
 #include "engine/fe/point_location.hpp"
@@ -43,9 +44,10 @@ void read_pres_rep(const Args& occ, const Modele& mo, CharMeca& load) {
   std::vector<int> cells;
   for (int c : select_cells(occ, mesh))
     if (engine::cell_info(mesh.cell_types[c]).dim == mo.dim - 1) cells.push_back(c);
-  if (cells.empty())
-    throw occ.error("GROUP_MA", "boundary cells (" + std::string(mo.dim == 2 ? "SEG2/SEG3" : "TRIA/QUAD") + ")",
-                    "a selection without any");
+  // On a part, the boundary cells may all be on other ranks: the ranks decide.
+  require_somewhere(mesh, !cells.empty(),
+                    occ.error("GROUP_MA", "boundary cells (" + std::string(mo.dim == 2 ? "SEG2/SEG3" : "TRIA/QUAD") + ")",
+                              "a selection without any"));
   load.pressures.push_back({cells, occ.real("PRES"), 0});
 }
 
@@ -390,6 +392,13 @@ ConceptPtr affe_char_meca(const Args& args, Session& session) {
   auto load = std::make_shared<CharMeca>();
   load->modele = args.concept_as<Modele>("MODELE");
   const Modele& mo = *load->modele;
+  if (mo.in_parts())
+    for (const char* kw : {"LIAISON_DDL", "LIAISON_UNIF", "LIAISON_MAIL", "CONTACT"})
+      if (args.count(kw) > 0)
+        throw args.error(kw, "DDL_IMPO, PRES_REP or FORCE_NODALE on MODELE '" + mo.user_name +
+                                 "', a model on a mesh in parts (linear relations and contact are not written for "
+                                 "parts yet)",
+                         kw, {"read the mesh without PARTITIONNEUR for this deck"});
   for (const auto& occ : args.factors("DDL_IMPO")) read_ddl_impo(occ, mo, *load);
   for (const auto& occ : args.factors("PRES_REP")) read_pres_rep(occ, mo, *load);
   for (const auto& occ : args.factors("FORCE_NODALE")) read_force_nodale(occ, mo, *load);

@@ -1,8 +1,11 @@
 // AFFE_MODELE: assigns mechanical elements (D_PLAN, C_PLAN, 3D, AXIS) to cells.
 #include <sstream>
 
+#include "engine/parallel/mpi_runtime.hpp"
+
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
+#include "commands/parts.hpp"
 #include "commands/selection.hpp"
 
 namespace lunaster::cmd {
@@ -73,10 +76,21 @@ ConceptPtr affe_modele(const Args& args, Session& session) {
       }
     }
   }
-  if (n_volume == 0)
-    throw args.error("AFFE", "a selection containing cells of the modelisation's dimension",
-                     "none (only boundary cells or points)");
-  session.log().info("  " + std::to_string(n_volume) + " cells carry a " + std::to_string(mo->dim) + "D element");
+  require_somewhere(mesh, n_volume > 0,
+                    args.error("AFFE", "a selection containing cells of the modelisation's dimension",
+                               "none (only boundary cells or points)"));
+  double counted = n_volume;
+  if (ma->part) {
+    // Each rank counts the cells it assembles (a ghost cell is another rank's), once every
+    // rank has modelled its part: the count is the whole mesh's.
+    agree_over_ranks(nullptr);
+    counted = 0;
+    for (int c = 0; c < mesh.n_cells(); ++c)
+      counted += mo->modelisation[c] != engine::Modelisation::None && ma->part->cell_part[c] == ma->part->rank;
+    engine::parallel::sum_over_ranks(&counted, 1);
+  }
+  session.log().info("  " + std::to_string(static_cast<long long>(counted)) + " cells carry a " +
+                     std::to_string(mo->dim) + "D element");
   return mo;
 }
 

@@ -1,9 +1,13 @@
 // CALC_CHAMP: stresses (SIGM_ELNO, SIGM_NOEU), equivalent stresses (SIEQ_*) and nodal
 // forces (FORC_NODA, REAC_NODA) from DEPL.
 #include <algorithm>
+#include <memory>
 
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
+#include "commands/parts.hpp"
+#include "engine/assembly/global_dofs.hpp"
+#include "engine/assembly/halo.hpp"
 #include "engine/fe/stress.hpp"
 #include "engine/nonlinear/nodal_forces.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
@@ -55,23 +59,41 @@ ConceptPtr calc_champ(const Args& args, Session& session) {
   auto want = [&](const char* name) { return std::find(wanted.begin(), wanted.end(), name) != wanted.end(); };
   const engine::FeModel model = build_fe_model(*resu->modele, *resu->cham_mater, args, "RESULTAT");
   const engine::DofMap dofs(*model.mesh, model.volume_cells(), model.dim);
+  const std::vector<size_t> chosen = selected_steps(args, *resu);
+  // On a mesh in parts each rank computes its part: its own cells' forces summed into the owners
+  // and copied to the ghosts through the halo of its unknowns, every cell's stresses (a part
+  // holds all the nodes of its cells), nodal means from the owners.
+  const engine::MeshPart* part = resu->modele->maillage->part.get();
+  std::unique_ptr<engine::Halo> equations;
+  if (part) {
+    agree_over_ranks(nullptr);
+    equations = std::make_unique<engine::Halo>(
+        engine::equation_halo(*part, dofs, engine::number_across_ranks(*part, dofs, engine::NodeHalo(*part))));
+  }
+  auto to_noeu = [&](const engine::ElnoField& elno) {
+    return part ? engine::elno_to_noeu(*part, elno) : engine::elno_to_noeu(*model.mesh, elno);
+  };
   // A model shared among MPI ranks by STAT_NON_LINE: each rank computes the cells it held and
   // the ranks sum their parts, so every rank has the whole fields (IMPR_RESU, TEST_RESU).
   const std::vector<int>* cell_rank =
-      resu->cell_rank.size() == static_cast<size_t>(model.mesh->n_cells()) ? &resu->cell_rank : nullptr;
+      !part && resu->cell_rank.size() == static_cast<size_t>(model.mesh->n_cells()) ? &resu->cell_rank : nullptr;
   if (cell_rank) {
     const long mine = std::count(cell_rank->begin(), cell_rank->end(), engine::parallel::rank());
     const long all = static_cast<long>(cell_rank->size()) - std::count(cell_rank->begin(), cell_rank->end(), -1);
     session.log().info("CALC_CHAMP: each rank computes the cells it held in STAT_NON_LINE (this rank " +
                        std::to_string(mine) + " of " + std::to_string(all) + ")");
   }
-  for (size_t i : selected_steps(args, *resu)) {
+  for (size_t i : chosen) {
     auto& step = resu->steps[i];
     const engine::Vector u = displacement_vector(dofs, step.nodal.at("DEPL"));
-    if (want("FORC_NODA")) step.nodal["FORC_NODA"] = engine::internal_nodal_forces(model, dofs, u, cell_rank);
+    if (want("FORC_NODA"))
+      step.nodal["FORC_NODA"] = part ? engine::internal_nodal_forces(model, dofs, u, *part, *equations)
+                                     : engine::internal_nodal_forces(model, dofs, u, cell_rank);
     if (want("REAC_NODA")) {
       try {
-        step.nodal["REAC_NODA"] = engine::reaction_forces(model, dofs, u, resu->loads, step.inst, cell_rank);
+        step.nodal["REAC_NODA"] =
+            part ? engine::reaction_forces(model, dofs, u, resu->loads, step.inst, *part, *equations)
+                 : engine::reaction_forces(model, dofs, u, resu->loads, step.inst, cell_rank);
       } catch (const DeckError& err) {  // a FONC_MULT outside its range at this instant
         throw args.error("FORCE", "loads of RESULTAT defined at instant " + std::to_string(step.inst), err.message());
       }
@@ -79,10 +101,10 @@ ConceptPtr calc_champ(const Args& args, Session& session) {
     const bool stresses = want("SIGM_ELNO") || want("SIGM_NOEU") || want("SIEQ_ELNO") || want("SIEQ_NOEU");
     if (!stresses) continue;
     engine::ElnoField sigm = engine::compute_sigm_elno(model, dofs, u, cell_rank);
-    if (want("SIGM_NOEU")) step.nodal["SIGM_NOEU"] = engine::elno_to_noeu(*model.mesh, sigm);
+    if (want("SIGM_NOEU")) step.nodal["SIGM_NOEU"] = to_noeu(sigm);
     if (want("SIEQ_ELNO") || want("SIEQ_NOEU")) {
       engine::ElnoField sieq = engine::compute_sieq_elno(sigm);
-      if (want("SIEQ_NOEU")) step.nodal["SIEQ_NOEU"] = engine::elno_to_noeu(*model.mesh, sieq);
+      if (want("SIEQ_NOEU")) step.nodal["SIEQ_NOEU"] = to_noeu(sieq);
       step.elno["SIEQ_ELNO"] = std::move(sieq);
     }
     step.elno["SIGM_ELNO"] = std::move(sigm);  // *_NOEU needs *_ELNO: code_aster computes it too

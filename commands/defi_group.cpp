@@ -1,13 +1,14 @@
 // DEFI_GROUP: creates node groups (from cell groups or node lists) and cell groups.
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
+#include "commands/parts.hpp"
 #include "commands/selection.hpp"
 
 namespace lunaster::cmd {
 
 namespace {
 
-void create_node_groups(const Args& occ, engine::Mesh& mesh, Session& session) {
+void create_node_groups(const Args& occ, engine::Mesh& mesh, Session& session, bool say) {
   if (occ.has("TOUT_GROUP_MA")) {
     const auto groups = mesh.cell_groups;  // copy: adding node groups does not touch it, but be explicit
     for (const auto& [name, cells] : groups) mesh.add_to_node_group(name, mesh.nodes_of_cells(cells));
@@ -18,7 +19,7 @@ void create_node_groups(const Args& occ, engine::Mesh& mesh, Session& session) {
       const auto& cells = cell_group(occ, "GROUP_MA", mesh, g);
       const std::string name = occ.has("NOM") ? occ.text("NOM") : g;
       mesh.add_to_node_group(name, mesh.nodes_of_cells(cells));
-      session.log().info("  node group " + name + ": " + std::to_string(mesh.node_groups[name].size()) + " nodes");
+      if (say) session.log().info("  node group " + name + ": " + std::to_string(mesh.node_groups[name].size()) + " nodes");
     }
     return;
   }
@@ -27,8 +28,8 @@ void create_node_groups(const Args& occ, engine::Mesh& mesh, Session& session) {
     std::vector<int> nodes;
     for (const auto& n : occ.texts("NOEUD")) {
       const int i = mesh.find_node(n);
-      if (i < 0) throw occ.error("NOEUD", "a node name of the mesh", "'" + n + "'");
-      nodes.push_back(i);
+      require_somewhere(mesh, i >= 0, occ.error("NOEUD", "a node name of the mesh", "'" + n + "'"));
+      if (i >= 0) nodes.push_back(i);
     }
     mesh.add_to_node_group(occ.text("NOM"), nodes);
     return;
@@ -48,13 +49,19 @@ void create_node_groups(const Args& occ, engine::Mesh& mesh, Session& session) {
 
 ConceptPtr defi_group(const Args& args, Session& session) {
   auto ma = args.concept_as<Maillage>("MAILLAGE");
-  engine::Mesh& mesh = *ma->mesh;
-  for (const auto& occ : args.factors("CREA_GROUP_MA")) {
-    const std::vector<int> cells = select_cells(occ, mesh);
-    if (cells.empty()) throw occ.error("NOM", "a selection of at least one cell", "an empty selection");
-    mesh.add_to_cell_group(occ.text("NOM"), cells);
+  // A mesh in parts: each rank makes the groups on its part (empty ones too, so that every part
+  // holds every group), and rank 0 on the whole mesh as well, which it writes and logs.
+  std::vector<engine::Mesh*> meshes{ma->mesh.get()};
+  if (ma->whole) meshes.push_back(ma->whole.get());
+  for (engine::Mesh* mesh : meshes) {
+    const bool say = mesh == meshes.back() && (!ma->part || ma->whole);
+    for (const auto& occ : args.factors("CREA_GROUP_MA")) {
+      const std::vector<int> cells = select_cells(occ, *mesh);
+      require_somewhere(*mesh, !cells.empty(), occ.error("NOM", "a selection of at least one cell", "an empty selection"));
+      mesh->add_to_cell_group(occ.text("NOM"), cells);
+    }
+    for (const auto& occ : args.factors("CREA_GROUP_NO")) create_node_groups(occ, *mesh, session, say);
   }
-  for (const auto& occ : args.factors("CREA_GROUP_NO")) create_node_groups(occ, mesh, session);
   return ma;
 }
 

@@ -9,9 +9,12 @@
 
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
+#include "commands/part_results.hpp"
+#include "commands/parts.hpp"
 #include "commands/selection.hpp"
 #include "engine/io/atomic_file.hpp"
 #include "engine/io/med_writer.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::cmd {
 
@@ -61,8 +64,7 @@ std::vector<engine::ResultStep> selected_steps(const Args& occ, const EvolNoli& 
 }
 
 /// FORMAT='RESULTAT': nodal fields of the selected steps, at the selected nodes.
-void write_table(std::ostream& out, const Args& occ, const EvolNoli& resu) {
-  const engine::Mesh& mesh = *resu.modele->maillage->mesh;
+void write_table(std::ostream& out, const Args& occ, const EvolNoli& resu, const engine::Mesh& mesh) {
   std::vector<int> nodes;
   if (occ.has("GROUP_NO") || occ.has("GROUP_MA")) nodes = select_nodes(occ, mesh);
   else for (int n = 0; n < mesh.n_nodes(); ++n) nodes.push_back(n);
@@ -101,15 +103,36 @@ ConceptPtr impr_resu(const Args& args, Session& session) {
                                     "written with FORMAT='MED')",
                         "MAILLAGE");
     const auto path = output_path(args, session, "resu");
+    // On a mesh in parts rank 0 prints the results gathered on the whole mesh, once every rank
+    // has checked the occurrence's nodes and steps on its part.
+    std::deque<EvolNoli> gathered;
+    for (const auto& occ : args.factors("RESU")) {
+      const auto resu = occ.concept_as<EvolNoli>("RESULTAT");
+      const auto& ma = resu->modele->maillage;
+      if (!ma->part) continue;
+      if (occ.has("GROUP_NO") || occ.has("GROUP_MA")) select_nodes(occ, *ma->mesh);
+      selected_steps(occ, *resu);
+      agree_over_ranks(nullptr);
+      EvolNoli& whole = gathered.emplace_back();
+      whole.user_name = resu->user_name;
+      whole.steps = gather_steps_to_root(*ma->part, resu->steps);
+    }
     // Atomic: a good file is never replaced by a truncated one.
     engine::write_file_atomically(path, [&](std::ostream& out) {
-      for (const auto& occ : args.factors("RESU")) write_table(out, occ, *occ.concept_as<EvolNoli>("RESULTAT"));
+      size_t k = 0;
+      for (const auto& occ : args.factors("RESU")) {
+        const auto resu = occ.concept_as<EvolNoli>("RESULTAT");
+        const auto& ma = resu->modele->maillage;
+        if (ma->part) write_table(out, occ, gathered[k++], *ma->whole);
+        else write_table(out, occ, *resu, *ma->mesh);
+      }
     });
     session.log().info("  written " + path.string());
     return nullptr;
   }
   const auto path = output_path(args, session, "rmed");
   std::shared_ptr<engine::Mesh> mesh;
+  std::shared_ptr<Maillage> maillage;
   std::vector<engine::MedResult> results;
   std::deque<std::vector<engine::ResultStep>> selections;  // steps chosen by NUME_ORDRE / NOM_CHAM (stable addresses)
   for (const auto& occ : args.factors("RESU")) {
@@ -119,12 +142,16 @@ ConceptPtr impr_resu(const Args& args, Session& session) {
                                                       "FORMAT='RESULTAT' prints chosen nodes)",
                         kw);
     std::shared_ptr<engine::Mesh> this_mesh;
-    if (occ.has("MAILLAGE")) this_mesh = occ.concept_as<Maillage>("MAILLAGE")->mesh;
+    if (occ.has("MAILLAGE")) {
+      maillage = occ.concept_as<Maillage>("MAILLAGE");
+      this_mesh = maillage->mesh;
+    }
     if (occ.has("RESULTAT")) {
       auto resu = occ.concept_as<EvolNoli>("RESULTAT");
       if (this_mesh && this_mesh != resu->modele->maillage->mesh)
         throw occ.error("MAILLAGE", "the mesh of RESULTAT '" + resu->user_name + "'", "another mesh");
       this_mesh = resu->modele->maillage->mesh;
+      maillage = resu->modele->maillage;
       const std::vector<engine::ResultStep>* steps = &resu->steps;
       if (occ.has("NUME_ORDRE") || occ.has("NOM_CHAM")) steps = &selections.emplace_back(selected_steps(occ, *resu));
       results.push_back({resu->user_name.empty() ? "RESU" : resu->user_name, steps});
@@ -137,6 +164,16 @@ ConceptPtr impr_resu(const Args& args, Session& session) {
     if (this_mesh) mesh = this_mesh;
   }
   if (!mesh) throw args.error("RESU", "RESULTAT or MAILLAGE in RESU", "neither");
+  if (maillage->part) {
+    // A mesh in parts: every field gathered to rank 0, which writes them on the whole mesh it
+    // read (the file of the serial run); the others write nothing.
+    agree_over_ranks(nullptr);
+    std::deque<std::vector<engine::ResultStep>> wholes;
+    for (auto& result : results) result.steps = &wholes.emplace_back(gather_steps_to_root(*maillage->part, *result.steps));
+    if (engine::parallel::rank() == 0) engine::write_med(path.string(), *maillage->whole, results);
+    session.log().info("  written " + path.string());
+    return nullptr;
+  }
   engine::write_med(path.string(), *mesh, results);
   session.log().info("  written " + path.string());
   return nullptr;

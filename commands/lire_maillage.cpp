@@ -4,13 +4,14 @@
 
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
-#include "engine/io/gmsh_reader.hpp"
 #include "commands/failures.hpp"
+#include "engine/io/gmsh_reader.hpp"
 #include "engine/io/med_reader.hpp"
 #include "engine/mesh/mesh_bytes.hpp"
 #include "engine/mesh/mesh_checks.hpp"
 #include "engine/mesh/orientation.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
+#include "commands/parts.hpp"
 
 namespace lunaster::cmd {
 
@@ -71,7 +72,19 @@ ConceptPtr lire_maillage(const Args& args, Session& session) {
   result->source_file = path.string();
   std::vector<int> reoriented;
   namespace parallel = engine::parallel;
-  if (parallel::size() == 1) {
+  if (args.has("PARTITIONNEUR")) {
+    // A mesh in parts: rank 0 reads the file, cuts the mesh with Scotch and sends each rank its
+    // part (its cells, the ghost layer, their nodes, every group restricted); it keeps the whole
+    // mesh for IMPR_RESU. From here on the commands agree over the ranks (commands/parts.hpp).
+    set_parts_in_run(true);
+    if (parallel::rank() == 0) result->whole = std::make_shared<engine::Mesh>();
+    agreed([&] {
+      if (result->whole) reoriented = read_mesh_file(args, format, path, *result->whole);
+    });
+    result->part = std::make_shared<engine::MeshPart>(engine::distribute_mesh(result->whole.get()));
+    result->part->mesh.is_part = true;
+    result->mesh = std::shared_ptr<engine::Mesh>(result->part, &result->part->mesh);
+  } else if (parallel::size() == 1) {
     reoriented = read_mesh_file(args, format, path, *result->mesh);
   } else {
     // Under mpirun the file is read once, by rank 0, which sends the mesh (reoriented) to the
@@ -99,7 +112,9 @@ ConceptPtr lire_maillage(const Args& args, Session& session) {
       if (parallel::rank() != 0) *result->mesh = engine::mesh_from_bytes(bytes);
     }
   }
-  const auto& mesh = *result->mesh;
+  // What the log says of the mesh is said of the whole mesh (rank 0 holds it with a part).
+  const auto& mesh = result->whole ? *result->whole : *result->mesh;
+  if (result->part && !result->whole) return result;  // a rank other than 0 logs nothing
   if (const auto orphans = engine::unreferenced_nodes(mesh); !orphans.empty()) {
     std::string names;
     for (size_t i = 0; i < orphans.size() && i < 10; ++i) names += (i ? ", " : "") + mesh.node_names[orphans[i]];
@@ -109,6 +124,11 @@ ConceptPtr lire_maillage(const Args& args, Session& session) {
   }
   session.log().info("  mesh " + path.filename().string() + ": " + std::to_string(mesh.n_nodes()) + " nodes, " +
                      std::to_string(mesh.n_cells()) + " cells, dimension " + std::to_string(mesh.dim));
+  if (result->part)
+    session.log().info("  mesh in " + std::to_string(result->part->parts) + " part(s) (PARTITIONNEUR = '" +
+                       args.text("PARTITIONNEUR") + "': Scotch on rank 0), this rank's " +
+                       std::to_string(result->part->n_owned_nodes) + " owned nodes and " +
+                       std::to_string(result->part->mesh.n_nodes() - result->part->n_owned_nodes) + " ghosts");
   if (!reoriented.empty()) {
     std::string names;
     for (size_t i = 0; i < reoriented.size() && i < 5; ++i) names += (i ? ", " : "") + mesh.cell_names[reoriented[i]];

@@ -22,7 +22,7 @@ std::string format_vector(const std::vector<double>& v) {
 }
 
 /// One ROTATION occurrence: the axis is DIR, or POIN_2 - POIN_1, or z; in a 2D mesh it must be along z.
-void rotate(const Args& occ, engine::Mesh& mesh, Session& session) {
+void rotate(const Args& occ, engine::Mesh& mesh, Session& session, bool say) {
   const std::vector<double> p1 = occ.reals("POIN_1");
   const std::array<double, 3> point = {p1[0], p1[1], p1.size() > 2 ? p1[2] : 0.0};
   std::array<double, 3> axis = {0.0, 0.0, 1.0};
@@ -52,18 +52,32 @@ void rotate(const Args& occ, engine::Mesh& mesh, Session& session) {
   const double degrees = occ.real("ANGLE");
   constexpr double kPi = 3.14159265358979323846;
   engine::rotate_mesh(mesh, point, axis, degrees * kPi / 180.0);
+  if (!say) return;
   std::ostringstream msg;
   msg << "  ROTATION: " << mesh.n_nodes() << " nodes rotated by " << degrees << " degrees about "
       << format_vector({axis[0], axis[1], axis[2]}) << " through " << format_vector({point[0], point[1], point[2]});
   session.log().info(msg.str());
 }
 
+/// The occurrences of MODI_MAILLAGE on one mesh; `say` logs what they did.
+void modify(const Args& args, engine::Mesh& mesh, Session& session, bool say);
+
 }  // namespace
 
 ConceptPtr modi_maillage(const Args& args, Session& session) {
   auto ma = args.concept_as<Maillage>("MAILLAGE");
-  engine::Mesh& mesh = *ma->mesh;
-  for (const auto& occ : args.factors("ROTATION")) rotate(occ, mesh, session);
+  // A mesh in parts: each rank changes its part (a boundary cell's volume cell is in every part
+  // holding it), and rank 0 the whole mesh as well, which it writes and logs.
+  std::vector<engine::Mesh*> meshes{ma->mesh.get()};
+  if (ma->whole) meshes.push_back(ma->whole.get());
+  for (engine::Mesh* mesh : meshes) modify(args, *mesh, session, mesh == meshes.back() && (!ma->part || ma->whole));
+  return ma;
+}
+
+namespace {
+
+void modify(const Args& args, engine::Mesh& mesh, Session& session, bool say) {
+  for (const auto& occ : args.factors("ROTATION")) rotate(occ, mesh, session, say);
   for (const char* kw : {"ORIE_PEAU_2D", "ORIE_PEAU_3D"}) {
     for (const auto& occ : args.factors(kw)) {
       const int needed = std::string(kw) == "ORIE_PEAU_2D" ? 2 : 3;
@@ -73,12 +87,14 @@ ConceptPtr modi_maillage(const Args& args, Session& session) {
       for (const auto& g : occ.texts("GROUP_MA")) {
         const auto cells = cell_group(occ, "GROUP_MA", mesh, g);
         const int flipped = engine::orient_boundary_outward(mesh, cells);
-        session.log().info("  " + std::string(kw) + " " + g + ": " + std::to_string(flipped) + " of " +
+        if (say)
+          session.log().info("  " + std::string(kw) + " " + g + ": " + std::to_string(flipped) + " of " +
                            std::to_string(cells.size()) + " cells reoriented");
       }
     }
   }
-  return ma;
 }
+
+}  // namespace
 
 }  // namespace lunaster::cmd

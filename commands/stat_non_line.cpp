@@ -6,6 +6,7 @@
 
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
+#include "commands/parts.hpp"
 #include "commands/selection.hpp"
 #include "commands/failures.hpp"
 #include "engine/contact/contact_factory.hpp"
@@ -280,6 +281,13 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     session.log().info("  SOLVEUR METHODE = 'MUMPS', MATR_DISTRIBUEE = 'OUI' from the command line (--solveur=MUMPS)" +
                        (asked == "MUMPS" ? std::string() : ", in place of the deck's METHODE = '" + asked + "'"));
   }
+  const std::shared_ptr<engine::MeshPart> part = result->modele->maillage->part;
+  if (part && options.auto_solver) {
+    // On a mesh in parts the matrix is in parts too: MUMPS takes it as given (code_aster's
+    // default METHODE), where AUTO would choose among solvers of one process.
+    options.solver = engine::SolverKind::Mumps, options.auto_solver = false;
+    session.log().info("  SOLVEUR METHODE = 'AUTO' on a mesh in parts: MUMPS, the matrix given in parts");
+  }
   options.krylov_history = args.integer("INFO") >= 2;
   read_newton(args.factor("NEWTON"), contact != nullptr, options);
   const std::vector<double> times = instants(args.factor("INCREMENT"), options);
@@ -351,6 +359,12 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
   }
   result->loads = loads;
   engine::StaticSolver solver(model, loads, options, hook.get(), session.log());
+  if (part) {
+    // Every rank has read its part of the deck's model and loads before the first collective
+    // call of the solve: one that failed stops all alike (commands/parts.hpp).
+    agree_over_ranks(nullptr);
+    solver.set_part(part.get());
+  }
   {
     Session::Timer timer(session, "solve");
     try {
@@ -363,7 +377,11 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
         err.add_hint("NEWTON: REAC_ITER = " + std::to_string(options.reac_iter) +
                      " reuses the factorisation between iterations (a modified Newton, slower to converge); "
                      "REAC_ITER = 1 refactorises at every iteration");
-      save_converged_steps(solver.converged_steps(), *model.mesh, session, err);
+      if (part && solver.converged_steps().size() > 1)  // saving them gathers the parts to rank 0: not written yet
+        err.add_hint("the converged steps of a mesh in parts are not saved (read the mesh without PARTITIONNEUR to "
+                     "keep them)");
+      else if (!part)
+        save_converged_steps(solver.converged_steps(), *model.mesh, session, err);
       throw;
     }
   }

@@ -7,8 +7,10 @@
 
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
+#include "commands/parts.hpp"
 #include "commands/selection.hpp"
 #include "commands/test_report.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::cmd {
 
@@ -46,6 +48,67 @@ double reduce(const std::string& type, const std::vector<double>& v) {
   return s;
 }
 
+/// probe_value on a mesh in parts: each node's value from the rank owning it; a TYPE_TEST
+/// reduction over each rank's owned nodes, then over the ranks. Collective; every rank returns
+/// the same probe.
+Probe probe_in_parts(const Args& occ, const engine::MeshPart& part, const engine::NodalField& f, int cmp) {
+  namespace parallel = engine::parallel;
+  const engine::Mesh& mesh = part.mesh;
+  const bool reduced = occ.has("TYPE_TEST");
+  std::vector<int> nodes;
+  if (!reduced || occ.has("GROUP_NO") || occ.has("NOEUD") || occ.has("GROUP_MA")) {
+    nodes = select_nodes(occ, mesh);
+  } else {
+    for (int n = 0; n < mesh.n_nodes(); ++n) nodes.push_back(n);
+  }
+  agree_over_ranks(nullptr);  // the selection is the whole mesh's on every rank (names, empty groups)
+  std::vector<double> values;  // the selected owned nodes' values
+  int owned = 0;
+  for (int n : nodes)
+    if (part.owns(n)) {
+      ++owned;
+      if (f.has(n, cmp)) values.push_back(f.value(n, cmp));
+    }
+  double counts[2] = {static_cast<double>(owned), static_cast<double>(values.size())};
+  parallel::sum_over_ranks(counts, 2);
+  if (counts[1] == 0)
+    throw occ.error("NOM_CMP", "a component defined on the selected nodes", "'" + f.components[cmp] + "' undefined there");
+  Probe p;
+  if (reduced) {
+    const std::string type = occ.text("TYPE_TEST");
+    if (type == "MIN" || type == "MAX") {
+      const double sign = type == "MAX" ? 1.0 : -1.0;
+      double best = -std::numeric_limits<double>::infinity();
+      for (double x : values) best = std::max(best, sign * x);
+      p.value = sign * parallel::max_over_ranks(best);
+    } else {
+      double sum = values.empty() ? 0.0 : reduce(type, values);
+      parallel::sum_over_ranks(&sum, 1);
+      p.value = sum;
+    }
+    p.where = type;
+    if (occ.has("GROUP_NO")) p.where += "(" + occ.texts("GROUP_NO").front() + ")";
+    else if (occ.has("GROUP_MA")) p.where += "(" + occ.texts("GROUP_MA").front() + ")";
+    return p;
+  }
+  const char* kw = occ.has("GROUP_NO") ? "GROUP_NO" : "NOEUD";
+  if (counts[0] != 1)
+    throw occ.error(kw, "a single node (or TYPE_TEST to reduce over a group)",
+                    std::to_string(static_cast<long long>(counts[0])) + " nodes");
+  // The one owner gives the value and the node's name.
+  const int owner = static_cast<int>(parallel::max_over_ranks(owned == 1 ? part.rank : -1));
+  p.value = values.empty() ? 0.0 : values.front();
+  parallel::broadcast_from(owner, &p.value, 1);
+  if (occ.has("GROUP_NO")) {
+    p.where = occ.texts("GROUP_NO").front();
+  } else {
+    for (int n : nodes)
+      if (part.owns(n)) p.where = mesh.node_names[n];
+    parallel::broadcast_from(owner, p.where);
+  }
+  return p;
+}
+
 Probe probe_value(const Args& occ, const EvolNoli& resu, const engine::ResultStep& step) {
   const engine::Mesh& mesh = *resu.modele->maillage->mesh;
   const std::string cham = occ.text("NOM_CHAM");
@@ -64,6 +127,7 @@ Probe probe_value(const Args& occ, const EvolNoli& resu, const engine::ResultSte
     for (const auto& c : f.components) have += (have.empty() ? "" : ", ") + c;
     throw occ.error("NOM_CMP", "a component of " + cham + " (" + have + ")", "'" + cmp_name + "'");
   }
+  if (resu.modele->maillage->part) return probe_in_parts(occ, *resu.modele->maillage->part, f, cmp);
   Probe p;
   if (occ.has("TYPE_TEST")) {
     std::vector<int> nodes;
