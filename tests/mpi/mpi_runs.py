@@ -26,6 +26,11 @@ usage: mpi_runs.py CASE LUNASTER MESHGEN SOURCE_DIR SCRATCH_DIR
                 mpirun refuses; verify --np without mpirun on the PATH says so; budgets under
                 verify --np 2 (TIMEOUT, OUT_OF_MEMORY); a launcher that outlives the time limit
                 is asked to end (SIGTERM) and the deck reported TIMEOUT
+  parts_suite   the linear-elastic decks with every mesh read in parts (LIRE_MAILLAGE PARTITIONNEUR), on 1, 2
+                and 3 ranks, against the serial run on whole meshes: values to 1e-8 of themselves or of
+                their field's scale, the MED file and the table IMPR_RESU writes; errors found on one
+                rank's part (a node name no part holds, an AXIS cell at x < 0, a command not written
+                for parts) stop every rank with one error and the deck's status
   rank_failure  a rank that fails alone brings the run down: a budget stop inside the collective
                 MUMPS factorisation (time limit on every rank; memory limit on rank 0 only, then
                 on rank 1 only); a rank that stops on a deck error while the other waits for it in
@@ -203,7 +208,9 @@ def shared_suite(exe, source, scratch):
     solving = [n for n, d in s.items() if "STAT_NON_LINE" in d["output"] or "MECA_NON_LINE" in d["output"]]
     for ranks in (2, 3):
         p = reports[f"np{ranks}_mumps"]
-        unshared = [n for n in solving if n not in p or f"model shared among {ranks} ranks" not in p[n]["output"]]
+        # A deck that reads its mesh in parts (PARTITIONNEUR) solves on them rather than sharing a whole model.
+        unshared = [n for n in solving if n not in p or (f"model shared among {ranks} ranks" not in p[n]["output"] and
+                                                         f"mesh in parts on {ranks} ranks" not in p[n]["output"])]
         check(len(solving) >= (50 if whole else len(decks)) and not unshared,
               f"{ranks} ranks: every deck that solves ({len(solving)}) shares its model among them (not: {unshared[:5]})")
         check(all("--solveur=MUMPS" in p[n]["output"] for n in solving if n in p),
@@ -296,8 +303,10 @@ def med_datasets(path):
     return out
 
 
-def same_med(a, b):
-    """Differences between two MED files: the same datasets and attributes, floats to 1e-8."""
+def same_med(a, b, field_scale=False):
+    """Differences between two MED files: the same datasets and attributes, floats to 1e-8 (of
+    themselves or 1e-8; with `field_scale`, or of the largest value of their dataset: a value zero
+    analytically is round-off of its field's size, which two solvers give differently)."""
     import numpy
 
     da, db = med_datasets(a), med_datasets(b)
@@ -310,13 +319,36 @@ def same_med(a, b):
             problems.append(f"{key}: {x.dtype}{x.shape} against {y.dtype}{y.shape}")
         elif numpy.issubdtype(x.dtype, numpy.floating):
             n_values += x.size
-            bad = numpy.abs(x - y) > numpy.maximum(1e-8 * numpy.maximum(numpy.abs(x), numpy.abs(y)), 1e-8)
+            floor = 1e-8 * max(float(numpy.abs(x).max(initial=0.0)), 1.0) if field_scale else 1e-8
+            bad = numpy.abs(x - y) > numpy.maximum(1e-8 * numpy.maximum(numpy.abs(x), numpy.abs(y)), floor)
             if bad.any():
                 i = int(numpy.argmax(bad.ravel()))
                 problems.append(f"{key}: {int(bad.sum())} value(s) differ, first {x.ravel()[i]!r} against {y.ravel()[i]!r}")
         elif not numpy.array_equal(x, y):
             problems.append(f"{key}: differs")
     return problems, len(da), n_values
+
+
+def same_table(a, b):
+    """Differences between two IMPR_RESU FORMAT='RESULTAT' files: the same text but numbers, each to
+    1e-8 of itself or of the largest value of its field at its step."""
+    number = re.compile(r"[-+]?\d+\.\d+e[-+]\d+")
+    la, lb = a.read_text().splitlines(), b.read_text().splitlines()
+    if len(la) != len(lb):
+        return [f"{len(la)} lines against {len(lb)}"]
+    problems, scale = [], 0.0
+    for k, (x, y) in enumerate(zip(la, lb)):
+        if x.startswith("CHAMP"):
+            # the field's values: the lines up to the next CHAMP (not this line's INST)
+            block = la[k + 1:k + 1 + next((j for j, l in enumerate(la[k + 1:]) if l.startswith("CHAMP")), len(la))]
+            scale = max([abs(float(v)) for l in block for v in number.findall(l)], default=0.0)
+        nx, ny = number.findall(x), number.findall(y)
+        if number.sub("#", x).split() != number.sub("#", y).split():  # a sign moves the column's spaces
+            problems.append(f"line {k + 1}: {x!r} against {y!r}")
+        elif any(abs(float(u) - float(v)) > max(1e-8 * max(abs(float(u)), abs(float(v))), 1e-8 * scale)
+                 for u, v in zip(nx, ny)):
+            problems.append(f"line {k + 1}: {x!r} against {y!r}")
+    return problems
 
 
 def output_files(folder):
@@ -388,6 +420,124 @@ def outputs(exe, source, scratch):
           f"mpirun -np 2: exactly one MED file in the output folder ({output_files(scratch / 'plain')})")
     check(out.count("check(s) OK") == 1 and len(test_lines(out)) == serial_checks["ssnp121a"],
           f"mpirun -np 2: the TEST_RESU lines and the summary once ({len(test_lines(out))} lines)")
+
+
+# ---------------------------------------------------------------------------------------------
+# The decks of testcases/ that are linear elasticity with what a mesh in parts takes today
+# (docs/distributed-model.md, step 4): their meshes are read in parts for parts_suite.
+PARTS_DECKS = ["patch_2d", "patch_3d", "axis_patch", "axis_thick_cylinder", "clockwise_2d_pressure", "glued_ssnp121_2d",
+               "glued_ssnp121_3d"]
+# The commands a deck with a mesh in parts may not use yet (commands/parts.cpp refuses them).
+NOT_IN_PARTS = re.compile(r"\b(POST_RELEVE_T|IMPR_MESURE|TEST_TABLE|IMPR_TABLE|DEFI_CONTACT|DEFI_CONT|MECA_NON_LINE|"
+                          r"CONTACT|LIAISON_DDL|LIAISON_UNIF|LIAISON_MAIL)\b")
+
+
+def parts_suite(exe, source, scratch):
+    """Linear-elastic decks with their meshes read in parts, under mpirun -np 2 and 3, against the
+    serial run of the same decks on whole meshes: the same checks and statuses, every value to 1e-8
+    of itself or of its field's scale, the same MED file, and errors found on one rank's part
+    stopping every rank alike."""
+    scratch.mkdir(parents=True)
+    whole, parts = scratch / "whole", scratch / "parts"
+    for folder in (whole, parts):
+        shutil.copytree(source / "testcases", folder / "testcases", ignore=shutil.ignore_patterns("errors", "comm"))
+    names = PARTS_DECKS + ["mesh_in_parts"]
+    for name in names:
+        text = (source / "testcases" / f"{name}.lua").read_text()
+        check(not NOT_IN_PARTS.search(text), f"{name}: a deck of linear elasticity without what parts refuse")
+        # The serial reference reads whole meshes; the runs in parts read every mesh in parts.
+        plain = text.replace(", PARTITIONNEUR = 'PTSCOTCH'", "")
+        (whole / "testcases" / f"{name}.lua").write_text(plain)
+        in_parts, n = re.subn(r"LIRE_MAILLAGE\s*\{", "LIRE_MAILLAGE{ PARTITIONNEUR = 'PTSCOTCH',", plain)
+        check(n > 0, f"{name}: its meshes are read in parts ({n} LIRE_MAILLAGE)")
+        (parts / "testcases" / f"{name}.lua").write_text(in_parts)
+    decks = [f"testcases/{n}.lua" for n in names]
+    reports, codes = {}, {}
+    for key, cwd, extra in (("serial", whole, ["-j", "2"]), ("np1", parts, ["-j", "2"]),
+                            ("np2", parts, ["-j", "1", "--np", "2"]), ("np3", parts, ["-j", "1", "--np", "3"])):
+        json_file = scratch / f"{key}.json"
+        codes[key], out, _, seconds = run([exe, "verify", *decks, "--vale-calc=report", *extra, "--out", scratch / key,
+                                           "--json", json_file], cwd, timeout=600)
+        print(f"  {key}: {seconds:.1f} s; " + " / ".join(out.strip().splitlines()[-1:]))
+        reports[key] = compare_checks.decks(json_file)
+    check(set(codes.values()) == {0}, f"every run passes every check ({codes})")
+    s = reports["serial"]
+    check(len(s) == len(decks) and not any("mesh in parts" in d["output"] for d in s.values()),
+          f"the serial reference reads whole meshes ({len(s)} decks)")
+    for key, ranks in (("np1", 1), ("np2", 2), ("np3", 3)):
+        p = reports[key]
+        solves = {n: p[n]["output"].count(f"mesh in parts on {ranks} ranks") for n in p}
+        check(len(p) == len(decks) and all(c > 0 for c in solves.values()),
+              f"{ranks} rank(s): every deck solves on its mesh in parts ({solves})")
+        problems, stats = compare_checks.compare(s, p, 1e-8, 1e-8, field_scale=True)
+        for problem in problems[:20]:
+            print("  DIFFERENT  " + problem)
+        print(f"  {ranks} rank(s): {stats['decks']} decks, {stats['checks']} values; the largest difference is "
+              f"{stats['largest_share']:.2f} of the one allowed ({stats['share_where']})")
+        check(not problems and stats["checks"] > 300,
+              f"{ranks} rank(s): every value in parts equals the whole mesh's to 1e-8 ({len(problems)} difference(s), "
+              f"{stats['checks']} values)")
+    # The MED file and the table IMPR_RESU writes: rank 0 gathers every field on the whole mesh.
+    serial_files = output_files(scratch / "serial")
+    check(any(f.endswith("mesh_in_parts_80.rmed") for f in serial_files), f"the serial run wrote the MED file")
+    for key in ("np1", "np2", "np3"):
+        check(output_files(scratch / key) == serial_files, f"{key}: the files of the serial run ({output_files(scratch / key)})")
+        for f in serial_files:
+            a, b = scratch / "serial" / f, scratch / key / f
+            if f.endswith(".rmed"):
+                problems, n_sets, n_values = same_med(a, b, field_scale=True)
+                for problem in problems[:10]:
+                    print("  " + problem)
+                check(not problems and n_values > 10000,
+                      f"{key}: {f} equals the serial one ({n_sets} datasets/attributes, {n_values} floats to 1e-8 of "
+                      f"themselves or of their field's scale)")
+            elif f.endswith(".resu"):
+                problems = same_table(a, b)
+                check(not problems, f"{key}: {f} as the serial one, numbers to 1e-8 ({problems[:2]})")
+
+    # The table comparison can fail: a number moved by 1e-7 of its field's scale.
+    table = scratch / "np2" / "mesh_in_parts" / "mesh_in_parts_8.resu"
+    moved = scratch / "moved.resu"
+    lines = table.read_text().splitlines()
+    last = re.findall(r"[-+]?\d+\.\d+e[-+]\d+", lines[-2])[-1]
+    lines[-2] = lines[-2].replace(last, f"{float(last) * (1 + 1e-7):.8e}")
+    moved.write_text("\n".join(lines) + "\n")
+    check(len(same_table(table, moved)) == 1, f"the table comparison finds a number moved by 1e-7 ({lines[-2]})")
+
+    # Errors found on parts: each stops every rank alike, said once, with the deck's exit status.
+    deck = parts / "testcases" / "mesh_in_parts.lua"
+    text = deck.read_text()
+    cases = [
+        # a node name no part holds: decided over the ranks
+        ("no_node", text.replace("{ NOEUD = 'N2197' }", "{ NOEUD = 'N99999' }"),
+         r"mesh_in_parts_no_node\.lua:\d+: TEST_RESU: RESU\[3\]\.NOEUD: expected a node name of the mesh, got 'N99999'"),
+        # a node another rank holds is found by its owner alone: no error
+        ("corner", text.replace("{ NOEUD = 'N2197' }", "{ NOEUD = 'N1' }").replace("-1.110918013e-03, { NOEUD", "0.0, { NOEUD"),
+         None),
+        # an AXIS model of a mesh with nodes at x < 0 in some parts only: the rank that finds one stops all
+        ("axis", "DEBUT()\nMA = LIRE_MAILLAGE{ FICHIER = 'meshes/glued2d_quad4.med', PARTITIONNEUR = 'PTSCOTCH' }\n"
+                 "MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', "
+                 "MODELISATION = 'AXIS' } }\nFIN()\n",
+         r"AFFE_MODELE: AFFE(\[1\])?\.MODELISATION: expected 'AXIS' cells with every node at x = r >= 0"),
+        # a command not written for parts
+        ("post", text.replace("FIN()", "T = POST_RELEVE_T{ ACTION = _F{ INTITULE = 'U', RESULTAT = R, NOM_CHAM = 'DEPL', "
+                                       "GROUP_NO = 'C111', TOUT_CMP = 'OUI', OPERATION = 'EXTRACTION' } }\nFIN()"),
+         r"POST_RELEVE_T: ACTION\.RESULTAT: expected a concept on a whole mesh \(POST_RELEVE_T does not take a mesh in "
+         r"parts yet"),
+    ]
+    for name, changed, says in cases:
+        path = deck.with_name(f"mesh_in_parts_{name}.lua")
+        path.write_text(changed)
+        for ranks in (2, 3):
+            code, out, err, _ = run([mpirun(), "-np", ranks, exe, "run", path, "--out", scratch / f"{name}{ranks}"],
+                                    parts, timeout=120)
+            if says is None:
+                check(code == 0 and re.search(r"^ OK .*DEPL  N1  DZ", out, re.M),
+                      f"{name}, {ranks} ranks: node N1 (clamped) found by its owner (exit {code})")
+                continue
+            lines = [l for l in err.splitlines() if re.search(says, l)]
+            check(code == 2 and len(lines) == 1,
+                  f"{name}, {ranks} ranks: exit 2 and the error once ({code}, {len(lines)}: {err.strip()[:300]})")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -545,6 +695,8 @@ def main():
             outputs(exe, source, scratch)
         elif case == "errors":
             errors(exe, source, scratch)
+        elif case == "parts_suite":
+            parts_suite(exe, source, scratch)
         elif case == "rank_failure":
             rank_failure(exe, meshgen, source, scratch)
         else:
