@@ -6,8 +6,10 @@
 
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
+#include "commands/parts.hpp"
 #include "commands/selection.hpp"
 #include "commands/table.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::cmd {
 
@@ -65,10 +67,57 @@ std::vector<int> component_columns(const Args& occ, const engine::NodalField& fi
   return out;
 }
 
+/// One selected node of a mesh in parts, from the rank owning it: its number in the whole mesh,
+/// name, coordinates and the values of the components read.
+struct OwnedNode {
+  double global = 0.0;
+  std::string name;
+  std::vector<double> coords, values;  ///< values: defined (0/1), value, for each component
+};
+
+/// The selected nodes of every rank's part, each once (from its owner), in the whole mesh's
+/// order: the rows of the serial extraction. Collective.
+std::vector<OwnedNode> owned_nodes_everywhere(const engine::MeshPart& part, const std::vector<int>& nodes,
+                                              const engine::NodalField& field, const std::vector<int>& cmps, int dim) {
+  namespace parallel = engine::parallel;
+  const size_t width = 1 + dim + 2 * cmps.size();
+  std::vector<double> numbers;
+  std::string names;
+  for (int node : nodes) {
+    if (!part.owns(node)) continue;
+    numbers.push_back(part.global_node[node]);
+    for (int d = 0; d < dim; ++d) numbers.push_back(part.mesh.node(node)[d]);
+    for (int c : cmps) {
+      numbers.push_back(field.has(node, c) ? 1.0 : 0.0);
+      numbers.push_back(field.has(node, c) ? field.value(node, c) : 0.0);
+    }
+    names += part.mesh.node_names[node] + '\n';
+  }
+  const std::vector<double> all = parallel::gather_all(numbers);
+  const std::string all_names = parallel::gather_all(names);
+  std::vector<OwnedNode> out(all.size() / width);
+  size_t at = 0;
+  for (size_t k = 0; k < out.size(); ++k) {
+    const double* row = &all[k * width];
+    out[k].global = row[0];
+    out[k].coords.assign(row + 1, row + 1 + dim);
+    out[k].values.assign(row + 1 + dim, row + width);
+    const size_t end = all_names.find('\n', at);
+    out[k].name = all_names.substr(at, end - at);
+    at = end + 1;
+  }
+  std::sort(out.begin(), out.end(), [](const OwnedNode& a, const OwnedNode& b) { return a.global < b.global; });
+  return out;
+}
+
 void add_action(const Args& occ, Table& table) {
   auto resu = occ.concept_as<EvolNoli>("RESULTAT");
   const engine::Mesh& mesh = *resu->modele->maillage->mesh;
   const std::vector<int> nodes = select_nodes(occ, mesh);
+  // On a mesh in parts each node is read from its owner, and the ranks' rows or sums are put
+  // together on every rank: the table of the serial run, the same on every rank.
+  const engine::MeshPart* part = resu->modele->maillage->part.get();
+  if (part) agree_over_ranks(nullptr);
   const bool extraction = occ.text("OPERATION") == "EXTRACTION" && !occ.has("RESULTANTE");
   for (const engine::ResultStep* step : selected_steps(occ, *resu)) {
     const engine::NodalField& field = field_of(occ, *step);
@@ -77,6 +126,18 @@ void add_action(const Args& occ, Table& table) {
     const std::vector<std::pair<std::string, Cell>> head = {
         {"INTITULE", occ.text("INTITULE")}, {"RESU", resu->user_name}, {"NOM_CHAM", occ.text("NOM_CHAM")},
         {"NUME_ORDRE", static_cast<long long>(step->nume_ordre)}, {"INST", step->inst}};
+    if (extraction && part) {
+      static const char* coor[] = {"COOR_X", "COOR_Y", "COOR_Z"};
+      for (const OwnedNode& node : owned_nodes_everywhere(*part, nodes, field, cmps, resu->modele->dim)) {
+        auto row = head;
+        row.emplace_back("NOEUD", node.name);
+        for (int d = 0; d < resu->modele->dim; ++d) row.emplace_back(coor[d], node.coords[d]);
+        for (size_t k = 0; k < cmps.size(); ++k)
+          if (node.values[2 * k] != 0.0) row.emplace_back(names[k], node.values[2 * k + 1]);
+        table.add_row(row);
+      }
+      continue;
+    }
     if (extraction) {
       for (int node : nodes) {
         auto row = head;
@@ -93,12 +154,19 @@ void add_action(const Args& occ, Table& table) {
     auto row = head;
     for (size_t k = 0; k < cmps.size(); ++k) {
       double sum = 0.0;
-      int n = 0;
+      double n = 0, selected = static_cast<double>(nodes.size());
+      if (part) selected = static_cast<double>(std::count_if(nodes.begin(), nodes.end(), [&](int v) { return part->owns(v); }));
       for (int node : nodes)
-        if (field.has(node, cmps[k])) sum += field.value(node, cmps[k]), ++n;
+        if ((!part || part->owns(node)) && field.has(node, cmps[k])) sum += field.value(node, cmps[k]), ++n;
+      if (part) {
+        double all[3] = {sum, n, selected};
+        engine::parallel::sum_over_ranks(all, 3);
+        sum = all[0], n = all[1], selected = all[2];
+      }
       if (n == 0)
         throw occ.error(occ.has("RESULTANTE") ? "RESULTANTE" : "NOM_CMP", "a component defined on the selected nodes",
-                        "'" + names[k] + "' undefined on all " + std::to_string(nodes.size()) + " of them");
+                        "'" + names[k] + "' undefined on all " + std::to_string(static_cast<long long>(selected)) +
+                            " of them");
       row.emplace_back(names[k], occ.has("RESULTANTE") ? sum : sum / n);
     }
     table.add_row(row);

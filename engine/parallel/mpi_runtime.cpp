@@ -223,7 +223,7 @@ namespace {
 template <typename T>
 std::vector<T> gather(const std::vector<T>& mine, bool everywhere) {
   if (size() == 1) return mine;
-  const MPI_Datatype type = std::is_same_v<T, double> ? MPI_DOUBLE : MPI_INT;
+  const MPI_Datatype type = std::is_same_v<T, double> ? MPI_DOUBLE : std::is_same_v<T, char> ? MPI_CHAR : MPI_INT;
   const int ranks = size();
   std::vector<int> counts(ranks), offsets(ranks + 1, 0);
   const int count = static_cast<int>(mine.size());
@@ -243,6 +243,11 @@ std::vector<T> gather(const std::vector<T>& mine, bool everywhere) {
 std::vector<int> gather_all(const std::vector<int>& mine) { return gather(mine, true); }
 
 std::vector<double> gather_all(const std::vector<double>& mine) { return gather(mine, true); }
+
+std::string gather_all(const std::string& mine) {
+  const std::vector<char> all = gather(std::vector<char>(mine.begin(), mine.end()), true);
+  return std::string(all.begin(), all.end());
+}
 
 std::vector<int> gather_to_root(const std::vector<int>& mine) { return gather(mine, false); }
 

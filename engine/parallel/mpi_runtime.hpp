@@ -62,6 +62,8 @@ double max_over_ranks(double value);
 /// Every rank's `mine` concatenated in rank order, on every rank.
 std::vector<int> gather_all(const std::vector<int>& mine);
 std::vector<double> gather_all(const std::vector<double>& mine);
+/// Every rank's `mine` concatenated in rank order, on every rank.
+std::string gather_all(const std::string& mine);
 /// Every rank's `mine` concatenated in rank order, on rank 0 only (empty elsewhere).
 std::vector<int> gather_to_root(const std::vector<int>& mine);
 std::vector<double> gather_to_root(const std::vector<double>& mine);

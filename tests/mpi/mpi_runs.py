@@ -30,7 +30,8 @@ usage: mpi_runs.py CASE LUNASTER MESHGEN SOURCE_DIR SCRATCH_DIR
                 and 3 ranks, against the serial run on whole meshes: values to 1e-8 of themselves or of
                 their field's scale, the MED file and the table IMPR_RESU writes; errors found on one
                 rank's part (a node name no part holds, an AXIS cell at x < 0, a command not written
-                for parts) stop every rank with one error and the deck's status
+                for parts) stop every rank with one error and the deck's status; the tables
+                POST_RELEVE_T makes are the serial ones on every rank (reactions_tables.lua)
   rank_failure  a rank that fails alone brings the run down: a budget stop inside the collective
                 MUMPS factorisation (time limit on every rank; memory limit on rank 0 only, then
                 on rank 1 only); a rank that stops on a deck error while the other waits for it in
@@ -330,13 +331,15 @@ def same_med(a, b, field_scale=False):
 
 
 def same_table(a, b):
-    """Differences between two IMPR_RESU FORMAT='RESULTAT' files: the same text but numbers, each to
-    1e-8 of itself or of the largest value of its field at its step."""
-    number = re.compile(r"[-+]?\d+\.\d+e[-+]\d+")
+    """Differences between two text results (IMPR_RESU FORMAT='RESULTAT', IMPR_TABLE): the same text
+    but numbers, each to 1e-8 of itself or of the largest value of its field at its step (of the
+    file, for a table)."""
+    number = re.compile(r"[-+]?\d+\.\d+[eE][-+]\d+")
     la, lb = a.read_text().splitlines(), b.read_text().splitlines()
     if len(la) != len(lb):
         return [f"{len(la)} lines against {len(lb)}"]
-    problems, scale = [], 0.0
+    problems = []
+    scale = max([abs(float(v)) for l in la for v in number.findall(l)], default=0.0)
     for k, (x, y) in enumerate(zip(la, lb)):
         if x.startswith("CHAMP"):
             # the field's values: the lines up to the next CHAMP (not this line's INST)
@@ -426,10 +429,9 @@ def outputs(exe, source, scratch):
 # The decks of testcases/ that are linear elasticity with what a mesh in parts takes today
 # (docs/distributed-model.md, step 4): their meshes are read in parts for parts_suite.
 PARTS_DECKS = ["patch_2d", "patch_3d", "axis_patch", "axis_thick_cylinder", "clockwise_2d_pressure", "glued_ssnp121_2d",
-               "glued_ssnp121_3d"]
-# The commands a deck with a mesh in parts may not use yet (commands/parts.cpp refuses them).
-NOT_IN_PARTS = re.compile(r"\b(POST_RELEVE_T|IMPR_MESURE|TEST_TABLE|IMPR_TABLE|DEFI_CONTACT|DEFI_CONT|MECA_NON_LINE|"
-                          r"CONTACT|LIAISON_DDL|LIAISON_UNIF|LIAISON_MAIL)\b")
+               "glued_ssnp121_3d", "reactions_tables"]
+# What a deck with a mesh in parts may not use yet (commands/parts.cpp and AFFE_CHAR_MECA refuse them).
+NOT_IN_PARTS = re.compile(r"\b(IMPR_MESURE|DEFI_CONTACT|DEFI_CONT|CONTACT|LIAISON_DDL|LIAISON_UNIF|LIAISON_MAIL)\b")
 
 
 def parts_suite(exe, source, scratch):
@@ -491,7 +493,7 @@ def parts_suite(exe, source, scratch):
                 check(not problems and n_values > 10000,
                       f"{key}: {f} equals the serial one ({n_sets} datasets/attributes, {n_values} floats to 1e-8 of "
                       f"themselves or of their field's scale)")
-            elif f.endswith(".resu"):
+            else:  # IMPR_RESU's and IMPR_TABLE's text files
                 problems = same_table(a, b)
                 check(not problems, f"{key}: {f} as the serial one, numbers to 1e-8 ({problems[:2]})")
 
@@ -514,16 +516,16 @@ def parts_suite(exe, source, scratch):
         # a node another rank holds is found by its owner alone: no error
         ("corner", text.replace("{ NOEUD = 'N2197' }", "{ NOEUD = 'N1' }").replace("-1.110918013e-03, { NOEUD", "0.0, { NOEUD"),
          None),
+        # code_aster 17's MECA_NON_LINE solves on the parts as STAT_NON_LINE does: the same values
+        ("meca", text.replace("R = STAT_NON_LINE{", "R = MECA_NON_LINE{"), None),
         # an AXIS model of a mesh with nodes at x < 0 in some parts only: the rank that finds one stops all
         ("axis", "DEBUT()\nMA = LIRE_MAILLAGE{ FICHIER = 'meshes/glued2d_quad4.med', PARTITIONNEUR = 'PTSCOTCH' }\n"
                  "MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', "
                  "MODELISATION = 'AXIS' } }\nFIN()\n",
          r"AFFE_MODELE: AFFE(\[1\])?\.MODELISATION: expected 'AXIS' cells with every node at x = r >= 0"),
         # a command not written for parts
-        ("post", text.replace("FIN()", "T = POST_RELEVE_T{ ACTION = _F{ INTITULE = 'U', RESULTAT = R, NOM_CHAM = 'DEPL', "
-                                       "GROUP_NO = 'C111', TOUT_CMP = 'OUI', OPERATION = 'EXTRACTION' } }\nFIN()"),
-         r"POST_RELEVE_T: ACTION\.RESULTAT: expected a concept on a whole mesh \(POST_RELEVE_T does not take a mesh in "
-         r"parts yet"),
+        ("mesure", text.replace("FIN()", "IMPR_MESURE{ RESULTAT = R, FICHIER = 'cost.txt' }\nFIN()"),
+         r"IMPR_MESURE: RESULTAT: expected a concept on a whole mesh \(IMPR_MESURE does not take a mesh in parts yet"),
     ]
     for name, changed, says in cases:
         path = deck.with_name(f"mesh_in_parts_{name}.lua")
@@ -532,8 +534,10 @@ def parts_suite(exe, source, scratch):
             code, out, err, _ = run([mpirun(), "-np", ranks, exe, "run", path, "--out", scratch / f"{name}{ranks}"],
                                     parts, timeout=120)
             if says is None:
-                check(code == 0 and re.search(r"^ OK .*DEPL  N1  DZ", out, re.M),
-                      f"{name}, {ranks} ranks: node N1 (clamped) found by its owner (exit {code})")
+                check(code == 0 and out.count("check(s) OK, 0 NOOK") == 1 and "mesh in parts on" in out,
+                      f"{name}, {ranks} ranks: every check passes on the mesh in parts (exit {code})")
+                if name == "corner":
+                    check(re.search(r"^ OK .*DEPL  N1  DZ", out, re.M), f"{name}, {ranks} ranks: node N1 found by its owner")
                 continue
             lines = [l for l in err.splitlines() if re.search(says, l)]
             check(code == 2 and len(lines) == 1,
