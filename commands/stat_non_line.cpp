@@ -282,6 +282,11 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
                        (asked == "MUMPS" ? std::string() : ", in place of the deck's METHODE = '" + asked + "'"));
   }
   const std::shared_ptr<engine::MeshPart> part = result->modele->maillage->part;
+  if (part && options.solver == engine::SolverKind::Mumps && !options.share_model)
+    // Each rank holds its part only: no rank can assemble the whole system MATR_DISTRIBUEE='NON' asks for.
+    throw args.factor("SOLVEUR").error("MATR_DISTRIBUEE", "'OUI' on a mesh in parts (each rank holds its part, the "
+                                                          "matrix is given in parts)",
+                                       "'NON'", {"remove MATR_DISTRIBUEE, or read the mesh without PARTITIONNEUR"});
   if (part && options.auto_solver) {
     // On a mesh in parts the matrix is in parts too: MUMPS takes it as given (code_aster's
     // default METHODE), where AUTO would choose among solvers of one process.
