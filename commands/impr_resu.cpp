@@ -111,11 +111,11 @@ ConceptPtr impr_resu(const Args& args, Session& session) {
       const auto& ma = resu->modele->maillage;
       if (!ma->part) continue;
       if (occ.has("GROUP_NO") || occ.has("GROUP_MA")) select_nodes(occ, *ma->mesh);
-      selected_steps(occ, *resu);
+      const std::vector<engine::ResultStep> chosen = selected_steps(occ, *resu);  // only these are gathered
       agree_over_ranks(nullptr);
       EvolNoli& whole = gathered.emplace_back();
       whole.user_name = resu->user_name;
-      whole.steps = gather_steps_to_root(*ma->part, resu->steps);
+      whole.steps = gather_steps_to_root(*ma->part, chosen);
     }
     // Atomic: a good file is never replaced by a truncated one.
     engine::write_file_atomically(path, [&](std::ostream& out) {
@@ -169,7 +169,8 @@ ConceptPtr impr_resu(const Args& args, Session& session) {
     // read (the file of the serial run); the others write nothing.
     agree_over_ranks(nullptr);
     std::deque<std::vector<engine::ResultStep>> wholes;
-    for (auto& result : results) result.steps = &wholes.emplace_back(gather_steps_to_root(*maillage->part, *result.steps));
+    for (auto& result : results)
+      result.steps = &wholes.emplace_back(gather_steps_to_root(*maillage->part, *result.steps));
     if (engine::parallel::rank() == 0) engine::write_med(path.string(), *maillage->whole, results);
     session.log().info("  written " + path.string());
     return nullptr;
