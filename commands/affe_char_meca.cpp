@@ -46,7 +46,8 @@ void read_pres_rep(const Args& occ, const Modele& mo, CharMeca& load) {
     if (engine::cell_info(mesh.cell_types[c]).dim == mo.dim - 1) cells.push_back(c);
   // On a part, the boundary cells may all be on other ranks: the ranks decide.
   require_somewhere(mesh, !cells.empty(),
-                    occ.error("GROUP_MA", "boundary cells (" + std::string(mo.dim == 2 ? "SEG2/SEG3" : "TRIA/QUAD") + ")",
+                    occ.error("GROUP_MA",
+                              "boundary cells (" + std::string(mo.dim == 2 ? "SEG2/SEG3" : "TRIA/QUAD") + ")",
                               "a selection without any"));
   load.pressures.push_back({cells, occ.real("PRES"), 0});
 }

@@ -19,7 +19,8 @@ void create_node_groups(const Args& occ, engine::Mesh& mesh, Session& session, b
       const auto& cells = cell_group(occ, "GROUP_MA", mesh, g);
       const std::string name = occ.has("NOM") ? occ.text("NOM") : g;
       mesh.add_to_node_group(name, mesh.nodes_of_cells(cells));
-      if (say) session.log().info("  node group " + name + ": " + std::to_string(mesh.node_groups[name].size()) + " nodes");
+      if (say)
+        session.log().info("  node group " + name + ": " + std::to_string(mesh.node_groups[name].size()) + " nodes");
     }
     return;
   }
@@ -57,7 +58,8 @@ ConceptPtr defi_group(const Args& args, Session& session) {
     const bool say = mesh == meshes.back() && (!ma->part || ma->whole);
     for (const auto& occ : args.factors("CREA_GROUP_MA")) {
       const std::vector<int> cells = select_cells(occ, *mesh);
-      require_somewhere(*mesh, !cells.empty(), occ.error("NOM", "a selection of at least one cell", "an empty selection"));
+      require_somewhere(*mesh, !cells.empty(),
+                        occ.error("NOM", "a selection of at least one cell", "an empty selection"));
       mesh->add_to_cell_group(occ.text("NOM"), cells);
     }
     for (const auto& occ : args.factors("CREA_GROUP_NO")) create_node_groups(occ, *mesh, session, say);

@@ -5,13 +5,13 @@
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
 #include "commands/failures.hpp"
+#include "commands/parts.hpp"
 #include "engine/io/gmsh_reader.hpp"
 #include "engine/io/med_reader.hpp"
 #include "engine/mesh/mesh_bytes.hpp"
 #include "engine/mesh/mesh_checks.hpp"
 #include "engine/mesh/orientation.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
-#include "commands/parts.hpp"
 
 namespace lunaster::cmd {
 

@@ -27,7 +27,8 @@ engine::NodalField gather_nodal(const engine::MeshPart& part, const engine::Noda
   out = engine::NodalField(f.components, part.n_global_nodes);
   for (int n = 0; n < part.n_global_nodes; ++n)
     for (int c = 0; c < m; ++c)
-      if (whole[(static_cast<size_t>(n) * 2 + 1) * m + c] != 0.0) out.set(n, c, whole[(static_cast<size_t>(n) * 2) * m + c]);
+      if (whole[(static_cast<size_t>(n) * 2 + 1) * m + c] != 0.0)
+        out.set(n, c, whole[(static_cast<size_t>(n) * 2) * m + c]);
   return out;
 }
 
@@ -43,7 +44,8 @@ engine::ElnoField gather_elno(const engine::MeshPart& part, const engine::ElnoFi
   for (int c = 0; c < f.n_cells(); ++c) {
     double* at = &packed[static_cast<size_t>(c) * block];
     at[0] = f.n_rows(c);
-    std::copy_n(f.values.begin() + static_cast<long>(f.cell_offsets[c]) * m, static_cast<long>(f.n_rows(c)) * m, at + 1);
+    std::copy_n(f.values.begin() + static_cast<long>(f.cell_offsets[c]) * m, static_cast<long>(f.n_rows(c)) * m,
+                at + 1);
   }
   const std::vector<double> whole = engine::gather_cells_to_root(part, packed, block);
   engine::ElnoField out;

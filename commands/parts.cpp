@@ -36,7 +36,8 @@ bool& parts_flag() {
 
 /// An error as bytes: kind, keyword path, message, hints, each ended by a zero byte.
 std::string to_bytes(const Error& e) {
-  std::string out = std::to_string(static_cast<int>(e.kind())) + '\0' + e.context().keyword_path + '\0' + e.message() + '\0';
+  std::string out = std::to_string(static_cast<int>(e.kind())) + '\0' + e.context().keyword_path + '\0';
+  out += e.message() + '\0';
   for (const auto& hint : e.hints()) out += hint + '\0';
   return out;
 }

@@ -155,7 +155,8 @@ void add_action(const Args& occ, Table& table) {
     for (size_t k = 0; k < cmps.size(); ++k) {
       double sum = 0.0;
       double n = 0, selected = static_cast<double>(nodes.size());
-      if (part) selected = static_cast<double>(std::count_if(nodes.begin(), nodes.end(), [&](int v) { return part->owns(v); }));
+      if (part)
+        selected = static_cast<double>(std::count_if(nodes.begin(), nodes.end(), [&](int v) { return part->owns(v); }));
       for (int node : nodes)
         if ((!part || part->owns(node)) && field.has(node, cmps[k])) sum += field.value(node, cmps[k]), ++n;
       if (part) {

@@ -46,7 +46,8 @@ const std::vector<int>& cell_group(const catalog::Args& args, const std::string&
     throw args.error(kw, "a cell group of the mesh", "'" + group + "'", suggestion(group, keys_of(mesh.cell_groups)));
   // A part holds every group, maybe empty: whether the group is empty is the whole mesh's.
   const bool filled = !it->second.empty();
-  require_somewhere(mesh, filled, filled ? DeckError("") : args.error(kw, "a non-empty cell group", "'" + group + "', which is empty"));
+  const std::string given = "'" + group + "', which is empty";
+  require_somewhere(mesh, filled, filled ? DeckError("") : args.error(kw, "a non-empty cell group", given));
   return it->second;
 }
 
@@ -55,8 +56,8 @@ std::vector<int> node_group(const catalog::Args& args, const std::string& kw, co
   auto it = mesh.node_groups.find(group);
   if (it != mesh.node_groups.end()) {
     const bool filled = !it->second.empty();
-    require_somewhere(mesh, filled,
-                      filled ? DeckError("") : args.error(kw, "a non-empty node group", "'" + group + "', which is empty"));
+    const std::string given = "'" + group + "', which is empty";
+    require_somewhere(mesh, filled, filled ? DeckError("") : args.error(kw, "a non-empty node group", given));
     return it->second;
   }
   auto cit = mesh.cell_groups.find(group);
@@ -82,7 +83,8 @@ std::vector<int> named_cells(const catalog::Args& args, const engine::Mesh& mesh
       require_somewhere(mesh, c >= 0,
                         c >= 0 ? DeckError("")
                                : args.error("MAILLE", "a cell name of the mesh", "'" + name + "'",
-                                            mesh.is_part ? std::vector<std::string>{} : suggestion(name, mesh.cell_names)));
+                                            mesh.is_part ? std::vector<std::string>{}  // a part has some names
+                                                         : suggestion(name, mesh.cell_names)));
       if (c >= 0) cells.push_back(c);
     }
   return cells;
@@ -121,7 +123,8 @@ std::vector<int> select_nodes(const catalog::Args& args, const engine::Mesh& mes
       require_somewhere(mesh, n >= 0,
                         n >= 0 ? DeckError("")
                                : args.error("NOEUD", "a node name of the mesh", "'" + name + "'",
-                                            mesh.is_part ? std::vector<std::string>{} : suggestion(name, mesh.node_names)));
+                                            mesh.is_part ? std::vector<std::string>{}  // a part has some names
+                                                         : suggestion(name, mesh.node_names)));
       if (n >= 0) nodes.push_back(n);
     }
   if (declared_and_present(args, "GROUP_MA") || declared_and_present(args, "MAILLE"))

@@ -72,7 +72,8 @@ Probe probe_in_parts(const Args& occ, const engine::MeshPart& part, const engine
   double counts[2] = {static_cast<double>(owned), static_cast<double>(values.size())};
   parallel::sum_over_ranks(counts, 2);
   if (counts[1] == 0)
-    throw occ.error("NOM_CMP", "a component defined on the selected nodes", "'" + f.components[cmp] + "' undefined there");
+    throw occ.error("NOM_CMP", "a component defined on the selected nodes",
+                    "'" + f.components[cmp] + "' undefined there");
   Probe p;
   if (reduced) {
     const std::string type = occ.text("TYPE_TEST");

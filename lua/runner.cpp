@@ -93,7 +93,8 @@ void refuse_parts(const std::string& command, const catalog::KwNode& node, const
                             {"read the mesh without PARTITIONNEUR for this deck"});
   for (const auto& [kw, occurrences] : node.factors)
     for (size_t i = 0; i < occurrences.size(); ++i)
-      refuse_parts(command, occurrences[i], path + kw + (occurrences.size() > 1 ? "[" + std::to_string(i + 1) + "]" : "") + ".");
+      refuse_parts(command, occurrences[i],
+                   path + kw + (occurrences.size() > 1 ? "[" + std::to_string(i + 1) + "]" : "") + ".");
 }
 
 }  // namespace
