@@ -37,6 +37,16 @@ bool declared_and_present(const catalog::Args& args, const std::string& kw) {
   return args.declares(kw) && args.has(kw);
 }
 
+/// A cell or node `name` at `kw`, `found` in `mesh` or not. On a part, one another rank holds is
+/// not here: the ranks decide whether it exists (and a part's names are too few to suggest from).
+void require_name(const catalog::Args& args, const std::string& kw, const engine::Mesh& mesh, bool found,
+                  const std::string& expected, const std::string& name, const std::vector<std::string>& names) {
+  if (found) return require_somewhere(mesh, true, DeckError(""));
+  require_somewhere(mesh, false,
+                    args.error(kw, expected, "'" + name + "'",
+                               mesh.is_part ? std::vector<std::string>{} : suggestion(name, names)));
+}
+
 }  // namespace
 
 const std::vector<int>& cell_group(const catalog::Args& args, const std::string& kw, const engine::Mesh& mesh,
@@ -78,13 +88,8 @@ std::vector<int> named_cells(const catalog::Args& args, const engine::Mesh& mesh
     for (const auto& g : args.texts("GROUP_MA")) merge(cells, cell_group(args, "GROUP_MA", mesh, g));
   if (declared_and_present(args, "MAILLE"))
     for (const auto& name : args.texts("MAILLE")) {
-      // On a part, a cell another rank holds is not here: the ranks decide whether it exists.
       const int c = mesh.find_cell(name);
-      require_somewhere(mesh, c >= 0,
-                        c >= 0 ? DeckError("")
-                               : args.error("MAILLE", "a cell name of the mesh", "'" + name + "'",
-                                            mesh.is_part ? std::vector<std::string>{}  // a part has some names
-                                                         : suggestion(name, mesh.cell_names)));
+      require_name(args, "MAILLE", mesh, c >= 0, "a cell name of the mesh", name, mesh.cell_names);
       if (c >= 0) cells.push_back(c);
     }
   return cells;
@@ -119,12 +124,7 @@ std::vector<int> select_nodes(const catalog::Args& args, const engine::Mesh& mes
       if (n < 0 && mesh.node_groups.count(name))  // every part holds every group: the same on every rank
         throw args.error("NOEUD", "a node name of the mesh", "'" + name + "'",
                          {"'" + name + "' is a node group: use GROUP_NO = '" + name + "'"});
-      // On a part, a node another rank holds is not here: the ranks decide whether it exists.
-      require_somewhere(mesh, n >= 0,
-                        n >= 0 ? DeckError("")
-                               : args.error("NOEUD", "a node name of the mesh", "'" + name + "'",
-                                            mesh.is_part ? std::vector<std::string>{}  // a part has some names
-                                                         : suggestion(name, mesh.node_names)));
+      require_name(args, "NOEUD", mesh, n >= 0, "a node name of the mesh", name, mesh.node_names);
       if (n >= 0) nodes.push_back(n);
     }
   if (declared_and_present(args, "GROUP_MA") || declared_and_present(args, "MAILLE"))
