@@ -1412,14 +1412,8 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         // there: no refinement on top.
         Stopwatch watch(stats_.solve_seconds);
         du = solver->solve(-r_free);
-        if (in_parts_) {
-          const double b_norm = std::max(owned_norm(r_free), std::numeric_limits<double>::min());
-          const double error = owned_norm(Vector(system_product(du) + r_free)) / b_norm;
-          accuracy.raw_residual = accuracy.residual =
-              std::isfinite(error) ? error : std::numeric_limits<double>::infinity();
-        } else {
-          accuracy.raw_residual = accuracy.residual = relative_residual(system_product, du, -r_free);
-        }
+        accuracy.raw_residual = accuracy.residual =
+            relative_residual(system_product, du, -r_free, in_parts_ ? &owned_norm : nullptr);
         stats_.krylov_iterations += solver->iterations();
         log_.info("  linear solve: " + solver->name() + ", " + std::to_string(solver->iterations()) +
                   " iteration(s), relative residual " + sci(accuracy.residual));

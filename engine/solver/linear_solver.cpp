@@ -122,9 +122,13 @@ double relative_residual(const SparseMatrix& a, const Vector& x, const Vector& b
   return relative_residual([&a](const Vector& v) -> Vector { return a * v; }, x, b);
 }
 
-double relative_residual(const MatrixProduct& a, const Vector& x, const Vector& b) {
-  if (!x.allFinite()) return std::numeric_limits<double>::infinity();
-  return (a(x) - b).norm() / std::max(b.norm(), std::numeric_limits<double>::min());
+double relative_residual(const MatrixProduct& a, const Vector& x, const Vector& b, const VectorNorm* norm) {
+  if (!norm) {
+    if (!x.allFinite()) return std::numeric_limits<double>::infinity();
+    return (a(x) - b).norm() / std::max(b.norm(), std::numeric_limits<double>::min());
+  }
+  const double relative = (*norm)(Vector(a(x) - b)) / std::max((*norm)(b), std::numeric_limits<double>::min());
+  return std::isfinite(relative) ? relative : std::numeric_limits<double>::infinity();
 }
 
 RefinedSolve solve_with_refinement(const LinearSolver& solver, const SparseMatrix& a, const Vector& b, Vector& x,

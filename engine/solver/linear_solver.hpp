@@ -258,9 +258,11 @@ using MatrixProduct = std::function<Vector(const Vector&)>;
 /// The norm a solve's residuals are measured with (the 2-norm unless told otherwise).
 using VectorNorm = std::function<double(const Vector&)>;
 
-/// |A x - b| / |b| (2-norms); +inf if x is not finite.
+/// |A x - b| / |b| (2-norms); +inf if x is not finite. With `norm` (a system of a mesh in parts,
+/// collective: see solve_with_refinement) the residual is measured with it and A x is formed
+/// whatever x holds, so that every rank takes part in the product.
 double relative_residual(const SparseMatrix& a, const Vector& x, const Vector& b);
-double relative_residual(const MatrixProduct& a, const Vector& x, const Vector& b);
+double relative_residual(const MatrixProduct& a, const Vector& x, const Vector& b, const VectorNorm* norm = nullptr);
 
 /// Accuracy of one refined solve: relative residual straight from the factorisation
 /// and after refinement, and the extra solves spent.
