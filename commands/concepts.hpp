@@ -31,6 +31,13 @@ struct Maillage : Concept {
   std::shared_ptr<engine::Mesh> whole;
   std::string type_name() const override { return "maillage"; }
   bool in_parts() const override { return part != nullptr; }
+  /// The meshes a change of the mesh (DEFI_GROUP, MODI_MAILLAGE) applies to: `mesh`, and on rank
+  /// 0 of a mesh in parts the whole mesh too; the last is the one the log speaks of.
+  std::vector<engine::Mesh*> changed_meshes() const {
+    std::vector<engine::Mesh*> out{mesh.get()};
+    if (whole) out.push_back(whole.get());
+    return out;
+  }
 };
 
 /// AFFE_MODELE: which cells carry which mechanical element.

@@ -52,10 +52,9 @@ ConceptPtr defi_group(const Args& args, Session& session) {
   auto ma = args.concept_as<Maillage>("MAILLAGE");
   // A mesh in parts: each rank makes the groups on its part (empty ones too, so that every part
   // holds every group), and rank 0 on the whole mesh as well, which it writes and logs.
-  std::vector<engine::Mesh*> meshes{ma->mesh.get()};
-  if (ma->whole) meshes.push_back(ma->whole.get());
+  const std::vector<engine::Mesh*> meshes = ma->changed_meshes();
   for (engine::Mesh* mesh : meshes) {
-    const bool say = mesh == meshes.back() && (!ma->part || ma->whole);
+    const bool say = mesh == meshes.back();
     for (const auto& occ : args.factors("CREA_GROUP_MA")) {
       const std::vector<int> cells = select_cells(occ, *mesh);
       require_somewhere(*mesh, !cells.empty(),

@@ -68,9 +68,8 @@ ConceptPtr modi_maillage(const Args& args, Session& session) {
   auto ma = args.concept_as<Maillage>("MAILLAGE");
   // A mesh in parts: each rank changes its part (a boundary cell's volume cell is in every part
   // holding it), and rank 0 the whole mesh as well, which it writes and logs.
-  std::vector<engine::Mesh*> meshes{ma->mesh.get()};
-  if (ma->whole) meshes.push_back(ma->whole.get());
-  for (engine::Mesh* mesh : meshes) modify(args, *mesh, session, mesh == meshes.back() && (!ma->part || ma->whole));
+  const std::vector<engine::Mesh*> meshes = ma->changed_meshes();
+  for (engine::Mesh* mesh : meshes) modify(args, *mesh, session, mesh == meshes.back());
   return ma;
 }
 

@@ -135,7 +135,7 @@ catalog::ConceptPtr Runner::execute(lua_State* L, const catalog::CommandSpec& sp
   cmd::forget_requirements();
   std::exception_ptr failure;
   try {
-    if (!cmd::takes_parts(spec.name)) refuse_parts(spec.name, node, "");
+    if (cmd::parts_in_run() && !cmd::takes_parts(spec.name)) refuse_parts(spec.name, node, "");
     result = handler(args, session_);
   } catch (const Error&) {
     failure = std::current_exception();
