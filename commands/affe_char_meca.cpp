@@ -394,11 +394,10 @@ ConceptPtr affe_char_meca(const Args& args, Session& session) {
   load->modele = args.concept_as<Modele>("MODELE");
   const Modele& mo = *load->modele;
   if (mo.in_parts())
-    for (const char* kw : {"LIAISON_DDL", "LIAISON_UNIF", "LIAISON_MAIL", "CONTACT"})
+    for (const char* kw : {"LIAISON_DDL", "LIAISON_UNIF", "LIAISON_MAIL"})
       if (args.count(kw) > 0)
-        throw args.error(kw, "DDL_IMPO, PRES_REP or FORCE_NODALE on MODELE '" + mo.user_name +
-                                 "', a model on a mesh in parts (linear relations and contact are not written for "
-                                 "parts yet)",
+        throw args.error(kw, "DDL_IMPO, PRES_REP, FORCE_NODALE or CONTACT on MODELE '" + mo.user_name +
+                                 "', a model on a mesh in parts (linear relations are not written for parts yet)",
                          kw, {"read the mesh without PARTITIONNEUR for this deck"});
   for (const auto& occ : args.factors("DDL_IMPO")) read_ddl_impo(occ, mo, *load);
   for (const auto& occ : args.factors("PRES_REP")) read_pres_rep(occ, mo, *load);
@@ -410,14 +409,21 @@ ConceptPtr affe_char_meca(const Args& args, Session& session) {
   if (args.count("CONTACT") > 0) {
     load->has_contact = true;
     auto& def = load->contact;
-    for (const auto& occ : args.factors("CONTACT")) {
+    const auto occurrences = args.factors("CONTACT");
+    for (const auto& occ : occurrences) {
       check_modl_axis(occ, mo);
       def.method = seed_method(occ.text("METHODE"));
+      require_method_for_parts(occ, "METHODE", occ.text("METHODE"), def.method, mo);
       def.zones.push_back(read_contact_zone(occ, *mo.maillage->mesh, mo.dim, def.method));
-      warn_coincident_slave_nodes(occ, def.zones.back(), *mo.maillage, session);
       read_contact_loops(occ, def);
     }
-    warn_incompatible_pairs(def, *mo.maillage->mesh, session);
+    // On a mesh in parts the surfaces are checked whole (the ranks agree before gathering them).
+    if (mo.in_parts()) agree_over_ranks(nullptr);
+    const ContactSurfaces surfaces = contact_surfaces(def, mo);
+    for (size_t z = 0; z < occurrences.size(); ++z)
+      warn_coincident_slave_nodes(occurrences[z], surfaces.definition.zones[z], *surfaces.mesh, *mo.maillage,
+                                  session);
+    warn_incompatible_pairs(surfaces.definition, *surfaces.mesh, session);
   }
   return load;
 }

@@ -120,9 +120,8 @@ void warn_incompatible_pairs(const engine::ContactDefinition& def, const engine:
   }
 }
 
-void warn_coincident_slave_nodes(const catalog::Args& zone_args, const engine::ContactZone& zone, const Maillage& ma,
-                                 Session& session) {
-  const engine::Mesh& mesh = *ma.mesh;
+void warn_coincident_slave_nodes(const catalog::Args& zone_args, const engine::ContactZone& zone,
+                                 const engine::Mesh& mesh, const Maillage& ma, Session& session) {
   const double tolerance = engine::coincidence_tolerance(mesh, zone.slave_cells);
   const auto pairs = engine::coincident_nodes(mesh, mesh.nodes_of_cells(zone.slave_cells), tolerance);
   if (pairs.empty()) return;
@@ -138,6 +137,35 @@ void warn_coincident_slave_nodes(const catalog::Args& zone_args, const engine::C
                "' of mesh file '" + ma.source_file + "' has " + std::to_string(pairs.size()) +
                " pair(s) of distinct nodes at the same position: " + list +
                "; contact treats them as separate points (merge the nodes, or check the mesh for a crack)");
+}
+
+ContactSurfaces contact_surfaces(const engine::ContactDefinition& def, const Modele& mo) {
+  ContactSurfaces out;
+  out.definition = def;
+  out.mesh = mo.maillage->mesh.get();
+  if (!mo.in_parts()) return out;
+  std::vector<std::vector<int>> lists;
+  for (const engine::ContactZone& zone : def.zones) {
+    lists.push_back(zone.slave_cells);
+    lists.push_back(zone.master_cells);
+  }
+  auto whole = std::make_shared<engine::SurfacePart>(engine::with_whole_surfaces(*mo.maillage->part, lists));
+  for (size_t z = 0; z < def.zones.size(); ++z) {
+    out.definition.zones[z].slave_cells = whole->lists[2 * z];
+    out.definition.zones[z].master_cells = whole->lists[2 * z + 1];
+  }
+  out.mesh = &whole->part.mesh;
+  out.part = std::move(whole);
+  return out;
+}
+
+void require_method_for_parts(const catalog::Args& zone, const char* keyword, const std::string& given,
+                              engine::ContactMethod method, const Modele& mo) {
+  if (!mo.in_parts() || method != engine::ContactMethod::MortarLagrange) return;
+  throw zone.error(keyword, "'PENALISATION' with mortar contact on MODELE '" + mo.user_name +
+                                "', a model on a mesh in parts (mortar's exact method eliminates unknowns, which is "
+                                "not written for parts yet)",
+                   "'" + given + "'", {"read the mesh without PARTITIONNEUR for this contact method"});
 }
 
 }  // namespace lunaster::cmd

@@ -4,6 +4,9 @@
 #include "catalog/args.hpp"
 #include "commands/concepts.hpp"
 #include "commands/session.hpp"
+#include <memory>
+
+#include "engine/assembly/mesh_part.hpp"
 #include "engine/contact/contact_definition.hpp"
 #include "engine/mesh/mesh.hpp"
 
@@ -17,9 +20,26 @@ void read_contact_loops(const catalog::Args& args, engine::ContactDefinition& de
 /// Logs the compatibility warnings: slave/master cell pairs the integration cannot handle and,
 /// for the continuous method, rules with fewer points than a slave cell has LAGS_C unknowns.
 void warn_incompatible_pairs(const engine::ContactDefinition& def, const engine::Mesh& mesh, Session& session);
-/// Warns when two distinct slave nodes of `zone` share one position (an unmerged
-/// mesh: contact sees two points there), naming the group, the file and the nodes.
-void warn_coincident_slave_nodes(const catalog::Args& zone_args, const engine::ContactZone& zone, const Maillage& ma,
-                                 Session& session);
+/// Warns when two distinct slave nodes of `zone` (cells of `mesh`) share one position (an
+/// unmerged mesh: contact sees two points there), naming the group, the file and the nodes.
+void warn_coincident_slave_nodes(const catalog::Args& zone_args, const engine::ContactZone& zone,
+                                 const engine::Mesh& mesh, const Maillage& ma, Session& session);
+
+/// A contact definition's surfaces as a serial run sees them: the model's mesh and the
+/// definition itself, or, on a mesh in parts (docs/distributed-model.md, step 5), the surfaces
+/// whole on every rank (engine::with_whole_surfaces) and the definition's cells renumbered on
+/// them. Collective on a mesh in parts: every rank calls it, after agreeing (commands/parts.hpp).
+struct ContactSurfaces {
+  std::shared_ptr<const engine::SurfacePart> part;  ///< null on a whole mesh
+  engine::ContactDefinition definition;
+  const engine::Mesh* mesh = nullptr;
+};
+ContactSurfaces contact_surfaces(const engine::ContactDefinition& def, const Modele& mo);
+
+/// On a mesh in parts every contact method but mortar's LAGRANGIEN, which eliminates unknowns
+/// (docs/distributed-model.md, step 5): throws the zone's error at `keyword` (whose value, or
+/// default, is `given`) for that one on a model in parts.
+void require_method_for_parts(const catalog::Args& zone, const char* keyword, const std::string& given,
+                              engine::ContactMethod method, const Modele& mo);
 
 }  // namespace lunaster::cmd

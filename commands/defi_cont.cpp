@@ -2,6 +2,7 @@
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
 #include "commands/contact_keywords.hpp"
+#include "commands/parts.hpp"
 #include "commands/selection.hpp"
 #include "engine/contact/contact_factory.hpp"
 #include "engine/core/error.hpp"
@@ -24,6 +25,7 @@ ConceptPtr defi_cont(const Args& args, Session& session) {
         algo == "PENALISATION" ? engine::ContactMethod::MortarPenalty : engine::ContactMethod::MortarLagrange;
     if (!def.zones.empty() && method != def.method)
       throw zone.error("ALGO_CONT", "the same contact algorithm in every zone", "'" + algo + "'");
+    require_method_for_parts(zone, "ALGO_CONT", algo, method, mo);
     def.method = method;
     engine::ContactZone z = read_contact_zone(zone, *mo.maillage->mesh, mo.dim, method);
     // COEF_CONT is the penalty of ALGO_CONT='PENALISATION' (Pa/m), the complementarity
@@ -32,10 +34,15 @@ ConceptPtr defi_cont(const Args& args, Session& session) {
     z.dist_mait = zone.real("DIST_MAIT");
     z.dist_escl = zone.real("DIST_ESCL");
     def.zones.push_back(std::move(z));
-    warn_coincident_slave_nodes(zone, def.zones.back(), *mo.maillage, session);
   }
-  // The surfaces are checked here, where the deck names them (boundary of the model, cell types).
-  engine::make_contact_hook(def, *mo.maillage->mesh, mo.dim);
+  // The surfaces are checked here, where the deck names them (boundary of the model, cell
+  // types); on a mesh in parts whole (the ranks agree before gathering them).
+  if (mo.in_parts()) agree_over_ranks(nullptr);
+  const ContactSurfaces surfaces = contact_surfaces(def, mo);
+  const auto zones = args.factors("ZONE");
+  for (size_t z = 0; z < zones.size(); ++z)
+    warn_coincident_slave_nodes(zones[z], surfaces.definition.zones[z], *surfaces.mesh, *mo.maillage, session);
+  engine::make_contact_hook(surfaces.definition, *surfaces.mesh, mo.dim);
   return result;
 }
 

@@ -2,6 +2,7 @@
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
 #include "commands/contact_keywords.hpp"
+#include "commands/parts.hpp"
 
 namespace lunaster::cmd {
 
@@ -26,11 +27,17 @@ ConceptPtr defi_contact(const Args& args, Session& session) {
     }
     if (!def.zones.empty() && method != def.method)
       throw zone.error("ALGO_CONT", "the same contact algorithm in every zone", "'" + algo + "'");
+    require_method_for_parts(zone, "ALGO_CONT", algo, method, mo);
     def.method = method;
     def.zones.push_back(read_contact_zone(zone, *mo.maillage->mesh, mo.dim, method));
-    warn_coincident_slave_nodes(zone, def.zones.back(), *mo.maillage, session);
   }
-  warn_incompatible_pairs(def, *mo.maillage->mesh, session);
+  // On a mesh in parts the surfaces are checked whole (the ranks agree before gathering them).
+  if (mo.in_parts()) agree_over_ranks(nullptr);
+  const ContactSurfaces surfaces = contact_surfaces(def, mo);
+  const auto zones = args.factors("ZONE");
+  for (size_t z = 0; z < zones.size(); ++z)
+    warn_coincident_slave_nodes(zones[z], surfaces.definition.zones[z], *surfaces.mesh, *mo.maillage, session);
+  warn_incompatible_pairs(surfaces.definition, *surfaces.mesh, session);
   return result;
 }
 

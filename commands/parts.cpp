@@ -88,9 +88,9 @@ std::string failure_bytes(std::exception_ptr failure) {
 }  // namespace
 
 namespace {
-const char* const kTakingParts[] = {"DEFI_GROUP",    "MODI_MAILLAGE", "AFFE_MODELE", "AFFE_MATERIAU",
-                                    "AFFE_CHAR_MECA", "STAT_NON_LINE", "MECA_NON_LINE", "CALC_CHAMP",
-                                    "TEST_RESU",      "IMPR_RESU",     "POST_RELEVE_T"};
+const char* const kTakingParts[] = {"DEFI_GROUP",    "MODI_MAILLAGE", "AFFE_MODELE",  "AFFE_MATERIAU", "AFFE_CHAR_MECA",
+                                    "DEFI_CONTACT",  "DEFI_CONT",     "STAT_NON_LINE", "MECA_NON_LINE", "CALC_CHAMP",
+                                    "TEST_RESU",     "IMPR_RESU",     "POST_RELEVE_T"};
 }  // namespace
 
 bool takes_parts(const std::string& command) {

@@ -6,12 +6,14 @@
 
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
+#include "commands/contact_keywords.hpp"
 #include "commands/parts.hpp"
 #include "commands/selection.hpp"
 #include "commands/failures.hpp"
 #include "engine/contact/contact_factory.hpp"
 #include "engine/io/med_writer.hpp"
 #include "engine/nonlinear/relations_hook.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::cmd {
 
@@ -297,15 +299,21 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
   read_newton(args.factor("NEWTON"), contact != nullptr, options);
   const std::vector<double> times = instants(args.factor("INCREMENT"), options);
 
+  // On a mesh in parts the hook works on the contact surfaces whole on every rank (they outlive
+  // it: declared first).
+  ContactSurfaces surfaces;
   std::unique_ptr<engine::ContactHook> hook;
   if (contact) {
-    engine::ContactDefinition definition = *contact;
+    if (part) agree_over_ranks(nullptr);  // before gathering the surfaces: no rank waits for one that stopped
+    surfaces = contact_surfaces(*contact, *result->modele);
+    engine::ContactDefinition& definition = surfaces.definition;
     // The contact measures follow the model: r dl per radian on an AXIS model (MODL_AXIS, when
     // given, was checked against the model by AFFE_CHAR_MECA).
     definition.axisymmetric = model.axisymmetric();
-    if (definition.axisymmetric) axis_integration(definition, *model.mesh, session);
+    if (definition.axisymmetric) axis_integration(definition, *surfaces.mesh, session);
     for (const auto& m : model.materials) definition.modulus = std::max(definition.modulus, m.young);
-    hook = engine::make_contact_hook(definition, *model.mesh, model.dim);
+    if (part) definition.modulus = engine::parallel::max_over_ranks(definition.modulus);
+    hook = engine::make_contact_hook(definition, *surfaces.mesh, model.dim);
   }
   // LIAISON_DDL, LIAISON_UNIF: a relation of one term is an imposed displacement; the others get
   // a multiplier each (or are solved for one unknown each: ELIM_LAGR='OUI'), in the system beside
@@ -331,6 +339,11 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     session.log().info("  SOLVEUR ELIM_LAGR = 'OUI': no linear relation to solve for one of its unknowns (DDL_IMPO "
                        "conditions are eliminated whatever ELIM_LAGR says; contact treats its multipliers its own "
                        "way)");
+  if (part && !relations.empty())
+    throw DeckError("linear relations on a mesh in parts: " + std::to_string(relations.size()) +
+                        " (discrete contact's QUAD8 mid-side ties), which are not written for parts yet",
+                    {"read the mesh without PARTITIONNEUR, or take mortar contact (DEFI_CONT), which needs no "
+                     "ties"});
   if (!relations.empty()) {
     if (eliminate && contact && contact->method == engine::ContactMethod::MortarLagrange)
       throw solveur.error("ELIM_LAGR", "'NON' with mortar contact (ALGO_CONT = 'LAGRANGIEN'), which eliminates "
@@ -368,7 +381,7 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     // Every rank has read its part of the deck's model and loads before the first collective
     // call of the solve: one that failed stops all alike (commands/parts.hpp).
     agree_over_ranks(nullptr);
-    solver.set_part(part.get());
+    solver.set_part(part.get(), surfaces.part ? &surfaces.part->part : nullptr);
   }
   {
     Session::Timer timer(session, "solve");

@@ -128,13 +128,16 @@ void stiffness_pattern(const Mesh& mesh, const DofMap& dofs, const std::vector<i
         LUNASTER_ASSERT(dofs.dof(v, k) == dofs.dof(v, 0) + k, "stiffness pattern: node DOFs are not consecutive");
   }
   around = Mesh::NodeCells();  // freed before the matrix is allocated (cell_start is not read below)
-  // Columns: DIM rows per coupled node; none for the other unknowns (multipliers).
+  // Columns: DIM rows per coupled node; none for the other unknowns (multipliers) and the nodes
+  // beyond the mesh's (a part's whole contact surfaces, DofMap::add_nodes).
   k = SparseMatrix(n, n);
   int* outer = k.outerIndexPtr();
   outer[0] = 0;
   for (int eq = 0; eq < n; ++eq) {
     const int v = dofs.node_of(eq);
-    const long long rows = is_displacement(dofs.component_of(eq)) ? static_cast<long long>(dim) * (adj_start[v + 1] - adj_start[v]) : 0;
+    const long long rows = is_displacement(dofs.component_of(eq)) && v < n_nodes
+                               ? static_cast<long long>(dim) * (adj_start[v + 1] - adj_start[v])
+                               : 0;
     LUNASTER_ASSERT(outer[eq] + rows <= std::numeric_limits<int>::max(), "stiffness pattern: more than 2^31 entries");
     outer[eq + 1] = outer[eq] + static_cast<int>(rows);
   }

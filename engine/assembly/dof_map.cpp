@@ -37,6 +37,23 @@ DofMap::DofMap(const Mesh& mesh, const std::vector<int>& cells, int dim) : dim_(
   }
 }
 
+void DofMap::add_nodes(int n_nodes) {
+  LUNASTER_ASSERT(n_nodes >= this->n_nodes(), "DofMap::add_nodes: fewer nodes than mapped");
+  index_.resize(static_cast<size_t>(n_nodes) * N_COMPONENTS, -1);
+}
+
+DofMap DofMap::renumbered(const std::vector<int>& new_of_old) const {
+  LUNASTER_ASSERT(static_cast<int>(new_of_old.size()) == n_dofs_, "DofMap::renumbered: not one number per DOF");
+  DofMap out = *this;
+  for (int& eq : out.index_)
+    if (eq >= 0) eq = new_of_old[eq];
+  for (int e = 0; e < n_dofs_; ++e) {
+    out.eq_node_[new_of_old[e]] = eq_node_[e];
+    out.eq_cmp_[new_of_old[e]] = eq_cmp_[e];
+  }
+  return out;
+}
+
 int DofMap::add(int node, int component) {
   LUNASTER_ASSERT(node >= 0 && node < n_nodes() && component >= 0 && component < N_COMPONENTS,
                   "DofMap::add: node or component out of range");

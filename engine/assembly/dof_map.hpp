@@ -28,6 +28,11 @@ class DofMap {
   int n_nodes() const { return static_cast<int>(index_.size() / N_COMPONENTS); }
   /// Global equation of (node, component), or -1 if that node has no such DOF.
   int dof(int node, int component) const { return index_[static_cast<size_t>(node) * N_COMPONENTS + component]; }
+  /// Nodes appended to the map's mesh, without DOFs yet (a part with whole contact surfaces,
+  /// mesh_part.hpp's SurfacePart: its nodes beyond the part's). `n_nodes` >= n_nodes().
+  void add_nodes(int n_nodes);
+  /// The same DOFs numbered `new_of_old` (equation e becomes new_of_old[e], a permutation).
+  DofMap renumbered(const std::vector<int>& new_of_old) const;
   /// Adds a DOF (e.g. LAGS_C) to a node if absent; returns its equation.
   int add(int node, int component);
   /// Inverse map: node and component of an equation.

@@ -146,4 +146,187 @@ MeshPart distribute_mesh(const Mesh* whole) {
   return part;
 }
 
+
+SurfacePart with_whole_surfaces(const MeshPart& part, const std::vector<std::vector<int>>& lists) {
+  const Mesh& mesh = part.mesh;
+  // Each list's cells over the ranks, in the whole mesh's numbers.
+  std::vector<int> mine;
+  for (const std::vector<int>& list : lists) {
+    mine.push_back(static_cast<int>(list.size()));
+    for (int c : list) mine.push_back(part.global_cell[c]);
+  }
+  const std::vector<int> all_lists = parallel::gather_all(mine);
+  std::vector<std::vector<int>> wholes(lists.size());
+  for (size_t at = 0; at < all_lists.size();)
+    for (std::vector<int>& whole : wholes) {
+      const int n = all_lists[at++];
+      whole.insert(whole.end(), all_lists.begin() + at, all_lists.begin() + at + n);
+      at += n;
+    }
+  for (std::vector<int>& whole : wholes) {
+    std::sort(whole.begin(), whole.end());
+    whole.erase(std::unique(whole.begin(), whole.end()), whole.end());
+  }
+
+  // The cells this rank gives: the lists' cells it holds and the volume cells holding all the
+  // nodes of one of them (its part holds them: they touch the node it owns).
+  std::vector<char> given(mesh.n_cells(), 0), on_surface(mesh.n_nodes(), 0);
+  for (const std::vector<int>& list : lists)
+    for (int c : list) {
+      given[c] = 1;
+      for (int a = 0; a < mesh.cell_n_nodes(c); ++a) on_surface[mesh.cell(c)[a]] = 1;
+    }
+  std::vector<int> faces;
+  for (int c = 0; c < mesh.n_cells(); ++c)
+    if (given[c]) faces.push_back(c);
+  if (!faces.empty()) {
+    std::vector<int> volumes;
+    for (int c = 0; c < mesh.n_cells(); ++c) {
+      if (cell_info(mesh.cell_types[c]).dim != mesh.dim || given[c]) continue;
+      bool touches = false;
+      for (int a = 0; a < mesh.cell_n_nodes(c) && !touches; ++a) touches = on_surface[mesh.cell(c)[a]];
+      if (touches) volumes.push_back(c);
+    }
+    const Mesh::NodeCells around = mesh.node_cells(volumes);
+    for (int f : faces) {
+      const int v0 = mesh.cell(f)[0];
+      for (int p = around.start[v0]; p < around.start[v0 + 1]; ++p) {
+        const int v = volumes[around.positions[p]];
+        const int* vn = mesh.cell(v);
+        const int nn = mesh.cell_n_nodes(v);
+        bool all = true;
+        for (int a = 0; a < mesh.cell_n_nodes(f) && all; ++a) all = std::find(vn, vn + nn, mesh.cell(f)[a]) != vn + nn;
+        if (all) given[v] = 1;
+      }
+    }
+  }
+  std::vector<int> ints, node_list;
+  std::vector<double> xyz;
+  std::string names;
+  std::vector<char> node_given(mesh.n_nodes(), 0);
+  int n_given = 0;
+  for (int c = 0; c < mesh.n_cells(); ++c) n_given += given[c];
+  ints.push_back(n_given);
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    if (!given[c]) continue;
+    ints.insert(ints.end(), {part.global_cell[c], static_cast<int>(mesh.cell_types[c]), part.cell_part[c],
+                             mesh.cell_n_nodes(c)});
+    for (int a = 0; a < mesh.cell_n_nodes(c); ++a) {
+      const int v = mesh.cell(c)[a];
+      ints.push_back(part.global_node[v]);
+      if (!node_given[v]) node_given[v] = 1, node_list.push_back(v);
+    }
+    names += mesh.cell_names[c] + '\n';
+  }
+  ints.push_back(static_cast<int>(node_list.size()));
+  for (int v : node_list) {
+    ints.push_back(part.global_node[v]);
+    ints.push_back(part.node_owner[v]);
+    xyz.insert(xyz.end(), mesh.node(v), mesh.node(v) + 3);
+    names += mesh.node_names[v] + '\n';
+  }
+  const std::vector<int> all_ints = parallel::gather_all(ints);
+  const std::vector<double> all_xyz = parallel::gather_all(xyz);
+  const std::string all_names = parallel::gather_all(names);
+
+  struct GivenCell {
+    int global, type, rank, first_node, n_nodes;
+    std::string name;
+  };
+  struct GivenNode {
+    int global, owner;
+    double x[3];
+    std::string name;
+  };
+  std::vector<GivenCell> cells;
+  std::vector<int> cell_nodes;  // global numbers
+  std::vector<GivenNode> nodes;
+  size_t at = 0, at_xyz = 0, at_name = 0;
+  auto next_name = [&] {
+    const size_t end = all_names.find('\n', at_name);
+    std::string name = all_names.substr(at_name, end - at_name);
+    at_name = end + 1;
+    return name;
+  };
+  while (at < all_ints.size()) {
+    const int n_cells = all_ints[at++];
+    for (int k = 0; k < n_cells; ++k) {
+      GivenCell gc{all_ints[at], all_ints[at + 1], all_ints[at + 2], static_cast<int>(cell_nodes.size()),
+                   all_ints[at + 3], {}};
+      at += 4;
+      cell_nodes.insert(cell_nodes.end(), all_ints.begin() + at, all_ints.begin() + at + gc.n_nodes);
+      at += gc.n_nodes;
+      gc.name = next_name();
+      cells.push_back(std::move(gc));
+    }
+    const int n_nodes = all_ints[at++];
+    for (int k = 0; k < n_nodes; ++k, at += 2, at_xyz += 3) {
+      GivenNode gn{all_ints[at], all_ints[at + 1], {all_xyz[at_xyz], all_xyz[at_xyz + 1], all_xyz[at_xyz + 2]}, {}};
+      gn.name = next_name();
+      nodes.push_back(std::move(gn));
+    }
+  }
+  auto by_global = [](const auto& a, const auto& b) { return a.global < b.global; };
+  auto same_global = [](const auto& a, const auto& b) { return a.global == b.global; };
+  std::stable_sort(cells.begin(), cells.end(), by_global);
+  cells.erase(std::unique(cells.begin(), cells.end(), same_global), cells.end());
+  std::stable_sort(nodes.begin(), nodes.end(), by_global);
+  nodes.erase(std::unique(nodes.begin(), nodes.end(), same_global), nodes.end());
+
+  SurfacePart out;
+  MeshPart& sp = out.part;
+  Mesh& m = sp.mesh;
+  m.dim = mesh.dim;
+  m.name = mesh.name;
+  m.is_part = true;
+  m.coords = mesh.coords;
+  m.node_names.assign(mesh.n_nodes(), std::string());
+  sp.global_node = part.global_node;
+  sp.node_owner = part.node_owner;
+  sp.n_owned_nodes = part.n_owned_nodes;
+  sp.n_global_nodes = part.n_global_nodes;
+  sp.n_global_cells = part.n_global_cells;
+  sp.rank = part.rank;
+  sp.parts = part.parts;
+  // The given nodes in local numbers: the part's where it holds them, the others appended.
+  std::vector<int> local_of(nodes.size(), -1);
+  for (int v = 0; v < mesh.n_nodes(); ++v) {
+    const GivenNode key{part.global_node[v], 0, {0, 0, 0}, {}};
+    auto it = std::lower_bound(nodes.begin(), nodes.end(), key, by_global);
+    if (it != nodes.end() && it->global == key.global) local_of[it - nodes.begin()] = v;
+  }
+  for (size_t k = 0; k < nodes.size(); ++k) {
+    if (local_of[k] < 0) {
+      local_of[k] = m.n_nodes();
+      m.coords.insert(m.coords.end(), nodes[k].x, nodes[k].x + 3);
+      m.node_names.emplace_back();
+      sp.global_node.push_back(nodes[k].global);
+      sp.node_owner.push_back(nodes[k].owner);
+    }
+    m.node_names[local_of[k]] = nodes[k].name;
+  }
+  auto local_node = [&](int global) {
+    const GivenNode key{global, 0, {0, 0, 0}, {}};
+    auto it = std::lower_bound(nodes.begin(), nodes.end(), key, by_global);
+    LUNASTER_ASSERT(it != nodes.end() && it->global == global, "with_whole_surfaces: a cell's node not given");
+    return local_of[it - nodes.begin()];
+  };
+  for (const GivenCell& gc : cells) {
+    m.cell_types.push_back(static_cast<CellType>(gc.type));
+    for (int a = 0; a < gc.n_nodes; ++a) m.cell_nodes.push_back(local_node(cell_nodes[gc.first_node + a]));
+    m.cell_offsets.push_back(static_cast<int>(m.cell_nodes.size()));
+    m.cell_names.push_back(gc.name);
+    sp.global_cell.push_back(gc.global);
+    sp.cell_part.push_back(gc.rank);
+  }
+  out.lists.resize(lists.size());
+  for (size_t i = 0; i < lists.size(); ++i)
+    for (int global : wholes[i]) {
+      auto it = std::lower_bound(sp.global_cell.begin(), sp.global_cell.end(), global);
+      LUNASTER_ASSERT(it != sp.global_cell.end() && *it == global, "with_whole_surfaces: a listed cell not given");
+      out.lists[i].push_back(static_cast<int>(it - sp.global_cell.begin()));
+    }
+  return out;
+}
+
 }  // namespace lunaster::engine

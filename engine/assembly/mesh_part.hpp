@@ -54,4 +54,23 @@ MeshPart extract_part(const Mesh& whole, const MeshCut& cut, int rank);
 /// every rank.
 MeshPart distribute_mesh(const Mesh* whole);
 
+/// A part with whole surfaces (docs/distributed-model.md, step 5: contact on a mesh in parts).
+/// `part.mesh` holds the nodes of the part in their local numbers, then the other nodes of the
+/// surfaces and of their volume cells (ghosts, owned by the ranks that own them in the whole
+/// mesh), and as cells only the surfaces' cells and the volume cells each of them bounds, in
+/// the whole mesh's order; `lists` are the given cell lists in its cell numbers.
+struct SurfacePart {
+  MeshPart part;
+  std::vector<std::vector<int>> lists;
+};
+
+/// Collective: `lists` are cell lists of `part.mesh` (a contact zone's slave and master cells,
+/// each rank those of its part); every rank gets the union over the ranks of each list, whole,
+/// with every volume cell holding all the nodes of one of its cells. Each cell comes from the
+/// ranks holding it (a part holds every cell touching a node it owns, so the volume cells of a
+/// boundary cell it holds). The nodes of `part` keep their numbers: a vector of `part`'s nodes
+/// is the first entries of one on the result's nodes. Node names are kept on the surfaces' nodes
+/// only (the others are left empty: nothing on them is named).
+SurfacePart with_whole_surfaces(const MeshPart& part, const std::vector<std::vector<int>>& lists);
+
 }  // namespace lunaster::engine

@@ -17,6 +17,7 @@
 #include "engine/core/memory.hpp"
 #include "engine/core/two_workers.hpp"
 #include "engine/nonlinear/nodal_forces.hpp"
+#include "engine/nonlinear/renumbered_hook.hpp"
 #include "engine/nonlinear/rigid_body.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 #include "engine/solver/backends.hpp"
@@ -160,7 +161,7 @@ std::vector<int> constrained_equations(const DofMap& dofs, const MechanicalLoads
 
 StaticSolver::StaticSolver(const FeModel& model, const MechanicalLoads& loads, NewtonOptions options,
                            ContactHook* contact, const Log& log)
-    : model_(model), loads_(loads), options_(options), contact_(contact), log_(log) {
+    : model_(model), loads_(loads), options_(options), contact_(contact), given_contact_(contact), log_(log) {
   LUNASTER_ASSERT(options_.reac_iter >= 0, "reac_iter must be >= 0");
   // The elastic matrix has no contact terms: the multiplier equations would be empty.
   LUNASTER_ASSERT(!(options_.elastic_matrix && contact_), "the elastic matrix is not for runs with contact");
@@ -185,7 +186,20 @@ NodalField StaticSolver::make_depl(const Vector& u) const {
 
 std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   LUNASTER_ASSERT(!instants.empty(), "no instants");
+  in_parts_ = part_ != nullptr;
+  contact_ = given_contact_;
+  renumbered_contact_.reset();
   dofs_ = DofMap(*model_.mesh, model_.volume_cells(), model_.dim);
+  if (in_parts_ && surfaces_) {
+    // The contact surfaces' nodes beyond the part: ghosts with their displacement unknowns.
+    LUNASTER_ASSERT(contact_ && surfaces_->n_owned_nodes == part_->n_owned_nodes &&
+                        surfaces_->mesh.n_nodes() >= part_->mesh.n_nodes(),
+                    "whole contact surfaces are the part's, for a run with contact");
+    dofs_.add_nodes(surfaces_->mesh.n_nodes());
+    for (int v = part_->mesh.n_nodes(); v < surfaces_->mesh.n_nodes(); ++v)
+      for (int c = 0; c < model_.dim; ++c) dofs_.add(v, c);
+  }
+  const int displacement_dofs = dofs_.n_dofs();
   if (contact_) {
     contact_->set_dirichlet(loads_.dirichlet);
     contact_->add_dofs(dofs_);
@@ -196,13 +210,28 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   system_.reset();
   for (auto& s : solvers_) s.reset();
   stats_.n_dofs = n;
-  in_parts_ = part_ != nullptr;
   if (in_parts_) {
     // What a mesh in parts does not do yet (docs/distributed-model.md): said alike on every rank.
     LUNASTER_ASSERT(model_.mesh == &part_->mesh && part_->parts == parallel::size(),
                     "a run in parts takes the model of this rank's part, one part per rank");
-    if (contact_ || !loads_.relations.empty())
-      throw DeckError("contact and linear relations are not available on a mesh in parts yet");
+    LUNASTER_ASSERT(!contact_ || surfaces_, "contact on a mesh in parts takes the part with whole surfaces");
+    if (!loads_.relations.empty() || (contact_ && !contact_->has_contact()))
+      throw DeckError("linear relations are not available on a mesh in parts yet");
+    if (n != displacement_dofs) {
+      // The hook's multipliers came after every node's displacements: the owned unknowns go
+      // first (global_dofs.hpp), each class in its order, and the hook keeps its numbering.
+      if (options_.solver == SolverKind::Petsc)
+        throw DeckError("contact with multipliers (LAGS_C) on a mesh in parts is solved by MUMPS, not PETSc",
+                        {"SOLVEUR=_F{ METHODE = 'MUMPS' }, or a penalised contact (ALGO_CONT = 'PENALISATION')"});
+      std::vector<int> new_of_old(n);
+      int next = 0;
+      for (int owned_class : {1, 0})
+        for (int eq = 0; eq < n; ++eq)
+          if (part_->owns(dofs_.node_of(eq)) == (owned_class == 1)) new_of_old[eq] = next++;
+      dofs_ = dofs_.renumbered(new_of_old);
+      renumbered_contact_ = std::make_unique<RenumberedHook>(*contact_, std::move(new_of_old));
+      contact_ = renumbered_contact_.get();
+    }
     if (options_.auto_solver || (options_.solver != SolverKind::Mumps && options_.solver != SolverKind::Petsc))
       throw DeckError("on a mesh in parts MUMPS or PETSc solves (SOLVEUR=_F{METHODE='MUMPS'} or 'PETSC'), not " +
                       std::string(options_.auto_solver ? "METHODE='AUTO'" : "a solver of one process"));
@@ -221,17 +250,17 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
     equation_halo_.reset();
     free_halo_.reset();
     if (in_parts_) {
-      const Mesh& mesh = *model_.mesh;
-      node_owner_ = part_->node_owner;
+      const MeshPart& numbered = numbered_part();
+      node_owner_ = numbered.node_owner;
       cell_rank_ = part_->cell_part;
-      owned_nodes_.assign(mesh.n_nodes(), 0);
+      owned_nodes_.assign(numbered.mesh.n_nodes(), 0);
       std::fill(owned_nodes_.begin(), owned_nodes_.begin() + part_->n_owned_nodes, 1);
-      const NodeHalo node_halo(*part_);
-      unknown_numbers_ = number_across_ranks(*part_, dofs_, node_halo);
+      const NodeHalo node_halo(numbered);
+      unknown_numbers_ = number_across_ranks(numbered, dofs_, node_halo);
       const GlobalDofs& numbers = unknown_numbers_;
       owned_equations_ = numbers.n_owned;
       stats_.n_dofs = static_cast<int>(numbers.n_global);
-      equation_halo_ = std::make_unique<Halo>(equation_halo(*part_, dofs_, numbers));
+      equation_halo_ = std::make_unique<Halo>(equation_halo(numbered, dofs_, numbers));
       // The constrained set the owners decide; the free unknowns, numbered across the ranks in
       // the order of the system's equations (free_index: ascending, the owned ones first).
       {
@@ -244,14 +273,17 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
       }
       std::vector<char> free(n, 1);
       for (int eq : constrained) free[eq] = 0;
-      free_numbers_ = number_across_ranks(*part_, dofs_, node_halo, &free);
-      free_halo_ = std::make_unique<Halo>(equation_halo(*part_, dofs_, free_numbers_));
+      free_numbers_ = number_across_ranks(numbered, dofs_, node_halo, &free);
+      free_halo_ = std::make_unique<Halo>(equation_halo(numbered, dofs_, free_numbers_));
       std::string counts;
       for (int owned : parallel::gather_all(std::vector<int>{part_->n_owned_nodes}))
         counts += (counts.empty() ? "" : ", ") + std::to_string(owned);
       log_.info("mesh in parts on " + std::to_string(part_->parts) + " ranks: owned nodes per rank " + counts + ", " +
                 std::to_string(numbers.n_global) + " unknowns; each rank assembles the stiffness of its own nodes and "
-                "holds its part's vectors");
+                "holds its part's vectors" +
+                (surfaces_ ? std::string("; the contact surfaces are whole on every rank, which pairs every point "
+                                         "and keeps the contact terms of its own nodes' columns")
+                           : std::string()));
     } else if (distributed_) {
       const Mesh& mesh = *model_.mesh;
       const std::vector<int> cells = model_.volume_cells();
@@ -294,7 +326,7 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   initial.nume_ordre = 0;
   initial.inst = instants[0];
   initial.nodal["DEPL"] = make_depl(u);
-  if (contact_) contact_->write_initial_fields(initial);
+  if (contact_) write_contact_fields(nullptr, initial);
   steps_.push_back(std::move(initial));
   for (size_t i = 1; i < instants.size(); ++i) {
     try {
@@ -345,8 +377,25 @@ void StaticSolver::advance(double t0, double t1, int level, Vector& u) {
   result.nume_ordre = static_cast<int>(steps_.size());
   result.inst = t1;
   result.nodal["DEPL"] = make_depl(u);
-  if (contact_) contact_->write_fields(u, result);
+  if (contact_) write_contact_fields(&u, result);
   steps_.push_back(std::move(result));
+}
+
+void StaticSolver::write_contact_fields(const Vector* u, ResultStep& step) const {
+  // In parts the hook's nodes are the whole surfaces' part's: its fields are written on those
+  // and kept on the part's nodes (the ones beyond are other ranks' and theirs to give).
+  const int part_nodes = model_.mesh->n_nodes();
+  const int hook_nodes = in_parts_ && surfaces_ ? surfaces_->mesh.n_nodes() : part_nodes;
+  auto resize = [](NodalField& f, int nodes) {
+    f.values.resize(static_cast<size_t>(nodes) * f.components.size(), 0.0);
+    f.defined.resize(static_cast<size_t>(nodes) * f.components.size(), 0);
+    f.n_nodes = nodes;
+  };
+  if (hook_nodes != part_nodes) resize(step.nodal.at("DEPL"), hook_nodes);
+  if (u) contact_->write_fields(*u, step);
+  else contact_->write_initial_fields(step);
+  if (hook_nodes != part_nodes)
+    for (auto& [name, field] : step.nodal) resize(field, part_nodes);
 }
 
 SystemLayout StaticSolver::system_layout(const Constraints& cons, const std::vector<int>& condensed,
@@ -361,14 +410,16 @@ SystemLayout StaticSolver::system_layout(const Constraints& cons, const std::vec
   for (const std::vector<int>* rows : {&condensed, &eliminated})
     for (int eq : *rows)
       if (cons.free_index[eq] >= 0) outside[cons.free_index[eq]] = 1;
-  std::vector<int> block_of_node(mesh.n_nodes(), -1);
+  // In parts with whole contact surfaces the unknowns' nodes are the surfaces' part's.
+  const Mesh& nodes = in_parts_ ? numbered_part().mesh : mesh;
+  std::vector<int> block_of_node(nodes.n_nodes(), -1);
   for (int eq = 0; eq < dofs_.n_dofs(); ++eq) {
     const int k = cons.free_index[eq], c = dofs_.component_of(eq);
     if (k < 0 || outside[k] || !is_displacement(c) || c >= layout.dim) continue;
     const int node = dofs_.node_of(eq);
     if (block_of_node[node] < 0) {
       block_of_node[node] = layout.n_blocks();
-      for (int d = 0; d < layout.dim; ++d) layout.coords.push_back(mesh.node(node)[d]);
+      for (int d = 0; d < layout.dim; ++d) layout.coords.push_back(nodes.node(node)[d]);
     }
     layout.block[k] = block_of_node[node];
     layout.component[k] = c;
@@ -380,15 +431,18 @@ SystemLayout StaticSolver::system_layout(const Constraints& cons, const std::vec
     layout.n_global = free_numbers_.n_global;
     layout.n_owned = free_numbers_.n_owned;
     // Node blocks for PETSc: every unknown's number (the owned nodes' dim unknowns in a row).
-    for (int eq = 0; eq < dofs_.n_dofs(); ++eq)
-      if (cons.free_index[eq] >= 0) layout.row.push_back(unknown_numbers_.global[eq]);
-    layout.first_row = unknown_numbers_.first;
-    layout.n_rows = unknown_numbers_.n_global;
-    layout.n_owned_rows = unknown_numbers_.n_owned;
-    layout.row_coords.resize(unknown_numbers_.n_owned);
-    for (int eq = 0; eq < unknown_numbers_.n_owned; ++eq) {
-      LUNASTER_ASSERT(dofs_.component_of(eq) == eq % layout.dim, "in parts every node carries dim unknowns in order");
-      layout.row_coords[eq] = mesh.node(dofs_.node_of(eq))[dofs_.component_of(eq)];
+    // Not with a hook's multipliers, which MUMPS alone solves in parts (run() refuses PETSc).
+    if (renumbered_contact_ == nullptr) {
+      for (int eq = 0; eq < dofs_.n_dofs(); ++eq)
+        if (cons.free_index[eq] >= 0) layout.row.push_back(unknown_numbers_.global[eq]);
+      layout.first_row = unknown_numbers_.first;
+      layout.n_rows = unknown_numbers_.n_global;
+      layout.n_owned_rows = unknown_numbers_.n_owned;
+      layout.row_coords.resize(unknown_numbers_.n_owned);
+      for (int eq = 0; eq < unknown_numbers_.n_owned; ++eq) {
+        LUNASTER_ASSERT(dofs_.component_of(eq) == eq % layout.dim, "in parts every node carries dim unknowns in order");
+        layout.row_coords[eq] = mesh.node(dofs_.node_of(eq))[dofs_.component_of(eq)];
+      }
     }
   } else if (distributed_) {
     layout.owner.assign(cons.n_free, -1);
@@ -1134,7 +1188,9 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         throw ConvergenceError("the residual became non-finite at instant " + sci(t));
       const bool rela_ok = options_.resi_glob_rela <= 0.0 || resi_rela <= options_.resi_glob_rela;
       const bool maxi_ok = options_.resi_glob_maxi <= 0.0 || resi_maxi <= options_.resi_glob_maxi;
-      const bool contact_ok = !contact_ || contact_->newton_converged();
+      bool contact_ok = !contact_ || contact_->newton_converged();
+      // In parts every rank pairs the whole surfaces alike; the ranks still decide together.
+      if (in_parts_ && contact_) contact_ok = parallel::max_over_ranks(contact_ok ? 0.0 : 1.0) == 0.0;
       // A later pass needs no solve when the new pairing or statuses left the residual where
       // the previous pass converged (at most twice it: e.g. a flat interface translated), or
       // three orders below RESI_GLOB_RELA (an iterative solve's round-off moves a re-pairing by
@@ -1531,6 +1587,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         throw;
       }
     }
+    if (in_parts_) settled = parallel::max_over_ranks(settled ? 0.0 : 1.0) == 0.0;
     if (settled) break;
   }
   log_.info("  converged in " + std::to_string(total_newton) + " Newton iteration(s), " +

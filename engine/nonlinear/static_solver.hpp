@@ -127,9 +127,16 @@ class StaticSolver {
   /// (collective). Each rank assembles its own nodes' columns, the Dirichlet conditions of its
   /// ghosts are their owners', and the results are on the part's nodes, ghosts included (they
   /// hold their owners' values). MUMPS and PETSc solve in parts; METHODE='AUTO', the backends
-  /// of one process, contact and linear relations are refused (DeckError). nullptr: the whole
-  /// model again.
-  void set_part(const MeshPart* part) { part_ = part; }
+  /// of one process and linear relations are refused (DeckError). nullptr: the whole model
+  /// again. With contact, `surfaces` is `part` with the contact surfaces whole
+  /// (with_whole_surfaces, step 5), whose mesh the hook was built on: its nodes beyond the
+  /// part's are ghosts of the system (their displacements come from their owners at each
+  /// exchange), each rank pairs every point and keeps the contact terms of its own columns. A
+  /// hook adding unknowns (multipliers) is refused there.
+  void set_part(const MeshPart* part, const MeshPart* surfaces = nullptr) {
+    part_ = part;
+    surfaces_ = surfaces;
+  }
 
  private:
   /// Advances u from instant t0 to t1, splitting the step on ConvergenceError.
@@ -246,6 +253,11 @@ class StaticSolver {
   /// unknowns, the same order) are numbered across the ranks by free_numbers_ and exchanged
   /// through free_halo_.
   const MeshPart* part_ = nullptr;
+  const MeshPart* surfaces_ = nullptr;  ///< part_ with whole contact surfaces (set_part), or null
+  /// In parts: the part whose nodes the unknowns are on (surfaces_ when given, else part_).
+  const MeshPart& numbered_part() const { return surfaces_ ? *surfaces_ : *part_; }
+  /// The hook's fields of a step (u null: its initial ones), on the model's nodes.
+  void write_contact_fields(const Vector* u, ResultStep& step) const;
   bool in_parts_ = false;
   std::unique_ptr<Halo> equation_halo_;
   std::unique_ptr<Halo> free_halo_;
@@ -303,7 +315,10 @@ class StaticSolver {
   const FeModel& model_;
   const MechanicalLoads& loads_;
   NewtonOptions options_;
-  ContactHook* contact_;
+  ContactHook* contact_;  ///< the hook of this run: given_contact_, or it renumbered (in parts)
+  ContactHook* given_contact_;
+  /// In parts, a hook with multipliers seen with the owned unknowns first (renumbered_hook.hpp).
+  std::unique_ptr<ContactHook> renumbered_contact_;
   const Log& log_;
   DofMap dofs_;
   std::vector<ResultStep> steps_;
