@@ -413,7 +413,6 @@ ConceptPtr affe_char_meca(const Args& args, Session& session) {
     for (const auto& occ : occurrences) {
       check_modl_axis(occ, mo);
       def.method = seed_method(occ.text("METHODE"));
-      require_method_for_parts(occ, "METHODE", occ.text("METHODE"), def.method, mo);
       def.zones.push_back(read_contact_zone(occ, *mo.maillage->mesh, mo.dim, def.method));
       read_contact_loops(occ, def);
     }

@@ -145,11 +145,15 @@ ContactSurfaces contact_surfaces(const engine::ContactDefinition& def, const Mod
   out.mesh = mo.maillage->mesh.get();
   if (!mo.in_parts()) return out;
   std::vector<std::vector<int>> lists;
+  std::vector<char> layered;  // mortar's exact method eliminates slave unknowns: their whole columns
   for (const engine::ContactZone& zone : def.zones) {
     lists.push_back(zone.slave_cells);
     lists.push_back(zone.master_cells);
+    layered.push_back(def.method == engine::ContactMethod::MortarLagrange);
+    layered.push_back(0);
   }
-  auto whole = std::make_shared<engine::SurfacePart>(engine::with_whole_surfaces(*mo.maillage->part, lists));
+  auto whole =
+      std::make_shared<engine::SurfacePart>(engine::with_whole_surfaces(*mo.maillage->part, lists, layered));
   for (size_t z = 0; z < def.zones.size(); ++z) {
     out.definition.zones[z].slave_cells = whole->lists[2 * z];
     out.definition.zones[z].master_cells = whole->lists[2 * z + 1];
@@ -157,15 +161,6 @@ ContactSurfaces contact_surfaces(const engine::ContactDefinition& def, const Mod
   out.mesh = &whole->part.mesh;
   out.part = std::move(whole);
   return out;
-}
-
-void require_method_for_parts(const catalog::Args& zone, const char* keyword, const std::string& given,
-                              engine::ContactMethod method, const Modele& mo) {
-  if (!mo.in_parts() || method != engine::ContactMethod::MortarLagrange) return;
-  throw zone.error(keyword, "'PENALISATION' with mortar contact on MODELE '" + mo.user_name +
-                                "', a model on a mesh in parts (mortar's exact method eliminates unknowns, which is "
-                                "not written for parts yet)",
-                   "'" + given + "'", {"read the mesh without PARTITIONNEUR for this contact method"});
 }
 
 }  // namespace lunaster::cmd

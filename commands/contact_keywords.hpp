@@ -36,10 +36,4 @@ struct ContactSurfaces {
 };
 ContactSurfaces contact_surfaces(const engine::ContactDefinition& def, const Modele& mo);
 
-/// On a mesh in parts every contact method but mortar's LAGRANGIEN, which eliminates unknowns
-/// (docs/distributed-model.md, step 5): throws the zone's error at `keyword` (whose value, or
-/// default, is `given`) for that one on a model in parts.
-void require_method_for_parts(const catalog::Args& zone, const char* keyword, const std::string& given,
-                              engine::ContactMethod method, const Modele& mo);
-
 }  // namespace lunaster::cmd

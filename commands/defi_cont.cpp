@@ -25,7 +25,6 @@ ConceptPtr defi_cont(const Args& args, Session& session) {
         algo == "PENALISATION" ? engine::ContactMethod::MortarPenalty : engine::ContactMethod::MortarLagrange;
     if (!def.zones.empty() && method != def.method)
       throw zone.error("ALGO_CONT", "the same contact algorithm in every zone", "'" + algo + "'");
-    require_method_for_parts(zone, "ALGO_CONT", algo, method, mo);
     def.method = method;
     engine::ContactZone z = read_contact_zone(zone, *mo.maillage->mesh, mo.dim, method);
     // COEF_CONT is the penalty of ALGO_CONT='PENALISATION' (Pa/m), the complementarity

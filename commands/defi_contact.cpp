@@ -27,7 +27,6 @@ ConceptPtr defi_contact(const Args& args, Session& session) {
     }
     if (!def.zones.empty() && method != def.method)
       throw zone.error("ALGO_CONT", "the same contact algorithm in every zone", "'" + algo + "'");
-    require_method_for_parts(zone, "ALGO_CONT", algo, method, mo);
     def.method = method;
     def.zones.push_back(read_contact_zone(zone, *mo.maillage->mesh, mo.dim, method));
   }

@@ -147,7 +147,8 @@ MeshPart distribute_mesh(const Mesh* whole) {
 }
 
 
-SurfacePart with_whole_surfaces(const MeshPart& part, const std::vector<std::vector<int>>& lists) {
+SurfacePart with_whole_surfaces(const MeshPart& part, const std::vector<std::vector<int>>& lists,
+                                const std::vector<char>& layered) {
   const Mesh& mesh = part.mesh;
   // Each list's cells over the ranks, in the whole mesh's numbers.
   std::vector<int> mine;
@@ -179,6 +180,19 @@ SurfacePart with_whole_surfaces(const MeshPart& part, const std::vector<std::vec
   std::vector<int> faces;
   for (int c = 0; c < mesh.n_cells(); ++c)
     if (given[c]) faces.push_back(c);
+  // A layered list's owned nodes: every volume cell around them (all in this part).
+  std::vector<char> layer_node(mesh.n_nodes(), 0);
+  bool any_layer = false;
+  for (size_t i = 0; i < lists.size() && i < layered.size(); ++i)
+    if (layered[i])
+      for (int c : lists[i])
+        for (int a = 0; a < mesh.cell_n_nodes(c); ++a)
+          if (part.owns(mesh.cell(c)[a])) layer_node[mesh.cell(c)[a]] = 1, any_layer = true;
+  if (any_layer)
+    for (int c = 0; c < mesh.n_cells(); ++c) {
+      if (cell_info(mesh.cell_types[c]).dim != mesh.dim) continue;
+      for (int a = 0; a < mesh.cell_n_nodes(c) && !given[c]; ++a) given[c] = layer_node[mesh.cell(c)[a]];
+    }
   if (!faces.empty()) {
     std::vector<int> volumes;
     for (int c = 0; c < mesh.n_cells(); ++c) {

@@ -57,8 +57,9 @@ MeshPart distribute_mesh(const Mesh* whole);
 /// A part with whole surfaces (docs/distributed-model.md, step 5: contact on a mesh in parts).
 /// `part.mesh` holds the nodes of the part in their local numbers, then the other nodes of the
 /// surfaces and of their volume cells (ghosts, owned by the ranks that own them in the whole
-/// mesh), and as cells only the surfaces' cells and the volume cells each of them bounds, in
-/// the whole mesh's order; `lists` are the given cell lists in its cell numbers.
+/// mesh), and as cells only the surfaces' cells and the volume cells each of them bounds (or,
+/// for a layered list, touches), in the whole mesh's order; `lists` are the given cell lists in
+/// its cell numbers.
 struct SurfacePart {
   MeshPart part;
   std::vector<std::vector<int>> lists;
@@ -70,7 +71,11 @@ struct SurfacePart {
 /// ranks holding it (a part holds every cell touching a node it owns, so the volume cells of a
 /// boundary cell it holds). The nodes of `part` keep their numbers: a vector of `part`'s nodes
 /// is the first entries of one on the result's nodes. Node names are kept on the surfaces' nodes
-/// only (the others are left empty: nothing on them is named).
-SurfacePart with_whole_surfaces(const MeshPart& part, const std::vector<std::vector<int>>& lists);
+/// only (the others are left empty: nothing on them is named). A list flagged in `layered` also
+/// brings every volume cell around each of its nodes (given by the node's owner, which holds
+/// them all) and their nodes: the whole stiffness columns of those nodes then have every row
+/// on each rank (mortar's eliminations of the slave surface's unknowns).
+SurfacePart with_whole_surfaces(const MeshPart& part, const std::vector<std::vector<int>>& lists,
+                                const std::vector<char>& layered = {});
 
 }  // namespace lunaster::engine

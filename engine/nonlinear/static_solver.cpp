@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <unordered_map>
 #include <map>
 #include <memory>
 
@@ -201,7 +202,7 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   }
   const int displacement_dofs = dofs_.n_dofs();
   if (contact_) {
-    contact_->set_dirichlet(loads_.dirichlet);
+    contact_->set_dirichlet(in_parts_ && surfaces_ ? owners_dirichlet() : loads_.dirichlet);
     contact_->add_dofs(dofs_);
   }
   const int n = dofs_.n_dofs();
@@ -222,7 +223,8 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
       // first (global_dofs.hpp), each class in its order, and the hook keeps its numbering.
       if (options_.solver == SolverKind::Petsc)
         throw DeckError("contact with multipliers (LAGS_C) on a mesh in parts is solved by MUMPS, not PETSc",
-                        {"SOLVEUR=_F{ METHODE = 'MUMPS' }, or a penalised contact (ALGO_CONT = 'PENALISATION')"});
+                        {"SOLVEUR=_F{ METHODE = 'MUMPS' }, or contact without multipliers: the discrete formulation's "
+                         "PENALISATION, or mortar (DEFI_CONT)"});
       std::vector<int> new_of_old(n);
       int next = 0;
       for (int owned_class : {1, 0})
@@ -379,6 +381,21 @@ void StaticSolver::advance(double t0, double t1, int level, Vector& u) {
   result.nodal["DEPL"] = make_depl(u);
   if (contact_) write_contact_fields(&u, result);
   steps_.push_back(std::move(result));
+}
+
+std::vector<DirichletValue> StaticSolver::owners_dirichlet() const {
+  // The part's loads miss the conditions of the surfaces' nodes beyond it (and of ghosts whose
+  // constrained faces it lacks): each node takes its owner's, who holds every one of its own.
+  const MeshPart& numbered = *surfaces_;
+  std::vector<double> imposed(3 * static_cast<size_t>(numbered.mesh.n_nodes()), 0.0);
+  for (const DirichletValue& d : loads_.dirichlet)
+    if (d.component >= 0 && d.component < 3) imposed[3 * static_cast<size_t>(d.node) + d.component] = 1.0;
+  NodeHalo(numbered).copy_to_ghosts(imposed, 3);
+  std::vector<DirichletValue> out;
+  for (int v = 0; v < numbered.mesh.n_nodes(); ++v)
+    for (int c = 0; c < 3; ++c)
+      if (imposed[3 * static_cast<size_t>(v) + c] != 0.0) out.push_back({v, c, 0.0, 0});
+  return out;
 }
 
 void StaticSolver::write_contact_fields(const Vector* u, ResultStep& step) const {
@@ -649,6 +666,46 @@ SolverKind StaticSolver::backend_for(MatrixKind kind) {
 /// the model. The terms of K' beyond K_RR are appended to `triplets` (as contact terms);
 /// `r_free` becomes r'. Returns the eliminated equations, whose rows and columns
 /// update_system replaces by a unit diagonal.
+SparseMatrix StaticSolver::gathered_columns(const std::vector<int>& nodes) const {
+  const int n = dofs_.n_dofs();
+  std::vector<char> mask(model_.mesh->n_nodes(), 0);
+  for (int v : nodes)
+    if (part_->owns(v)) mask[v] = 1;
+  const SparseMatrix mine = assemble_stiffness_matrix(model_, dofs_, &mask);
+  // Each column as its number across the ranks, its count, then (row's number, value) pairs
+  // (numbers below 2^53 travel exactly as doubles).
+  std::vector<double> packed;
+  for (int j = 0; j < static_cast<int>(mine.outerSize()); ++j) {
+    const Eigen::Index count = mine.outerIndexPtr()[j + 1] - mine.outerIndexPtr()[j];
+    if (count == 0) continue;
+    packed.push_back(static_cast<double>(unknown_numbers_.global[j]));
+    packed.push_back(static_cast<double>(count));
+    for (SparseMatrix::InnerIterator it(mine, j); it; ++it) {
+      packed.push_back(static_cast<double>(unknown_numbers_.global[it.row()]));
+      packed.push_back(it.value());
+    }
+  }
+  const std::vector<double> all = parallel::gather_all(packed);
+  std::unordered_map<long long, int> local;
+  local.reserve(static_cast<size_t>(n));
+  for (int eq = 0; eq < n; ++eq) local.emplace(unknown_numbers_.global[eq], eq);
+  std::vector<Triplet> t;
+  for (size_t at = 0; at < all.size();) {
+    const auto col = local.find(static_cast<long long>(all[at]));
+    const long long count = static_cast<long long>(all[at + 1]);
+    at += 2;
+    for (long long k = 0; k < count; ++k, at += 2) {
+      const auto row = local.find(static_cast<long long>(all[at]));
+      LUNASTER_ASSERT(col != local.end() && row != local.end(),
+                      "an eliminated unknown's stiffness column reaches an unknown this rank does not hold");
+      t.emplace_back(row->second, col->second, all[at + 1]);
+    }
+  }
+  SparseMatrix out(n, n);
+  out.setFromTriplets(t.begin(), t.end());
+  return out;
+}
+
 std::vector<int> StaticSolver::eliminate(const Constraints& cons, const std::vector<Elimination>& relations,
                                          const Vector& residual, std::vector<Triplet>& triplets, Vector& r_free) {
   const int n = dofs_.n_dofs();
@@ -664,7 +721,20 @@ std::vector<int> StaticSolver::eliminate(const Constraints& cons, const std::vec
   }
   // Columns of K at the eliminated equations: elastic part and contact triplets.
   std::vector<std::vector<std::pair<int, double>>> column(relations.size());
-  if (distributed_) {
+  if (in_parts_) {
+    // The owner of an eliminated unknown's node holds every cell around it: it assembles the
+    // node's columns whole and every rank gets them (kept while the set of nodes holds). Their
+    // rows are on every rank: the slave surfaces came with the cells around their nodes
+    // (with_whole_surfaces, layered).
+    std::vector<int> nodes;
+    for (int eq : eqs) nodes.push_back(dofs_.node_of(eq));
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    if (nodes != ghost_nodes_) ghost_ = gathered_columns(nodes), ghost_nodes_ = std::move(nodes);
+    for (size_t i = 0; i < relations.size(); ++i)
+      for (SparseMatrix::InnerIterator it(ghost_, relations[i].eq); it; ++it)
+        if (cons.free_index[it.row()] >= 0) column[i].emplace_back(static_cast<int>(it.row()), it.value());
+  } else if (distributed_) {
     // This rank holds only its own nodes' columns: every rank computes the whole columns of
     // the eliminated equations' nodes (kept while the set of nodes holds), so that each one
     // gets the whole fill and keeps its own columns of it.

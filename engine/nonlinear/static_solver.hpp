@@ -195,6 +195,9 @@ class StaticSolver {
                          const std::vector<int>& condensed, const std::vector<int>& eliminated);
   /// elastic_.ff back to K_ff (the values update_system overwrote); nothing to do when it holds K_ff.
   void restore_elastic();
+  /// In parts: the stiffness columns of `nodes`' unknowns, whole, on every rank (each assembled
+  /// by the node's owner; in this rank's numbering). Collective.
+  SparseMatrix gathered_columns(const std::vector<int>& nodes) const;
   std::vector<int> eliminate(const Constraints& cons, const std::vector<Elimination>& relations, const Vector& residual,
                              std::vector<Triplet>& triplets, Vector& r_free);
   /// The node blocks of the system's equations (condensed and eliminated equations left
@@ -256,6 +259,10 @@ class StaticSolver {
   const MeshPart* surfaces_ = nullptr;  ///< part_ with whole contact surfaces (set_part), or null
   /// In parts: the part whose nodes the unknowns are on (surfaces_ when given, else part_).
   const MeshPart& numbered_part() const { return surfaces_ ? *surfaces_ : *part_; }
+  /// In parts with whole contact surfaces: the (node, component) pairs under Dirichlet
+  /// conditions on the surfaces' part, each node's as its owner has them (values not given: a
+  /// hook reads which unknowns are imposed). Collective.
+  std::vector<DirichletValue> owners_dirichlet() const;
   /// The hook's fields of a step (u null: its initial ones), on the model's nodes.
   void write_contact_fields(const Vector* u, ResultStep& step) const;
   bool in_parts_ = false;

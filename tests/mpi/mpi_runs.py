@@ -32,10 +32,10 @@ usage: mpi_runs.py CASE LUNASTER MESHGEN SOURCE_DIR SCRATCH_DIR
                 rank's part (a node name no part holds, an AXIS cell at x < 0, a command not written
                 for parts) stop every rank with one error and the deck's status; the tables
                 POST_RELEVE_T makes are the serial ones on every rank (reactions_tables.lua)
-  contact_parts_suite  the contact decks a mesh in parts takes (CONTINUE, discrete CONTRAINTE and
-                PENALISATION, mortar PENALISATION; 2D, AXIS, 3D) with every mesh read in parts, on 1, 2
-                and 3 ranks, against the serial run on whole meshes, as parts_suite; mortar's LAGRANGIEN
-                and discrete contact's QUAD8 ties refused on every rank with one message
+  contact_parts_suite  the contact decks a mesh in parts takes (every method; 2D, AXIS, 3D; MUMPS and
+                PETSc) with every mesh read in parts, on 1, 2 and 3 ranks, against the serial run on
+                whole meshes, as parts_suite; linear relations and LDLT_SP refused on every rank with
+                one message
   rank_failure  a rank that fails alone brings the run down: a budget stop inside the collective
                 MUMPS factorisation (time limit on every rank; memory limit on rank 0 only, then
                 on rank 1 only); a rank that stops on a deck error while the other waits for it in
@@ -437,14 +437,23 @@ PARTS_DECKS = ["patch_2d", "patch_3d", "axis_patch", "axis_thick_cylinder", "clo
 # What a deck of linear elasticity does not use (contact_parts_suite takes the contact decks).
 NOT_IN_PARTS = re.compile(r"\b(IMPR_MESURE|DEFI_CONTACT|DEFI_CONT|CONTACT|LIAISON_DDL|LIAISON_UNIF|LIAISON_MAIL)\b")
 # The contact decks of testcases/ that a mesh in parts takes (docs/distributed-model.md, step 5):
-# CONTINUE, the discrete CONTRAINTE and PENALISATION, mortar's PENALISATION, 2D, AXIS and 3D;
-# not mortar's LAGRANGIEN, discrete contact's QUAD8 mid-side ties (linear relations) nor solver
-# options that gather the whole system (contact_parts_suite checks that those are refused).
-CONTACT_PARTS_DECKS = ["axis_contact_patch_continue", "axis_contact_patch_discrete", "clockwise_2d_contact",
-                       "contact_step_subdivision", "contact_tole_proj_ext", "newton_matrix_policy", "solver_singularity",
-                       "ssnp121a", "ssnp121a_fine", "ssnp121a_seed_syntax", "ssnp121b", "ssnp121c", "ssnp121c_mortar",
-                       "ssnp121d", "ssnp121e", "ssnp121e_simpson", "ssnp121f", "ssnp121f_quad8_on_tria6", "ssnp121g",
-                       "ssnp121h", "ssnp121i", "ssnp121j", "ssnp121k", "ssnp121k_quad4_on_tria6"]
+# every method (CONTINUE, the discrete CONTRAINTE and PENALISATION, mortar's LAGRANGIEN and
+# PENALISATION), 2D, AXIS and 3D, MUMPS and PETSc; not the decks with linear relations (LIAISON_DDL,
+# discrete contact's QUAD8 mid-side ties) or solver options that gather the whole system on one
+# rank (contact_parts_suite checks that those are refused).
+CONTACT_PARTS_DECKS = ["axis_contact_patch_continue", "axis_contact_patch_discrete", "axis_contact_patch_mortar",
+                       "clockwise_2d_contact", "contact_step_subdivision", "contact_tole_proj_ext",
+                       "hertz_cylinder_dplan", "hertz_sphere_3d", "hertz_sphere_axis", "mortar_bimaterial_2d",
+                       "mortar_bimaterial_3d", "mortar_petsc_in_parts", "mortar_rotated_2d", "mortar_rotated_3d",
+                       "mortar_two_zones_2d", "mortar_two_zones_3d", "newton_matrix_policy", "ring_sleeve_mortar",
+                       "ring_sleeve_mortar_quad8", "solver_singularity", "ssnp121a", "ssnp121a_fine",
+                       "ssnp121a_mortar", "ssnp121a_mortar_dist", "ssnp121a_mortar_meca_non_line",
+                       "ssnp121a_seed_syntax", "ssnp121b", "ssnp121b_mortar", "ssnp121c", "ssnp121c_mortar",
+                       "ssnp121d", "ssnp121d_mortar", "ssnp121e", "ssnp121e_mortar", "ssnp121e_simpson", "ssnp121f",
+                       "ssnp121f_mortar", "ssnp121f_mortar_quad8_on_tria6", "ssnp121f_quad8_on_tria6", "ssnp121g",
+                       "ssnp121g_mortar", "ssnp121h", "ssnp121h_mortar", "ssnp121h_mortar_seg3_slave", "ssnp121i",
+                       "ssnp121i_mortar", "ssnp121j", "ssnp121j_mortar", "ssnp121k", "ssnp121k_mortar",
+                       "ssnp121k_mortar_quad4_on_tria6", "ssnp121k_quad4_on_tria6"]
 
 
 def in_parts_against_serial(exe, source, scratch, names, least_checks, least_med_values, ill_conditioned=False):
@@ -590,19 +599,18 @@ def contact_parts_suite(exe, source, scratch):
     one message and the deck's status."""
     for name in CONTACT_PARTS_DECKS:
         text = (source / "testcases" / f"{name}.lua").read_text()
-        check(re.search(r"\b(DEFI_CONTACT|DEFI_CONT|CONTACT)\b", text) and "LAGRANGIEN" not in text,
-              f"{name}: a contact deck, without mortar's LAGRANGIEN")
-    _, parts = in_parts_against_serial(exe, source, scratch, CONTACT_PARTS_DECKS, 800, 1000, ill_conditioned=True)
+        check(re.search(r"\b(DEFI_CONTACT|DEFI_CONT|CONTACT)\b", text), f"{name}: a contact deck")
+    _, parts = in_parts_against_serial(exe, source, scratch, CONTACT_PARTS_DECKS, 1900, 1000, ill_conditioned=True)
     for key, ranks in (("np2", 2), ("np3", 3)):
         outputs = compare_checks.decks(scratch / f"{key}.json")
         whole = [n for n, d in outputs.items() if "the contact surfaces are whole on every rank" not in d["output"]]
         check(not whole, f"{ranks} ranks: every deck pairs on the whole contact surfaces ({whole[:3]})")
     # Refused in parts, said once with the deck's status.
     cases = [
-        ("hertz_cylinder_dplan",
-         r"DEFI_CONT: ZONE\[1\]\.ALGO_CONT: expected 'PENALISATION' with mortar contact on MODELE 'MO', a model on a "
-         r"mesh in parts"),
         ("ssnp121d_discrete", r"STAT_NON_LINE: linear relations on a mesh in parts: 240 \(discrete contact's QUAD8"),
+        ("ssnp121a_mortar_relation", r"AFFE_CHAR_MECA: LIAISON_DDL: expected DDL_IMPO, PRES_REP, FORCE_NODALE or "
+                                     r"CONTACT on MODELE 'MO', a model on a mesh in parts"),
+        ("petsc_solvers", r"STAT_NON_LINE: PRE_COND='LDLT_SP' is not available on a mesh in parts"),
     ]
     for name, says in cases:
         text = (source / "testcases" / f"{name}.lua").read_text()

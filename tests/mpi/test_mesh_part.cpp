@@ -162,61 +162,78 @@ TEST(SurfacePart, EveryRankHoldsTheWholeSurfacesBesideItsPart) {
     const MeshPart part = part_of(whole);
     std::vector<std::vector<int>> lists;
     for (const std::string& name : names) lists.push_back(part.mesh.cell_groups.at(name));
-    const SurfacePart s = with_whole_surfaces(part, lists);
-    const Mesh& m = s.part.mesh;
-    // The part's nodes keep their numbers, owners and coordinates; the others follow.
-    ASSERT_GE(m.n_nodes(), part.mesh.n_nodes()) << scene.name;
-    EXPECT_EQ(s.part.n_owned_nodes, part.n_owned_nodes);
-    for (int v = 0; v < part.mesh.n_nodes(); ++v) {
-      EXPECT_EQ(s.part.global_node[v], part.global_node[v]);
-      EXPECT_EQ(s.part.node_owner[v], part.node_owner[v]);
-    }
-    // Every node where the whole mesh has it, owned by the rank owning it there.
-    std::map<int, int> owner;
-    const std::vector<int> owned(part.global_node.begin(), part.global_node.begin() + part.n_owned_nodes);
-    const std::vector<int> counts = parallel::gather_all(std::vector<int>{part.n_owned_nodes});
-    const std::vector<int> all_owned = parallel::gather_all(owned);
-    for (int r = 0, at = 0; r < static_cast<int>(counts.size()); at += counts[r++])
-      for (int k = 0; k < counts[r]; ++k) owner[all_owned[at + k]] = r;
-    for (int v = 0; v < m.n_nodes(); ++v) {
-      const int g = s.part.global_node[v];
-      for (int i = 0; i < 3; ++i) EXPECT_EQ(m.node(v)[i], whole.node(g)[i]) << scene.name << " node " << g;
-      EXPECT_EQ(s.part.node_owner[v], owner.at(g)) << scene.name << " node " << g;
-      EXPECT_EQ(v < part.n_owned_nodes, owner.at(g) == parallel::rank());
-    }
-    // Every cell is the whole mesh's, in its order.
-    for (int c = 0; c < m.n_cells(); ++c) {
-      const int g = s.part.global_cell[c];
-      if (c > 0) {
-        EXPECT_LT(s.part.global_cell[c - 1], g);
+    for (const bool layer : {false, true}) {
+      // Layered: the first list brings every volume cell around its nodes (mortar's slave side).
+      const std::vector<char> layered = {static_cast<char>(layer)};
+      const SurfacePart s = with_whole_surfaces(part, lists, layered);
+      const Mesh& m = s.part.mesh;
+      // The part's nodes keep their numbers, owners and coordinates; the others follow.
+      ASSERT_GE(m.n_nodes(), part.mesh.n_nodes()) << scene.name;
+      EXPECT_EQ(s.part.n_owned_nodes, part.n_owned_nodes);
+      for (int v = 0; v < part.mesh.n_nodes(); ++v) {
+        EXPECT_EQ(s.part.global_node[v], part.global_node[v]);
+        EXPECT_EQ(s.part.node_owner[v], part.node_owner[v]);
       }
-      ASSERT_EQ(m.cell_types[c], whole.cell_types[g]);
-      ASSERT_EQ(m.cell_n_nodes(c), whole.cell_n_nodes(g));
-      for (int a = 0; a < m.cell_n_nodes(c); ++a) EXPECT_EQ(s.part.global_node[m.cell(c)[a]], whole.cell(g)[a]);
-      EXPECT_EQ(m.cell_names[c], whole.cell_names[g]);
-    }
-    // Each list is its whole group, and each of its cells comes with the volume cells bounded by it.
-    std::vector<int> volumes_expected;
-    for (size_t i = 0; i < names.size(); ++i) {
-      std::vector<int> globals;
-      for (int c : s.lists[i]) globals.push_back(s.part.global_cell[c]);
-      EXPECT_EQ(globals, whole.cell_groups.at(names[i])) << scene.name << " " << names[i];
-      for (int f : whole.cell_groups.at(names[i]))
+      // Every node where the whole mesh has it, owned by the rank owning it there.
+      std::map<int, int> owner;
+      const std::vector<int> owned(part.global_node.begin(), part.global_node.begin() + part.n_owned_nodes);
+      const std::vector<int> counts = parallel::gather_all(std::vector<int>{part.n_owned_nodes});
+      const std::vector<int> all_owned = parallel::gather_all(owned);
+      for (int r = 0, at = 0; r < static_cast<int>(counts.size()); at += counts[r++])
+        for (int k = 0; k < counts[r]; ++k) owner[all_owned[at + k]] = r;
+      for (int v = 0; v < m.n_nodes(); ++v) {
+        const int g = s.part.global_node[v];
+        for (int i = 0; i < 3; ++i) EXPECT_EQ(m.node(v)[i], whole.node(g)[i]) << scene.name << " node " << g;
+        EXPECT_EQ(s.part.node_owner[v], owner.at(g)) << scene.name << " node " << g;
+        EXPECT_EQ(v < part.n_owned_nodes, owner.at(g) == parallel::rank());
+      }
+      // Every cell is the whole mesh's, in its order.
+      for (int c = 0; c < m.n_cells(); ++c) {
+        const int g = s.part.global_cell[c];
+        if (c > 0) {
+          EXPECT_LT(s.part.global_cell[c - 1], g);
+        }
+        ASSERT_EQ(m.cell_types[c], whole.cell_types[g]);
+        ASSERT_EQ(m.cell_n_nodes(c), whole.cell_n_nodes(g));
+        for (int a = 0; a < m.cell_n_nodes(c); ++a) EXPECT_EQ(s.part.global_node[m.cell(c)[a]], whole.cell(g)[a]);
+        EXPECT_EQ(m.cell_names[c], whole.cell_names[g]);
+      }
+      // Each list is its whole group, and each of its cells comes with the volume cells bounded by it.
+      std::vector<int> volumes_expected;
+      for (size_t i = 0; i < names.size(); ++i) {
+        std::vector<int> globals;
+        for (int c : s.lists[i]) globals.push_back(s.part.global_cell[c]);
+        EXPECT_EQ(globals, whole.cell_groups.at(names[i])) << scene.name << " " << names[i];
+        for (int f : whole.cell_groups.at(names[i]))
+          for (int c = 0; c < whole.n_cells(); ++c) {
+            if (cell_info(whole.cell_types[c]).dim != whole.dim) continue;
+            const int* cn = whole.cell(c);
+            bool all = true;
+            for (int a = 0; a < whole.cell_n_nodes(f) && all; ++a)
+              all = std::find(cn, cn + whole.cell_n_nodes(c), whole.cell(f)[a]) != cn + whole.cell_n_nodes(c);
+            if (all) volumes_expected.push_back(c);
+          }
+      }
+      if (layer) {
+        std::vector<char> around(whole.n_nodes(), 0);
+        for (int f : whole.cell_groups.at(names[0]))
+          for (int a = 0; a < whole.cell_n_nodes(f); ++a) around[whole.cell(f)[a]] = 1;
         for (int c = 0; c < whole.n_cells(); ++c) {
           if (cell_info(whole.cell_types[c]).dim != whole.dim) continue;
-          const int* cn = whole.cell(c);
-          bool all = true;
-          for (int a = 0; a < whole.cell_n_nodes(f) && all; ++a)
-            all = std::find(cn, cn + whole.cell_n_nodes(c), whole.cell(f)[a]) != cn + whole.cell_n_nodes(c);
-          if (all) volumes_expected.push_back(c);
+          for (int a = 0; a < whole.cell_n_nodes(c); ++a)
+            if (around[whole.cell(c)[a]]) {
+              volumes_expected.push_back(c);
+              break;
+            }
         }
+      }
+      std::sort(volumes_expected.begin(), volumes_expected.end());
+      volumes_expected.erase(std::unique(volumes_expected.begin(), volumes_expected.end()), volumes_expected.end());
+      std::vector<int> volumes;
+      for (int c = 0; c < m.n_cells(); ++c)
+        if (cell_info(m.cell_types[c]).dim == whole.dim) volumes.push_back(s.part.global_cell[c]);
+      EXPECT_EQ(volumes, volumes_expected) << scene.name << (layer ? ", layered" : "");
     }
-    std::sort(volumes_expected.begin(), volumes_expected.end());
-    volumes_expected.erase(std::unique(volumes_expected.begin(), volumes_expected.end()), volumes_expected.end());
-    std::vector<int> volumes;
-    for (int c = 0; c < m.n_cells(); ++c)
-      if (cell_info(m.cell_types[c]).dim == whole.dim) volumes.push_back(s.part.global_cell[c]);
-    EXPECT_EQ(volumes, volumes_expected) << scene.name;
   }
 }
 
