@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Contact on a mesh in parts against the same deck on the shared model (tests/bench/README.md,
+# "Contact on a mesh in parts"): tests/bench/ssnp121i_refined_mortar.lua (mortar LAGRANGIEN, V1
+# HEXA8 under V2 HEXA20, about 3.2e5 unknowns for REFINE = 10) solved by CG + BoomerAMG to 1e-12,
+# its mesh read with LIRE_MAILLAGE PARTITIONNEUR='PTSCOTCH' (parts: each rank its part and the
+# contact surfaces whole) or without it (shared: METHODE='PETSC' shares the model among the ranks,
+# every rank holding the whole mesh and fields). The two in turn, RUNS times, under mpirun -np NP;
+# each rank's peak from its own /usr/bin/time. The deck checks the analytical values at 1e-8.
+# Usage: tests/bench/contact_parts.sh [BUILD_DIR] [REFINE] [NP] [RUNS]   (Release build; OpenMPI as
+# root needs OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1)
+set -euo pipefail
+build=${1:-build}; refine=${2:-10}; np=${3:-2}; runs=${4:-3}
+root=$(cd "$(dirname "$0")/../.." && pwd)
+work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
+"$root/$build/lunaster-meshgen" --v1 hexa8:5x5x1 --v2 hexa20:4x4x1 --refine "$refine" \
+  -o "$work/ssnp121i_refined.med" >/dev/null
+solveur="SOLVEUR = _F{ METHODE = 'PETSC', ALGORITHME = 'CG', PRE_COND = 'BOOMER', RESI_RELA = 1.0e-12 },"
+for mode in parts shared; do
+  partitioner=""; [ "$mode" = parts ] && partitioner=", PARTITIONNEUR = 'PTSCOTCH'"
+  sed -e "s/FICHIER = 'ssnp121i_refined.med' }/FICHIER = 'ssnp121i_refined.med'$partitioner }/" \
+      -e "s/INCREMENT = _F{ LIST_INST = L_INST } }/INCREMENT = _F{ LIST_INST = L_INST }, $solveur }/" \
+      "$root/tests/bench/ssnp121i_refined_mortar.lua" > "$work/$mode.lua"
+  grep -q "METHODE = 'PETSC'" "$work/$mode.lua" || { echo "the deck's STAT_NON_LINE changed: update $0" >&2; exit 2; }
+done
+for i in $(seq "$runs"); do for mode in parts shared; do
+  echo "=== $mode, run $i, $np ranks, refine $refine"
+  (cd "$work" && /usr/bin/time -f "whole %e s" mpirun -np "$np" sh -c \
+     '/usr/bin/time -o "peak.$OMPI_COMM_WORLD_RANK" -f "rank $OMPI_COMM_WORLD_RANK peak %M KB" "$@"' x \
+     "$root/$build/lunaster" run "$mode.lua" --out "$work/out" 2>&1 |
+     grep -E "check\(s\) OK|whole|mesh in parts on|model shared among|CG solve" || true)
+  grep -h peak "$work"/peak.*; rm -f "$work"/peak.*
+done; done
