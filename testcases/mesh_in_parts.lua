@@ -1,6 +1,7 @@
 -- A mesh read in parts (LIRE_MAILLAGE PARTITIONNEUR = 'PTSCOTCH'): a unit cube of 12^3 HEXA8 clamped
 -- at the bottom, pressed on top (1e6 Pa) and on its x = 1 side (2e5 Pa), pulled along y at a corner
--- (5e4 N), the loads ramped over two instants. Every command that takes a mesh in parts is here:
+-- (5e4 N), the loads ramped over two instants. Every command of linear elasticity that takes a mesh
+-- in parts is here (contact on parts: mortar_petsc_in_parts.lua and mpi.contact_parts_suite):
 -- DEFI_GROUP, MODI_MAILLAGE, AFFE_*, STAT_NON_LINE, CALC_CHAMP (stresses, nodal forces, reactions),
 -- TEST_RESU (a node's value, reductions over groups and the whole mesh), IMPR_RESU (MED, table).
 -- Run alone it is one part; under `mpirun -np N lunaster run` each rank holds one part, and the
