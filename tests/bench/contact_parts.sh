@@ -22,11 +22,6 @@ for mode in parts shared; do
       "$root/tests/bench/ssnp121i_refined_mortar.lua" > "$work/$mode.lua"
   grep -q "METHODE = 'PETSC'" "$work/$mode.lua" || { echo "the deck's STAT_NON_LINE changed: update $0" >&2; exit 2; }
 done
-for i in $(seq "$runs"); do for mode in parts shared; do
-  echo "=== $mode, run $i, $np ranks, refine $refine"
-  (cd "$work" && /usr/bin/time -f "whole %e s" mpirun -np "$np" sh -c \
-     '/usr/bin/time -o "peak.$OMPI_COMM_WORLD_RANK" -f "rank $OMPI_COMM_WORLD_RANK peak %M KB" "$@"' x \
-     "$root/$build/lunaster" run "$mode.lua" --out "$work/out" 2>&1 |
-     grep -E "check\(s\) OK|whole|mesh in parts on|model shared among|CG solve" || true)
-  grep -h peak "$work"/peak.*; rm -f "$work"/peak.*
-done; done
+label="refine $refine" keep="check\(s\) OK|mesh in parts on|model shared among|CG solve"
+. "$root/tests/bench/in_turn.sh"
+in_turn

@@ -37,11 +37,6 @@ done
 # The VALE_CALC are those of N = 99 (runs of 2026-12-06); other sizes print NOOK with their values.
 # A NOOK ends rank 0 with status 1, and mpirun may then end the other ranks before their
 # /usr/bin/time writes its peak.
-for i in $(seq "$runs"); do for mode in parts shared; do
-  echo "=== $mode, run $i, $np ranks, N = $n"
-  (cd "$work" && /usr/bin/time -f "whole %e s" mpirun -np "$np" sh -c \
-     '/usr/bin/time -o "peak.$OMPI_COMM_WORLD_RANK" -f "rank $OMPI_COMM_WORLD_RANK peak %M KB" "$@"' x \
-     "$root/$build/lunaster" run "$mode.lua" --out "$work/out" 2>&1 |
-     grep -E "calc=|check\(s\) OK|whole|mesh in parts on|model shared among" || true)
-  grep -h peak "$work"/peak.*; rm -f "$work"/peak.*
-done; done
+label="N = $n" keep="calc=|check\(s\) OK|mesh in parts on|model shared among"
+. "$root/tests/bench/in_turn.sh"
+in_turn
