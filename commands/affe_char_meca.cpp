@@ -416,13 +416,8 @@ ConceptPtr affe_char_meca(const Args& args, Session& session) {
       def.zones.push_back(read_contact_zone(occ, *mo.maillage->mesh, mo.dim, def.method));
       read_contact_loops(occ, def);
     }
-    // On a mesh in parts the surfaces are checked whole (the ranks agree before gathering them).
-    if (mo.in_parts()) agree_over_ranks(nullptr);
-    const ContactSurfaces surfaces = contact_surfaces(def, mo);
-    for (size_t z = 0; z < occurrences.size(); ++z)
-      warn_coincident_slave_nodes(occurrences[z], surfaces.definition.zones[z], *surfaces.mesh, *mo.maillage,
-                                  session);
-    warn_incompatible_pairs(surfaces.definition, *surfaces.mesh, session);
+    // On a mesh in parts the surfaces are checked whole.
+    warn_contact_surfaces(occurrences, contact_surfaces(def, mo), *mo.maillage, session, true);
   }
   return load;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "commands/parts.hpp"
 #include "commands/selection.hpp"
 #include "engine/contact/compatibility.hpp"
 #include "engine/mesh/mesh_checks.hpp"
@@ -144,6 +145,7 @@ ContactSurfaces contact_surfaces(const engine::ContactDefinition& def, const Mod
   out.definition = def;
   out.mesh = mo.maillage->mesh.get();
   if (!mo.in_parts()) return out;
+  agree_over_ranks(nullptr);
   std::vector<std::vector<int>> lists;
   std::vector<char> layered;  // mortar's exact method eliminates slave unknowns: their whole columns
   for (const engine::ContactZone& zone : def.zones) {
@@ -161,6 +163,13 @@ ContactSurfaces contact_surfaces(const engine::ContactDefinition& def, const Mod
   out.mesh = &whole->part.mesh;
   out.part = std::move(whole);
   return out;
+}
+
+void warn_contact_surfaces(const std::vector<catalog::Args>& zone_args, const ContactSurfaces& surfaces,
+                           const Maillage& ma, Session& session, bool pairs) {
+  for (size_t z = 0; z < zone_args.size(); ++z)
+    warn_coincident_slave_nodes(zone_args[z], surfaces.definition.zones[z], *surfaces.mesh, ma, session);
+  if (pairs) warn_incompatible_pairs(surfaces.definition, *surfaces.mesh, session);
 }
 
 }  // namespace lunaster::cmd

@@ -28,12 +28,18 @@ void warn_coincident_slave_nodes(const catalog::Args& zone_args, const engine::C
 /// A contact definition's surfaces as a serial run sees them: the model's mesh and the
 /// definition itself, or, on a mesh in parts (docs/distributed-model.md, step 5), the surfaces
 /// whole on every rank (engine::with_whole_surfaces) and the definition's cells renumbered on
-/// them. Collective on a mesh in parts: every rank calls it, after agreeing (commands/parts.hpp).
+/// them. Collective on a mesh in parts: every rank calls it; the ranks agree first on what the
+/// command has read (commands/parts.hpp), so none gathers while another has stopped.
 struct ContactSurfaces {
   std::shared_ptr<const engine::SurfacePart> part;  ///< null on a whole mesh
   engine::ContactDefinition definition;
   const engine::Mesh* mesh = nullptr;
 };
 ContactSurfaces contact_surfaces(const engine::ContactDefinition& def, const Modele& mo);
+/// The warnings a contact definition gets where the deck names it, on its surfaces as a serial
+/// run sees them: coincident slave nodes per zone (`zone_args[z]` the zone's occurrence) and, with
+/// `pairs`, the incompatible slave/master pairs.
+void warn_contact_surfaces(const std::vector<catalog::Args>& zone_args, const ContactSurfaces& surfaces,
+                           const Maillage& ma, Session& session, bool pairs);
 
 }  // namespace lunaster::cmd

@@ -2,7 +2,6 @@
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
 #include "commands/contact_keywords.hpp"
-#include "commands/parts.hpp"
 #include "commands/selection.hpp"
 #include "engine/contact/contact_factory.hpp"
 #include "engine/core/error.hpp"
@@ -35,12 +34,9 @@ ConceptPtr defi_cont(const Args& args, Session& session) {
     def.zones.push_back(std::move(z));
   }
   // The surfaces are checked here, where the deck names them (boundary of the model, cell
-  // types); on a mesh in parts whole (the ranks agree before gathering them).
-  if (mo.in_parts()) agree_over_ranks(nullptr);
+  // types); on a mesh in parts whole.
   const ContactSurfaces surfaces = contact_surfaces(def, mo);
-  const auto zones = args.factors("ZONE");
-  for (size_t z = 0; z < zones.size(); ++z)
-    warn_coincident_slave_nodes(zones[z], surfaces.definition.zones[z], *surfaces.mesh, *mo.maillage, session);
+  warn_contact_surfaces(args.factors("ZONE"), surfaces, *mo.maillage, session, false);
   engine::make_contact_hook(surfaces.definition, *surfaces.mesh, mo.dim);
   return result;
 }

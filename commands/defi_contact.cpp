@@ -2,7 +2,6 @@
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
 #include "commands/contact_keywords.hpp"
-#include "commands/parts.hpp"
 
 namespace lunaster::cmd {
 
@@ -30,13 +29,8 @@ ConceptPtr defi_contact(const Args& args, Session& session) {
     def.method = method;
     def.zones.push_back(read_contact_zone(zone, *mo.maillage->mesh, mo.dim, method));
   }
-  // On a mesh in parts the surfaces are checked whole (the ranks agree before gathering them).
-  if (mo.in_parts()) agree_over_ranks(nullptr);
-  const ContactSurfaces surfaces = contact_surfaces(def, mo);
-  const auto zones = args.factors("ZONE");
-  for (size_t z = 0; z < zones.size(); ++z)
-    warn_coincident_slave_nodes(zones[z], surfaces.definition.zones[z], *surfaces.mesh, *mo.maillage, session);
-  warn_incompatible_pairs(surfaces.definition, *surfaces.mesh, session);
+  // On a mesh in parts the surfaces are checked whole.
+  warn_contact_surfaces(args.factors("ZONE"), contact_surfaces(def, mo), *mo.maillage, session, true);
   return result;
 }
 

@@ -304,7 +304,6 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
   ContactSurfaces surfaces;
   std::unique_ptr<engine::ContactHook> hook;
   if (contact) {
-    if (part) agree_over_ranks(nullptr);  // before gathering the surfaces: no rank waits for one that stopped
     surfaces = contact_surfaces(*contact, *result->modele);
     engine::ContactDefinition& definition = surfaces.definition;
     // The contact measures follow the model: r dl per radian on an AXIS model (MODL_AXIS, when
