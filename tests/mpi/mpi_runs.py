@@ -460,9 +460,10 @@ def in_parts_against_serial(exe, source, scratch, names, least_checks, least_med
     """The decks `names` of testcases/ with every mesh read in parts, run by `lunaster verify` on 1,
     2 and 3 ranks, against their serial run on whole meshes: the same checks and statuses, every
     value to 1e-8 of itself or of its field's scale, and the same output files (MED files and
-    tables likewise, each MED file more than `least_med_values` floats). With `ill_conditioned`, the values two serial solvers (AUTO, MUMPS) already
-    give differently are compared by status only (a deck made near-singular on purpose). Returns
-    the folders of the decks on whole meshes and in parts."""
+    tables likewise, each MED file more than `least_med_values` floats). With `ill_conditioned`,
+    the values two serial solvers (AUTO, MUMPS) already give differently are compared by status
+    only (a deck made near-singular on purpose). Returns the folders of the decks on whole meshes
+    and in parts."""
     scratch.mkdir(parents=True)
     whole, parts = scratch / "whole", scratch / "parts"
     for folder in (whole, parts):
