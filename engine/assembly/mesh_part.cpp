@@ -206,11 +206,7 @@ SurfacePart with_whole_surfaces(const MeshPart& part, const std::vector<std::vec
       const int v0 = mesh.cell(f)[0];
       for (int p = around.start[v0]; p < around.start[v0 + 1]; ++p) {
         const int v = volumes[around.positions[p]];
-        const int* vn = mesh.cell(v);
-        const int nn = mesh.cell_n_nodes(v);
-        bool all = true;
-        for (int a = 0; a < mesh.cell_n_nodes(f) && all; ++a) all = std::find(vn, vn + nn, mesh.cell(f)[a]) != vn + nn;
-        if (all) given[v] = 1;
+        if (mesh.cell_holds(v, mesh.cell(f), mesh.cell_n_nodes(f))) given[v] = 1;
       }
     }
   }

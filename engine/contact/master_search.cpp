@@ -149,11 +149,9 @@ MasterSurface::MasterSurface(const Mesh& mesh, std::vector<int> cells, bool line
     double sign = 1.0;
     const int nv = surface_n_vertices(full);
     for (int vol : node_volumes[mesh.cell(c)[0]]) {
+      if (!mesh.cell_holds(vol, mesh.cell(c), nv)) continue;
       const int* vn = mesh.cell(vol);
       const int vnn = mesh.cell_n_nodes(vol);
-      bool all = true;
-      for (int a = 0; a < nv && all; ++a) all = std::find(vn, vn + vnn, mesh.cell(c)[a]) != vn + vnn;
-      if (!all) continue;
       double xyz[3 * kMaxSurfaceNodes], cv[3] = {0, 0, 0};
       for (int a = 0; a < surface_n_nodes(full); ++a)
         for (int i = 0; i < 3; ++i) xyz[3 * a + i] = x0[3 * mesh.cell(c)[a] + i];

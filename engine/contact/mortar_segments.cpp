@@ -74,13 +74,8 @@ std::vector<OrientedCell> orient_surface(const Mesh& mesh, int dim, const std::v
     const int nv = surface_n_vertices(oc.type);
     // Volume cells holding every vertex of the face.
     int owner = -1, n_owners = 0;
-    for (int v : volumes_of_node[nodes[0]]) {
-      const int* vn = mesh.cell(v);
-      const int nn = mesh.cell_n_nodes(v);
-      bool all = true;
-      for (int a = 1; a < nv && all; ++a) all = std::find(vn, vn + nn, nodes[a]) != vn + nn;
-      if (all) owner = v, ++n_owners;
-    }
+    for (int v : volumes_of_node[nodes[0]])
+      if (mesh.cell_holds(v, nodes + 1, nv - 1)) owner = v, ++n_owners;
     if (n_owners != 1)
       throw DeckError(zone + ": " + role + " cell " + cell_label(mesh, c) +
                       (n_owners == 0 ? " bounds no cell of the model" : " lies between two cells of the model") +

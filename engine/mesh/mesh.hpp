@@ -1,6 +1,7 @@
 #pragma once
 /// The mesh: nodes, cells, names and groups. Plain data with lookup helpers;
 /// readers (engine/io) and the mesh generator fill it, everything else reads it.
+#include <algorithm>
 #include <string>
 #include <unordered_map>
 #include <map>
@@ -54,6 +55,14 @@ class Mesh {
 
   /// Nodes of the given cells, sorted and unique.
   std::vector<int> nodes_of_cells(const std::vector<int>& cells) const;
+  /// True when `cell` has each of `nodes[0..n)` among its nodes (a volume cell a face bounds).
+  bool cell_holds(int cell, const int* nodes, int n) const {
+    const int* own = this->cell(cell);
+    const int count = cell_n_nodes(cell);
+    for (int a = 0; a < n; ++a)
+      if (std::find(own, own + count, nodes[a]) == own + count) return false;
+    return true;
+  }
 
   /// The given cells around each node, as compressed rows: node v's are
   /// positions[start[v] .. start[v+1]) in `cells` (cell ids: cells[position]), in the order of `cells`.
