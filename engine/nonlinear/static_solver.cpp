@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "engine/assembly/assembly.hpp"
 #include "engine/assembly/partition.hpp"
@@ -201,8 +202,12 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
       for (int c = 0; c < model_.dim; ++c) dofs_.add(v, c);
   }
   const int displacement_dofs = dofs_.n_dofs();
+  // In parts, the exchanges of the part's nodes (the owners' Dirichlet conditions for the hook,
+  // then the numbering across the ranks).
+  std::optional<NodeHalo> node_halo;
+  if (in_parts_) node_halo.emplace(numbered_part());
   if (contact_) {
-    contact_->set_dirichlet(in_parts_ && surfaces_ ? owners_dirichlet() : loads_.dirichlet);
+    contact_->set_dirichlet(in_parts_ && surfaces_ ? owners_dirichlet(*node_halo) : loads_.dirichlet);
     contact_->add_dofs(dofs_);
   }
   const int n = dofs_.n_dofs();
@@ -257,8 +262,7 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
       cell_rank_ = part_->cell_part;
       owned_nodes_.assign(numbered.mesh.n_nodes(), 0);
       std::fill(owned_nodes_.begin(), owned_nodes_.begin() + part_->n_owned_nodes, 1);
-      const NodeHalo node_halo(numbered);
-      unknown_numbers_ = number_across_ranks(numbered, dofs_, node_halo);
+      unknown_numbers_ = number_across_ranks(numbered, dofs_, *node_halo);
       const GlobalDofs& numbers = unknown_numbers_;
       owned_equations_ = numbers.n_owned;
       stats_.n_dofs = static_cast<int>(numbers.n_global);
@@ -275,7 +279,7 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
       }
       std::vector<char> free(n, 1);
       for (int eq : constrained) free[eq] = 0;
-      free_numbers_ = number_across_ranks(numbered, dofs_, node_halo, &free);
+      free_numbers_ = number_across_ranks(numbered, dofs_, *node_halo, &free);
       free_halo_ = std::make_unique<Halo>(equation_halo(numbered, dofs_, free_numbers_));
       std::string counts;
       for (int owned : parallel::gather_all(std::vector<int>{part_->n_owned_nodes}))
@@ -383,14 +387,14 @@ void StaticSolver::advance(double t0, double t1, int level, Vector& u) {
   steps_.push_back(std::move(result));
 }
 
-std::vector<DirichletValue> StaticSolver::owners_dirichlet() const {
+std::vector<DirichletValue> StaticSolver::owners_dirichlet(const NodeHalo& node_halo) const {
   // The part's loads miss the conditions of the surfaces' nodes beyond it (and of ghosts whose
   // constrained faces it lacks): each node takes its owner's, who holds every one of its own.
   const MeshPart& numbered = *surfaces_;
   std::vector<double> imposed(3 * static_cast<size_t>(numbered.mesh.n_nodes()), 0.0);
   for (const DirichletValue& d : loads_.dirichlet)
     if (d.component >= 0 && d.component < 3) imposed[3 * static_cast<size_t>(d.node) + d.component] = 1.0;
-  NodeHalo(numbered).copy_to_ghosts(imposed, 3);
+  node_halo.copy_to_ghosts(imposed, 3);
   std::vector<DirichletValue> out;
   for (int v = 0; v < numbered.mesh.n_nodes(); ++v)
     for (int c = 0; c < 3; ++c)

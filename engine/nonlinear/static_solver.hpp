@@ -261,8 +261,8 @@ class StaticSolver {
   const MeshPart& numbered_part() const { return surfaces_ ? *surfaces_ : *part_; }
   /// In parts with whole contact surfaces: the (node, component) pairs under Dirichlet
   /// conditions on the surfaces' part, each node's as its owner has them (values not given: a
-  /// hook reads which unknowns are imposed). Collective.
-  std::vector<DirichletValue> owners_dirichlet() const;
+  /// hook reads which unknowns are imposed), through `node_halo`, the surfaces' part's. Collective.
+  std::vector<DirichletValue> owners_dirichlet(const NodeHalo& node_halo) const;
   /// The hook's fields of a step (u null: its initial ones), on the model's nodes.
   void write_contact_fields(const Vector* u, ResultStep& step) const;
   bool in_parts_ = false;
