@@ -339,4 +339,88 @@ SurfacePart with_whole_surfaces(const MeshPart& part, const std::vector<std::vec
   return out;
 }
 
+MeshPart nodes_only(const MeshPart& part) {
+  MeshPart out;
+  out.mesh.dim = part.mesh.dim;
+  out.mesh.name = part.mesh.name;
+  out.mesh.is_part = true;
+  out.mesh.coords = part.mesh.coords;
+  out.mesh.node_names = part.mesh.node_names;
+  out.global_node = part.global_node;
+  out.node_owner = part.node_owner;
+  out.n_owned_nodes = part.n_owned_nodes;
+  out.n_global_nodes = part.n_global_nodes;
+  out.n_global_cells = part.n_global_cells;
+  out.rank = part.rank;
+  out.parts = part.parts;
+  return out;
+}
+
+void add_ghost_nodes(MeshPart& numbered, const std::vector<int>& global_nodes, const MeshPart* around) {
+  Mesh& mesh = numbered.mesh;
+  LUNASTER_ASSERT(!around || (around->n_owned_nodes == numbered.n_owned_nodes &&
+                              around->mesh.n_nodes() <= mesh.n_nodes()),
+                  "add_ghost_nodes: nodes numbered from another part");
+  std::vector<int> listed = global_nodes;
+  std::sort(listed.begin(), listed.end());
+  listed.erase(std::unique(listed.begin(), listed.end()), listed.end());
+  auto is_listed = [&listed](int global) { return std::binary_search(listed.begin(), listed.end(), global); };
+  // The nodes this rank gives: the listed ones it owns and, with `around`, every node of the
+  // volume cells around them (a part holds every cell touching a node it owns).
+  std::vector<char> given(mesh.n_nodes(), 0);
+  for (int v = 0; v < numbered.n_owned_nodes; ++v) given[v] = is_listed(numbered.global_node[v]);
+  if (around) {
+    const Mesh& cells = around->mesh;
+    const std::vector<char> owned_listed = given;
+    for (int c = 0; c < cells.n_cells(); ++c) {
+      if (cell_info(cells.cell_types[c]).dim != cells.dim) continue;
+      const int* nodes = cells.cell(c);
+      const int nn = cells.cell_n_nodes(c);
+      if (std::any_of(nodes, nodes + nn, [&](int v) { return owned_listed[v] != 0; }))
+        for (int a = 0; a < nn; ++a) given[nodes[a]] = 1;
+    }
+  }
+  std::vector<int> ints;
+  std::vector<double> xyz;
+  std::string names;
+  for (int v = 0; v < mesh.n_nodes(); ++v) {
+    if (!given[v]) continue;
+    ints.insert(ints.end(), {numbered.global_node[v], numbered.node_owner[v]});
+    xyz.insert(xyz.end(), mesh.node(v), mesh.node(v) + 3);
+    names += mesh.node_names[v] + '\n';
+  }
+  const std::vector<int> all_ints = parallel::gather_all(ints);
+  const std::vector<double> all_xyz = parallel::gather_all(xyz);
+  const std::string all_names = parallel::gather_all(names);
+
+  std::vector<int> held(numbered.global_node);
+  std::sort(held.begin(), held.end());
+  struct GivenNode {
+    int global, owner;
+    size_t at;  // its place in the gathered lists
+  };
+  std::vector<GivenNode> nodes;
+  std::vector<std::string> node_names;
+  size_t at_name = 0;
+  for (size_t k = 0; 2 * k < all_ints.size(); ++k) {
+    const size_t end = all_names.find('\n', at_name);
+    node_names.push_back(all_names.substr(at_name, end - at_name));
+    at_name = end + 1;
+    if (!std::binary_search(held.begin(), held.end(), all_ints[2 * k]))
+      nodes.push_back({all_ints[2 * k], all_ints[2 * k + 1], k});
+  }
+  auto by_global = [](const GivenNode& a, const GivenNode& b) { return a.global < b.global; };
+  std::stable_sort(nodes.begin(), nodes.end(), by_global);
+  nodes.erase(std::unique(nodes.begin(), nodes.end(),
+                          [](const GivenNode& a, const GivenNode& b) { return a.global == b.global; }),
+              nodes.end());
+  for (const GivenNode& g : nodes) {
+    mesh.coords.insert(mesh.coords.end(), all_xyz.begin() + 3 * static_cast<long>(g.at),
+                       all_xyz.begin() + 3 * static_cast<long>(g.at) + 3);
+    mesh.node_names.push_back(std::move(node_names[g.at]));
+    numbered.global_node.push_back(g.global);
+    numbered.node_owner.push_back(g.owner);
+  }
+}
+
 }  // namespace lunaster::engine

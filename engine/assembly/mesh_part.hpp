@@ -78,4 +78,19 @@ struct SurfacePart {
 SurfacePart with_whole_surfaces(const MeshPart& part, const std::vector<std::vector<int>>& lists,
                                 const std::vector<char>& layered = {});
 
+/// `part` without its cells: its nodes (coordinates, names), their numbers in the whole mesh and
+/// their owners. The nodes a run in parts numbers its unknowns on when linear relations add
+/// nodes beyond the part and no contact surface does (add_ghost_nodes).
+MeshPart nodes_only(const MeshPart& part);
+
+/// Collective: every rank passes the same `global_nodes` (numbers in the whole mesh, each held by
+/// its owner's part). `numbered` begins with the nodes of this rank's part, in its numbers (the
+/// part itself, nodes_only, with_whole_surfaces). Appends to it those it does not hold, as
+/// ghosts (coordinates, name and owner from the owner), in the whole mesh's order after its
+/// nodes, whose numbers stay. With `around` (this rank's part), also every node of the volume
+/// cells around each listed node (its owner's part holds them all): the whole stiffness column
+/// of a listed node then has every row here (linear relations solved for one of their
+/// unknowns, ELIM_LAGR). No cell is added.
+void add_ghost_nodes(MeshPart& numbered, const std::vector<int>& global_nodes, const MeshPart* around = nullptr);
+
 }  // namespace lunaster::engine
