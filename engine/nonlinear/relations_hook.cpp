@@ -214,7 +214,6 @@ class RelationsHook final : public ContactHook {
   }
   void add_dofs(DofMap& dofs) override {
     if (contact_) contact_->add_dofs(dofs);  // its carriers first (QUAD8 ties name theirs)
-    dofs_ = &dofs;
     // Each imposed equation's value and load, the last condition winning as in the driver.
     imposed_value_.clear();
     for (const auto& d : dirichlet_)
@@ -231,6 +230,7 @@ class RelationsHook final : public ContactHook {
         check.rhs.emplace_back(static_cast<int>(i), 1.0);
         imposed_only_.push_back(std::move(check));
       }
+      dofs_ = dofs;
       return;
     }
     std::set<int> constrained;
@@ -238,6 +238,7 @@ class RelationsHook final : public ContactHook {
       if (dofs.dof(node, component) >= 0) constrained.insert(dofs.dof(node, component));
     eliminator_.build(relations_.relations(), dofs, [&constrained](int eq) { return !constrained.count(eq); });
     imposed_only_ = eliminator_.imposed_only();
+    dofs_ = dofs;
   }
   void share_among_ranks(const std::vector<char>& owned_nodes) override {
     if (contact_) contact_->share_among_ranks(owned_nodes);
@@ -258,22 +259,22 @@ class RelationsHook final : public ContactHook {
   void add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) override {
     if (eliminate_) {
       if (contact_) contact_->add_to_system(u, tangent, residual);
-      eliminator_.add_forces(relations_.relations(), *dofs_, residual);
+      eliminator_.add_forces(relations_.relations(), dofs_, residual);
       eliminations_ = contact_ ? contact_->eliminations() : std::vector<Elimination>{};
       eliminator_.eliminations(u, rhs_value(), eliminations_);
       return;
     }
-    relations_.add_to_system(*dofs_, u, tangent, residual, factor());
+    relations_.add_to_system(dofs_, u, tangent, residual, factor());
     if (contact_) contact_->add_to_system(u, tangent, residual);
   }
   bool add_residual(const Vector& u, Vector& residual) override {
     if (eliminate_) {
       if (contact_ && !contact_->add_residual(u, residual)) return false;
-      eliminator_.add_forces(relations_.relations(), *dofs_, residual);
+      eliminator_.add_forces(relations_.relations(), dofs_, residual);
       return true;
     }
     if (!contact_) {
-      relations_.add_residual(*dofs_, u, residual, factor());
+      relations_.add_residual(dofs_, u, residual, factor());
       return true;
     }
     // Neither part when the contact hook gives none: the entries the relations touch are put
@@ -283,11 +284,11 @@ class RelationsHook final : public ContactHook {
       if (r.multiplier < 0) continue;
       given.emplace_back(r.multiplier, residual[r.multiplier]);
       for (const auto& t : r.terms) {
-        const int eq = dofs_->dof(t.node, t.component);
+        const int eq = dofs_.dof(t.node, t.component);
         given.emplace_back(eq, residual[eq]);
       }
     }
-    relations_.add_residual(*dofs_, u, residual, factor());
+    relations_.add_residual(dofs_, u, residual, factor());
     if (!contact_->add_residual(u, residual)) {
       for (auto it = given.rbegin(); it != given.rend(); ++it) residual[it->first] = it->second;
       return false;
@@ -336,7 +337,7 @@ class RelationsHook final : public ContactHook {
     for (const auto& r : relations_.relations()) {
       if (r.multiplier < 0 && !eliminate_) continue;
       if (r.multiplier >= 0) eqs.push_back(r.multiplier);
-      for (const auto& t : r.terms) eqs.push_back(dofs_->dof(t.node, t.component));
+      for (const auto& t : r.terms) eqs.push_back(dofs_.dof(t.node, t.component));
     }
     return eqs;
   }
@@ -402,7 +403,9 @@ class RelationsHook final : public ContactHook {
   std::vector<DirichletValue> dirichlet_;
   std::map<int, std::pair<double, int>> imposed_value_;  ///< imposed equation -> (value, load)
   std::vector<ImposedRelation> imposed_only_;            ///< relations checked at every instant
-  const DofMap* dofs_ = nullptr;
+  /// The numbering the hook gave (a copy: on a mesh in parts the driver renumbers its own map and
+  /// speaks to the hook through RenumberedHook).
+  DofMap dofs_;
   double t_ = 0.0;
   const bool eliminate_;
   RelationEliminator eliminator_;

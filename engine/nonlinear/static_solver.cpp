@@ -192,13 +192,14 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   contact_ = given_contact_;
   renumbered_contact_.reset();
   dofs_ = DofMap(*model_.mesh, model_.volume_cells(), model_.dim);
-  if (in_parts_ && surfaces_) {
-    // The contact surfaces' nodes beyond the part: ghosts with their displacement unknowns.
-    LUNASTER_ASSERT(contact_ && surfaces_->n_owned_nodes == part_->n_owned_nodes &&
-                        surfaces_->mesh.n_nodes() >= part_->mesh.n_nodes(),
-                    "whole contact surfaces are the part's, for a run with contact");
-    dofs_.add_nodes(surfaces_->mesh.n_nodes());
-    for (int v = part_->mesh.n_nodes(); v < surfaces_->mesh.n_nodes(); ++v)
+  if (in_parts_ && hook_part_) {
+    // The hook's nodes beyond the part (contact surfaces, relations): ghosts with their
+    // displacement unknowns.
+    LUNASTER_ASSERT(contact_ && hook_part_->n_owned_nodes == part_->n_owned_nodes &&
+                        hook_part_->mesh.n_nodes() >= part_->mesh.n_nodes(),
+                    "the hook's nodes are the part's and more, for a run with a hook");
+    dofs_.add_nodes(hook_part_->mesh.n_nodes());
+    for (int v = part_->mesh.n_nodes(); v < hook_part_->mesh.n_nodes(); ++v)
       for (int c = 0; c < model_.dim; ++c) dofs_.add(v, c);
   }
   const int displacement_dofs = dofs_.n_dofs();
@@ -207,7 +208,8 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   std::optional<NodeHalo> node_halo;
   if (in_parts_) node_halo.emplace(numbered_part());
   if (contact_) {
-    contact_->set_dirichlet(in_parts_ && surfaces_ ? owners_dirichlet(*node_halo) : loads_.dirichlet);
+    contact_->set_dirichlet(in_parts_ && hook_part_ ? owners_dirichlet(*hook_part_, *node_halo, loads_.dirichlet)
+                                                   : loads_.dirichlet);
     contact_->add_dofs(dofs_);
   }
   const int n = dofs_.n_dofs();
@@ -220,16 +222,15 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
     // What a mesh in parts does not do yet (docs/distributed-model.md): said alike on every rank.
     LUNASTER_ASSERT(model_.mesh == &part_->mesh && part_->parts == parallel::size(),
                     "a run in parts takes the model of this rank's part, one part per rank");
-    LUNASTER_ASSERT(!contact_ || surfaces_, "contact on a mesh in parts takes the part with whole surfaces");
-    if (!loads_.relations.empty() || (contact_ && !contact_->has_contact()))
-      throw DeckError("linear relations are not available on a mesh in parts yet");
+    LUNASTER_ASSERT(!contact_ || hook_part_, "a hook on a mesh in parts takes the part with the hook's nodes");
     if (n != displacement_dofs) {
       // The hook's multipliers came after every node's displacements: the owned unknowns go
       // first (global_dofs.hpp), each class in its order, and the hook keeps its numbering.
       if (options_.solver == SolverKind::Petsc)
-        throw DeckError("contact with multipliers (LAGS_C) on a mesh in parts is solved by MUMPS, not PETSc",
-                        {"SOLVEUR=_F{ METHODE = 'MUMPS' }, or contact without multipliers: the discrete formulation's "
-                         "PENALISATION, or mortar (DEFI_CONT)"});
+        throw DeckError("contact or linear relations with multipliers (LAGS_C, LAGR_DX..) on a mesh in parts are "
+                        "solved by MUMPS, not PETSc",
+                        {"SOLVEUR=_F{ METHODE = 'MUMPS' }, or no multipliers: contact by the discrete formulation's "
+                         "PENALISATION or by mortar (DEFI_CONT), linear relations with SOLVEUR ELIM_LAGR = 'OUI'"});
       std::vector<int> new_of_old(n);
       int next = 0;
       for (int owned_class : {1, 0})
@@ -284,12 +285,16 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
       std::string counts;
       for (int owned : parallel::gather_all(std::vector<int>{part_->n_owned_nodes}))
         counts += (counts.empty() ? "" : ", ") + std::to_string(owned);
+      std::string hook_said;
+      if (contact_ && contact_->has_contact())
+        hook_said += "; the contact surfaces are whole on every rank, which pairs every point and keeps the contact "
+                     "terms of its own nodes' columns";
+      if (contact_ && !contact_->related_equations().empty())
+        hook_said += "; every rank builds every linear relation (their nodes beyond its part are its ghosts) and "
+                     "keeps the terms of its own nodes' columns";
       log_.info("mesh in parts on " + std::to_string(part_->parts) + " ranks: owned nodes per rank " + counts + ", " +
                 std::to_string(numbers.n_global) + " unknowns; each rank assembles the stiffness of its own nodes and "
-                "holds its part's vectors" +
-                (surfaces_ ? std::string("; the contact surfaces are whole on every rank, which pairs every point "
-                                         "and keeps the contact terms of its own nodes' columns")
-                           : std::string()));
+                "holds its part's vectors" + hook_said);
     } else if (distributed_) {
       const Mesh& mesh = *model_.mesh;
       const std::vector<int> cells = model_.volume_cells();
@@ -387,18 +392,25 @@ void StaticSolver::advance(double t0, double t1, int level, Vector& u) {
   steps_.push_back(std::move(result));
 }
 
-std::vector<DirichletValue> StaticSolver::owners_dirichlet(const NodeHalo& node_halo) const {
-  // The part's loads miss the conditions of the surfaces' nodes beyond it (and of ghosts whose
+std::vector<DirichletValue> owners_dirichlet(const MeshPart& numbered, const NodeHalo& node_halo,
+                                             const std::vector<DirichletValue>& dirichlet) {
+  // The part's loads miss the conditions of the hook's nodes beyond it (and of ghosts whose
   // constrained faces it lacks): each node takes its owner's, who holds every one of its own.
-  const MeshPart& numbered = *surfaces_;
-  std::vector<double> imposed(3 * static_cast<size_t>(numbered.mesh.n_nodes()), 0.0);
-  for (const DirichletValue& d : loads_.dirichlet)
-    if (d.component >= 0 && d.component < 3) imposed[3 * static_cast<size_t>(d.node) + d.component] = 1.0;
-  node_halo.copy_to_ghosts(imposed, 3);
+  // Per node and component: imposed or not, the value, the load (the last condition wins).
+  constexpr int kPer = 9;
+  std::vector<double> imposed(kPer * static_cast<size_t>(numbered.mesh.n_nodes()), 0.0);
+  for (const DirichletValue& d : dirichlet)
+    if (d.component >= 0 && d.component < 3) {
+      double* at = &imposed[kPer * static_cast<size_t>(d.node) + 3 * d.component];
+      at[0] = 1.0, at[1] = d.value, at[2] = d.load;
+    }
+  node_halo.copy_to_ghosts(imposed, kPer);
   std::vector<DirichletValue> out;
   for (int v = 0; v < numbered.mesh.n_nodes(); ++v)
-    for (int c = 0; c < 3; ++c)
-      if (imposed[3 * static_cast<size_t>(v) + c] != 0.0) out.push_back({v, c, 0.0, 0});
+    for (int c = 0; c < 3; ++c) {
+      const double* at = &imposed[kPer * static_cast<size_t>(v) + 3 * c];
+      if (at[0] != 0.0) out.push_back({v, c, at[1], static_cast<int>(at[2])});
+    }
   return out;
 }
 
@@ -406,7 +418,7 @@ void StaticSolver::write_contact_fields(const Vector* u, ResultStep& step) const
   // In parts the hook's nodes are the whole surfaces' part's: its fields are written on those
   // and kept on the part's nodes (the ones beyond are other ranks' and theirs to give).
   const int part_nodes = model_.mesh->n_nodes();
-  const int hook_nodes = in_parts_ && surfaces_ ? surfaces_->mesh.n_nodes() : part_nodes;
+  const int hook_nodes = in_parts_ && hook_part_ ? hook_part_->mesh.n_nodes() : part_nodes;
   auto resize = [](NodalField& f, int nodes) {
     f.values.resize(static_cast<size_t>(nodes) * f.components.size(), 0.0);
     f.defined.resize(static_cast<size_t>(nodes) * f.components.size(), 0);

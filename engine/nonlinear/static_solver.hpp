@@ -110,6 +110,14 @@ struct SolverStats {
 /// the failure are available through `converged_steps()`.
 struct Constraints;
 
+/// On a mesh in parts: the Dirichlet conditions on the nodes of `numbered` (a part with nodes
+/// beyond it: a hook's, StaticSolver::set_part), each node's as its owner has them (value and
+/// load of the last condition on each component, as the driver imposes it). `dirichlet`
+/// are this rank's conditions on its part's nodes (numbered's first nodes); `node_halo` is
+/// numbered's. Collective.
+std::vector<DirichletValue> owners_dirichlet(const MeshPart& numbered, const NodeHalo& node_halo,
+                                             const std::vector<DirichletValue>& dirichlet);
+
 class StaticSolver {
  public:
   StaticSolver(const FeModel& model, const MechanicalLoads& loads, NewtonOptions options, ContactHook* contact,
@@ -126,16 +134,18 @@ class StaticSolver {
   /// step 3): the model and the loads are on `part->mesh`, every rank of `part` calls `run`
   /// (collective). Each rank assembles its own nodes' columns, the Dirichlet conditions of its
   /// ghosts are their owners', and the results are on the part's nodes, ghosts included (they
-  /// hold their owners' values). MUMPS and PETSc solve in parts; METHODE='AUTO', the backends
-  /// of one process and linear relations are refused (DeckError). nullptr: the whole model
-  /// again. With contact, `surfaces` is `part` with the contact surfaces whole
-  /// (with_whole_surfaces, step 5), whose mesh the hook was built on: its nodes beyond the
-  /// part's are ghosts of the system (their displacements come from their owners at each
-  /// exchange), each rank pairs every point and keeps the contact terms of its own columns. A
-  /// hook adding unknowns (multipliers) is refused there.
-  void set_part(const MeshPart* part, const MeshPart* surfaces = nullptr) {
+  /// hold their owners' values). MUMPS and PETSc solve in parts; METHODE='AUTO' and the backends
+  /// of one process are refused (DeckError). nullptr: the whole model again. With a hook
+  /// (contact, linear relations), `numbered` is `part` with the nodes the hook was built on: the
+  /// contact surfaces whole (with_whole_surfaces, step 5) and the relations' nodes
+  /// (add_ghost_nodes). Its nodes beyond the part's are ghosts of the system (their
+  /// displacements come from their owners at each exchange); each rank builds every contact
+  /// point's and every relation's terms and keeps those of its own columns. The hook's
+  /// multipliers are numbered after each rank's owned unknowns; MUMPS solves such a system,
+  /// PETSc is refused there (DeckError).
+  void set_part(const MeshPart* part, const MeshPart* numbered = nullptr) {
     part_ = part;
-    surfaces_ = surfaces;
+    hook_part_ = numbered;
   }
 
  private:
@@ -256,13 +266,9 @@ class StaticSolver {
   /// unknowns, the same order) are numbered across the ranks by free_numbers_ and exchanged
   /// through free_halo_.
   const MeshPart* part_ = nullptr;
-  const MeshPart* surfaces_ = nullptr;  ///< part_ with whole contact surfaces (set_part), or null
-  /// In parts: the part whose nodes the unknowns are on (surfaces_ when given, else part_).
-  const MeshPart& numbered_part() const { return surfaces_ ? *surfaces_ : *part_; }
-  /// In parts with whole contact surfaces: the (node, component) pairs under Dirichlet
-  /// conditions on the surfaces' part, each node's as its owner has them (values not given: a
-  /// hook reads which unknowns are imposed), through `node_halo`, the surfaces' part's. Collective.
-  std::vector<DirichletValue> owners_dirichlet(const NodeHalo& node_halo) const;
+  const MeshPart* hook_part_ = nullptr;  ///< part_ with the hook's nodes (set_part), or null
+  /// In parts: the part whose nodes the unknowns are on (hook_part_ when given, else part_).
+  const MeshPart& numbered_part() const { return hook_part_ ? *hook_part_ : *part_; }
   /// The hook's fields of a step (u null: its initial ones), on the model's nodes.
   void write_contact_fields(const Vector* u, ResultStep& step) const;
   bool in_parts_ = false;

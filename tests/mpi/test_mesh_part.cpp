@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -19,6 +20,7 @@
 #include "engine/core/log.hpp"
 #include "engine/fe/stress.hpp"
 #include "engine/nonlinear/nodal_forces.hpp"
+#include "engine/nonlinear/relations_hook.hpp"
 #include "engine/nonlinear/static_solver.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 #include "engine/solver/backends.hpp"
@@ -233,6 +235,62 @@ TEST(SurfacePart, EveryRankHoldsTheWholeSurfacesBesideItsPart) {
       for (int c = 0; c < m.n_cells(); ++c)
         if (cell_info(m.cell_types[c]).dim == whole.dim) volumes.push_back(s.part.global_cell[c]);
       EXPECT_EQ(volumes, volumes_expected) << scene.name << (layer ? ", layered" : "");
+    }
+  }
+}
+
+TEST(GhostNodes, EveryRankHoldsTheListedNodesAndWithAroundTheirNeighbours) {
+  for (const Scene& scene : scenes()) {
+    const Mesh& whole = scene.whole;
+    const MeshPart part = part_of(whole);
+    // Nodes spread over the whole mesh (a relation's, every rank passing the same list).
+    std::vector<int> listed;
+    for (int g = 0; g < whole.n_nodes(); g += 7) listed.push_back(g);
+    listed.push_back(whole.n_nodes() - 1);
+    for (const bool around : {false, true}) {
+      MeshPart numbered = nodes_only(part);
+      EXPECT_EQ(numbered.mesh.n_cells(), 0) << scene.name;
+      add_ghost_nodes(numbered, listed, around ? &part : nullptr);
+      const Mesh& m = numbered.mesh;
+      // The part's nodes keep their numbers; the others follow once each, in the whole mesh's order.
+      ASSERT_GE(m.n_nodes(), part.mesh.n_nodes());
+      EXPECT_EQ(numbered.n_owned_nodes, part.n_owned_nodes);
+      for (int v = 0; v < part.mesh.n_nodes(); ++v) EXPECT_EQ(numbered.global_node[v], part.global_node[v]);
+      for (int v = part.mesh.n_nodes() + 1; v < m.n_nodes(); ++v)
+        EXPECT_LT(numbered.global_node[v - 1], numbered.global_node[v]) << scene.name;
+      // Each node where the whole mesh has it, named as there, owned by the rank whose part owns it.
+      const std::vector<int> counts = parallel::gather_all(std::vector<int>{part.n_owned_nodes});
+      const std::vector<int> owned(part.global_node.begin(), part.global_node.begin() + part.n_owned_nodes);
+      const std::vector<int> all_owned = parallel::gather_all(owned);
+      std::map<int, int> owner;
+      for (int r = 0, at = 0; r < static_cast<int>(counts.size()); at += counts[r++])
+        for (int k = 0; k < counts[r]; ++k) owner[all_owned[at + k]] = r;
+      std::vector<int> held;
+      for (int v = 0; v < m.n_nodes(); ++v) {
+        const int g = numbered.global_node[v];
+        held.push_back(g);
+        for (int i = 0; i < 3; ++i) EXPECT_EQ(m.node(v)[i], whole.node(g)[i]) << scene.name << " node " << g;
+        EXPECT_EQ(m.node_names[v], whole.node_names[g]);
+        EXPECT_EQ(numbered.node_owner[v], owner.at(g)) << scene.name << " node " << g;
+      }
+      std::sort(held.begin(), held.end());
+      // What must be held: the part's nodes, the listed ones and, around, every node of a volume
+      // cell holding a listed node; nothing else is added.
+      std::vector<char> expected(whole.n_nodes(), 0);
+      for (int g : part.global_node) expected[g] = 1;
+      for (int g : listed) expected[g] = 1;
+      if (around)
+        for (int c = 0; c < whole.n_cells(); ++c) {
+          if (cell_info(whole.cell_types[c]).dim != whole.dim) continue;
+          const int* cn = whole.cell(c);
+          const int nn = whole.cell_n_nodes(c);
+          if (std::any_of(cn, cn + nn, [&](int g) { return std::binary_search(listed.begin(), listed.end(), g); }))
+            for (int a = 0; a < nn; ++a) expected[cn[a]] = 1;
+        }
+      std::vector<int> expected_list;
+      for (int g = 0; g < whole.n_nodes(); ++g)
+        if (expected[g]) expected_list.push_back(g);
+      EXPECT_EQ(held, expected_list) << scene.name << (around ? ", around" : "");
     }
   }
 }
@@ -832,12 +890,23 @@ TEST(PartNewton, WhatPartsDoNotDoYetIsRefusedOnEveryRank) {
   StaticSolver factorised(model, loads, single, nullptr, quiet);
   factorised.set_part(&part);
   EXPECT_THROW(factorised.run({0.0, 1.0}), DeckError);
-  // Linear relations (LIAISON_DDL).
-  MechanicalLoads related = loads;
-  related.relations.push_back(LinearRelation{});
-  StaticSolver with_relations(model, related, mumps_options(), nullptr, quiet);
-  with_relations.set_part(&part);
-  EXPECT_THROW(with_relations.run({0.0, 1.0}), DeckError);
+  // PETSc with a linear relation's multiplier (a saddle system, MUMPS's to solve in parts).
+  // DY of two top corners, free (every rank has the same relation, its nodes as ghosts where needed).
+  MeshPart numbered = nodes_only(part);
+  const std::vector<int> corners = {scene.whole.node_groups.at("C111")[0], scene.whole.node_groups.at("C011")[0]};
+  add_ghost_nodes(numbered, corners);
+  auto local = [&numbered](int g) {
+    return static_cast<int>(std::find(numbered.global_node.begin(), numbered.global_node.end(), g) -
+                            numbered.global_node.begin());
+  };
+  LinearRelation tie;
+  tie.terms = {{local(corners[0]), DY, 1.0}, {local(corners[1]), DY, -1.0}};
+  std::unique_ptr<ContactHook> relations = make_relations_hook({tie}, loads.multipliers, nullptr);
+  NewtonOptions krylov = mumps_options();
+  krylov.solver = SolverKind::Petsc;
+  StaticSolver with_multipliers(model, loads, krylov, relations.get(), quiet);
+  with_multipliers.set_part(&part, &numbered);
+  EXPECT_THROW(with_multipliers.run({0.0, 1.0}), DeckError);
   // The same solver on the part runs once told.
   StaticSolver solver(model, loads, mumps_options(), nullptr, quiet);
   solver.set_part(&part);
