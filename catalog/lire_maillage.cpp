@@ -11,8 +11,9 @@ const CommandSpec& lire_maillage_spec() {
        text("FICHIER", "Mesh file path, relative to the deck (overrides UNITE)"),
        text("NOM_MED", "Name of the mesh inside the MED file (default: the first one)"),
        text("PARTITIONNEUR", "Read the mesh in parts, one per MPI rank (cut by Scotch on rank 0): each rank "
-                             "holds its cells, a ghost layer and their nodes (and the contact surfaces whole); "
-                             "linear elasticity and contact, not linear relations (LIAISON_*)")
+                             "holds its cells, a ghost layer and their nodes (and the contact surfaces and the "
+                             "linear relations' nodes whole); linear elasticity, contact, LIAISON_DDL and "
+                             "LIAISON_UNIF, not LIAISON_MAIL")
            .into_values({"PTSCOTCH"}),
        common::info()});
   return spec;

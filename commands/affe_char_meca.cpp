@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <cstring>
+#include <map>
 #include <set>
 #include <unordered_map>
 
@@ -14,6 +16,7 @@
 #include "engine/contact/surface_element.hpp"
 #include "engine/fe/point_location.hpp"
 #include "engine/fe/shape.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::cmd {
 
@@ -71,6 +74,75 @@ std::vector<char> model_nodes(const Modele& mo) {
   return in_model;
 }
 
+/// The nodes a linear relation reads, as a serial run has them: the mesh's numbers and names, or
+/// on a mesh in parts the whole mesh's (docs/distributed-model.md, step 5), gathered over the
+/// ranks, so that one relation may tie nodes of several parts and reads alike on every rank.
+/// The functions taking a Modele are collective on a mesh in parts.
+struct RelationNodes {
+  std::vector<int> nodes;
+  std::vector<std::string> names;
+};
+
+/// `local`, nodes of this rank's mesh (a selection, a group: sorted), as a relation reads them:
+/// on a mesh in parts, the union over the ranks in the whole mesh's numbers, sorted (a group's
+/// nodes in the whole mesh's order, as a serial run has them).
+RelationNodes relation_nodes(const Modele& mo, const std::vector<int>& local) {
+  const engine::Mesh& mesh = *mo.maillage->mesh;
+  RelationNodes out;
+  if (!mo.in_parts()) {
+    out.nodes = local;
+    for (int v : local) out.names.push_back(mesh.node_names[v]);
+    return out;
+  }
+  const engine::MeshPart& part = *mo.maillage->part;
+  std::vector<int> mine;
+  std::string names;
+  for (int v : local) mine.push_back(part.global_node[v]), names += mesh.node_names[v] + '\n';
+  const std::vector<int> all = engine::parallel::gather_all(mine);
+  const std::string all_names = engine::parallel::gather_all(names);
+  std::map<int, std::string> whole;
+  size_t at = 0;
+  for (int g : all) {
+    const size_t end = all_names.find('\n', at);
+    whole.emplace(g, all_names.substr(at, end - at));
+    at = end + 1;
+  }
+  for (auto& [g, name] : whole) out.nodes.push_back(g), out.names.push_back(std::move(name));
+  return out;
+}
+
+/// The node named `name` as a relation reads it (its number in the whole mesh on a mesh in
+/// parts, found by a rank holding it), or -1 when the mesh has none.
+int relation_node(const Modele& mo, const std::string& name) {
+  const engine::Mesh& mesh = *mo.maillage->mesh;
+  const int here = mesh.find_node(name);
+  if (!mo.in_parts()) return here;
+  const double found = here < 0 ? -1.0 : mo.maillage->part->global_node[here];
+  return static_cast<int>(engine::parallel::max_over_ranks(found));
+}
+
+/// Per node of `nodes` (as relation_nodes gives them), whether a cell of the model holds it (on
+/// a mesh in parts: on some rank).
+std::vector<char> on_model(const Modele& mo, const std::vector<int>& nodes) {
+  const std::vector<char> in_model = model_nodes(mo);
+  std::vector<char> out(nodes.size(), 0);
+  if (!mo.in_parts()) {
+    for (size_t i = 0; i < nodes.size(); ++i) out[i] = in_model[nodes[i]];
+    return out;
+  }
+  const engine::MeshPart& part = *mo.maillage->part;
+  std::unordered_map<int, int> local;
+  for (int v = 0; v < part.mesh.n_nodes(); ++v) local.emplace(part.global_node[v], v);
+  std::vector<double> flags(nodes.size(), 0.0);
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    const auto it = local.find(nodes[i]);
+    flags[i] = it != local.end() && in_model[it->second] ? 1.0 : 0.0;
+  }
+  if (!flags.empty()) engine::parallel::sum_over_ranks(flags.data(), static_cast<long long>(flags.size()));
+  for (size_t i = 0; i < nodes.size(); ++i) out[i] = flags[i] > 0.0;
+  return out;
+}
+
 /// A DDL value of LIAISON_DDL / LIAISON_UNIF as a component; DZ refused in a 2D model.
 int relation_component(const Args& occ, const Modele& mo, const std::string& ddl) {
   if (ddl == "DZ" && mo.dim == 2) throw occ.error("DDL", "DX or DY in a 2D model", "'DZ'");
@@ -78,42 +150,44 @@ int relation_component(const Args& occ, const Modele& mo, const std::string& ddl
 }
 
 /// LIAISON_DDL: one relation, its nodes in the order written (GROUP_NO: each group's nodes in
-/// the group's order), one DDL and COEF_MULT per node.
+/// the group's order), one DDL and COEF_MULT per node. On a mesh in parts its nodes are the
+/// whole mesh's numbers (relation_nodes).
 void read_liaison_ddl(const Args& occ, const Modele& mo, CharMeca& load) {
   const engine::Mesh& mesh = *mo.maillage->mesh;
   const std::string where = occ.has("GROUP_NO") ? "GROUP_NO" : "NOEUD";
-  std::vector<int> nodes;
+  RelationNodes nodes;
   for (const auto& name : occ.texts(where)) {
     if (where == "GROUP_NO") {
-      const std::vector<int> group = node_group(occ, "GROUP_NO", mesh, name);
-      nodes.insert(nodes.end(), group.begin(), group.end());
+      const RelationNodes group = relation_nodes(mo, node_group(occ, "GROUP_NO", mesh, name));
+      nodes.nodes.insert(nodes.nodes.end(), group.nodes.begin(), group.nodes.end());
+      nodes.names.insert(nodes.names.end(), group.names.begin(), group.names.end());
       continue;
     }
-    const int n = mesh.find_node(name);
+    const int n = relation_node(mo, name);
     if (n < 0) {
       std::vector<std::string> hints;
       if (mesh.node_groups.count(name)) hints.push_back("'" + name + "' is a node group: use GROUP_NO");
       throw occ.error("NOEUD", "a node name of the mesh", "'" + name + "'", hints);
     }
-    nodes.push_back(n);
+    nodes.nodes.push_back(n), nodes.names.push_back(name);
   }
   const std::vector<std::string> ddl = occ.texts("DDL");
   const std::vector<double> coef = occ.reals("COEF_MULT");
-  const std::string counted = std::to_string(nodes.size()) + " node(s) from " + where;
-  if (ddl.size() != nodes.size())
+  const std::string counted = std::to_string(nodes.nodes.size()) + " node(s) from " + where;
+  if (ddl.size() != nodes.nodes.size())
     throw occ.error("DDL", "one component per node (" + counted + ")", std::to_string(ddl.size()) + " component(s)",
                     {"a GROUP_NO group gives all its nodes: name groups of one node each, or use NOEUD"});
-  if (coef.size() != nodes.size())
+  if (coef.size() != nodes.nodes.size())
     throw occ.error("COEF_MULT", "one coefficient per node (" + counted + ")",
                     std::to_string(coef.size()) + " coefficient(s)");
-  const std::vector<char> in_model = model_nodes(mo);
+  const std::vector<char> in_model = on_model(mo, nodes.nodes);
   engine::LinearRelation relation;
-  for (size_t i = 0; i < nodes.size(); ++i) {
+  for (size_t i = 0; i < nodes.nodes.size(); ++i) {
     const int component = relation_component(occ, mo, ddl[i]);
-    if (!in_model[nodes[i]])
+    if (!in_model[i])
       throw occ.error(where, "nodes of cells of MODELE '" + mo.user_name + "'",
-                      "node " + mesh.node_names[nodes[i]] + ", on no cell of it");
-    relation.terms.push_back({nodes[i], component, coef[i]});
+                      "node " + nodes.names[i] + ", on no cell of it");
+    relation.terms.push_back({nodes.nodes[i], component, coef[i]});
   }
   relation.value = occ.real("COEF_IMPO");
   relation.label = occ.where();
@@ -127,19 +201,19 @@ void read_liaison_ddl(const Args& occ, const Modele& mo, CharMeca& load) {
 }
 
 /// LIAISON_UNIF: u(node) - u(first node) = 0 for every other node of the set (nodes in mesh
-/// order) and every DDL.
+/// order) and every DDL. On a mesh in parts its nodes are the whole mesh's numbers.
 void read_liaison_unif(const Args& occ, const Modele& mo, CharMeca& load) {
-  const engine::Mesh& mesh = *mo.maillage->mesh;
-  const std::vector<int> nodes = select_nodes(occ, mesh);
+  const RelationNodes set = relation_nodes(mo, select_nodes(occ, *mo.maillage->mesh));
+  const std::vector<int>& nodes = set.nodes;
   const std::string where = occ.has("GROUP_NO") ? "GROUP_NO" : "GROUP_MA";
   if (nodes.size() < 2)
     throw occ.error(where, "two nodes or more (one value shared among them)",
                     std::to_string(nodes.size()) + " node");
-  const std::vector<char> in_model = model_nodes(mo);
-  for (int n : nodes)
-    if (!in_model[n])
+  const std::vector<char> in_model = on_model(mo, nodes);
+  for (size_t i = 0; i < nodes.size(); ++i)
+    if (!in_model[i])
       throw occ.error(where, "nodes of cells of MODELE '" + mo.user_name + "'",
-                      "node " + mesh.node_names[n] + ", on no cell of it");
+                      "node " + set.names[i] + ", on no cell of it");
   const std::vector<std::string> ddls = occ.texts("DDL");
   for (size_t k = 0; k < ddls.size(); ++k)
     if (std::find(ddls.begin(), ddls.begin() + k, ddls[k]) != ddls.begin() + k)
@@ -149,8 +223,7 @@ void read_liaison_unif(const Args& occ, const Modele& mo, CharMeca& load) {
     for (size_t i = 1; i < nodes.size(); ++i) {
       engine::LinearRelation r;
       r.terms = {{nodes[i], component, 1.0}, {nodes[0], component, -1.0}};
-      r.label = occ.where() + " (" + ddl + " of node " + mesh.node_names[nodes[i]] + " equal to node " +
-                mesh.node_names[nodes[0]] + "'s)";
+      r.label = occ.where() + " (" + ddl + " of node " + set.names[i] + " equal to node " + set.names[0] + "'s)";
       load.relations.push_back(r);
     }
   }
@@ -387,25 +460,90 @@ void check_modl_axis(const Args& occ, const Modele& mo) {
                     "'" + given + "'");
 }
 
+/// On a mesh in parts: LIAISON_MAIL's occurrences read by rank 0 on the whole mesh it holds (it
+/// read and cut it), as a serial run reads them, and their relations given to every rank in the
+/// whole mesh's node numbers: locating each slave node in a master cell needs the master cells
+/// whole, which no other rank holds. An error is every rank's (commands/parts.hpp). Collective.
+void read_liaison_mail_on_rank0(const Args& args, const Modele& mo, CharMeca& load, Session& session) {
+  const engine::MeshPart& part = *mo.maillage->part;
+  // The model's cells in the whole mesh's numbers, to rank 0.
+  std::vector<int> mine;
+  for (int c = 0; c < part.mesh.n_cells(); ++c)
+    if (mo.modelisation[c] != engine::Modelisation::None)
+      mine.insert(mine.end(), {part.global_cell[c], static_cast<int>(mo.modelisation[c])});
+  const std::vector<int> modelled = engine::parallel::gather_to_root(mine);
+  std::string bytes;
+  agreed([&] {
+    if (!mo.maillage->whole) return;
+    Modele whole;
+    whole.user_name = mo.user_name;
+    whole.dim = mo.dim;
+    whole.maillage = std::make_shared<Maillage>();
+    whole.maillage->mesh = mo.maillage->whole;
+    whole.maillage->source_file = mo.maillage->source_file;
+    whole.modelisation.assign(mo.maillage->whole->n_cells(), engine::Modelisation::None);
+    for (size_t i = 0; i + 1 < modelled.size(); i += 2)
+      whole.modelisation[modelled[i]] = static_cast<engine::Modelisation>(modelled[i + 1]);
+    CharMeca read;
+    std::set<int> glued;  // slave nodes of the occurrences before with ELIM_MULT = 'OUI'
+    for (const auto& occ : args.factors("LIAISON_MAIL")) read_liaison_mail(occ, whole, read, glued, session);
+    // Each relation: its term count, then per term node, component and coefficient, its value and
+    // its label (the carriers are the driver's to choose, the load STAT_NON_LINE's).
+    auto put = [&bytes](const auto& value) { bytes.append(reinterpret_cast<const char*>(&value), sizeof value); };
+    put(read.relations.size());
+    for (const engine::LinearRelation& r : read.relations) {
+      put(r.terms.size());
+      for (const auto& t : r.terms) put(t.node), put(t.component), put(t.coef);
+      put(r.value);
+      put(r.label.size());
+      bytes += r.label;
+    }
+  });
+  engine::parallel::broadcast(bytes);
+  size_t at = 0;
+  auto get = [&bytes, &at](auto& value) {
+    std::memcpy(&value, bytes.data() + at, sizeof value);
+    at += sizeof value;
+  };
+  size_t n = 0;
+  get(n);
+  for (size_t i = 0; i < n; ++i) {
+    engine::LinearRelation r;
+    size_t terms = 0, label = 0;
+    get(terms);
+    r.terms.resize(terms);
+    for (auto& t : r.terms) get(t.node), get(t.component), get(t.coef);
+    get(r.value);
+    get(label);
+    r.label = bytes.substr(at, label);
+    at += label;
+    load.relations.push_back(std::move(r));
+  }
+}
+
 }  // namespace
 
 ConceptPtr affe_char_meca(const Args& args, Session& session) {
   auto load = std::make_shared<CharMeca>();
   load->modele = args.concept_as<Modele>("MODELE");
   const Modele& mo = *load->modele;
-  if (mo.in_parts())
-    for (const char* kw : {"LIAISON_DDL", "LIAISON_UNIF", "LIAISON_MAIL"})
-      if (args.count(kw) > 0)
-        throw args.error(kw, "DDL_IMPO, PRES_REP, FORCE_NODALE or CONTACT on MODELE '" + mo.user_name +
-                                 "', a model on a mesh in parts (linear relations are not written for parts yet)",
-                         kw, {"read the mesh without PARTITIONNEUR for this deck"});
-  for (const auto& occ : args.factors("DDL_IMPO")) read_ddl_impo(occ, mo, *load);
-  for (const auto& occ : args.factors("PRES_REP")) read_pres_rep(occ, mo, *load);
-  for (const auto& occ : args.factors("FORCE_NODALE")) read_force_nodale(occ, mo, *load);
+  auto read_here = [&] {
+    for (const auto& occ : args.factors("DDL_IMPO")) read_ddl_impo(occ, mo, *load);
+    for (const auto& occ : args.factors("PRES_REP")) read_pres_rep(occ, mo, *load);
+    for (const auto& occ : args.factors("FORCE_NODALE")) read_force_nodale(occ, mo, *load);
+  };
+  // On a mesh in parts the relations gather their nodes over the ranks: the ranks agree on what
+  // they read first (commands/parts.hpp), and the relations' checks fail alike on every rank.
+  if (mo.in_parts()) agreed(read_here);
+  else read_here();
   for (const auto& occ : args.factors("LIAISON_DDL")) read_liaison_ddl(occ, mo, *load);
   for (const auto& occ : args.factors("LIAISON_UNIF")) read_liaison_unif(occ, mo, *load);
-  std::set<int> glued;  // slave nodes of the LIAISON_MAIL occurrences before with ELIM_MULT = 'OUI'
-  for (const auto& occ : args.factors("LIAISON_MAIL")) read_liaison_mail(occ, mo, *load, glued, session);
+  if (mo.in_parts() && args.count("LIAISON_MAIL") > 0) {
+    read_liaison_mail_on_rank0(args, mo, *load, session);
+  } else {
+    std::set<int> glued;  // slave nodes of the LIAISON_MAIL occurrences before with ELIM_MULT = 'OUI'
+    for (const auto& occ : args.factors("LIAISON_MAIL")) read_liaison_mail(occ, mo, *load, glued, session);
+  }
   if (args.count("CONTACT") > 0) {
     load->has_contact = true;
     auto& def = load->contact;

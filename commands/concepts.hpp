@@ -72,7 +72,9 @@ struct CharMeca : Concept {
   std::vector<engine::DirichletValue> dirichlet;
   std::vector<engine::PressureLoad> pressures;
   std::vector<engine::NodalForce> forces;
-  std::vector<engine::LinearRelation> relations;  ///< LIAISON_DDL and LIAISON_UNIF, as written (load -1)
+  /// LIAISON_DDL and LIAISON_UNIF, as written (load -1); on a mesh in parts their nodes are the
+  /// whole mesh's numbers (a relation may tie nodes of several parts), the same on every rank.
+  std::vector<engine::LinearRelation> relations;
   bool has_contact = false;
   engine::ContactDefinition contact;
   std::string type_name() const override { return "char_meca"; }

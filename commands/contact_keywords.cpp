@@ -140,19 +140,19 @@ void warn_coincident_slave_nodes(const catalog::Args& zone_args, const engine::C
                "; contact treats them as separate points (merge the nodes, or check the mesh for a crack)");
 }
 
-ContactSurfaces contact_surfaces(const engine::ContactDefinition& def, const Modele& mo) {
+ContactSurfaces contact_surfaces(const engine::ContactDefinition& def, const Modele& mo, bool tie_columns) {
   ContactSurfaces out;
   out.definition = def;
   out.mesh = mo.maillage->mesh.get();
   if (!mo.in_parts()) return out;
   agree_over_ranks(nullptr);
   std::vector<std::vector<int>> lists;
-  std::vector<char> layered;  // mortar's exact method eliminates slave unknowns: their whole columns
+  std::vector<char> layered;  // eliminated unknowns (mortar's slave ones, ties'): their whole columns
   for (const engine::ContactZone& zone : def.zones) {
     lists.push_back(zone.slave_cells);
     lists.push_back(zone.master_cells);
-    layered.push_back(def.method == engine::ContactMethod::MortarLagrange);
-    layered.push_back(0);
+    layered.push_back(def.method == engine::ContactMethod::MortarLagrange || tie_columns);
+    layered.push_back(tie_columns);
   }
   auto whole =
       std::make_shared<engine::SurfacePart>(engine::with_whole_surfaces(*mo.maillage->part, lists, layered));

@@ -30,12 +30,14 @@ void warn_coincident_slave_nodes(const catalog::Args& zone_args, const engine::C
 /// whole on every rank (engine::with_whole_surfaces) and the definition's cells renumbered on
 /// them. Collective on a mesh in parts: every rank calls it; the ranks agree first on what the
 /// command has read (commands/parts.hpp), so none gathers while another has stopped.
+/// With `tie_columns` (discrete contact's QUAD8 ties solved for one unknown each, ELIM_LAGR),
+/// every surface also brings the volume cells around its nodes: the ties' whole stiffness columns.
 struct ContactSurfaces {
-  std::shared_ptr<const engine::SurfacePart> part;  ///< null on a whole mesh
+  std::shared_ptr<engine::SurfacePart> part;  ///< null on a whole mesh
   engine::ContactDefinition definition;
   const engine::Mesh* mesh = nullptr;
 };
-ContactSurfaces contact_surfaces(const engine::ContactDefinition& def, const Modele& mo);
+ContactSurfaces contact_surfaces(const engine::ContactDefinition& def, const Modele& mo, bool tie_columns = false);
 /// The warnings a contact definition gets where the deck names it, on its surfaces as a serial
 /// run sees them: coincident slave nodes per zone (`zone_args[z]` the zone's occurrence) and, with
 /// `pairs`, the incompatible slave/master pairs.

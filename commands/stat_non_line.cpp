@@ -3,6 +3,7 @@
 #include <functional>
 #include <memory>
 #include <set>
+#include <unordered_map>
 
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
@@ -11,6 +12,7 @@
 #include "commands/selection.hpp"
 #include "commands/failures.hpp"
 #include "engine/contact/contact_factory.hpp"
+#include "engine/assembly/halo.hpp"
 #include "engine/io/med_writer.hpp"
 #include "engine/nonlinear/relations_hook.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
@@ -216,6 +218,37 @@ void axis_integration(engine::ContactDefinition& definition, const engine::Mesh&
   }
 }
 
+/// Imposed displacements in the whole mesh's node numbers (one-term relations on a mesh in
+/// parts) on the nodes `part` holds, in its numbers; the others are other ranks' (a ghost's
+/// condition is its owner's in the solve).
+std::vector<engine::DirichletValue> held_by_part(std::vector<engine::DirichletValue> whole,
+                                                 const engine::MeshPart& part) {
+  std::unordered_map<int, int> local;
+  for (int v = 0; v < part.mesh.n_nodes(); ++v) local.emplace(part.global_node[v], v);
+  std::vector<engine::DirichletValue> out;
+  for (engine::DirichletValue d : whole) {
+    const auto it = local.find(d.node);
+    if (it != local.end()) d.node = it->second, out.push_back(d);
+  }
+  return out;
+}
+
+/// On a mesh in parts: the relations' nodes (the whole mesh's numbers, AFFE_CHAR_MECA) join
+/// `numbered` as ghosts where it lacks them, with the nodes around them in `part` when the
+/// relations are solved for one unknown each (their whole stiffness columns), and their terms take
+/// numbered's numbers. Collective (every rank has every relation).
+void number_relations(std::vector<engine::LinearRelation>& relations, engine::MeshPart& numbered,
+                      const engine::MeshPart& part, bool eliminate) {
+  std::vector<int> nodes;
+  for (const auto& r : relations)
+    for (const auto& t : r.terms) nodes.push_back(t.node);
+  engine::add_ghost_nodes(numbered, nodes, eliminate ? &part : nullptr);
+  std::unordered_map<int, int> local;
+  for (int v = 0; v < numbered.mesh.n_nodes(); ++v) local.emplace(numbered.global_node[v], v);
+  for (auto& r : relations)
+    for (auto& t : r.terms) t.node = local.at(t.node);
+}
+
 ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_line) {
   auto result = std::make_shared<EvolNoli>();
   result->modele = args.concept_as<Modele>("MODELE");
@@ -299,12 +332,33 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
   read_newton(args.factor("NEWTON"), contact != nullptr, options);
   const std::vector<double> times = instants(args.factor("INCREMENT"), options);
 
-  // On a mesh in parts the hook works on the contact surfaces whole on every rank (they outlive
-  // it: declared first).
+  const Args solveur = args.factor("SOLVEUR");
+  const bool eliminate = solveur.has("ELIM_LAGR") && solveur.text("ELIM_LAGR") == "OUI";
+  // LIAISON_DDL, LIAISON_UNIF: a relation of one term is an imposed displacement; the others get
+  // a multiplier each (or are solved for one unknown each: ELIM_LAGR='OUI'), in the system beside
+  // the contact terms. On a mesh in parts the relations are in the whole mesh's node numbers.
+  {
+    std::vector<engine::DirichletValue> one_term;
+    loads.relations = engine::split_dirichlet(std::move(loads.relations), one_term);
+    if (part) one_term = held_by_part(std::move(one_term), *part);
+    loads.dirichlet.insert(loads.dirichlet.end(), one_term.begin(), one_term.end());
+  }
+
+  // On a mesh in parts the hook works on the contact surfaces whole on every rank and on the
+  // relations' nodes, ghosts of the part where it lacks them (they outlive it: declared first).
   ContactSurfaces surfaces;
+  std::shared_ptr<engine::MeshPart> numbered;
   std::unique_ptr<engine::ContactHook> hook;
+  const bool discrete = contact && (contact->method == engine::ContactMethod::DiscreteLagrange ||
+                                    contact->method == engine::ContactMethod::DiscretePenalty);
+  if (contact) surfaces = contact_surfaces(*contact, *result->modele, discrete && eliminate);
+  if (part && (contact || !loads.relations.empty())) {
+    agree_over_ranks(nullptr);  // before the gathering: no rank has stopped (commands/parts.hpp)
+    numbered = surfaces.part ? std::shared_ptr<engine::MeshPart>(surfaces.part, &surfaces.part->part)
+                             : std::make_shared<engine::MeshPart>(engine::nodes_only(*part));
+    if (!loads.relations.empty()) number_relations(loads.relations, *numbered, *part, eliminate);
+  }
   if (contact) {
-    surfaces = contact_surfaces(*contact, *result->modele);
     engine::ContactDefinition& definition = surfaces.definition;
     // The contact measures follow the model: r dl per radian on an AXIS model (MODL_AXIS, when
     // given, was checked against the model by AFFE_CHAR_MECA).
@@ -314,18 +368,19 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     if (part) definition.modulus = engine::parallel::max_over_ranks(definition.modulus);
     hook = engine::make_contact_hook(definition, *surfaces.mesh, model.dim);
   }
-  // LIAISON_DDL, LIAISON_UNIF: a relation of one term is an imposed displacement; the others get
-  // a multiplier each (or are solved for one unknown each: ELIM_LAGR='OUI'), in the system beside
-  // the contact terms.
-  loads.relations = engine::split_dirichlet(std::move(loads.relations), loads.dirichlet);
-  const Args solveur = args.factor("SOLVEUR");
-  const bool eliminate = solveur.has("ELIM_LAGR") && solveur.text("ELIM_LAGR") == "OUI";
   // Solved for one unknown each, the relations discrete contact puts on QUAD8 faces (mid-side
   // ties) join the deck's, as code_aster's kinematic relations do; with multipliers they stay
   // the contact's own, but for those between imposed unknowns only: no multiplier holds them,
-  // and the deck's relations' check of their imposed values is theirs too.
+  // and the deck's relations' check of their imposed values is theirs too. On a mesh in parts
+  // the imposed unknowns of the hook's nodes are their owners'.
   std::set<std::pair<int, int>> imposed;
-  for (const auto& d : loads.dirichlet) imposed.insert({d.node, d.component});
+  if (numbered && (!loads.relations.empty() || discrete)) {
+    const engine::NodeHalo node_halo(*numbered);
+    for (const auto& d : engine::owners_dirichlet(*numbered, node_halo, loads.dirichlet))
+      imposed.insert({d.node, d.component});
+  } else {
+    for (const auto& d : loads.dirichlet) imposed.insert({d.node, d.component});
+  }
   std::vector<engine::LinearRelation> relations = loads.relations;
   size_t n_ties = 0;
   if (hook) {
@@ -338,11 +393,6 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     session.log().info("  SOLVEUR ELIM_LAGR = 'OUI': no linear relation to solve for one of its unknowns (DDL_IMPO "
                        "conditions are eliminated whatever ELIM_LAGR says; contact treats its multipliers its own "
                        "way)");
-  if (part && !relations.empty())
-    throw DeckError("linear relations on a mesh in parts: " + std::to_string(relations.size()) +
-                        " (discrete contact's QUAD8 mid-side ties), which are not written for parts yet",
-                    {"read the mesh without PARTITIONNEUR, or take mortar contact (DEFI_CONT), which needs no "
-                     "ties"});
   if (!relations.empty()) {
     if (eliminate && contact && contact->method == engine::ContactMethod::MortarLagrange)
       throw solveur.error("ELIM_LAGR", "'NON' with mortar contact (ALGO_CONT = 'LAGRANGIEN'), which eliminates "
@@ -380,7 +430,7 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     // Every rank has read its part of the deck's model and loads before the first collective
     // call of the solve: one that failed stops all alike (commands/parts.hpp).
     agree_over_ranks(nullptr);
-    solver.set_part(part.get(), surfaces.part ? &surfaces.part->part : nullptr);
+    solver.set_part(part.get(), numbered.get());
   }
   {
     Session::Timer timer(session, "solve");

@@ -1,9 +1,10 @@
--- Must-fail deck: contact with multipliers (LAGS_C: FORMULATION='CONTINUE' here) on a mesh read in
--- parts (PARTITIONNEUR) makes a saddle-point system, which MUMPS solves on parts; PETSc's solvers and
--- preconditioners of an SPD system do not, and its node blocks would be cut by the multipliers
--- (docs/distributed-model.md, step 5). STAT_NON_LINE refuses it on every rank, naming what runs.
--- EXPECT_ERROR: parts_petsc_with_multipliers\.lua:18: STAT_NON_LINE: contact with multipliers \(LAGS_C\) on a mesh in parts is solved by MUMPS, not PETSc
--- EXPECT_ERROR: SOLVEUR=_F\{ METHODE = 'MUMPS' \}, or contact without multipliers: the discrete formulation's PENALISATION, or mortar \(DEFI_CONT\)
+-- Must-fail deck: contact or linear relations with multipliers (LAGS_C: FORMULATION='CONTINUE' here;
+-- LAGR_DX..: LIAISON_DDL without ELIM_LAGR) on a mesh read in parts (PARTITIONNEUR) make a
+-- saddle-point system, which MUMPS solves on parts; PETSc's solvers and preconditioners of an SPD
+-- system do not, and its node blocks would be cut by the multipliers (docs/distributed-model.md,
+-- step 5). STAT_NON_LINE refuses it on every rank, naming what runs.
+-- EXPECT_ERROR: parts_petsc_with_multipliers\.lua:19: STAT_NON_LINE: contact or linear relations with multipliers \(LAGS_C, LAGR_DX\.\.\) on a mesh in parts are solved by MUMPS, not PETSc
+-- EXPECT_ERROR: SOLVEUR=_F\{ METHODE = 'MUMPS' \}, or no multipliers: contact by the discrete formulation's PENALISATION or by mortar \(DEFI_CONT\), linear relations with SOLVEUR ELIM_LAGR = 'OUI'
 -- EXPECT_STATUS: 2
 DEBUT()
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = '../ssnp121a.med', PARTITIONNEUR = 'PTSCOTCH' }

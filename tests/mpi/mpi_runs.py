@@ -33,9 +33,10 @@ usage: mpi_runs.py CASE LUNASTER MESHGEN SOURCE_DIR SCRATCH_DIR
                 for parts) stop every rank with one error and the deck's status; the tables
                 POST_RELEVE_T makes are the serial ones on every rank (reactions_tables.lua)
   contact_parts_suite  the contact decks a mesh in parts takes (every method; 2D, AXIS, 3D; MUMPS and
-                PETSc) with every mesh read in parts, on 1, 2 and 3 ranks, against the serial run on
-                whole meshes, as parts_suite; linear relations and LDLT_SP refused on every rank with
-                one message
+                PETSc) and the decks of linear relations (LIAISON_DDL, LIAISON_UNIF, QUAD8 ties; with
+                multipliers and ELIM_LAGR) with every mesh read in parts, on 1, 2 and 3 ranks, against
+                the serial run on whole meshes, as parts_suite; LIAISON_MAIL, a solver of one process
+                and LDLT_SP refused on every rank with one message
   rank_failure  a rank that fails alone brings the run down: a budget stop inside the collective
                 MUMPS factorisation (time limit on every rank; memory limit on rank 0 only, then
                 on rank 1 only); a rank that stops on a deck error while the other waits for it in
@@ -438,9 +439,9 @@ PARTS_DECKS = ["patch_2d", "patch_3d", "axis_patch", "axis_thick_cylinder", "clo
 NOT_IN_PARTS = re.compile(r"\b(IMPR_MESURE|DEFI_CONTACT|DEFI_CONT|CONTACT|LIAISON_DDL|LIAISON_UNIF|LIAISON_MAIL)\b")
 # The contact decks of testcases/ that a mesh in parts takes (docs/distributed-model.md, step 5):
 # every method (CONTINUE, the discrete CONTRAINTE and PENALISATION, mortar's LAGRANGIEN and
-# PENALISATION), 2D, AXIS and 3D, MUMPS and PETSc; not the decks with linear relations (LIAISON_DDL,
-# discrete contact's QUAD8 mid-side ties) or solver options that gather the whole system on one
-# rank (contact_parts_suite checks that those are refused).
+# PENALISATION), 2D, AXIS and 3D, MUMPS and PETSc; not the decks with LIAISON_MAIL or solver
+# options that gather the whole system on one rank (contact_parts_suite checks that those are
+# refused).
 CONTACT_PARTS_DECKS = ["axis_contact_patch_continue", "axis_contact_patch_discrete", "axis_contact_patch_mortar",
                        "clockwise_2d_contact", "contact_step_subdivision", "contact_tole_proj_ext",
                        "hertz_cylinder_dplan", "hertz_sphere_3d", "hertz_sphere_axis", "mortar_bimaterial_2d",
@@ -454,6 +455,14 @@ CONTACT_PARTS_DECKS = ["axis_contact_patch_continue", "axis_contact_patch_discre
                        "ssnp121g_mortar", "ssnp121h", "ssnp121h_mortar", "ssnp121h_mortar_seg3_slave", "ssnp121i",
                        "ssnp121i_mortar", "ssnp121j", "ssnp121j_mortar", "ssnp121k", "ssnp121k_mortar",
                        "ssnp121k_mortar_quad4_on_tria6", "ssnp121k_quad4_on_tria6"]
+# Decks with linear relations (LIAISON_DDL, LIAISON_UNIF, LIAISON_MAIL), with multipliers and
+# solved for one unknown each (ELIM_LAGR). Discrete contact's QUAD8 ties (ssnp121d_discrete.lua)
+# are run in parts by contact_parts_suite against the deck's own checks: its penalty run (E_N =
+# 1e12 on E = 2e6) rounds its stresses off at 1e-8 of their scale, differently for every ordering
+# (MUMPS on 1, 2 and 3 processes of the shared model: A21's SIZZ -1.000000054e5, -1.000000055e5,
+# -1.000000052e5; on 3 parts -1.000000044e5).
+RELATION_PARTS_DECKS = ["liaison_ddl", "liaison_mail", "liaison_mail_periodic", "liaison_mail_sliding",
+                        "relations_in_parts", "ring_sleeve_liaison_mail", "ssnp121a_mortar_relation"]
 
 
 def in_parts_against_serial(exe, source, scratch, names, least_checks, least_med_values, ill_conditioned=False):
@@ -594,32 +603,60 @@ def parts_suite(exe, source, scratch):
 
 
 def contact_parts_suite(exe, source, scratch):
-    """The contact decks a mesh in parts takes (CONTACT_PARTS_DECKS) with their meshes read in parts,
-    on 1, 2 and 3 ranks, against the serial run on whole meshes (in_parts_against_serial); each rank
-    works on the whole contact surfaces. What parts do not take yet is refused on every rank with
-    one message and the deck's status."""
+    """The contact decks a mesh in parts takes (CONTACT_PARTS_DECKS) and the decks of linear relations
+    (RELATION_PARTS_DECKS) with their meshes read in parts, on 1, 2 and 3 ranks, against the serial
+    run on whole meshes (in_parts_against_serial); each rank works on the whole contact surfaces and
+    on every relation's nodes. What parts do not take yet is refused on every rank with one message
+    and the deck's status."""
     for name in CONTACT_PARTS_DECKS:
         text = (source / "testcases" / f"{name}.lua").read_text()
         check(re.search(r"\b(DEFI_CONTACT|DEFI_CONT|CONTACT)\b", text), f"{name}: a contact deck")
-    _, parts = in_parts_against_serial(exe, source, scratch, CONTACT_PARTS_DECKS, 1900, 1000, ill_conditioned=True)
+    for name in RELATION_PARTS_DECKS:
+        text = (source / "testcases" / f"{name}.lua").read_text()
+        check(re.search(r"\b(LIAISON_DDL|LIAISON_UNIF|LIAISON_MAIL)\b|QUAD8", text),
+              f"{name}: a deck of linear relations")
+    names = CONTACT_PARTS_DECKS + RELATION_PARTS_DECKS
+    _, parts = in_parts_against_serial(exe, source, scratch, names, 2100, 1000, ill_conditioned=True)
     for key, ranks in (("np2", 2), ("np3", 3)):
         outputs = compare_checks.decks(scratch / f"{key}.json")
-        whole = [n for n, d in outputs.items() if "the contact surfaces are whole on every rank" not in d["output"]]
-        check(not whole, f"{ranks} ranks: every deck pairs on the whole contact surfaces ({whole[:3]})")
-    # Refused in parts, said once with the deck's status.
+        said = {"contact": "the contact surfaces are whole on every rank", "relations": "every rank builds every "
+                "linear relation"}
+        whole = [n for n, d in outputs.items()
+                 if Path(n).stem in CONTACT_PARTS_DECKS and said["contact"] not in d["output"]
+                 or Path(n).stem in RELATION_PARTS_DECKS and said["relations"] not in d["output"]]
+        check(not whole, f"{ranks} ranks: every deck works on the whole contact surfaces and relations ({whole[:3]})")
+    # Discrete contact's QUAD8 ties in parts, with multipliers and solved for one unknown each (the
+    # deck's CHOLMOD, which parts refuse, made MUMPS): every check of the deck passes on 2 and 3 ranks.
+    text = (source / "testcases" / "ssnp121d_discrete.lua").read_text()
+    check("METHODE = 'CHOLMOD', ELIM_LAGR" in text, "ssnp121d_discrete: its ELIM_LAGR run asks for CHOLMOD")
+    path = parts / "testcases" / "ssnp121d_discrete_mumps.lua"
+    path.write_text(re.sub(r"LIRE_MAILLAGE\s*\{", "LIRE_MAILLAGE{ PARTITIONNEUR = 'PTSCOTCH',", text)
+                    .replace("METHODE = 'CHOLMOD', ELIM_LAGR", "METHODE = 'MUMPS', ELIM_LAGR"))
+    for ranks in (2, 3):
+        code, out, err, _ = run([mpirun(), "-np", ranks, exe, "run", path, "--out", scratch / f"ties{ranks}"],
+                                path.parent, timeout=120)
+        check(code == 0 and out.count("80 check(s) OK, 0 NOOK") == 1 and f"mesh in parts on {ranks} ranks" in out
+              and "each solved for one of its unknowns" in out,
+              f"ssnp121d_discrete (MUMPS), {ranks} ranks: the QUAD8 ties in parts, every check passes (exit {code})")
+
+    # Refused in parts, or wrong, said once with the deck's status: a solver of one process asked for
+    # (ssnp121d_discrete.lua as written), LDLT_SP, and a relation's node name no part holds.
     cases = [
-        ("ssnp121d_discrete", r"STAT_NON_LINE: linear relations on a mesh in parts: 240 \(discrete contact's QUAD8"),
-        ("ssnp121a_mortar_relation", r"AFFE_CHAR_MECA: LIAISON_DDL: expected DDL_IMPO, PRES_REP, FORCE_NODALE or "
-                                     r"CONTACT on MODELE 'MO', a model on a mesh in parts"),
+        ("ssnp121d_discrete", r"STAT_NON_LINE: on a mesh in parts MUMPS or PETSc solves"),
         ("petsc_solvers", r"STAT_NON_LINE: PRE_COND='LDLT_SP' is not available on a mesh in parts"),
+        ("errors/parts_liaison_unknown_node", r"parts_liaison_unknown_node\.lua:12: AFFE_CHAR_MECA: LIAISON_DDL\[2\]"
+                                              r"\.NOEUD: expected a node name of the mesh, got 'N99999'"),
     ]
     for name, says in cases:
         text = (source / "testcases" / f"{name}.lua").read_text()
         path = parts / "testcases" / f"{name}.lua"
-        path.write_text(re.sub(r"LIRE_MAILLAGE\s*\{", "LIRE_MAILLAGE{ PARTITIONNEUR = 'PTSCOTCH',", text))
+        path.parent.mkdir(exist_ok=True)
+        if "PARTITIONNEUR" not in text:
+            text = re.sub(r"LIRE_MAILLAGE\s*\{", "LIRE_MAILLAGE{ PARTITIONNEUR = 'PTSCOTCH',", text)
+        path.write_text(text)
         for ranks in (2, 3):
-            code, out, err, _ = run([mpirun(), "-np", ranks, exe, "run", path, "--out", scratch / f"{name}{ranks}"],
-                                    parts / "testcases", timeout=120)
+            code, out, err, _ = run([mpirun(), "-np", ranks, exe, "run", path, "--out",
+                                     scratch / f"{path.stem}{ranks}"], path.parent, timeout=120)
             lines = [l for l in err.splitlines() if re.search(says, l)]
             check(code == 2 and len(lines) == 1,
                   f"{name}, {ranks} ranks: exit 2 and the refusal once ({code}, {len(lines)}: {err.strip()[-300:]})")
