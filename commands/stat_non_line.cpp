@@ -8,6 +8,7 @@
 #include "commands/commands.hpp"
 #include "commands/concepts.hpp"
 #include "commands/contact_keywords.hpp"
+#include "commands/part_results.hpp"
 #include "commands/parts.hpp"
 #include "commands/selection.hpp"
 #include "commands/failures.hpp"
@@ -444,11 +445,15 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
         err.add_hint("NEWTON: REAC_ITER = " + std::to_string(options.reac_iter) +
                      " reuses the factorisation between iterations (a modified Newton, slower to converge); "
                      "REAC_ITER = 1 refactorises at every iteration");
-      if (part && solver.converged_steps().size() > 1)  // saving them gathers the parts to rank 0: not written yet
-        err.add_hint("the converged steps of a mesh in parts are not saved (read the mesh without PARTITIONNEUR to "
-                     "keep them)");
-      else if (!part)
+      if (!part) {
         save_converged_steps(solver.converged_steps(), *model.mesh, session, err);
+      } else if (solver.converged_steps().size() > 1) {
+        // The ranks fail together (the solve's decisions are theirs alike): the steps are gathered
+        // to rank 0 on the whole mesh it read, which writes the serial run's file.
+        const std::vector<engine::ResultStep> whole = gather_steps_to_root(*part, solver.converged_steps());
+        if (engine::parallel::rank() == 0)
+          save_converged_steps(whole, *result->modele->maillage->whole, session, err);
+      }
       throw;
     }
   }

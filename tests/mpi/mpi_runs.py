@@ -639,6 +639,30 @@ def contact_parts_suite(exe, source, scratch):
               and "each solved for one of its unknowns" in out,
               f"ssnp121d_discrete (MUMPS), {ranks} ranks: the QUAD8 ties in parts, every check passes (exit {code})")
 
+    # A failed solve in parts keeps its converged steps as a serial run does: rank 0 writes them,
+    # gathered on the whole mesh, to the serial run's file.
+    name = "contact_step_no_subdivision"
+    text = (source / "testcases" / "errors" / f"{name}.lua").read_text()
+    path = parts / "testcases" / "errors" / f"{name}.lua"
+    path.parent.mkdir(exist_ok=True)
+    path.write_text(re.sub(r"LIRE_MAILLAGE\s*\{", "LIRE_MAILLAGE{ PARTITIONNEUR = 'PTSCOTCH',", text))
+    code, _, _, _ = run([exe, "run", source / "testcases" / "errors" / f"{name}.lua", "--out", scratch / "failed"],
+                        scratch, timeout=120)
+    saved = scratch / "failed" / f"{name}_converged.rmed"
+    check(code == 3 and saved.exists(), f"{name}: serially exit 3 and its converged steps saved ({code})")
+    for ranks in (2, 3):
+        out_dir = scratch / f"failed{ranks}"
+        code, out, err, _ = run([mpirun(), "-np", ranks, exe, "run", path, "--out", out_dir], path.parent, timeout=120)
+        said = [l for l in err.splitlines() if f"saved in {out_dir / (name + '_converged.rmed')}" in l]
+        check(code == 3 and len(said) == 1 and "mesh in parts on" in out,
+              f"{name}, {ranks} ranks: exit 3, once where its converged steps are ({code}, {len(said)})")
+        problems, n_sets, n_values = same_med(saved, out_dir / f"{name}_converged.rmed", field_scale=True)
+        for p in problems[:10]:
+            print("  " + p)
+        check(not problems and n_values > 0,
+              f"{name}, {ranks} ranks: the converged steps equal the serial ones ({n_sets} datasets/attributes, "
+              f"{n_values} floats)")
+
     # Refused in parts, or wrong, said once with the deck's status: a solver of one process asked for
     # (ssnp121d_discrete.lua as written), LDLT_SP, and a relation's node name no part holds.
     cases = [
