@@ -29,7 +29,9 @@ const CommandSpec& impr_mesure_spec() {
       "relative residual of one linear solve before and after iterative refinement, and the refinement steps) "
       "and its errors against exact values. Each row starts a new peak-memory window: the process's peak "
       "resident memory (Linux VmHWM) is reset, so a whole-process peak read from outside (/usr/bin/time) "
-      "covers only what followed the last IMPR_MESURE",
+      "covers only what followed the last IMPR_MESURE. On a result in parts (LIRE_MAILLAGE PARTITIONNEUR): the "
+      "whole mesh's nodes, the unknowns over the ranks, and the times, the peak memory and each ERREUR the "
+      "largest over the ranks",
       {concept_kw("RESULTAT", {"evol_noli"},
                   "Result measured; without it (a run that failed under pcall) only your columns, the phase "
                   "times and t_total are written (other columns left empty)"),

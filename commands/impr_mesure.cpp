@@ -15,6 +15,7 @@
 #include "commands/concepts.hpp"
 #include "commands/selection.hpp"
 #include "engine/io/atomic_file.hpp"
+#include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::cmd {
 
@@ -43,7 +44,9 @@ const engine::ResultStep& step_of(const Args& occ, const EvolNoli& resu) {
                   std::to_string(occ.integer("NUME_ORDRE")));
 }
 
-/// Largest relative (absolute if the reference is 0) error of one component over a node set.
+/// Largest relative (absolute if the reference is 0) error of one component over a node set;
+/// -1 when the component is defined on none of its nodes here (on a mesh in parts, this rank's:
+/// the caller takes the largest over the ranks).
 double max_error(const Args& occ, const EvolNoli& resu) {
   const engine::ResultStep& step = step_of(occ, resu);
   const std::string cham = occ.text("NOM_CHAM");
@@ -66,9 +69,19 @@ double max_error(const Args& occ, const EvolNoli& resu) {
   double worst = -1.0;
   for (int n : select_nodes(occ, *resu.modele->maillage->mesh))
     if (f.has(n, cmp)) worst = std::max(worst, std::abs(f.value(n, cmp) - refe) / scale);
-  if (worst < 0.0)
-    throw occ.error("NOM_CMP", "a component defined on at least one selected node", "'" + occ.text("NOM_CMP") + "' undefined there");
   return worst;
+}
+
+/// On a mesh in parts (every rank at the same IMPR_MESURE): each value the largest over the
+/// ranks. Unchanged otherwise.
+std::vector<double> largest_over_ranks(std::vector<double> values, bool in_parts) {
+  if (!in_parts) return values;
+  const std::vector<double> all = engine::parallel::gather_all(values);
+  for (size_t i = 0; i < all.size(); ++i) {
+    double& value = values[i % values.size()];
+    value = std::max(value, all[i]);
+  }
+  return values;
 }
 
 std::string number(double v) {
@@ -96,6 +109,28 @@ std::string existing_header(const std::filesystem::path& path) {
   return line;
 }
 
+/// Appends `row` to FICHIER (created with `header`), atomically: the file is rewritten whole
+/// through a temporary, so a run killed while writing leaves the previous rows, never a
+/// half-written last one.
+void write_row(const Args& args, Session& session, const std::string& header, const std::string& row) {
+  const auto path = session.output_file(args.text("FICHIER"));
+  const std::string old = existing_header(path);
+  if (!old.empty() && old != header)
+    throw args.error("FICHIER", "a new file or one with the same columns (" + header + ")",
+                     "'" + path.string() + "' with columns " + old, {"use another FICHIER for another set of columns"});
+  std::string previous;
+  if (!old.empty()) {
+    std::ifstream in(path, std::ios::binary);
+    previous.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    if (!previous.empty() && previous.back() != '\n') previous += '\n';
+  }
+  engine::write_file_atomically(path, [&](std::ostream& out) {
+    if (old.empty()) out << header << '\n';
+    out << previous << row << '\n';
+  });
+  session.log().info("  measured: " + row);
+}
+
 }  // namespace
 
 ConceptPtr impr_mesure(const Args& args, Session& session) {
@@ -116,60 +151,56 @@ ConceptPtr impr_mesure(const Args& args, Session& session) {
            (old == session.phase_seconds_measured.end() ? 0.0 : old->second);
   };
   const engine::SolverStats st = resu ? resu->stats : engine::SolverStats{};
-  const double total = std::chrono::duration<double>(now - session.measure_mark).count();
-  const double read = delta("read"), post = delta("post"), output = delta("output");
-  const double inner = st.assemble_seconds + st.contact_seconds + st.factorize_seconds + st.solve_seconds;
+  // On a mesh in parts: the whole mesh's nodes (the unknowns are counted over the ranks by the
+  // solve), and the times, the peak memory and the errors the largest over the ranks.
+  const bool in_parts = resu && resu->in_parts();
+  std::vector<double> measured = {std::chrono::duration<double>(now - session.measure_mark).count(),
+                                  delta("read"), delta("post"), delta("output"), st.assemble_seconds,
+                                  st.contact_seconds, st.factorize_seconds, st.solve_seconds, peak_rss_mib()};
+  for (const auto& occ : args.factors("ERREUR")) measured.push_back(resu ? max_error(occ, *resu) : 0.0);
+  measured = largest_over_ranks(measured, in_parts);
+  const auto errors = args.factors("ERREUR");
+  for (size_t k = 0; k < errors.size(); ++k)
+    if (resu && measured[9 + k] < 0.0)
+      throw errors[k].error("NOM_CMP", "a component defined on at least one selected node",
+                            "'" + errors[k].text("NOM_CMP") + "' undefined there");
+  const double total = measured[0], read = measured[1], post = measured[2], output = measured[3];
+  const double assemble = measured[4], contact = measured[5], factorize = measured[6], solve = measured[7];
+  const double inner = assemble + contact + factorize + solve;
   const auto add = [&](const std::string& name, const std::string& value) {
     names.push_back(name);
     values.push_back(value);
   };
   const auto count = [&](long long v) { return resu ? std::to_string(v) : std::string(); };
-  add("nodes", count(resu ? resu->modele->maillage->mesh->n_nodes() : 0));
+  const auto& maillage = resu ? resu->modele->maillage : nullptr;
+  add("nodes", count(!resu ? 0 : maillage->part ? maillage->part->n_global_nodes : maillage->mesh->n_nodes()));
   add("unknowns", count(st.n_dofs));
   add("free_unknowns", count(st.n_free));
   add("instants", count(st.instants));
   add("newton_iter", count(st.newton_iterations));
   add("contact_passes", count(st.contact_passes));
   add("t_read", number(read));
-  add("t_assemble", number(st.assemble_seconds));
-  add("t_contact", number(st.contact_seconds));
-  add("t_factor", number(st.factorize_seconds));
-  add("t_solve", number(st.solve_seconds));
+  add("t_assemble", number(assemble));
+  add("t_contact", number(contact));
+  add("t_factor", number(factorize));
+  add("t_solve", number(solve));
   add("t_post", number(post));
   add("t_output", number(output));
   add("t_other", number(std::max(0.0, total - read - post - output - inner)));
   add("t_total", number(total));
-  add("peak_rss_mb", number(peak_rss_mib()));
+  add("peak_rss_mb", number(measured[8]));
   add("resi_glob_rela", resu ? number(st.resi_glob_rela) : std::string());
   add("solve_resid_raw", resu ? number(st.solve_residual_raw) : std::string());
   add("solve_resid", resu ? number(st.solve_residual) : std::string());
   add("refinements", count(st.refinement_steps));
-  for (const auto& occ : args.factors("ERREUR")) add(occ.text("NOM"), resu ? number(max_error(occ, *resu)) : std::string());
+  for (size_t k = 0; k < errors.size(); ++k) add(errors[k].text("NOM"), resu ? number(measured[9 + k]) : std::string());
 
   std::ostringstream header, row;
   for (size_t i = 0; i < names.size(); ++i) {
     header << (i ? "," : "") << names[i];
     row << (i ? "," : "") << csv_field(values[i]);
   }
-  const auto path = session.output_file(args.text("FICHIER"));
-  const std::string old = existing_header(path);
-  if (!old.empty() && old != header.str())
-    throw args.error("FICHIER", "a new file or one with the same columns (" + header.str() + ")",
-                     "'" + path.string() + "' with columns " + old, {"use another FICHIER for another set of columns"});
-  // Appended atomically: the file is rewritten whole through a temporary, so a run
-  // killed while writing leaves the previous rows, never a half-written last one.
-  std::string previous;
-  if (!old.empty()) {
-    std::ifstream in(path, std::ios::binary);
-    previous.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    if (!previous.empty() && previous.back() != '\n') previous += '\n';
-  }
-  engine::write_file_atomically(path, [&](std::ostream& out) {
-    if (old.empty()) out << header.str() << '\n';
-    out << previous << row.str() << '\n';
-  });
-  session.log().info("  measured: " + row.str());
-
+  if (engine::parallel::writes_output()) write_row(args, session, header.str(), row.str());
   session.phase_seconds_measured = session.phase_seconds;
   reset_peak_rss();
   session.measure_mark = std::chrono::steady_clock::now();

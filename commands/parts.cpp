@@ -90,7 +90,7 @@ std::string failure_bytes(std::exception_ptr failure) {
 namespace {
 const char* const kTakingParts[] = {"DEFI_GROUP",    "MODI_MAILLAGE", "AFFE_MODELE",  "AFFE_MATERIAU", "AFFE_CHAR_MECA",
                                     "DEFI_CONTACT",  "DEFI_CONT",     "STAT_NON_LINE", "MECA_NON_LINE", "CALC_CHAMP",
-                                    "TEST_RESU",     "IMPR_RESU",     "POST_RELEVE_T"};
+                                    "TEST_RESU",     "IMPR_RESU",     "IMPR_MESURE",   "POST_RELEVE_T"};
 }  // namespace
 
 bool takes_parts(const std::string& command) {

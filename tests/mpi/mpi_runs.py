@@ -581,10 +581,13 @@ def parts_suite(exe, source, scratch):
                  "MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', "
                  "MODELISATION = 'AXIS' } }\nFIN()\n",
          r"AFFE_MODELE: AFFE(\[1\])?\.MODELISATION: expected 'AXIS' cells with every node at x = r >= 0"),
-        # a command not written for parts
-        ("mesure", text.replace("FIN()", "IMPR_MESURE{ RESULTAT = R, FICHIER = 'cost.txt' }\nFIN()"),
-         r"IMPR_MESURE: RESULTAT: expected a concept on a whole mesh \(IMPR_MESURE does not take a mesh in parts yet"),
+        # IMPR_MESURE on a result in parts: the whole mesh's nodes, the unknowns over the ranks, the
+        # largest error over them (DX at the top corner C111, against its own value: 0)
+        ("mesure", text.replace("FIN()", "IMPR_MESURE{ RESULTAT = R, FICHIER = 'cost.txt', ERREUR = _F{ NOM = 'err', "
+                                         "NOM_CHAM = 'DEPL', NOM_CMP = 'DZ', GROUP_NO = 'C111', VALE_REFE = 1.0 } }\n"
+                                         "FIN()"), None),
     ]
+    mesure = {}
     for name, changed, says in cases:
         path = deck.with_name(f"mesh_in_parts_{name}.lua")
         path.write_text(changed)
@@ -596,10 +599,21 @@ def parts_suite(exe, source, scratch):
                       f"{name}, {ranks} ranks: every check passes on the mesh in parts (exit {code})")
                 if name == "corner":
                     check(re.search(r"^ OK .*DEPL  N1  DZ", out, re.M), f"{name}, {ranks} ranks: node N1 found by its owner")
+                if name == "mesure":
+                    lines = (scratch / f"{name}{ranks}" / "cost.txt").read_text().splitlines()
+                    row = dict(zip(lines[0].split(","), lines[1].split(","))) if len(lines) == 2 else {}
+                    check(row.get("nodes") == "2197" and row.get("unknowns") == "6591" and "err" in row,
+                          f"{name}, {ranks} ranks: one row, the whole mesh's nodes and unknowns ({row})")
+                    mesure[ranks] = float(row.get("err", "nan"))
                 continue
             lines = [l for l in err.splitlines() if re.search(says, l)]
             check(code == 2 and len(lines) == 1,
                   f"{name}, {ranks} ranks: exit 2 and the error once ({code}, {len(lines)}: {err.strip()[:300]})")
+
+    # C111 (N2197) has DZ = -1.110918013e-03 (the deck's check): its error against 1 is 1.00111,
+    # found by the rank holding it whatever the cut (IMPR_MESURE writes 6 digits).
+    check(all(abs(e - 1.001110918) < 1e-5 for e in mesure.values()) and len(mesure) == 2,
+          f"IMPR_MESURE's error in parts is the largest over the ranks ({mesure})")
 
 
 def contact_parts_suite(exe, source, scratch):
