@@ -284,20 +284,9 @@ SurfacePart with_whole_surfaces(const MeshPart& part, const std::vector<std::vec
   nodes.erase(std::unique(nodes.begin(), nodes.end(), same_global), nodes.end());
 
   SurfacePart out;
+  out.part = nodes_only(part, false);
   MeshPart& sp = out.part;
   Mesh& m = sp.mesh;
-  m.dim = mesh.dim;
-  m.name = mesh.name;
-  m.is_part = true;
-  m.coords = mesh.coords;
-  m.node_names.assign(mesh.n_nodes(), std::string());
-  sp.global_node = part.global_node;
-  sp.node_owner = part.node_owner;
-  sp.n_owned_nodes = part.n_owned_nodes;
-  sp.n_global_nodes = part.n_global_nodes;
-  sp.n_global_cells = part.n_global_cells;
-  sp.rank = part.rank;
-  sp.parts = part.parts;
   // The given nodes in local numbers: the part's where it holds them, the others appended.
   std::vector<int> local_of(nodes.size(), -1);
   for (int v = 0; v < mesh.n_nodes(); ++v) {
@@ -339,13 +328,14 @@ SurfacePart with_whole_surfaces(const MeshPart& part, const std::vector<std::vec
   return out;
 }
 
-MeshPart nodes_only(const MeshPart& part) {
+MeshPart nodes_only(const MeshPart& part, bool names) {
   MeshPart out;
   out.mesh.dim = part.mesh.dim;
   out.mesh.name = part.mesh.name;
   out.mesh.is_part = true;
   out.mesh.coords = part.mesh.coords;
-  out.mesh.node_names = part.mesh.node_names;
+  if (names) out.mesh.node_names = part.mesh.node_names;
+  else out.mesh.node_names.assign(part.mesh.n_nodes(), std::string());
   out.global_node = part.global_node;
   out.node_owner = part.node_owner;
   out.n_owned_nodes = part.n_owned_nodes;

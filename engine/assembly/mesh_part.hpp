@@ -78,10 +78,11 @@ struct SurfacePart {
 SurfacePart with_whole_surfaces(const MeshPart& part, const std::vector<std::vector<int>>& lists,
                                 const std::vector<char>& layered = {});
 
-/// `part` without its cells: its nodes (coordinates, names), their numbers in the whole mesh and
-/// their owners. The nodes a run in parts numbers its unknowns on when linear relations add
-/// nodes beyond the part and no contact surface does (add_ghost_nodes).
-MeshPart nodes_only(const MeshPart& part);
+/// `part` without its cells: its nodes (coordinates, names; without `names`, each name empty),
+/// their numbers in the whole mesh and their owners. The nodes a run in parts numbers its
+/// unknowns on when linear relations add nodes beyond the part and no contact surface does
+/// (add_ghost_nodes).
+MeshPart nodes_only(const MeshPart& part, bool names = true);
 
 /// Collective: every rank passes the same `global_nodes` (numbers in the whole mesh, each held by
 /// its owner's part). `numbered` begins with the nodes of this rank's part, in its numbers (the
