@@ -34,6 +34,6 @@ for mode in parts shared glued; do
 done
 grep -q PARTITIONNEUR "$work/glued.lua" || { echo "the glued deck's LIRE_MAILLAGE changed: update $0" >&2; exit 2; }
 modes="parts shared glued"
-label="refine $refine" keep="check\(s\) OK|mesh in parts on|model shared among|CG solve|linear relation"
+label="refine $refine" keep="check\(s\) OK|mesh in parts on|model shared among|linear solve|linear relation"
 . "$root/tests/bench/in_turn.sh"
 in_turn
