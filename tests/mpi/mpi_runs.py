@@ -29,14 +29,15 @@ usage: mpi_runs.py CASE LUNASTER MESHGEN SOURCE_DIR SCRATCH_DIR
   parts_suite   the linear-elastic decks with every mesh read in parts (LIRE_MAILLAGE PARTITIONNEUR), on 1, 2
                 and 3 ranks, against the serial run on whole meshes: values to 1e-8 of themselves or of
                 their field's scale, the MED file and the table IMPR_RESU writes; errors found on one
-                rank's part (a node name no part holds, an AXIS cell at x < 0, a command not written
-                for parts) stop every rank with one error and the deck's status; the tables
+                rank's part (a node name no part holds, an AXIS cell at x < 0) stop every rank with
+                one error and the deck's status; IMPR_MESURE's row counts the whole mesh; the tables
                 POST_RELEVE_T makes are the serial ones on every rank (reactions_tables.lua)
   contact_parts_suite  the contact decks a mesh in parts takes (every method; 2D, AXIS, 3D; MUMPS and
-                PETSc) and the decks of linear relations (LIAISON_DDL, LIAISON_UNIF, QUAD8 ties; with
+                PETSc) and the decks of linear relations (LIAISON_DDL, LIAISON_UNIF, LIAISON_MAIL; with
                 multipliers and ELIM_LAGR) with every mesh read in parts, on 1, 2 and 3 ranks, against
-                the serial run on whole meshes, as parts_suite; LIAISON_MAIL, a solver of one process
-                and LDLT_SP refused on every rank with one message
+                the serial run on whole meshes, as parts_suite; discrete contact's QUAD8 ties and a
+                failed solve's converged steps in parts; a solver of one process, LDLT_SP and an
+                unknown relation node refused on every rank with one message
   rank_failure  a rank that fails alone brings the run down: a budget stop inside the collective
                 MUMPS factorisation (time limit on every rank; memory limit on rank 0 only, then
                 on rank 1 only); a rank that stops on a deck error while the other waits for it in
@@ -435,8 +436,9 @@ def outputs(exe, source, scratch):
 # (docs/distributed-model.md, step 4): their meshes are read in parts for parts_suite.
 PARTS_DECKS = ["patch_2d", "patch_3d", "axis_patch", "axis_thick_cylinder", "clockwise_2d_pressure", "glued_ssnp121_2d",
                "glued_ssnp121_3d", "reactions_tables"]
-# What a deck of linear elasticity does not use (contact_parts_suite takes the contact decks).
-NOT_IN_PARTS = re.compile(r"\b(IMPR_MESURE|DEFI_CONTACT|DEFI_CONT|CONTACT|LIAISON_DDL|LIAISON_UNIF|LIAISON_MAIL)\b")
+# What a deck of linear elasticity alone does not use (contact_parts_suite takes the decks of
+# contact and of linear relations; parts_suite's 'mesure' case runs IMPR_MESURE).
+BEYOND_ELASTICITY = re.compile(r"\b(IMPR_MESURE|DEFI_CONTACT|DEFI_CONT|CONTACT|LIAISON_DDL|LIAISON_UNIF|LIAISON_MAIL)\b")
 # The contact decks of testcases/ that a mesh in parts takes (docs/distributed-model.md, step 5):
 # every method (CONTINUE, the discrete CONTRAINTE and PENALISATION, mortar's LAGRANGIEN and
 # PENALISATION), 2D, AXIS and 3D, MUMPS and PETSc; not the decks with LIAISON_MAIL or solver
@@ -550,7 +552,7 @@ def parts_suite(exe, source, scratch):
     names = PARTS_DECKS + ["mesh_in_parts"]
     for name in names:
         text = (source / "testcases" / f"{name}.lua").read_text()
-        check(not NOT_IN_PARTS.search(text), f"{name}: a deck of linear elasticity without what parts refuse")
+        check(not BEYOND_ELASTICITY.search(text), f"{name}: a deck of linear elasticity alone")
     _, parts = in_parts_against_serial(exe, source, scratch, names, 300, 10000)
     check(any(f.endswith("mesh_in_parts_80.rmed") for f in output_files(scratch / "serial")),
           f"the serial run wrote the MED file")
