@@ -130,9 +130,7 @@ std::vector<char> on_model(const Modele& mo, const std::vector<int>& nodes) {
     for (size_t i = 0; i < nodes.size(); ++i) out[i] = in_model[nodes[i]];
     return out;
   }
-  const engine::MeshPart& part = *mo.maillage->part;
-  std::unordered_map<int, int> local;
-  for (int v = 0; v < part.mesh.n_nodes(); ++v) local.emplace(part.global_node[v], v);
+  const std::unordered_map<int, int> local = engine::local_nodes(*mo.maillage->part);
   std::vector<double> flags(nodes.size(), 0.0);
   for (size_t i = 0; i < nodes.size(); ++i) {
     const auto it = local.find(nodes[i]);

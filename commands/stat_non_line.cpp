@@ -224,8 +224,7 @@ void axis_integration(engine::ContactDefinition& definition, const engine::Mesh&
 /// condition is its owner's in the solve).
 std::vector<engine::DirichletValue> held_by_part(std::vector<engine::DirichletValue> whole,
                                                  const engine::MeshPart& part) {
-  std::unordered_map<int, int> local;
-  for (int v = 0; v < part.mesh.n_nodes(); ++v) local.emplace(part.global_node[v], v);
+  const std::unordered_map<int, int> local = engine::local_nodes(part);
   std::vector<engine::DirichletValue> out;
   for (engine::DirichletValue d : whole) {
     const auto it = local.find(d.node);
@@ -244,8 +243,7 @@ void number_relations(std::vector<engine::LinearRelation>& relations, engine::Me
   for (const auto& r : relations)
     for (const auto& t : r.terms) nodes.push_back(t.node);
   engine::add_ghost_nodes(numbered, nodes, eliminate ? &part : nullptr);
-  std::unordered_map<int, int> local;
-  for (int v = 0; v < numbered.mesh.n_nodes(); ++v) local.emplace(numbered.global_node[v], v);
+  const std::unordered_map<int, int> local = engine::local_nodes(numbered);
   for (auto& r : relations)
     for (auto& t : r.terms) t.node = local.at(t.node);
 }

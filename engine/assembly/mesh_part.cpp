@@ -328,6 +328,13 @@ SurfacePart with_whole_surfaces(const MeshPart& part, const std::vector<std::vec
   return out;
 }
 
+std::unordered_map<int, int> local_nodes(const MeshPart& part) {
+  std::unordered_map<int, int> local;
+  local.reserve(part.global_node.size());
+  for (int v = 0; v < static_cast<int>(part.global_node.size()); ++v) local.emplace(part.global_node[v], v);
+  return local;
+}
+
 MeshPart nodes_only(const MeshPart& part, bool names) {
   MeshPart out;
   out.mesh.dim = part.mesh.dim;

@@ -14,6 +14,7 @@
 /// The part's `mesh` is an ordinary Mesh in local numbers (what elements, loads and groups read);
 /// global_node and global_cell give the whole mesh's numbers. With one rank the part is the
 /// whole mesh, in its own order.
+#include <unordered_map>
 #include <vector>
 
 #include "engine/mesh/mesh.hpp"
@@ -77,6 +78,9 @@ struct SurfacePart {
 /// on each rank (mortar's eliminations of the slave surface's unknowns).
 SurfacePart with_whole_surfaces(const MeshPart& part, const std::vector<std::vector<int>>& lists,
                                 const std::vector<char>& layered = {});
+
+/// Per node that `part` holds, its local number, keyed by its number in the whole mesh.
+std::unordered_map<int, int> local_nodes(const MeshPart& part);
 
 /// `part` without its cells: its nodes (coordinates, names; without `names`, each name empty),
 /// their numbers in the whole mesh and their owners. The nodes a run in parts numbers its

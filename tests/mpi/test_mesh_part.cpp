@@ -895,12 +895,9 @@ TEST(PartNewton, WhatPartsDoNotDoYetIsRefusedOnEveryRank) {
   MeshPart numbered = nodes_only(part);
   const std::vector<int> corners = {scene.whole.node_groups.at("C111")[0], scene.whole.node_groups.at("C011")[0]};
   add_ghost_nodes(numbered, corners);
-  auto local = [&numbered](int g) {
-    return static_cast<int>(std::find(numbered.global_node.begin(), numbered.global_node.end(), g) -
-                            numbered.global_node.begin());
-  };
+  const std::unordered_map<int, int> local = local_nodes(numbered);
   LinearRelation tie;
-  tie.terms = {{local(corners[0]), DY, 1.0}, {local(corners[1]), DY, -1.0}};
+  tie.terms = {{local.at(corners[0]), DY, 1.0}, {local.at(corners[1]), DY, -1.0}};
   std::unique_ptr<ContactHook> relations = make_relations_hook({tie}, loads.multipliers, nullptr);
   NewtonOptions krylov = mumps_options();
   krylov.solver = SolverKind::Petsc;
