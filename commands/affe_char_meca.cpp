@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
-#include <cstring>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -14,6 +13,7 @@
 #include "commands/parts.hpp"
 #include "commands/selection.hpp"
 #include "engine/contact/surface_element.hpp"
+#include "engine/core/bytes.hpp"
 #include "engine/fe/point_location.hpp"
 #include "engine/fe/shape.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
@@ -485,36 +485,28 @@ void read_liaison_mail_on_rank0(const Args& args, const Modele& mo, CharMeca& lo
     CharMeca read;
     std::set<int> glued;  // slave nodes of the occurrences before with ELIM_MULT = 'OUI'
     for (const auto& occ : args.factors("LIAISON_MAIL")) read_liaison_mail(occ, whole, read, glued, session);
-    // Each relation: its term count, then per term node, component and coefficient, its value and
-    // its label (the carriers are the driver's to choose, the load STAT_NON_LINE's).
-    auto put = [&bytes](const auto& value) { bytes.append(reinterpret_cast<const char*>(&value), sizeof value); };
-    put(read.relations.size());
+    // Each relation: its terms' nodes, components and coefficients, its value and its label (the
+    // carriers are the driver's to choose, the load STAT_NON_LINE's).
+    engine::ByteWriter out;
+    out.value<std::uint64_t>(read.relations.size());
     for (const engine::LinearRelation& r : read.relations) {
-      put(r.terms.size());
-      for (const auto& t : r.terms) put(t.node), put(t.component), put(t.coef);
-      put(r.value);
-      put(r.label.size());
-      bytes += r.label;
+      std::vector<int> nodes, components;
+      std::vector<double> coefs;
+      for (const auto& t : r.terms) nodes.push_back(t.node), components.push_back(t.component), coefs.push_back(t.coef);
+      out.array(nodes), out.array(components), out.array(coefs), out.value(r.value), out.text(r.label);
     }
+    bytes = out.take();
   });
   engine::parallel::broadcast(bytes);
-  size_t at = 0;
-  auto get = [&bytes, &at](auto& value) {
-    std::memcpy(&value, bytes.data() + at, sizeof value);
-    at += sizeof value;
-  };
-  size_t n = 0;
-  get(n);
-  for (size_t i = 0; i < n; ++i) {
+  engine::ByteReader in(bytes);
+  const auto n = in.value<std::uint64_t>();
+  for (std::uint64_t i = 0; i < n; ++i) {
     engine::LinearRelation r;
-    size_t terms = 0, label = 0;
-    get(terms);
-    r.terms.resize(terms);
-    for (auto& t : r.terms) get(t.node), get(t.component), get(t.coef);
-    get(r.value);
-    get(label);
-    r.label = bytes.substr(at, label);
-    at += label;
+    const std::vector<int> nodes = in.array<int>(), components = in.array<int>();
+    const std::vector<double> coefs = in.array<double>();
+    for (size_t k = 0; k < nodes.size(); ++k) r.terms.push_back({nodes[k], components[k], coefs[k]});
+    r.value = in.value<double>();
+    r.label = in.text();
     load.relations.push_back(std::move(r));
   }
 }
