@@ -23,6 +23,7 @@
 #include "lua/export_file.hpp"
 #include "lua/runner.hpp"
 #include "lua/verify.hpp"
+#include "lua/version.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 #include "engine/solver/blas.hpp"
 
@@ -45,6 +46,8 @@ constexpr const char* kUsage = R"(usage:
                                               (--check: only list what lunaster would not take)
   lunaster help [COMMAND]                     list commands, or the keywords of one command
   lunaster --dump-catalog md [FILE]           the catalogue as Markdown (docs/commands.md)
+  lunaster --version                          the version, the commit and build, and the versions of the
+                                              libraries it runs on (for a bug report); also `lunaster version`
   lunaster --help                             this text
 budgets: --time-limit (wall-clock seconds) and --memory-limit (resident MB) override the deck
   header "-- lunaster: time_limit=S memory_limit=MB" (an .export's P time_limit / memory_limit);
@@ -301,6 +304,14 @@ int dump_command(const std::vector<std::string>& args) {
   return 0;
 }
 
+/// `lunaster --version`: this build and the libraries' versions (lua/version.hpp). Starts
+/// neither MPI nor PETSc.
+int version_command(const std::string& verb, const std::vector<std::string>& args) {
+  if (!args.empty()) return usage_error(verb + ": unexpected argument '" + args[0] + "'");
+  std::cout << lua::version_text(lua::build_info(), lua::library_versions()) << std::flush;
+  return 0;
+}
+
 /// `lunaster convert CASE.comm [-o CASE.lua] [--check]`: 0 if everything was translated (or,
 /// with --check, is known), 2 otherwise; the deck is written in both cases.
 int convert_command(const std::vector<std::string>& args) {
@@ -362,6 +373,7 @@ int run_verb(const std::vector<std::string>& args) {
     if (verb == "help") return help_command(rest);
     if (verb == "convert") return convert_command(rest);
     if (verb == "--dump-catalog") return dump_command(rest);
+    if (verb == "--version" || verb == "version") return version_command(verb, rest);
   } catch (const std::exception& e) {
     std::cerr << "lunaster: internal error: " << e.what() << "\n";
     return static_cast<int>(ErrorKind::Internal);

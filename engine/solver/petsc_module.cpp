@@ -8,18 +8,20 @@
 
 #include "engine/core/error.hpp"
 #include "engine/solver/backends.hpp"
+#include "engine/solver/petsc_module.hpp"
 
 namespace lunaster::engine {
 namespace {
 
 using Factory = LinearSolver* (*)(const IterativeSettings*);
+using VersionEntry = int (*)(char*, size_t);
 
 /// The module sits beside the executable (build tree, or an installed bin/ with its
 /// module), else in the build tree this binary came from (unit tests run from tests/).
-Factory load_factory() {
-  static Factory factory = nullptr;
+void* load_module() {
+  static void* module = nullptr;
   static std::string failure;
-  if (factory) return factory;
+  if (module) return module;
   if (!failure.empty()) throw SolveError(failure);
   namespace fs = std::filesystem;
   std::vector<fs::path> places;
@@ -40,18 +42,34 @@ Factory load_factory() {
       failure = std::string("the PETSc module could not be loaded: ") + dlerror();
       throw SolveError(failure, {"install the Debian package libpetsc-real-dev (scripts/install-deps.sh)"});
     }
-    factory = reinterpret_cast<Factory>(dlsym(handle, "lunaster_petsc_solver"));
-    if (!factory) throw InternalError("the PETSc module has no entry point lunaster_petsc_solver");
-    return factory;
+    return module = handle;
   }
   failure = "the PETSc module liblunaster_petsc.so was not found (looked for " + tried + ")";
   throw SolveError(failure, {"build lunaster with PETSc (libpetsc-real-dev) and keep the module beside the executable"});
 }
 
+/// The module's entry point `name`.
+template <typename Entry>
+Entry entry_point(const char* name) {
+  auto* entry = reinterpret_cast<Entry>(dlsym(load_module(), name));
+  if (!entry) throw InternalError(std::string("the PETSc module has no entry point ") + name);
+  return entry;
+}
+
 }  // namespace
 
 std::unique_ptr<LinearSolver> make_petsc_solver(const IterativeSettings& settings) {
-  return std::unique_ptr<LinearSolver>(load_factory()(&settings));
+  static const Factory factory = entry_point<Factory>("lunaster_petsc_solver");
+  return std::unique_ptr<LinearSolver>(factory(&settings));
+}
+
+PetscVersion petsc_version() {
+  char text[64] = {};
+  if (entry_point<VersionEntry>("lunaster_petsc_version")(text, sizeof text))
+    throw SolveError("PETSc did not give its version (PetscGetVersionNumber failed)");
+  const std::string both = text;
+  const auto blank = both.find(' ');
+  return {both.substr(0, blank), blank == std::string::npos ? std::string() : both.substr(blank + 1)};
 }
 
 }  // namespace lunaster::engine

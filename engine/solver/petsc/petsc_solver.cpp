@@ -855,3 +855,14 @@ Vector PetscSolver::solve(const Vector& b) const {
 extern "C" lunaster::engine::LinearSolver* lunaster_petsc_solver(const lunaster::engine::IterativeSettings* settings) {
   return new lunaster::engine::PetscSolver(*settings);
 }
+
+/// The PETSc this module runs on, as the library gives its own numbers (PetscGetVersionNumber
+/// reads them without PetscInitialize: no MPI), then the version of the PETSc headers the module
+/// was compiled with: "3.18.5 3.18.5" (engine/solver/petsc_module.hpp).
+extern "C" int lunaster_petsc_version(char* text, size_t size) {
+  PetscInt major = 0, minor = 0, subminor = 0, release = 0;
+  if (PetscGetVersionNumber(&major, &minor, &subminor, &release)) return 1;
+  std::snprintf(text, size, "%ld.%ld.%ld %d.%d.%d", static_cast<long>(major), static_cast<long>(minor),
+                static_cast<long>(subminor), PETSC_VERSION_MAJOR, PETSC_VERSION_MINOR, PETSC_VERSION_SUBMINOR);
+  return 0;
+}
