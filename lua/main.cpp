@@ -33,11 +33,11 @@ using namespace lunaster;
 namespace {
 
 constexpr const char* kUsage = R"(usage:
-  lunaster run DECK [--out DIR] [-v|-q] [--time-limit S] [--memory-limit MB] [--vale-calc=check|report]
+  lunaster run DECK [--out DIR] [-v|-q] [--time-limit S] [--memory-limit MB] [--vale-calc=report|check]
                   [--solveur=MUMPS]           run a deck: DECK.lua, a code_aster DECK.comm, or a DECK.export
                                               naming a .comm, its units and limits (output: ./out/<deck name>)
   lunaster verify [PATHS...] [-j N] [--np N] [--out DIR] [--junit FILE] [--json FILE] [--time-limit S]
-                  [--memory-limit MB] [--vale-calc=check|report] [--solveur=MUMPS]
+                  [--memory-limit MB] [--vale-calc=report|check] [--solveur=MUMPS]
                                               run decks (.lua, .export, and .comm without an .export;
                                               default: testcases/) and summarise TEST_RESU
                                               (--np N: each deck as `mpirun -np N lunaster run ...`)
@@ -52,8 +52,11 @@ constexpr const char* kUsage = R"(usage:
 budgets: --time-limit (wall-clock seconds) and --memory-limit (resident MB) override the deck
   header "-- lunaster: time_limit=S memory_limit=MB" (an .export's P time_limit / memory_limit);
   run has no limit unless one is given, verify defaults to 300 s and half of the machine's memory per deck
-code_aster VALE_CALC: in a .comm they are code_aster's results, checked as CODE_ASTER comparisons;
-  --vale-calc=report prints them as SAME/DIFF report lines instead (the VALE_REFE checks decide)
+code_aster VALE_CALC: the VALE_CALC of a .comm (run alone or named by an .export) are code_aster's own
+  non-regression values, not lunaster's: by default (--vale-calc=report) each is a CODE_ASTER report line,
+  SAME or DIFF with its relative difference, and does not count (the VALE_REFE checks decide OK/NOOK);
+  --vale-calc=check counts them as checks (OK/NOOK at their TOLE_MACHINE, as code_aster does).
+  A Lua deck's VALE_CALC are lunaster's own recorded values: always checks
 MPI: `mpirun -np N lunaster run DECK` runs the deck on N ranks (MUMPS factorises across them); rank 0
   alone prints and writes files, every rank returns the same exit status; verify is not run by mpirun
 --solveur=MUMPS: every STAT_NON_LINE / MECA_NON_LINE solves with MUMPS whatever its SOLVEUR says, the
@@ -88,8 +91,9 @@ class TeeBuffer : public std::streambuf {
   std::streambuf* copy_;
 };
 
-/// "3 comparison(s) with code_aster's VALE_CALC: 1 beyond tolerance, largest difference 3.5e-03 (DEPL  O  DY)".
-std::string comparison_summary(const std::vector<cmd::Session::Comparison>& comparisons) {
+/// "3 comparison(s) with code_aster's VALE_CALC: 1 beyond tolerance, largest difference 3.5e-03 (DEPL  O  DY);
+/// reported, not counted (--vale-calc=check counts them)".
+std::string comparison_summary(const std::vector<cmd::Session::Comparison>& comparisons, bool reported) {
   int beyond = 0;
   const cmd::Session::Comparison* largest = nullptr;
   for (const auto& c : comparisons) {
@@ -99,7 +103,8 @@ std::string comparison_summary(const std::vector<cmd::Session::Comparison>& comp
   char text[64];
   std::snprintf(text, sizeof text, "%.3e", largest->difference);
   return "lunaster: " + std::to_string(comparisons.size()) + " comparison(s) with code_aster's VALE_CALC: " +
-         std::to_string(beyond) + " beyond tolerance, largest difference " + text + " (" + largest->what + ")";
+         std::to_string(beyond) + " beyond tolerance, largest difference " + text + " (" + largest->what + "); " +
+         (reported ? "reported, not counted (--vale-calc=check counts them)" : "counted as checks (--vale-calc=check)");
 }
 
 /// How long a rank that stopped on an error waits for the others at the end of the run
@@ -169,7 +174,7 @@ int run_command(const std::vector<std::string>& args) {
   std::string deck;
   fs::path out;
   int verbosity = 1;
-  bool vale_calc_report = false;
+  bool vale_calc_report = true;  // a .comm's VALE_CALC are code_aster's: reported unless --vale-calc=check
   std::string solveur;
   lua::Budget budget;
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -224,7 +229,7 @@ int run_command(const std::vector<std::string>& args) {
     for (const auto& t : session.tests) n_ok += t.ok;
     log.info("lunaster: " + std::to_string(n_ok) + " check(s) OK, " + std::to_string(session.tests.size() - n_ok) +
              " NOOK");
-    if (!session.comparisons.empty()) log.info(comparison_summary(session.comparisons));
+    if (!session.comparisons.empty()) log.info(comparison_summary(session.comparisons, session.vale_calc_report));
   }
   log_stream.flush();
   err_stream.flush();

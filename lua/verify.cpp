@@ -428,7 +428,7 @@ int verify(const VerifyOptions& options, std::ostream& out) {
   jobs = std::min<int>(jobs, std::max<std::size_t>(decks.size(), 1));
   std::atomic<std::size_t> next{0};
   std::vector<std::string> extra;
-  if (options.vale_calc_report) extra.push_back("--vale-calc=report");
+  if (!options.vale_calc_report) extra.push_back("--vale-calc=check");
   if (!options.solveur.empty()) extra.push_back("--solveur=" + options.solveur);
   auto worker = [&] {
     for (std::size_t i = next++; i < decks.size(); i = next++)
@@ -462,7 +462,9 @@ int verify(const VerifyOptions& options, std::ostream& out) {
   }
   if (n_compared)
     out << n_compared << " comparison(s), " << n_beyond << " beyond tolerance"
-        << (options.vale_calc_report ? " (reported: --vale-calc=report)" : " (counted as checks)") << "\n\n";
+        << (options.vale_calc_report ? " (reported, not counted: code_aster's values; --vale-calc=check counts them)"
+                                     : " (counted as checks: --vale-calc=check)")
+        << "\n\n";
   for (const auto& o : outcomes) {
     if (o.status == "OK") continue;
     out << "\n---- " << o.deck.string() << " (" << o.status << ", exit " << o.exit_code;

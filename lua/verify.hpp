@@ -19,7 +19,7 @@ struct VerifyOptions {
   std::filesystem::path out_dir = "out/verify";  ///< each deck writes to out_dir/<deck name>
   std::filesystem::path executable;          ///< the lunaster binary run as `exe run DECK --out DIR`
   Budget budget;                             ///< --time-limit / --memory-limit: override every deck header
-  bool vale_calc_report = false;             ///< --vale-calc=report: a .comm's VALE_CALC are report lines
+  bool vale_calc_report = true;              ///< a .comm's VALE_CALC are report lines (false: --vale-calc=check)
   std::string solveur;                       ///< --solveur=MUMPS: given to every deck's run
   int ranks = 0;                             ///< --np N: each deck runs as `mpirun -np N exe run ...` (0: no mpirun)
 };

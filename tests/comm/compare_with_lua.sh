@@ -4,7 +4,7 @@
 #   compare_with_lua.sh LUNASTER EXPORT LUA_DECK OUTDIR
 # Runs, into OUTDIR:
 #   lua/        LUNASTER run LUA_DECK                       (must pass: its VALE_CALC are lunaster's)
-#   comm/       LUNASTER run EXPORT --vale-calc=report      (must pass; its VALE_CALC are code_aster's: reported only)
+#   comm/       LUNASTER run EXPORT                         (must pass; its VALE_CALC are code_aster's: reported by default)
 #   converted/  LUNASTER convert <the .comm of EXPORT>, then the converted deck run plainly (unit 20 =
 #               <name>.med beside it, linked to the mesh of the export); its VALE_CALC are code_aster's,
 #               so it may end with NOOK: its exit status only has to say "ran to the end" (0 or 1).
@@ -55,9 +55,9 @@ status=$?
 $(tail -20 "$out/lua.log")"
 
 # 2. The export.
-"$exe" run "$export_file" --vale-calc=report --out "$out/comm" > "$out/comm.log" 2>&1
+"$exe" run "$export_file" --out "$out/comm" > "$out/comm.log" 2>&1
 status=$?
-[ $status -eq 0 ] || fail "lunaster run $(basename "$export_file") --vale-calc=report failed (exit $status), see $out/comm.log:
+[ $status -eq 0 ] || fail "lunaster run $(basename "$export_file") failed (exit $status), see $out/comm.log:
 $(tail -20 "$out/comm.log")"
 
 # 3. `convert --check` finds nothing to finish in a case that runs; then the converted deck, run as

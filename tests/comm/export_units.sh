@@ -31,13 +31,40 @@ grep -q '^\(SAME\|DIFF\) CODE_ASTER     DEPL  O  LAGS_C  refe=-1.003510000e+05' 
   fail "no CODE_ASTER report line for LAGS_C at O"
 grep -q "comparison(s) with code_aster's VALE_CALC" "$out/run.log" || fail "no comparison summary"
 
+# The default for a .comm's VALE_CALC: reported; --vale-calc=check: counted.
+case_export=$src/testcases/comm/ssnp121a.export
+"$exe" run "$case_export" --out "$out/default" > "$out/default.log" 2>&1
+status=$?
+[ $status -eq 0 ] || fail "run ssnp121a.export (default) exited $status: $(tail -5 "$out/default.log")"
+grep -q '^DIFF CODE_ASTER ' "$out/default.log" || fail "run ssnp121a.export (default): no DIFF line"
+grep -q '^NOOK' "$out/default.log" && fail "run ssnp121a.export (default): a NOOK line"
+grep -q "beyond tolerance, .*; reported, not counted (--vale-calc=check counts them)" "$out/default.log" ||
+  fail "run ssnp121a.export (default): the summary does not say the comparisons are reported"
+"$exe" run "$case_export" --vale-calc=check --out "$out/vale-check" > "$out/vale-check.log" 2>&1
+status=$?
+[ $status -eq 1 ] || fail "run ssnp121a.export --vale-calc=check exited $status, expected 1 (NOOK)"
+grep -q '^NOOK CODE_ASTER ' "$out/vale-check.log" || fail "run ssnp121a.export --vale-calc=check: no NOOK CODE_ASTER line"
+# The same checks in a Lua deck are lunaster's own non-regression values: counted by default.
+mkdir -p "$out/lua"
+"$exe" convert "$src/testcases/comm/ssnp121a.comm" -o "$out/lua/ssnp121a.lua" > "$out/convert.log" 2>&1 ||
+  fail "convert ssnp121a.comm: $(cat "$out/convert.log")"
+ln -sf "$src/testcases/ssnp121a.med" "$out/lua/ssnp121a.med"
+"$exe" run "$out/lua/ssnp121a.lua" --out "$out/lua-run" > "$out/lua.log" 2>&1
+status=$?
+[ $status -eq 1 ] || fail "the converted Lua deck exited $status, expected 1 (its VALE_CALC count)"
+grep -q '^NOOK NON_REGRESSION ' "$out/lua.log" || fail "the converted Lua deck: no NOOK NON_REGRESSION line"
+
 "$exe" verify "$out/case" -j 1 --vale-calc=report --out "$out/verify" --json "$out/verify.json" > "$out/verify.log" 2>&1
 status=$?
 [ $status -eq 0 ] || fail "verify --vale-calc=report exited $status: $(tail -5 "$out/verify.log")"
 grep -q '"code_aster": \[{"check": "DEPL  A  DY", "lunaster": ' "$out/verify.json" || fail "JSON lacks the code_aster array"
 grep -q 'comparisons with code_aster' "$out/verify.log" || fail "verify prints no comparison table"
-"$exe" verify "$out/case" -j 1 --out "$out/verify-check" > "$out/verify-check.log" 2>&1
-[ $? -eq 1 ] || fail "verify (check mode) should report the comparisons beyond TOLE_MACHINE as NOOK"
+"$exe" verify "$out/case" -j 1 --out "$out/verify-default" > "$out/verify-default.log" 2>&1
+status=$?
+[ $status -eq 0 ] || fail "verify (default: reported) exited $status: $(tail -5 "$out/verify-default.log")"
+grep -q "beyond tolerance (reported, not counted" "$out/verify-default.log" || fail "verify (default) does not say it reports"
+"$exe" verify "$out/case" -j 1 --vale-calc=check --out "$out/verify-check" > "$out/verify-check.log" 2>&1
+[ $? -eq 1 ] || fail "verify --vale-calc=check should count the comparisons beyond TOLE_MACHINE as NOOK"
 
 "$exe" convert --check "$src/testcases/errors/comm_python_loop.comm" > "$out/check.log" 2>&1
 status=$?
