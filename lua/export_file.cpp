@@ -17,12 +17,17 @@ struct FileType {
   const char* name;
   char direction;  ///< 'D' read, 'R' written
   const char* what;
+  const char* as = nullptr;  ///< the type lunaster reads it as (a second name of a type), if any
+  bool skipped = false;      ///< handed over by code_aster's runner but never read by the study
 };
 
 constexpr FileType kFileTypes[] = {
     {"comm", 'D', "the command file (unit 1), converted to Lua and run"},
     {"mmed", 'D', "a MED mesh, read by LIRE_MAILLAGE(UNITE=n, FORMAT='MED')"},
+    {"med", 'D', "a MED mesh, as 'mmed'", "mmed"},
     {"msh", 'D', "a Gmsh mesh, read by LIRE_MAILLAGE(UNITE=n, FORMAT='GMSH')"},
+    {"datg", 'D', "the script that generated the study's mesh (Gibi, SALOME), kept with the study for the record: "
+                  "skipped, with a line in the log", nullptr, true},
     {"rmed", 'R', "a MED result file, written by IMPR_RESU(UNITE=n, FORMAT='MED') in the output folder"},
     {"resu", 'R', "a text result file, written by IMPR_RESU(UNITE=n, FORMAT='RESULTAT') in the output folder"},
     {"mess", 'R', "the message file: a copy of the run's log, in the output folder"},
@@ -39,15 +44,27 @@ DeckError export_error(const fs::path& file, int line, std::string message, std:
 
 std::string supported_list() {
   std::string out;
-  for (const auto& t : kFileTypes) out += std::string(out.empty() ? "" : ", ") + t.name + " (" + t.direction + ")";
+  for (const auto& t : kFileTypes)
+    if (!t.skipped) out += std::string(out.empty() ? "" : ", ") + t.name + " (" + t.direction + ")";
   return out;
 }
 
 /// Why lunaster refuses a file type code_aster knows, where a hint helps.
 std::string refusal_hint(const std::string& type) {
   if (type == "mail") return "convert the mesh to MED (code_aster: IMPR_RESU(FORMAT='MED') of the mesh) and use 'F mmed'";
+  if (type == "mgib" || type == "msup")
+    return std::string(type == "mgib" ? "a Gibi" : "an I-DEAS universal") + " mesh, which code_aster reads with " +
+           (type == "mgib" ? "PRE_GIBI" : "PRE_IDEAS") + ": convert it to MED (with code_aster: " +
+           (type == "mgib" ? "PRE_GIBI" : "PRE_IDEAS") + ", LIRE_MAILLAGE, IMPR_RESU(FORMAT='MED'); or with Gmsh or " +
+           "SALOME) and use 'F mmed'";
+  if (type == "libr")
+    return "a data file the study reads on its unit (LIRE_FONCTION, LIRE_TABLE, INCLUDE, an MFront behaviour ...): "
+           "lunaster has no command that reads one";
+  if (type == "nom")
+    return "a file the study opens by its name (a Python module, a file read through code_aster's Python API): "
+           "lunaster's commands read files through their units only";
   if (type == "base" || type == "bhdf") return "lunaster has no code_aster database: POURSUITE is not supported";
-  if (type.size() == 5 && type.rfind("com", 0) == 0)
+  if (type.size() == 4 && type.rfind("com", 0) == 0 && type[3] >= '0' && type[3] <= '9')
     return "continuation command files (POURSUITE) are not supported: put the commands in one .comm";
   return "";
 }
@@ -114,9 +131,14 @@ ExportFile read_export(const fs::path& file) {
       unit = -1;
     }
     if (unit < 0 || unit > 99) throw export_error(file, line, "expected a unit number 0..99, got '" + w[4] + "'");
+    const fs::path path = fs::path(w[2]).is_absolute() ? fs::path(w[2]) : folder / w[2];
     const FileType* known = nullptr;
     for (const auto& t : kFileTypes)
       if (type == t.name) known = &t;
+    if (known && known->skipped) {  // bound to no unit, and never opened
+      out.skipped.push_back({type, path, line});
+      continue;
+    }
     if (!known) {
       std::vector<std::string> hints = {"lunaster reads the file types " + supported_list()};
       if (auto hint = refusal_hint(type); !hint.empty()) hints.insert(hints.begin(), hint);
@@ -127,8 +149,7 @@ ExportFile read_export(const fs::path& file) {
                          "file type '" + type + "': expected direction " + known->direction + ", got '" + direction + "'",
                          {std::string(known->direction == 'D' ? "a " + type + " file is read (D)"
                                                               : "a " + type + " file is written (R)")});
-    const fs::path path = fs::path(w[2]).is_absolute() ? fs::path(w[2]) : folder / w[2];
-    ExportUnit entry{type, path, line};
+    ExportUnit entry{known->as ? known->as : type, path, line};
     if (type == "comm") {
       if (comm_line)
         throw export_error(file, line, "a second command file; the first is on line " + std::to_string(comm_line),

@@ -274,6 +274,9 @@ void apply_export(const ExportFile& study, cmd::Session& session) {
   session.deck_path = study.comm;
   for (const auto& [unit, f] : study.data) session.data_units[unit] = {f.type, f.path};
   for (const auto& [unit, f] : study.results) session.result_units[unit] = {f.type, f.path};
+  for (const auto& f : study.skipped)
+    session.log().info(study.file.string() + ": file type '" + f.type + "' (line " + std::to_string(f.line) +
+                       ", " + f.path.filename().string() + ") is not read by the study: skipped");
   if (!study.ignored.empty()) {
     std::string names;
     for (const auto& name : study.ignored) names += (names.empty() ? "" : ", ") + name;

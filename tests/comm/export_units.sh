@@ -2,9 +2,13 @@
 # An .export's result units and message file, and the migration report through `lunaster verify`:
 #   - `F rmed NAME R 80` makes IMPR_RESU(UNITE=80) write NAME in the output folder;
 #   - `F mess NAME R 6` gets a copy of everything the run prints;
-#   - verify --vale-calc=report --json carries each comparison with code_aster (the "code_aster"
-#     array) and the run is OK on its analytical checks, while the default (check) counts the
-#     comparisons beyond tolerance as NOOK.
+#   - `F datg NAME D 16` (the script that made the mesh, which no study reads) is skipped with a
+#     line in the log naming its line;
+#   - the VALE_CALC of a .comm are code_aster's: by default `run` and `verify` report them (SAME/DIFF
+#     lines, exit 0 on testcases/comm/ssnp121a.export, whose code_aster values differ from lunaster's
+#     beyond TOLE_MACHINE), --vale-calc=check counts them (NOOK, exit 1), and the same checks in a
+#     Lua deck (the .comm converted) count by default (NOOK, exit 1);
+#   - verify --json carries each comparison with code_aster (the "code_aster" array);
 #   - convert --check lists every form to finish in a file, with its line, and exits 2.
 # Usage: export_units.sh LUNASTER SOURCE_DIR OUTDIR
 set -u
@@ -13,6 +17,7 @@ rm -rf "$out"; mkdir -p "$out/case"
 fail() { echo "FAIL: $*"; exit 1; }
 
 cp "$src/testcases/comm/ssnp121a.comm" "$out/case/"
+echo "* the script that generated the mesh: never read by the study" > "$out/case/ssnp121a.datg"
 cat > "$out/case/study.export" <<EOT
 P time_limit 60
 P memory_limit 512
@@ -20,10 +25,13 @@ F comm ssnp121a.comm D 1
 F mmed $src/testcases/ssnp121a.med D 20
 F rmed contact_result.rmed R 80
 F mess study.mess R 6
+F datg ssnp121a.datg D 16
 EOT
 "$exe" run "$out/case/study.export" --vale-calc=report --out "$out/run" > "$out/run.log" 2>&1
 status=$?
 [ $status -eq 0 ] || fail "run exited $status: $(tail -5 "$out/run.log")"
+grep -q "study.export: file type 'datg' (line 7, ssnp121a.datg) is not read by the study: skipped" "$out/run.log" ||
+  fail "no line saying the datg file of line 7 is skipped"
 [ -s "$out/run/contact_result.rmed" ] || fail "IMPR_RESU(UNITE=80) did not write contact_result.rmed: $(ls "$out/run")"
 [ -s "$out/run/study.mess" ] || fail "no message file study.mess"
 grep -q '^ OK  ANALYTIQUE     DEPL  O  LAGS_C' "$out/run/study.mess" || fail "the message file lacks the TEST_RESU lines"

@@ -94,7 +94,38 @@ TEST(ExportFile, RefusesWhatItCannotHonourNamingTheLine) {
   expect("P time_limit 60\n", "case.export: ", "no command file");
   expect(comm + "R repe dir D 0\n", "case.export:2: ", "directory units ('R' lines) are not supported");
   expect(comm + "X what\n", "case.export:2: ", "expected a 'P', 'A' or 'F' line");
+  // Files code_aster's tests hand to the study that lunaster cannot read: each named with its line.
+  expect(comm + "F mgib mesh.mgib D 19\n", "case.export:2: ", "file type 'mgib' (unit 19) is not supported");
+  expect(comm + "F mgib mesh.mgib D 19\n", "case.export:2: ", "a Gibi mesh, which code_aster reads with PRE_GIBI");
+  expect(comm + "F msup mesh.msup D 19\n", "case.export:2: ", "an I-DEAS universal mesh");
+  expect(comm + "F libr table.txt D 38\n", "case.export:2: ", "a data file the study reads on its unit");
+  expect(comm + "F nom module.py D 0\n", "case.export:2: ", "a file the study opens by its name");
+  expect(comm + "F com1 more.comm D 1\n", "case.export:2: ", "continuation command files (POURSUITE)");
+  // The skipped types are not offered as types lunaster reads.
+  EXPECT_EQ(export_error(comm + "F mail m.mail D 20\n").find("datg"), std::string::npos);
   EXPECT_EQ(export_error(comm + "F mmed mesh.med D 20\n# a comment\n"), "");
+}
+
+TEST(ExportFile, SkipsTheFilesTheStudyNeverReadsAndReadsMedAsMmed) {
+  const fs::path dir = scratch("skipped");
+  write(dir / "case.comm", "DEBUT()\n");
+  write(dir / "m.med", "");
+  // The mesh-generation script need not be there: it is never opened.
+  const auto study = read_export(write(dir / "case.export",
+                                       "F comm case.comm D 1\n"
+                                       "F datg case.datg D 16\n"
+                                       "F med m.med D 20\n"
+                                       "F datg other.datg D 20\n"));
+  ASSERT_EQ(study.skipped.size(), 2u);
+  EXPECT_EQ(study.skipped[0].type, "datg");
+  EXPECT_EQ(study.skipped[0].line, 2);
+  EXPECT_EQ(study.skipped[0].path, dir / "case.datg");
+  EXPECT_EQ(study.skipped[1].line, 4);
+  // A skipped file binds no unit: unit 20 is the mesh's, and LIRE_MAILLAGE reads it as a MED mesh.
+  ASSERT_EQ(study.data.size(), 1u);
+  EXPECT_EQ(study.data.at(20).type, "mmed");
+  EXPECT_EQ(study.data.at(20).line, 3);
+  EXPECT_TRUE(study.results.empty());
 }
 
 TEST(ExportFile, VerifyRunsAnExportInsteadOfItsCommAndKeepsOutputFoldersApart) {
