@@ -94,13 +94,17 @@ TEST(ExportFile, RefusesWhatItCannotHonourNamingTheLine) {
   expect("P time_limit 60\n", "case.export: ", "no command file");
   expect(comm + "R repe dir D 0\n", "case.export:2: ", "directory units ('R' lines) are not supported");
   expect(comm + "X what\n", "case.export:2: ", "expected a 'P', 'A' or 'F' line");
-  // Files code_aster's tests hand to the study that lunaster cannot read: each named with its line.
-  expect(comm + "F mgib mesh.mgib D 19\n", "case.export:2: ", "file type 'mgib' (unit 19) is not supported");
-  expect(comm + "F mgib mesh.mgib D 19\n", "case.export:2: ", "a Gibi mesh, which code_aster reads with PRE_GIBI");
-  expect(comm + "F msup mesh.msup D 19\n", "case.export:2: ", "an I-DEAS universal mesh");
-  expect(comm + "F libr table.txt D 38\n", "case.export:2: ", "a data file the study reads on its unit");
-  expect(comm + "F nom module.py D 0\n", "case.export:2: ", "a file the study opens by its name");
-  expect(comm + "F com1 more.comm D 1\n", "case.export:2: ", "continuation command files (POURSUITE)");
+  // Files code_aster's tests hand to the study that lunaster cannot read: each named with its line,
+  // and what to do.
+  const std::pair<const char*, const char*> needed[] = {
+      {"F mgib mesh.mgib D 19", "file type 'mgib' (unit 19) is not supported"},
+      {"F mgib mesh.mgib D 19", "a Gibi mesh, which code_aster reads with PRE_GIBI"},
+      {"F msup mesh.msup D 19", "an I-DEAS universal mesh"},
+      {"F libr table.txt D 38", "a data file the study reads on its unit"},
+      {"F nom module.py D 0", "a file the study opens by its name"},
+      {"F com1 more.comm D 1", "continuation command files (POURSUITE)"},
+  };
+  for (const auto& [line, what] : needed) expect(comm + line + "\n", "case.export:2: ", what);
   // The skipped types are not offered as types lunaster reads.
   EXPECT_EQ(export_error(comm + "F mail m.mail D 20\n").find("datg"), std::string::npos);
   EXPECT_EQ(export_error(comm + "F mmed mesh.med D 20\n# a comment\n"), "");
