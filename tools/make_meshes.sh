@@ -34,6 +34,9 @@ mkdir -p "$m"
 "$gen" --hertz quad8:160 --grading 1.5 -o "$tc/hertz_sphere_axis.med"
 "$gen" --hertz hexa20:20 --grading 1.5 -o "$tc/meshes/hertz_sphere_3d_coarse.med"
 
+# The README's first deck (testcases/first_deck.lua): a unit square of 4 x 4 QUAD4
+"$gen" --block quad4:4 -o "$tc/first_deck.med"
+
 # Glued (conforming) versions: both blocks share the interface nodes
 "$gen" --upper quad4:4 --lower quad4:4 --glued -o "$m/glued2d_quad4.med"
 "$gen" --upper quad8:4 --lower quad8:4 --glued -o "$m/glued2d_quad8.med"
