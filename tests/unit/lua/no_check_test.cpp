@@ -33,13 +33,9 @@ TEST(VerifyNoCheck, CountedAsAFailureInEveryReport) {
   fs::permissions(exe, fs::perms::owner_all);
   std::ofstream(dir / "suite" / "checked.lua") << "-- one check\n";
   std::ofstream(dir / "suite" / "unchecked.lua") << "-- none\n";
-  VerifyOptions options;
-  options.paths = {dir / "suite"};
-  options.jobs = 1;
-  options.executable = exe;
-  options.out_dir = dir / "out";
-  options.junit_file = (dir / "junit.xml").string();
-  options.json_file = (dir / "report.json").string();
+  const VerifyOptions options{.paths = {dir / "suite"}, .jobs = 1, .junit_file = (dir / "junit.xml").string(),
+                              .json_file = (dir / "report.json").string(), .out_dir = dir / "out", .executable = exe,
+                              .budget = {}, .vale_calc_report = false, .solveur = {}, .ranks = 0};
   std::ostringstream out;
   EXPECT_EQ(verify(options, out), 1);
   const std::string text = out.str();
@@ -48,13 +44,16 @@ TEST(VerifyNoCheck, CountedAsAFailureInEveryReport) {
   EXPECT_NE(text.find("---- " + (dir / "suite" / "unchecked.lua").string() + " (NO_CHECK, exit 1)"), std::string::npos)
       << text;
   EXPECT_NE(text.find("1 passed, 1 failed\n"), std::string::npos) << text;
-  std::stringstream junit, json;
-  junit << std::ifstream(dir / "junit.xml").rdbuf();
-  json << std::ifstream(dir / "report.json").rdbuf();
-  EXPECT_NE(junit.str().find("tests=\"2\" failures=\"1\" errors=\"0\""), std::string::npos) << junit.str();
-  EXPECT_NE(junit.str().find("<failure type=\"NO_CHECK\" message=\"no check ran"), std::string::npos) << junit.str();
-  EXPECT_NE(json.str().find("\"status\": \"NO_CHECK\", \"exit_code\": 1, \"checks_ok\": 0, \"checks_nook\": 0"),
+  auto contents = [](const fs::path& file) {
+    std::ostringstream text;
+    text << std::ifstream(file).rdbuf();
+    return text.str();
+  };
+  const std::string junit = contents(dir / "junit.xml"), json = contents(dir / "report.json");
+  EXPECT_NE(junit.find("tests=\"2\" failures=\"1\" errors=\"0\""), std::string::npos) << junit;
+  EXPECT_NE(junit.find("<failure type=\"NO_CHECK\" message=\"no check ran"), std::string::npos) << junit;
+  EXPECT_NE(json.find("\"status\": \"NO_CHECK\", \"exit_code\": 1, \"checks_ok\": 0, \"checks_nook\": 0"),
             std::string::npos)
-      << json.str();
-  EXPECT_NE(json.str().find("\"passed\": 1,\n  \"failed\": 1"), std::string::npos) << json.str();
+      << json;
+  EXPECT_NE(json.find("\"passed\": 1,\n  \"failed\": 1"), std::string::npos) << json;
 }
