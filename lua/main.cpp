@@ -62,8 +62,8 @@ MPI: `mpirun -np N lunaster run DECK` runs the deck on N ranks (MUMPS factorises
 --solveur=MUMPS: every STAT_NON_LINE / MECA_NON_LINE solves with MUMPS whatever its SOLVEUR says, the
   model shared among the ranks under mpirun (as SOLVEUR=_F{METHODE='MUMPS', MATR_DISTRIBUEE='OUI'});
   the deck's other SOLVEUR keywords that MUMPS reads are kept
-exit status: 0 OK, 1 some TEST_RESU NOOK, 2 deck error, 3 solve error, 4 internal error,
-  5 time limit exceeded, 6 memory limit exceeded (or out of memory)
+exit status: 0 OK, 1 some TEST_RESU NOOK or no check ran (NO_CHECK), 2 deck error, 3 solve error,
+  4 internal error, 5 time limit exceeded, 6 memory limit exceeded (or out of memory)
 )";
 
 /// Writes to a first stream buffer and, if given, copies into a second one.
@@ -230,6 +230,15 @@ int run_command(const std::vector<std::string>& args) {
     log.info("lunaster: " + std::to_string(n_ok) + " check(s) OK, " + std::to_string(session.tests.size() - n_ok) +
              " NOOK");
     if (!session.comparisons.empty()) log.info(comparison_summary(session.comparisons, session.vale_calc_report));
+  }
+  // A deck that checked nothing proves nothing (a verification deck that lost its TEST_RESU
+  // would pass unseen): NO_CHECK, exit 1, whatever the verbosity.
+  if (code == 0 && session.tests.empty()) {
+    log.always(std::string("lunaster: NO_CHECK: the deck checked nothing (") +
+               (session.comparisons.empty() ? "it ran no TEST_RESU or TEST_TABLE"
+                                            : "its code_aster VALE_CALC are only reported, --vale-calc=report") +
+               "): exit status 1");
+    code = 1;
   }
   log_stream.flush();
   err_stream.flush();

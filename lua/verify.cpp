@@ -124,9 +124,9 @@ fs::path deck_out_dir(const fs::path& out_dir, const fs::path& deck) {
   return out_dir / (deck.extension() == ".lua" ? deck.stem() : deck.filename());
 }
 
-std::string deck_status(int exit_code, int n_nook) {
+std::string deck_status(int exit_code, int n_nook, int n_ok) {
   if (exit_code == 0) return n_nook ? "NOOK" : "OK";
-  if (exit_code == 1) return "NOOK";
+  if (exit_code == 1) return n_nook || n_ok ? "NOOK" : "NO_CHECK";
   if (exit_code == 5) return "TIMEOUT";
   if (exit_code == 6) return "OUT_OF_MEMORY";
   return "ERROR";
@@ -266,7 +266,7 @@ DeckOutcome run_child(const fs::path& executable, const fs::path& deck, const fs
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   count_checks(outcome.output, outcome.n_ok, outcome.n_nook);
   outcome.comparisons = code_aster_comparisons(outcome.output);
-  outcome.status = killed ? "TIMEOUT" : deck_status(outcome.exit_code, outcome.n_nook);
+  outcome.status = killed ? "TIMEOUT" : deck_status(outcome.exit_code, outcome.n_nook, outcome.n_ok);
   return outcome;
 }
 
@@ -337,7 +337,7 @@ std::string junit_xml(const std::vector<DeckOutcome>& outcomes) {
   int failures = 0, errors = 0;
   double total = 0.0;
   for (const auto& o : outcomes) {
-    failures += o.status == "NOOK";
+    failures += o.status == "NOOK" || o.status == "NO_CHECK";
     errors += o.status == "ERROR" || o.status == "TIMEOUT" || o.status == "OUT_OF_MEMORY";
     total += o.seconds;
   }
@@ -359,6 +359,9 @@ std::string junit_xml(const std::vector<DeckOutcome>& outcomes) {
     }
     if (o.status == "NOOK")
       out << "\n      <failure message=\"" << o.n_nook << " NOOK check(s)\">" << xml_escape(o.output) << "</failure>\n    ";
+    else if (o.status == "NO_CHECK")
+      out << "\n      <failure type=\"NO_CHECK\" message=\"no check ran (no TEST_RESU or TEST_TABLE)\">" << xml_escape(o.output)
+          << "</failure>\n    ";
     else if (o.status == "ERROR")
       out << "\n      <error type=\"ERROR\" message=\"exit status " << o.exit_code << "\">" << xml_escape(o.output)
           << "</error>\n    ";

@@ -44,7 +44,7 @@ struct CodeAsterComparison {
 struct DeckOutcome {
   std::filesystem::path deck;
   int exit_code = -1;    ///< child's exit status (-1 if killed by a signal or not started)
-  std::string status;    ///< "OK", "NOOK", "ERROR", "TIMEOUT" or "OUT_OF_MEMORY"
+  std::string status;    ///< "OK", "NOOK", "NO_CHECK", "ERROR", "TIMEOUT" or "OUT_OF_MEMORY"
   double time_limit = 0.0;       ///< the deck's budget: seconds (0 = none)
   double memory_limit_mb = 0.0;  ///< and MB (0 = none)
   int n_ok = 0, n_nook = 0;
@@ -64,9 +64,9 @@ std::vector<CodeAsterComparison> code_aster_comparisons(const std::string& outpu
 /// The output folder of a deck under verify's `out_dir`: its name, with ".comm"/".export" kept
 /// so that a .comm case and a Lua deck of the same name do not share a folder.
 std::filesystem::path deck_out_dir(const std::filesystem::path& out_dir, const std::filesystem::path& deck);
-/// "OK" (exit 0, no NOOK), "NOOK" (exit 1, or NOOK lines), "TIMEOUT" (exit 5),
-/// "OUT_OF_MEMORY" (exit 6) or "ERROR".
-std::string deck_status(int exit_code, int n_nook);
+/// "OK" (exit 0, no NOOK), "NOOK" (exit 1, or NOOK lines), "NO_CHECK" (exit 1 and not one check
+/// line: the deck checked nothing), "TIMEOUT" (exit 5), "OUT_OF_MEMORY" (exit 6) or "ERROR".
+std::string deck_status(int exit_code, int n_nook, int n_ok = 0);
 /// The budget a deck runs with under verify: `overrides` (command line), else its header
 /// (an .export's P time_limit / memory_limit),
 /// else 300 s and half of the machine's memory. A malformed header is left to the child

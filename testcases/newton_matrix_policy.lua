@@ -14,8 +14,9 @@
 --          instead of once per step, with the same exact answer.
 -- Reference: analytical. (1) uniform strain -0.05 at the end: DY = -0.05 m on AB, LAGS_C =
 --            E*eps = -1e5 Pa; DY = -0.025 m at INST 0.5 (linear in the load); tolerances 1 %
---            (we get 0.3 %). (2) uniaxial strain EPS t in plane strain: DY = EPS t on TOP, to
---            round-off. Units SI. Runtime label: fast, contact, nonlinear.
+--            (we get 0.3 %). (2) uniaxial strain EPS t in plane strain, NU = 0: SIYY = E EPS t, the
+--            reaction of TOP SIYY x 1 m, SIXX = 0 and DX = 0 on the free face RIGHT, to round-off.
+--            Units SI. Runtime label: fast, contact, nonlinear.
 DEBUT()
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'ssnp121a.med' }
 MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN' } }
@@ -61,12 +62,27 @@ PCH = AFFE_CHAR_MECA{ MODELE = PMO, DDL_IMPO = { _F{ GROUP_NO = 'LEFT', DX = 0.0
 L4 = DEFI_LIST_REEL{ DEBUT = 0.0, INTERVALLE = _F{ JUSQU_A = 1.0, NOMBRE = 4 } }
 PR = STAT_NON_LINE{ MODELE = PMO, CHAM_MATER = PCM, EXCIT = _F{ CHARGE = PCH, FONC_MULT = RAMPE },
                     INCREMENT = _F{ LIST_INST = L4 }, NEWTON = _F{ MATRICE = 'ELASTIQUE' } }
+PR = CALC_CHAMP{ reuse = PR, RESULTAT = PR, CONTRAINTE = 'SIGM_NOEU', FORCE = 'REAC_NODA' }
+-- What the solve computes, at every step: the stress E EPS t all over the patch (NU = 0), and the
+-- reaction of TOP, that stress over its 1 m (REAC_NODA = B^T sigma: the body pushes on its support);
+-- at the end, no stress across and no displacement of the free face RIGHT (NU = 0), zero to round-off
+-- on the scale of the stress and of the imposed displacement.
 local patch = {}
+local function t(inst, field, cmp, where, kind, refe, extra)
+  local f = { RESULTAT = PR, INST = inst, NOM_CHAM = field, NOM_CMP = cmp, TYPE_TEST = kind, GROUP_NO = where,
+              REFERENCE = 'ANALYTIQUE', VALE_REFE = refe, PRECISION = 1.0e-10, LEGENDE = "MATRICE='ELASTIQUE'" }
+  for k, v in pairs(extra or {}) do f[k] = v end
+  patch[#patch + 1] = _F(f)
+end
+local SYY = 2.0e6 * EPS
 for _, inst in ipairs({ 0.25, 0.5, 0.75, 1.0 }) do
-  for _, kind in ipairs({ 'MIN', 'MAX' }) do
-    patch[#patch + 1] = _F{ RESULTAT = PR, INST = inst, NOM_CHAM = 'DEPL', NOM_CMP = 'DY', TYPE_TEST = kind,
-                            GROUP_NO = 'TOP', REFERENCE = 'ANALYTIQUE', VALE_REFE = EPS * inst, PRECISION = 1.0e-10 }
-  end
+  t(inst, 'SIGM_NOEU', 'SIYY', nil, 'MIN', SYY * inst)
+  t(inst, 'SIGM_NOEU', 'SIYY', nil, 'MAX', SYY * inst)
+  t(inst, 'REAC_NODA', 'DY', 'TOP', 'SOMM', SYY * inst * 1.0)
+end
+for _, kind in ipairs({ 'MIN', 'MAX' }) do
+  t(1.0, 'SIGM_NOEU', 'SIXX', nil, kind, 0.0, { CRITERE = 'ABSOLU', PRECISION = 1.0e-10 * math.abs(SYY) })
+  t(1.0, 'DEPL', 'DX', 'RIGHT', kind, 0.0, { CRITERE = 'ABSOLU', PRECISION = 1.0e-10 * math.abs(EPS) })
 end
 TEST_RESU{ RESU = patch }
 FIN()

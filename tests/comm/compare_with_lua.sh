@@ -11,7 +11,9 @@
 # Then compares the REFERENCE='ANALYTIQUE' lines of TEST_RESU, keyed by what they test (NOM_CHAM,
 # point, NOM_CMP; repeated keys are matched in order): both the .comm run and the converted run must
 # have the same checks as the Lua run, each computed value within 1e-10 relative of the Lua run's
-# (round-off), and every ANALYTIQUE check of the .comm run must be OK.
+# (round-off), and every ANALYTIQUE check of the .comm run must be OK. The Lua deck's checks at its
+# own tolerance beside code_aster's (LEGENDE '... lunaster: exact', testcases/lib/ssnp121_3d_checks.lua)
+# have no twin in the .comm.
 set -u
 
 if [ $# -ne 4 ]; then
@@ -118,7 +120,7 @@ compare_checks() {
     }
     END {
       for (i = 1; i <= n; ++i)
-        if (!(order[i] in got)) { printf "  %s: check %s of the Lua run is missing\n", label, order[i]; bad++ }
+        if (!(order[i] in got) && order[i] !~ /lunaster: exact\]#/) { printf "  %s: check %s of the Lua run is missing\n", label, order[i]; bad++ }
       exit (bad > 0 ? 1 : 0)
     }' "$out/lua.checks" "$2"
 }
