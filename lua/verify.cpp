@@ -125,8 +125,8 @@ fs::path deck_out_dir(const fs::path& out_dir, const fs::path& deck) {
 }
 
 std::string deck_status(int exit_code, int n_nook, int n_ok) {
-  if (exit_code == 0) return n_nook ? "NOOK" : "OK";
-  if (exit_code == 1) return n_nook || n_ok ? "NOOK" : "NO_CHECK";
+  if (exit_code == 0) return n_nook ? "NOOK" : n_ok ? "OK" : "NO_CHECK";
+  if (exit_code == 1) return "NOOK";
   if (exit_code == 5) return "TIMEOUT";
   if (exit_code == 6) return "OUT_OF_MEMORY";
   return "ERROR";

@@ -64,8 +64,8 @@ std::vector<CodeAsterComparison> code_aster_comparisons(const std::string& outpu
 /// The output folder of a deck under verify's `out_dir`: its name, with ".comm"/".export" kept
 /// so that a .comm case and a Lua deck of the same name do not share a folder.
 std::filesystem::path deck_out_dir(const std::filesystem::path& out_dir, const std::filesystem::path& deck);
-/// "OK" (exit 0, no NOOK), "NOOK" (exit 1, or NOOK lines), "NO_CHECK" (exit 1 and not one check
-/// line: the deck checked nothing), "TIMEOUT" (exit 5), "OUT_OF_MEMORY" (exit 6) or "ERROR".
+/// "OK" (exit 0, a check line and no NOOK), "NOOK" (exit 1, or NOOK lines), "NO_CHECK" (exit 0 and
+/// not one check line: the deck checked nothing), "TIMEOUT" (exit 5), "OUT_OF_MEMORY" (exit 6) or "ERROR".
 std::string deck_status(int exit_code, int n_nook, int n_ok = 0);
 /// The budget a deck runs with under verify: `overrides` (command line), else its header
 /// (an .export's P time_limit / memory_limit),

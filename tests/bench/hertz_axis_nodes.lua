@@ -5,7 +5,7 @@
 -- few per cent (tests/bench/README.md, "Hertz rows that measure no convergence").
 -- Mesh, next to this deck:
 --   build/lunaster-meshgen --hertz quad8:20 --grading 1.5 --refine 8 -o tests/bench/hertz_axis_nodes.med
--- then: build/lunaster run tests/bench/hertz_axis_nodes.lua -q (a probe checks nothing: it ends NO_CHECK, exit 1)
+-- then: build/lunaster run tests/bench/hertz_axis_nodes.lua -q (a probe: it checks nothing and says NO_CHECK)
 local R, E, NU, a = 1.0, 1.0e9, 0.3, 0.1
 local E_STAR = 1.0 / (2.0 * (1.0 - NU ^ 2) / E)
 local f = 4.0 * E_STAR * a ^ 3 / (3.0 * R)  -- the load that gives the contact radius a

@@ -1,5 +1,5 @@
-// `lunaster verify` and a deck that checked nothing: `run` ends it with exit 1 and no check line
-// (lua/main.cpp, NO_CHECK); verify calls it NO_CHECK, a failure, in its table, JUnit and JSON.
+// `lunaster verify` and a deck that checked nothing: `run` ends it with exit 0, no check line and
+// a NO_CHECK line (lua/main.cpp); verify calls it NO_CHECK, a failure, in its table, JUnit and JSON.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -12,8 +12,9 @@
 using namespace lunaster::lua;
 namespace fs = std::filesystem;
 
-TEST(VerifyNoCheck, ExitOneWithoutACheckLineIsNoCheck) {
-  EXPECT_EQ(deck_status(1, 0, 0), "NO_CHECK");
+TEST(VerifyNoCheck, ExitZeroWithoutACheckLineIsNoCheck) {
+  EXPECT_EQ(deck_status(0, 0, 0), "NO_CHECK");
+  EXPECT_EQ(deck_status(1, 0, 0), "NOOK");
   EXPECT_EQ(deck_status(1, 1, 0), "NOOK");
   EXPECT_EQ(deck_status(1, 0, 3), "NOOK");  // exit 1 with OK lines only: a NOOK the count missed
   EXPECT_EQ(deck_status(0, 0, 2), "OK");
@@ -29,7 +30,7 @@ TEST(VerifyNoCheck, CountedAsAFailureInEveryReport) {
                         "  */checked.lua) echo ' OK  ANALYTIQUE     DEPL  A  DY'; echo 'lunaster: 1 check(s) OK, 0 NOOK';"
                         " exit 0 ;;\n"
                         "  *) echo 'lunaster: 0 check(s) OK, 0 NOOK'; echo 'lunaster: NO_CHECK: the deck checked nothing';"
-                        " exit 1 ;;\nesac\n";
+                        " exit 0 ;;\nesac\n";
   fs::permissions(exe, fs::perms::owner_all);
   std::ofstream(dir / "suite" / "checked.lua") << "-- one check\n";
   std::ofstream(dir / "suite" / "unchecked.lua") << "-- none\n";
@@ -41,7 +42,7 @@ TEST(VerifyNoCheck, CountedAsAFailureInEveryReport) {
   const std::string text = out.str();
   EXPECT_TRUE(std::regex_search(text, std::regex("checked\\.lua +OK +1/0 "))) << text;
   EXPECT_TRUE(std::regex_search(text, std::regex("unchecked\\.lua +NO_CHECK +0/0 "))) << text;
-  EXPECT_NE(text.find("---- " + (dir / "suite" / "unchecked.lua").string() + " (NO_CHECK, exit 1)"), std::string::npos)
+  EXPECT_NE(text.find("---- " + (dir / "suite" / "unchecked.lua").string() + " (NO_CHECK, exit 0)"), std::string::npos)
       << text;
   EXPECT_NE(text.find("1 passed, 1 failed\n"), std::string::npos) << text;
   auto contents = [](const fs::path& file) {
@@ -52,7 +53,7 @@ TEST(VerifyNoCheck, CountedAsAFailureInEveryReport) {
   const std::string junit = contents(dir / "junit.xml"), json = contents(dir / "report.json");
   EXPECT_NE(junit.find("tests=\"2\" failures=\"1\" errors=\"0\""), std::string::npos) << junit;
   EXPECT_NE(junit.find("<failure type=\"NO_CHECK\" message=\"no check ran"), std::string::npos) << junit;
-  EXPECT_NE(json.find("\"status\": \"NO_CHECK\", \"exit_code\": 1, \"checks_ok\": 0, \"checks_nook\": 0"),
+  EXPECT_NE(json.find("\"status\": \"NO_CHECK\", \"exit_code\": 0, \"checks_ok\": 0, \"checks_nook\": 0"),
             std::string::npos)
       << json;
   EXPECT_NE(json.find("\"passed\": 1,\n  \"failed\": 1"), std::string::npos) << json;

@@ -23,7 +23,8 @@ TEST(Verify, CountsTestResuLines) {
                ok, nook);
   EXPECT_EQ(ok, 2);
   EXPECT_EQ(nook, 1);
-  EXPECT_EQ(deck_status(0, 0), "OK");
+  EXPECT_EQ(deck_status(0, 0, 1), "OK");
+  EXPECT_EQ(deck_status(0, 0), "NO_CHECK");
   EXPECT_EQ(deck_status(0, 1), "NOOK");
   EXPECT_EQ(deck_status(1, 1), "NOOK");
   EXPECT_EQ(deck_status(2, 0), "ERROR");
