@@ -17,10 +17,8 @@
 -- Reference: analytical (Lame). Units SI. Runtime label: fast.
 DEBUT()
 local E, NU, P, A, B = 2.0e11, 0.3, 1.0e8, 1.0, 2.0
-local LAMBDA, MU = E * NU / ((1 + NU) * (1 - 2 * NU)), E / (2 * (1 + NU))
-local K = P * A * A / (B * B - A * A)
-local CA, CB = K / (2 * (LAMBDA + MU)), K * B * B / (2 * MU)
-local function ur(r) return CA * r + CB / r end
+-- Lame's u_r in E and NU: 2 (lambda + mu) = E / ((1 + NU)(1 - 2 NU)), 2 mu = E / (1 + NU).
+local function ur(r) return (1 + NU) * P * A * A / (E * (B * B - A * A)) * ((1 - 2 * NU) * r + B * B / r) end
 MAT = DEFI_MATERIAU{ ELAS = _F{ E = E, NU = NU } }
 L = DEFI_LIST_REEL{ DEBUT = 0.0, INTERVALLE = _F{ JUSQU_A = 1.0, NOMBRE = 1 } }
 
