@@ -148,7 +148,15 @@ const CommandSpec& affe_char_meca_spec() {
       "AFFE_CHAR_MECA", "char_meca",
       "Define mechanical loads: imposed displacements, linear relations, pressures, forces, contact",
       {concept_kw("MODELE", {"modele"}, "Model the loads apply to").required(), ddl_impo(), pres_rep(),
-       force_nodale(), liaison_ddl(), liaison_unif(), liaison_mail(), contact(), common::info()},
+       force_nodale(), liaison_ddl(), liaison_unif(), liaison_mail(), contact(),
+       text("VERI_NORM",
+            "'OUI': PRES_REP on boundary cells whose normal points into the body they bound is an error, and so "
+            "is a group whose cells point both ways (MODI_MAILLAGE ORIE_PEAU_2D / ORIE_PEAU_3D turns them out); "
+            "a cell between two cells of the mesh (no outside) or on none is not checked. 'NON': each pressure "
+            "pushes against its cells' normals as they are")
+           .into_values({"OUI", "NON"})
+           .def("OUI"),
+       common::info()},
       {at_least_one(
           {"DDL_IMPO", "PRES_REP", "FORCE_NODALE", "LIAISON_DDL", "LIAISON_UNIF", "LIAISON_MAIL", "CONTACT"})});
   return spec;

@@ -2,6 +2,7 @@
 // syntax) contact.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <set>
@@ -16,6 +17,7 @@
 #include "engine/core/bytes.hpp"
 #include "engine/fe/point_location.hpp"
 #include "engine/fe/shape.hpp"
+#include "engine/mesh/orientation.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::cmd {
@@ -42,7 +44,44 @@ void read_ddl_impo(const Args& occ, const Modele& mo, CharMeca& load) {
   if (!any) throw occ.error("DX", "at least one of DX, DY, DZ", "none");
 }
 
-void read_pres_rep(const Args& occ, const Modele& mo, CharMeca& load) {
+/// VERI_NORM = 'OUI': which way the cells of one group of a PRES_REP occurrence (or its MAILLE
+/// cells, or TOUT's) face the body they bound. On a mesh in parts each cell is counted by the
+/// rank owning its first node (which holds it and its volume cells), and the counts are summed
+/// over the ranks after the occurrences are read (check_pressure_facing).
+struct PressureFacing {
+  Args occ;
+  std::string kw;     ///< GROUP_MA, MAILLE or TOUT
+  std::string group;  ///< the group's name (GROUP_MA)
+  double inward = 0.0, outward = 0.0;
+  std::vector<std::pair<int, std::string>> first_inward;  ///< whole mesh's number and name, the first 3
+};
+
+/// Keeps the first three of `unit`'s inward cells, in the whole mesh's order.
+void keep_first_inward(PressureFacing& unit) {
+  std::sort(unit.first_inward.begin(), unit.first_inward.end());
+  if (unit.first_inward.size() > 3) unit.first_inward.resize(3);
+}
+
+void count_facing(const Modele& mo, const std::vector<int>& cells, PressureFacing& unit) {
+  const engine::Mesh& mesh = *mo.maillage->mesh;
+  std::vector<int> checked;
+  for (int c : cells)
+    if (mo.dim == mesh.dim && engine::is_boundary_type(mesh.cell_types[c], mesh.dim)) checked.push_back(c);
+  const engine::MeshPart* part = mo.in_parts() ? mo.maillage->part.get() : nullptr;
+  const std::vector<engine::BoundaryFacing> facing = engine::boundary_facing(mesh, checked);
+  for (size_t i = 0; i < checked.size(); ++i) {
+    const int c = checked[i];
+    if (part && !part->owns(mesh.cell(c)[0])) continue;
+    // A cell between two cells of the mesh has no outside, one on no cell no body: unchecked.
+    if (facing[i].side == engine::BoundarySide::Outward) unit.outward += 1.0;
+    if (facing[i].side != engine::BoundarySide::Inward) continue;
+    unit.inward += 1.0;
+    unit.first_inward.emplace_back(part ? part->global_cell[c] : c, mesh.cell_names[c]);
+  }
+  keep_first_inward(unit);
+}
+
+void read_pres_rep(const Args& occ, const Modele& mo, CharMeca& load, std::vector<PressureFacing>* facing) {
   const engine::Mesh& mesh = *mo.maillage->mesh;
   std::vector<int> cells;
   for (int c : select_cells(occ, mesh))
@@ -53,6 +92,77 @@ void read_pres_rep(const Args& occ, const Modele& mo, CharMeca& load) {
                               "boundary cells (" + std::string(mo.dim == 2 ? "SEG2/SEG3" : "TRIA/QUAD") + ")",
                               "a selection without any"));
   load.pressures.push_back({cells, occ.real("PRES"), 0});
+  if (!facing) return;
+  if (occ.has("GROUP_MA")) {
+    for (const auto& name : occ.texts("GROUP_MA")) {
+      facing->push_back({occ, "GROUP_MA", name});
+      count_facing(mo, cell_group(occ, "GROUP_MA", mesh, name), facing->back());
+    }
+  } else {
+    facing->push_back({occ, occ.has("MAILLE") ? "MAILLE" : "TOUT", ""});
+    count_facing(mo, cells, facing->back());
+  }
+}
+
+/// VERI_NORM = 'OUI': a pressure on cells whose normal points into their body (it would pull
+/// where the deck means to push) is an error, and so are the cells of one group facing both
+/// ways. On a mesh in parts the counts are the whole mesh's (collective: every rank has the
+/// same units and decides alike).
+void check_pressure_facing(std::vector<PressureFacing>& units, const Modele& mo) {
+  if (units.empty()) return;  // alike on every rank: the same occurrences and groups
+  if (mo.in_parts()) {
+    // Each rank's counts and first inward cells (unit, number; names one a line), gathered.
+    std::vector<double> counts;
+    std::vector<int> numbers;
+    std::string names;
+    for (size_t i = 0; i < units.size(); ++i) {
+      counts.push_back(units[i].inward), counts.push_back(units[i].outward);
+      for (const auto& [number, name] : units[i].first_inward)
+        numbers.insert(numbers.end(), {static_cast<int>(i), number}), names += name + '\n';
+      units[i].first_inward.clear();
+    }
+    engine::parallel::sum_over_ranks(counts.data(), static_cast<long long>(counts.size()));
+    const std::vector<int> all_numbers = engine::parallel::gather_all(numbers);
+    const std::string all_names = engine::parallel::gather_all(names);
+    size_t at = 0;
+    for (size_t k = 0; k + 1 < all_numbers.size(); k += 2) {
+      const size_t end = all_names.find('\n', at);
+      units[all_numbers[k]].first_inward.emplace_back(all_numbers[k + 1], all_names.substr(at, end - at));
+      at = end + 1;
+    }
+    for (size_t i = 0; i < units.size(); ++i) {
+      units[i].inward = counts[2 * i], units[i].outward = counts[2 * i + 1];
+      keep_first_inward(units[i]);
+    }
+  }
+  for (const PressureFacing& u : units) {
+    if (u.inward == 0.0) continue;
+    const long inward = std::lround(u.inward), outward = std::lround(u.outward);
+    std::string names;
+    for (const auto& cell : u.first_inward) names += (names.empty() ? "" : ", ") + cell.second;
+    if (inward > 3) names += ", ...";
+    const std::string what = u.kw == "GROUP_MA" ? "group '" + u.group + "'"
+                             : u.kw == "MAILLE" ? std::string("the cells of MAILLE")
+                                                : std::string("the boundary cells of the mesh");
+    const std::string given =
+        what + ": " + std::to_string(inward) + " of " + std::to_string(inward + outward) +
+        " cells point into their body (" + names + ")" +
+        (outward ? ", " + std::to_string(outward) + " out of it: mixed orientation" : std::string());
+    const std::string mesh_name = mo.maillage->user_name.empty() ? "MA" : mo.maillage->user_name;
+    const std::string orie = mo.dim == 3 ? "ORIE_PEAU_3D" : "ORIE_PEAU_2D";
+    std::vector<std::string> hints;
+    if (u.kw == "GROUP_MA")
+      hints.push_back("orient them outward after reading the mesh: " + mesh_name + " = MODI_MAILLAGE{ reuse = " +
+                      mesh_name + ", MAILLAGE = " + mesh_name + ", " + orie + " = _F{ GROUP_MA = '" + u.group +
+                      "' } }");
+    else
+      hints.push_back("gather them in a group (DEFI_GROUP CREA_GROUP_MA) and orient it outward: MODI_MAILLAGE " +
+                      orie + " = _F{ GROUP_MA = ... }");
+    hints.push_back("VERI_NORM = 'NON' applies the pressure on the cells as they are (pulling on those that point "
+                    "inward)");
+    throw u.occ.error(u.kw, "boundary cells whose normal points out of the body they bound (VERI_NORM = 'OUI')",
+                      given, hints);
+  }
 }
 
 void read_force_nodale(const Args& occ, const Modele& mo, CharMeca& load) {
@@ -517,15 +627,18 @@ ConceptPtr affe_char_meca(const Args& args, Session& session) {
   auto load = std::make_shared<CharMeca>();
   load->modele = args.concept_as<Modele>("MODELE");
   const Modele& mo = *load->modele;
+  const bool check_facing = args.text("VERI_NORM") == "OUI";
+  std::vector<PressureFacing> facing;
   auto read_here = [&] {
     for (const auto& occ : args.factors("DDL_IMPO")) read_ddl_impo(occ, mo, *load);
-    for (const auto& occ : args.factors("PRES_REP")) read_pres_rep(occ, mo, *load);
+    for (const auto& occ : args.factors("PRES_REP")) read_pres_rep(occ, mo, *load, check_facing ? &facing : nullptr);
     for (const auto& occ : args.factors("FORCE_NODALE")) read_force_nodale(occ, mo, *load);
   };
   // On a mesh in parts the relations gather their nodes over the ranks: the ranks agree on what
   // they read first (commands/parts.hpp), and the relations' checks fail alike on every rank.
   if (mo.in_parts()) agreed(read_here);
   else read_here();
+  if (check_facing) check_pressure_facing(facing, mo);
   for (const auto& occ : args.factors("LIAISON_DDL")) read_liaison_ddl(occ, mo, *load);
   for (const auto& occ : args.factors("LIAISON_UNIF")) read_liaison_unif(occ, mo, *load);
   if (mo.in_parts() && args.count("LIAISON_MAIL") > 0) {

@@ -95,6 +95,10 @@ for t in quad8 tria6; do
     "$gen" --block "$t:3" --distort 0.2 --mirror BLOCK --msh-version "$v" -o "$m/patch_${t}_cw_v${v/./}.msh"
   done
 done
+# Boundary cells pointing into their body (AFFE_CHAR_MECA VERI_NORM, testcases/veri_norm_*.lua and
+# testcases/errors/veri_norm_*.lua): the thick cylinder and a 3D block meshed mirrored.
+"$gen" --block quad8:96x1 --rect 1,2,0,0.0625 --mirror BLOCK -o "$m/axis_cylinder_quad8_cw.med"
+"$gen" --block penta6:2 --distort 0.15 --mirror BLOCK -o "$m/patch_penta6_cw.med"
 # Two-block contact scene (SSNP121 geometry, non-matching QUAD4 / TRIA3): counter-clockwise, the
 # lower (master) block clockwise, the upper (slave) block clockwise.
 for variant in ccw cw_master cw_slave; do

@@ -14,15 +14,11 @@
 
 #include "engine/core/error.hpp"
 #include "engine/fe/reference_element.hpp"
+#include "engine/mesh/orientation.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::engine {
 namespace {
-
-bool is_boundary_type(CellType type, int dim) {
-  if (dim == 2) return type == CellType::Seg2 || type == CellType::Seg3;
-  return type == CellType::Tria3 || type == CellType::Tria6 || type == CellType::Quad4 || type == CellType::Quad8;
-}
 
 [[noreturn]] void unmodelled_node(const Mesh& mesh, int node) {
   const std::string name =

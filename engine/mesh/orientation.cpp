@@ -164,14 +164,6 @@ bool same_cyclic_orientation(const std::vector<int>& a, const std::vector<int>& 
   return b[(k + 1) % m] == a[1];
 }
 
-bool contains_all(const Mesh& mesh, int cell, const std::vector<int>& nodes) {
-  const int* begin = mesh.cell(cell);
-  const int* end = begin + mesh.cell_n_nodes(cell);
-  for (int n : nodes)
-    if (std::find(begin, end, n) == end) return false;
-  return true;
-}
-
 /// Global vertex ids of the face of `volume` whose vertex set is `vertices`.
 std::vector<int> matching_face(const Mesh& mesh, int volume, const std::vector<int>& vertices) {
   const CellFaces& faces = cell_faces(mesh.cell_types[volume]);
@@ -189,6 +181,8 @@ std::vector<int> matching_face(const Mesh& mesh, int volume, const std::vector<i
   return {};
 }
 
+}  // namespace
+
 bool is_boundary_type(CellType type, int mesh_dim) {
   switch (type) {
     case CellType::Seg2:
@@ -200,8 +194,6 @@ bool is_boundary_type(CellType type, int mesh_dim) {
     default: return false;
   }
 }
-
-}  // namespace
 
 std::vector<int> find_inverted_cells(const Mesh& mesh) {
   std::vector<int> bad;
@@ -300,34 +292,73 @@ std::array<double, 3> boundary_normal(const Mesh& mesh, int c) {
   return cross(sub(point(mesh, nodes[1]), x1), sub(point(mesh, nodes[2]), x1));
 }
 
-int orient_boundary_outward(Mesh& mesh, const std::vector<int>& boundary_cells) {
-  std::vector<std::vector<int>> volumes_of_node(mesh.n_nodes());
+std::vector<BoundaryFacing> boundary_facing(const Mesh& mesh, const std::vector<int>& boundary_cells) {
+  // The volume cells around each vertex of the given cells only.
+  std::vector<char> wanted(mesh.n_nodes(), 0);
+  for (int b : boundary_cells) {
+    LUNASTER_ASSERT(is_boundary_type(mesh.cell_types[b], mesh.dim),
+                    "boundary_facing: cell " + mesh.cell_names[b] + " is not a boundary cell");
+    wanted[mesh.cell(b)[0]] = 1;
+  }
+  std::vector<int> volumes;
   for (int c = 0; c < mesh.n_cells(); ++c) {
     if (cell_info(mesh.cell_types[c]).dim != mesh.dim) continue;
-    for (int k = 0; k < cell_info(mesh.cell_types[c]).n_vertices; ++k) volumes_of_node[mesh.cell(c)[k]].push_back(c);
+    const int nv = cell_info(mesh.cell_types[c]).n_vertices;
+    for (int k = 0; k < nv; ++k)
+      if (wanted[mesh.cell(c)[k]]) {
+        volumes.push_back(c);
+        break;
+      }
   }
+  const Mesh::NodeCells around = mesh.node_cells(volumes);
+  std::vector<BoundaryFacing> facing(boundary_cells.size());
+  for (size_t i = 0; i < boundary_cells.size(); ++i) {
+    const int b = boundary_cells[i];
+    const int nv = cell_info(mesh.cell_types[b]).n_vertices;
+    const std::vector<int> vertices(mesh.cell(b), mesh.cell(b) + nv);
+    BoundaryFacing& f = facing[i];
+    for (int p = around.start[vertices[0]]; p < around.start[vertices[0] + 1]; ++p) {
+      const int v = volumes[around.positions[p]];
+      if (!mesh.cell_holds(v, vertices.data(), nv)) continue;
+      if (f.owner < 0) f.owner = v;
+      else if (f.other < 0) f.other = v;
+    }
+    if (f.owner < 0) continue;  // Loose
+    if (f.other >= 0) {
+      f.side = BoundarySide::Inner;
+      continue;
+    }
+    const std::vector<int> face = matching_face(mesh, f.owner, vertices);
+    // Every vertex of a face of the owner that is no face of it: an edge of a 3D cell, say.
+    if (face.empty()) {
+      f.side = BoundarySide::Loose;
+      continue;
+    }
+    f.side = same_cyclic_orientation(vertices, face) ? BoundarySide::Outward : BoundarySide::Inward;
+  }
+  return facing;
+}
+
+int orient_boundary_outward(Mesh& mesh, const std::vector<int>& boundary_cells) {
+  for (int b : boundary_cells)
+    if (!is_boundary_type(mesh.cell_types[b], mesh.dim))
+      throw DeckError("cell " + mesh.cell_names[b] + " (" + std::string(cell_info(mesh.cell_types[b]).name) +
+                      ") is not a boundary cell of a " + std::to_string(mesh.dim) + "D mesh");
+  const std::vector<BoundaryFacing> facing = boundary_facing(mesh, boundary_cells);
   int flipped = 0;
-  for (int b : boundary_cells) {
-    const CellType type = mesh.cell_types[b];
-    const CellInfo& info = cell_info(type);
-    if (!is_boundary_type(type, mesh.dim))
-      throw DeckError("cell " + mesh.cell_names[b] + " (" + std::string(info.name) + ") is not a boundary cell of a " +
-                      std::to_string(mesh.dim) + "D mesh");
-    std::vector<int> vertices(mesh.cell(b), mesh.cell(b) + info.n_vertices);
-    std::vector<int> owners;
-    for (int v : volumes_of_node[vertices[0]])
-      if (contains_all(mesh, v, vertices)) owners.push_back(v);
-    if (owners.empty())
-      throw DeckError("cell " + mesh.cell_names[b] + " (" + std::string(info.name) + ") bounds no " +
-                      std::to_string(mesh.dim) + "D cell: cannot orient it");
-    if (owners.size() > 1)
-      throw DeckError("cell " + mesh.cell_names[b] + " is shared by cells " + mesh.cell_names[owners[0]] + " and " +
-                      mesh.cell_names[owners[1]] + ": it is not on the skin");
-    const std::vector<int> face = matching_face(mesh, owners[0], vertices);
-    if (face.empty())
-      throw DeckError("cell " + mesh.cell_names[b] + " is not a face of cell " + mesh.cell_names[owners[0]]);
-    if (same_cyclic_orientation(vertices, face)) continue;
-    reorder_nodes(mesh, b, cell_reverse_permutation(type));
+  for (size_t i = 0; i < boundary_cells.size(); ++i) {
+    const int b = boundary_cells[i];
+    const BoundaryFacing& f = facing[i];
+    if (f.owner < 0)
+      throw DeckError("cell " + mesh.cell_names[b] + " (" + std::string(cell_info(mesh.cell_types[b]).name) +
+                      ") bounds no " + std::to_string(mesh.dim) + "D cell: cannot orient it");
+    if (f.side == BoundarySide::Inner)
+      throw DeckError("cell " + mesh.cell_names[b] + " is shared by cells " + mesh.cell_names[f.owner] + " and " +
+                      mesh.cell_names[f.other] + ": it is not on the skin");
+    if (f.side == BoundarySide::Loose)
+      throw DeckError("cell " + mesh.cell_names[b] + " is not a face of cell " + mesh.cell_names[f.owner]);
+    if (f.side == BoundarySide::Outward) continue;
+    reorder_nodes(mesh, b, cell_reverse_permutation(mesh.cell_types[b]));
     ++flipped;
   }
   return flipped;

@@ -58,6 +58,28 @@ double cell_measure(const Mesh& mesh, int cell);
 /// above, not normalised, evaluated from its first vertices.
 std::array<double, 3> boundary_normal(const Mesh& mesh, int cell);
 
+/// Which way a boundary cell faces the cells of the mesh's dimension that hold all its vertices
+/// (its "owners"): Outward / Inward when one cell holds it (its normal, by the convention above,
+/// points out of / into that cell: the cell's face with the same vertices lists them in the same /
+/// the reverse cyclic order; every volume cell is valid, as LIRE_MAILLAGE leaves them); Inner
+/// when two or more hold it (a face inside the body: no outside); Loose when none does.
+enum class BoundarySide { Outward, Inward, Inner, Loose };
+struct BoundaryFacing {
+  BoundarySide side = BoundarySide::Loose;
+  int owner = -1;  ///< the first cell holding it (-1 when Loose)
+  int other = -1;  ///< a second one (Inner only)
+};
+
+/// True for a cell that bounds the cells of a `mesh_dim`-D mesh: SEG2/SEG3 in 2D,
+/// TRIA3/TRIA6/QUAD4/QUAD8 in 3D.
+bool is_boundary_type(CellType type, int mesh_dim);
+
+/// The facing of each of `boundary_cells` (cells for which is_boundary_type holds in a
+/// mesh.dim-D mesh; InternalError otherwise), in their order. The owner of a face is looked for
+/// among the cells around its first vertex: the cost is one pass over the mesh's cells and the
+/// cells around each face.
+std::vector<BoundaryFacing> boundary_facing(const Mesh& mesh, const std::vector<int>& boundary_cells);
+
 /// ORIE_PEAU_2D / ORIE_PEAU_3D: reorders the nodes of each boundary cell
 /// (SEG2/SEG3 in a 2D mesh, TRIA3/TRIA6/QUAD4/QUAD8 in a 3D mesh) so that its
 /// normal points out of the single volume cell it bounds (the one that holds

@@ -89,6 +89,13 @@ std::vector<int> reverse_cells(Mesh& mesh, const std::vector<int>& cells) {
   return cells;
 }
 
+/// The number of `facing` entries on each side: outward, inward, inner, loose.
+std::array<int, 4> sides(const std::vector<BoundaryFacing>& facing) {
+  std::array<int, 4> n{0, 0, 0, 0};
+  for (const BoundaryFacing& f : facing) ++n[static_cast<int>(f.side)];
+  return n;
+}
+
 TEST(Orientation, OrientBoundaryOutward2d) {
   tools::Ssnp121Options2d opt;
   opt.lower = tools::parse_block_cells("quad8:5", 2);
@@ -153,8 +160,13 @@ TEST(Orientation, OrientBoundaryOutward3dAllFaceTypes) {
     opt.v2 = tools::parse_block_cells("hexa8:1x1x1", 3);
     Mesh mesh = tools::make_ssnp121_3d(opt);
     const auto esc = mesh.cell_groups.at("SURESC"), enc = mesh.cell_groups.at("ENCAST");
+    EXPECT_EQ(sides(boundary_facing(mesh, esc))[0], static_cast<int>(esc.size())) << v1;
     reverse_cells(mesh, esc);
     reverse_cells(mesh, {enc[0]});
+    // boundary_facing (which ORIE_PEAU reads) finds the reversed faces inward, and only those
+    const auto facing = boundary_facing(mesh, enc);
+    EXPECT_EQ(facing[0].side, BoundarySide::Inward) << v1;
+    EXPECT_EQ(sides(facing), (std::array<int, 4>{static_cast<int>(enc.size()) - 1, 1, 0, 0})) << v1;
     EXPECT_EQ(orient_boundary_outward(mesh, esc), static_cast<int>(esc.size())) << v1;
     EXPECT_EQ(orient_boundary_outward(mesh, enc), 1) << v1;
     for (int c : esc) EXPECT_GT(dot(boundary_normal(mesh, c), {0, 0, 1}), 0.0) << v1;
@@ -180,6 +192,62 @@ TEST(Orientation, OrientBoundaryErrors) {
   } catch (const DeckError& e) {
     EXPECT_NE(std::string(e.what()).find("LOST"), std::string::npos);
   }
+}
+
+TEST(Orientation, BoundaryFacingTellsInwardCellsOfEveryEdgeType2d) {
+  // QUAD8 below (SEG3 edges), QUAD4 / TRIA3 / TRIA6 above (SEG2 / SEG3 edges): the generator's
+  // edges face outward; reversed ones face inward, and ORIE_PEAU (which reads the same facing)
+  // turns exactly those.
+  for (const char* upper : {"quad4:4", "tria3:3", "tria6:2"}) {
+    tools::Ssnp121Options2d opt;
+    opt.lower = tools::parse_block_cells("quad8:5", 2);
+    opt.upper = tools::parse_block_cells(upper, 2);
+    Mesh mesh = tools::make_ssnp121_2d(opt);
+    std::vector<int> edges;
+    for (const char* g : {"AB", "BC", "CD", "DA", "EF", "FG", "GH", "HE"})
+      for (int c : mesh.cell_groups.at(g)) edges.push_back(c);
+    EXPECT_EQ(sides(boundary_facing(mesh, edges)), (std::array<int, 4>{static_cast<int>(edges.size()), 0, 0, 0}))
+        << upper;
+    const auto ab = mesh.cell_groups.at("AB"), ef = mesh.cell_groups.at("EF");
+    reverse_cells(mesh, {ab[0], ab[1], ef[1]});
+    const auto facing = boundary_facing(mesh, edges);
+    EXPECT_EQ(sides(facing), (std::array<int, 4>{static_cast<int>(edges.size()) - 3, 3, 0, 0})) << upper;
+    for (size_t i = 0; i < edges.size(); ++i) {
+      const bool reversed = edges[i] == ab[0] || edges[i] == ab[1] || edges[i] == ef[1];
+      EXPECT_EQ(facing[i].side, reversed ? BoundarySide::Inward : BoundarySide::Outward) << upper;
+      EXPECT_EQ(facing[i].other, -1);
+      EXPECT_EQ(cell_info(mesh.cell_types[facing[i].owner]).dim, 2);
+    }
+    EXPECT_EQ(orient_boundary_outward(mesh, edges), 3) << upper;
+    EXPECT_EQ(sides(boundary_facing(mesh, edges))[1], 0) << upper;
+  }
+}
+
+TEST(Orientation, BoundaryFacingOfInnerAndLooseCells) {
+  tools::Ssnp121Options2d opt;
+  opt.upper = opt.lower = tools::parse_block_cells("quad4:2", 2);
+  opt.glued = true;
+  Mesh mesh = tools::make_ssnp121_2d(opt);
+  // glued interface: AB lies between a cell of each block, either way round
+  const auto ab = mesh.cell_groups.at("AB");
+  reverse_cells(mesh, {ab[0]});
+  for (const BoundaryFacing& f : boundary_facing(mesh, ab)) {
+    EXPECT_EQ(f.side, BoundarySide::Inner);
+    EXPECT_GE(f.owner, 0);
+    EXPECT_GE(f.other, 0);
+    EXPECT_NE(f.owner, f.other);
+  }
+  // a segment across the domain, and a diagonal of a cell: no cell has it as an edge
+  const int far = mesh.add_node(5, 5, 0);
+  const int lost = mesh.add_cell(CellType::Seg2, {0, far}, "LOST");
+  const int q = mesh.cell_groups.at("PLAQUE1")[0];
+  const int diagonal = mesh.add_cell(CellType::Seg2, {mesh.cell(q)[0], mesh.cell(q)[2]}, "DIAGONAL");
+  const auto facing = boundary_facing(mesh, {lost, diagonal});
+  EXPECT_EQ(facing[0].side, BoundarySide::Loose);
+  EXPECT_EQ(facing[0].owner, -1);
+  EXPECT_EQ(facing[1].side, BoundarySide::Loose);
+  EXPECT_EQ(facing[1].owner, q);
+  EXPECT_THROW(boundary_facing(mesh, {q}), InternalError);
 }
 
 /// The reference cell of `type` under an affine map with no symmetry (so that
