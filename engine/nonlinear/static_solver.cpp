@@ -1576,8 +1576,9 @@ void StaticSolver::solve_instant(double t, Vector& u) {
         using R = NewtonOptions::Refinement;
         const R policy = options_.refinement;
         // code_aster's MUMPS settings: AUTO ICNTL(10) = 4 with CNTL(2) = 1e-14 (the backward
-        // error that stops it), MINI ICNTL(10) = -2 (two steps, no test), FORCE ICNTL(10) = 10
-        // with no backward-error stop. A step that does not lower the residual is not kept.
+        // error that stops it), MINI ICNTL(10) = -2 (two steps, no test: both taken, the better
+        // iterate kept), FORCE ICNTL(10) = 10 with no backward-error stop. A step that does not
+        // lower the residual is not kept.
         const int steps = policy == R::None ? 0 : policy == R::Two ? 2 : policy == R::Force ? 10 : 4;
         const bool stop_when_stable = policy == R::Auto;
         accuracy = solve_with_refinement(*solver, system_product, -r_free, du, steps,
@@ -1585,7 +1586,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
                                          whole && stop_when_stable ? &abs_product : nullptr,
                                          options_.direct_solve_tolerance > 0.0 ? options_.direct_solve_tolerance
                                                                                : kSolveTolerance,
-                                         in_parts_ ? &owned_norm : nullptr);
+                                         in_parts_ ? &owned_norm : nullptr, policy == R::Two);
         // A direct backend that iterates on a factorisation of another matrix (the
         // multipliers' Schur complement) says how many iterations its last solve took.
         if (const int its = solver->iterations(); its > 0) {

@@ -171,7 +171,7 @@ Vector symmetric_times(const SparseMatrix& a, const Vector& x) {
 
 RefinedSolve solve_with_refinement(const LinearSolver& solver, const MatrixProduct& a, const Vector& b, Vector& x,
                                    int max_steps, double refine_above, const MatrixProduct* abs_product,
-                                   double accept, const VectorNorm* norm) {
+                                   double accept, const VectorNorm* norm, bool fixed_steps) {
   // One product A x per iterate: its residual serves the relative residual, the backward
   // error and the next step.
   const auto size = [norm](const Vector& v) { return norm ? (*norm)(v) : v.norm(); };
@@ -195,7 +195,21 @@ RefinedSolve solve_with_refinement(const LinearSolver& solver, const MatrixProdu
       if (std::abs(r[i]) > kBackwardStable * scale[i]) return false;
     return true;
   };
-  while (out.steps < max_steps && std::isfinite(out.residual) && out.residual > refine_above && !backward_stable()) {
+  if (fixed_steps) {
+    // Every step from the last iterate, the best one kept (and its residual).
+    Vector last = x, r_last = r;
+    for (; out.steps < max_steps && last.allFinite(); ++out.steps) {
+      last -= solver.solve(r_last);
+      const double next = residual_of(last, r_last);
+      if (next < out.residual) {
+        x = last;
+        r = r_last;
+        out.residual = next;
+      }
+    }
+  }
+  while (!fixed_steps && out.steps < max_steps && std::isfinite(out.residual) && out.residual > refine_above &&
+         !backward_stable()) {
     Vector refined = x - solver.solve(r);
     ++out.steps;
     Vector r_refined;

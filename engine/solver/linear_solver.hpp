@@ -290,12 +290,15 @@ struct RefinedSolve {
 /// With `norm` (a system of a mesh in parts: the 2-norm of the owned entries over the ranks,
 /// collective), every residual is measured with it and A x is formed for every iterate, finite
 /// or not, so that the ranks take the same steps.
+/// With `fixed_steps` (code_aster's MINI, MUMPS's ICNTL(10) < 0: a fixed count, no test), all
+/// `max_steps` steps are taken, each from the last iterate whether or not it gained, and the
+/// best iterate is kept: the count does not depend on the round-off of one machine's kernels.
 RefinedSolve solve_with_refinement(const LinearSolver& solver, const SparseMatrix& a, const Vector& b, Vector& x,
                                    int max_steps = 3, double refine_above = 1e-10);
 RefinedSolve solve_with_refinement(const LinearSolver& solver, const MatrixProduct& a, const Vector& b, Vector& x,
                                    int max_steps = 3, double refine_above = 1e-10,
                                    const MatrixProduct* abs_product = nullptr, double accept = 1e-6,
-                                   const VectorNorm* norm = nullptr);
+                                   const VectorNorm* norm = nullptr, bool fixed_steps = false);
 /// Backward error (row by row) below which a solve is taken as exact to round-off.
 constexpr double kBackwardStable = 1e-14;
 /// |A| |x| for a compressed-column matrix (entry by entry), added to y.

@@ -1544,6 +1544,28 @@ TEST(Refinement, AnInexactFactorisationIsRefinedToWorkingAccuracy) {
   EXPECT_LT(one.residual, one.raw_residual);
 }
 
+TEST(Refinement, AFixedCountTakesEveryStepAndKeepsTheBestIterate) {
+  // code_aster's MINI (ICNTL(10) = -2): two steps whatever they gain. On an exact factorisation
+  // the steps gain nothing (or round-off), yet both are taken, and the result is never worse.
+  const SparseMatrix a = spd_matrix(40);
+  const MatrixProduct product = [&a](const Vector& v) -> Vector { return a * v; };
+  auto exact = make_linear_solver(SolverKind::Cholmod);
+  exact->factorize(a, MatrixKind::SymmetricPositiveDefinite);
+  Vector x;
+  const RefinedSolve r = solve_with_refinement(*exact, product, rhs(40), x, 2, 0.0, nullptr, 1e-6, nullptr, true);
+  EXPECT_EQ(r.steps, 2);
+  EXPECT_LE(r.residual, r.raw_residual);
+  EXPECT_NEAR(relative_residual(a, x, rhs(40)), r.residual, 1e-18);
+  // The useless solver's iterates are 1000, 0, -1000: both steps taken, the middle one kept.
+  UselessSolver useless;
+  useless.factorize(a, MatrixKind::SymmetricPositiveDefinite);
+  Vector y;
+  const RefinedSolve u = solve_with_refinement(useless, product, rhs(40), y, 2, 0.0, nullptr, 1e-6, nullptr, true);
+  EXPECT_EQ(u.steps, 2);
+  EXPECT_NEAR(u.residual, 1.0, 1e-15);
+  EXPECT_EQ(y, Vector::Zero(40));
+}
+
 TEST(Refinement, AUselessSolveIsNeverMadeWorseAndStaysVisiblyWrong) {
   const SparseMatrix a = spd_matrix(40);
   UselessSolver s;
