@@ -3,7 +3,7 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build verify test test-asan fuzz docs meshes clean
+.PHONY: all deps build verify test test-mpi-full test-asan fuzz docs meshes clean
 
 all: build
 
@@ -21,9 +21,14 @@ build: deps
 verify: build
 	$(BUILD)/lunaster verify testcases -j $(JOBS) --vale-calc=report --junit $(BUILD)/verify-junit.xml --json $(BUILD)/verify.json
 
-# Unit tests (GoogleTest) and the deck suite under CTest.
+# Unit tests (GoogleTest) and the deck suite under CTest; the MPI suites over testcases/ on their
+# representative decks (tests/mpi/mpi_runs.py REPRESENTATIVE).
 test: build
-	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE mpi_full
+
+# The MPI suites' full matrix: every deck of testcases/ on 1, 2 and 3 ranks (CTest label mpi_full).
+test-mpi-full: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L mpi_full
 
 # The whole suite under AddressSanitizer + UBSan. -O1 keeps the deck suite fast enough;
 # leak checking stays on (detect_leaks=1; the MPI stack's own leaks are suppressed by tests/lsan.supp),
@@ -38,7 +43,7 @@ test-asan: deps
 	cmake --build build-asan -j $(JOBS)
 	cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:fast_unwind_on_malloc=0:intercept_tls_get_addr=0 \
 	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
-	  LUNASTER_SANITIZED=1 ctest --output-on-failure -j $(JOBS) --timeout 1500
+	  LUNASTER_SANITIZED=1 ctest --output-on-failure -j $(JOBS) --timeout 1500 -LE mpi_full
 
 # libFuzzer runs of the MED reader, the Gmsh reader and the deck front end (clang,
 # ASan + UBSan), FUZZ_TIME seconds each, from the committed corpus tests/fuzz/corpus/.

@@ -54,16 +54,18 @@ def field_scales(found):
     return scales
 
 
-def compare(reference, other, rel, floor, field_scale=False, status_only=()):
+def compare(reference, other, rel, floor, field_scale=False, status_only=(), wider=None):
     """The list of differences between two reports (empty when they match) and statistics.
     field_scale: the floor of each value is also rel times its field's scale in the reference
     deck (field_scales). status_only: (deck, check number from 1) pairs whose value is not
-    compared (their status, kind and description are). stats["differing"]: the (deck, check
-    number) pairs whose values differ; stats["largest_share"]: the largest difference as a share of
-    the one allowed."""
+    compared (their status, kind and description are). wider(deck, description): None, or an entry
+    with a `tolerance` for a value whose conditioning allows more than `rel` (compared at that, of
+    itself or of its field's scale). stats["differing"]: the (deck, check number) pairs whose values
+    differ; stats["largest_share"]: the largest difference as a share of the one allowed;
+    stats["wider"]: per entry of `wider`, the largest difference as a share of what `rel` allows."""
     problems = []
     stats = {"decks": 0, "checks": 0, "largest_rel": 0.0, "largest_where": "", "differing": [],
-             "largest_share": 0.0, "share_where": ""}
+             "largest_share": 0.0, "share_where": "", "wider": {}}
     for name in sorted(set(reference) - set(other)):
         problems.append(f"{name}: missing from the second report")
     for name in sorted(set(other) - set(reference)):
@@ -86,16 +88,23 @@ def compare(reference, other, rel, floor, field_scale=False, status_only=()):
             if (name, i + 1) in status_only:
                 continue
             stats["checks"] += 1
-            value_floor = max(floor, rel * scales.get(field_of(x[2]), 0.0))
+            named = wider(name, x[2]) if wider else None
+            value_rel = rel
+            if named is not None:  # what the default alone allows, then the value's own tolerance
+                base_floor = max(floor, rel * scales.get(field_of(x[2]), 0.0))
+                base = abs(x[3] - y[3]) / max(rel * max(abs(x[3]), abs(y[3])), base_floor)
+                stats["wider"][named] = max(stats["wider"].get(named, 0.0), base)
+                value_rel = named.tolerance
+            value_floor = max(floor, value_rel * scales.get(field_of(x[2]), 0.0))
             scale = max(abs(x[3]), abs(y[3]))
             if scale > value_floor:
                 relative = abs(x[3] - y[3]) / scale
                 if relative > stats["largest_rel"]:
                     stats["largest_rel"], stats["largest_where"] = relative, where
-            share = abs(x[3] - y[3]) / max(rel * scale, value_floor)  # of what is allowed
+            share = abs(x[3] - y[3]) / max(value_rel * scale, value_floor)  # of what is allowed
             if share > stats["largest_share"]:
                 stats["largest_share"], stats["share_where"] = share, where
-            if not close(x[3], y[3], rel, value_floor):
+            if not close(x[3], y[3], value_rel, value_floor):
                 stats["differing"].append((name, i + 1))
                 problems.append(f"{where}: calc={x[3]:.9e} against calc={y[3]:.9e}")
     return problems, stats

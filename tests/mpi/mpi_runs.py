@@ -1,7 +1,11 @@
 #!/usr/bin/env python3
-"""lunaster under mpirun, through the real CLI (CTest label: mpi).
+"""lunaster under mpirun, through the real CLI (CTest labels: mpi, and mpi_full for the full matrix).
 
-usage: mpi_runs.py CASE LUNASTER MESHGEN SOURCE_DIR SCRATCH_DIR
+usage: mpi_runs.py CASE LUNASTER MESHGEN SOURCE_DIR SCRATCH_DIR [full]
+The suites over testcases/ (verify_suite, shared_suite, parts_suite, contact_parts_suite) run their
+representative decks (REPRESENTATIVE, PARTS_REPRESENTATIVE, CONTACT_PARTS_REPRESENTATIVE,
+RELATION_REPRESENTATIVE: one for each kind of thing the suite proves, each with its reason), or
+with `full` every deck of their matrix.
   verify_suite  the decks `make verify` runs (testcases/), by `lunaster verify` serially and with
                 --np 2, both with --json: every TEST_RESU value equal to 1e-8 (compare_checks.py),
                 the same decks, checks and statuses; the comparison itself is shown to fail on a
@@ -11,10 +15,9 @@ usage: mpi_runs.py CASE LUNASTER MESHGEN SOURCE_DIR SCRATCH_DIR
                 contact points, MUMPS takes the matrix distributed), against the serial run: every deck
                 shares its model, the same statuses and checks, every value equal to 1e-8 of
                 itself or of its field's scale in the deck (a component zero analytically is
-                round-off of that size); the values that two serial solvers (AUTO, MUMPS) already
-                give otherwise are ill-conditioned by design and compared by status only (few);
-                and the decks that name PETSc, as written, on 3 ranks (a sanitizer build: the ten
-                decks of SHARED_SANITIZED)
+                round-off of that size), but the values of ill-conditioned systems, named with their
+                reason in CONDITIONED, to the tolerance their condition number gives; serial AUTO
+                against serial MUMPS likewise; and the decks that name PETSc, as written, on 3 ranks
   outputs       `mpirun -np 2 lunaster run` of decks that write MED results (MUMPS), tables and
                 IMPR_MESURE, and of an .export with a message file: the files of the serial run,
                 MED fields equal to 1e-8 (h5py), the report printed once; rank 1 prints nothing and
@@ -48,6 +51,7 @@ mpirun settings for a root user on a small machine are set here (never in lunast
 kept if the environment gives it.
 """
 import json
+import math
 import os
 import re
 import shutil
@@ -62,7 +66,7 @@ sys.path.insert(0, str(HERE))
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import compare_checks  # noqa: E402
 sys.path.insert(0, str(HERE.parent / "budget"))
-from run_budget_tests import SANITIZED, before  # noqa: E402  (wall-time bounds, Release only)
+from run_budget_tests import SANITIZED  # noqa: E402
 
 failures = []
 ENV = dict(os.environ)
@@ -119,10 +123,103 @@ def test_lines(text):
 
 
 # ---------------------------------------------------------------------------------------------
-def verify_suite(exe, source, scratch):
+# What the suites over testcases/ run. `make test` (CTest label mpi) runs each on the decks below,
+# one for each kind of thing the full matrix proves; the full matrix, every deck of testcases/
+# (CTest label mpi_full: `make test-mpi-full`, which CI runs too), is the same code on more decks.
+# A sanitizer build runs this set as well: the whole suite four times over would take an hour there.
+REPRESENTATIVE = {
+    "distributed_solvers": "METHODE='MUMPS' and 'PETSC' named by the deck, 3D: the model shared, each rank "
+                           "assembling its nodes and computing CALC_CHAMP on its cells (verify_suite reads its log)",
+    "petsc_solvers": "PETSc's preconditioners on a shared model, contact in 3D; its ML smoothing once stopped CG on 3 "
+                     "ranks",
+    "ssnp121a": "2D QUAD4 on non-matching meshes, CONTINUE (Simpson): the contact points shared among the ranks",
+    "ssnp121b": "discrete CONTRAINTE: the active set with Lagrange multipliers over the ranks",
+    "ssnp121c": "discrete PENALISATION, 2D",
+    "ssnp121a_mortar": "mortar LAGRANGIEN, 2D",
+    "axis_contact_patch_mortar": "AXIS, mortar PENALISATION",
+    "axis_contact_patch_discrete": "AXIS, discrete contact",
+    "ssnp121h": "QUAD8 with SEG3 master faces, 2D, CONTACT_INIT='INTERPENETRE'",
+    "ssnp121d_discrete": "HEXA20 with QUAD8 faces, 3D: the discrete mid-side ties (multipliers and ELIM_LAGR), a "
+                         "penalty of E_N = 1e12 on E = 2e6 (CONDITIONED names its tolerance)",
+    "ssnp121e": "PENTA15 with TRIA6 faces, 3D CONTINUE",
+    "ssnp121i": "HEXA8 on HEXA20 non-matching, 3D CONTINUE (the three-rank hang was in such a scene)",
+    "ssnp121k": "PENTA6 on HEXA20, TRIA3 slave on QUAD8 master",
+    "patch_3d": "TETRA and HEXA elasticity, 3D, no contact: the plain shared assembly",
+    "liaison_ddl": "LIAISON_DDL and LIAISON_UNIF, with multipliers and ELIM_LAGR",
+    "liaison_mail": "LIAISON_MAIL gluing non-matching meshes (TETRA faces), DISTANCE_MAX",
+    "mesh_in_parts": "a deck that reads its mesh in parts (PARTITIONNEUR): it solves on them, not on a shared model",
+    "solver_singularity": "ill-conditioned by design (NPREC, STOP_SINGULIER, a stiff penalty): CONDITIONED names "
+                          "its tolerances",
+}
+# A failure as a deck's status: the same under every run (testcases/errors/, named as a file).
+FAILING = {"errors/contact_step_no_subdivision": "a solve that fails to converge: exit 3, its converged steps saved"}
+
+
+def suite_decks(full):
+    """The paths `verify` runs in source: testcases/ whole, or the representative decks; the failing ones too."""
+    decks = ["testcases"] if full else [f"testcases/{d}.lua" for d in REPRESENTATIVE]
+    return decks + [f"testcases/{d}.lua" for d in FAILING]
+
+
+# Values whose round-off exceeds the suite's rule (1e-8 of themselves or of their field's scale)
+# because their system is ill-conditioned, named per deck and check label (a pattern of the check's
+# description: field, place, component, LEGENDE), each with its reason and its tolerance. Any other
+# value that differs fails. A solve of n unknowns with a matrix of condition number kappa gives them
+# to about sqrt(n) kappa eps of their scale (eps = 2.2e-16; sqrt(n) is the usual rule of thumb for
+# the growth of rounding errors over a factorisation, whose bound has n), and each ordering of the
+# factorisation (serial CHOLMOD or MUMPS, MUMPS on 2 or 3 processes, whose pivot order and tree of
+# fronts depend on the processes and, on several, on their load) rounds differently within it.
+EPS = sys.float_info.epsilon
+
+
+class Conditioned:
+    def __init__(self, deck, label, kappa, unknowns, reason):
+        self.deck, self.label, self.kappa, self.unknowns, self.reason = deck, label, kappa, unknowns, reason
+        self.tolerance = math.sqrt(unknowns) * kappa * EPS
+
+
+CONDITIONED = [
+    # SSNP121 D: two unit cubes stacked (L = 2), 4x4x4 HEXA20 each (h = 0.25; 850 nodes, 2550
+    # unknowns). The penalty springs against the column of material they press, E_N L / E = 1e6
+    # (CHOLMOD's pivot test measures it: with NPREC = 6 its PENE run stops on a pivot that lost 6.2
+    # digits, with 7 it runs), times the elastic stiffness's own condition (L / h)^2 = 64: kappa =
+    # 6.4e7, 7.2e-7 of the scale (its runs with the ties' multipliers, which the pivot test does not
+    # see, move most). Its CONTRAINTE run, exact to 1e-14, prints the same labels.
+    Conditioned("ssnp121d_discrete", r"^(SIGM_NOEU|SIGM_ELNO|DEPL) ", 1e12 * 2.0 / 2e6 * (2.0 / 0.25) ** 2, 2550,
+                "PENALISATION E_N = 1e12 Pa/m on E = 2e6 Pa: MUMPS on 2 ranks moved SIZZ by 2.7e-8 of its scale, "
+                "on 3 ranks by 3.5e-8"),
+    # AXIS, node springs of E_N = 1e12 N/m per radian on E = 2e6, 2 x (12x12 + 11x11) QUAD4 (626
+    # unknowns): CHOLMOD's pivot test stops its PENALISATION runs at NPREC = 7 on a pivot that lost
+    # 7.2 digits and passes them at 8: kappa = 10^7.2, 8.8e-8 (its stresses moved by 0.73e-8 of their
+    # scale on 2 ranks, 0.69e-8 on 3, in a run where no other value of testcases/ came closer).
+    Conditioned("axis_contact_patch_discrete", r"PENALISATION\]$", 10 ** 7.2, 626,
+                "discrete PENALISATION E_N = 1e12 N/m per radian on E = 2e6 Pa, AXIS"),
+    # Part (1) hangs a block of E = 2e6 from one of 2e-3 (313 nodes, 626 unknowns): a pivot loses
+    # 9.3 digits (errors/singular_soft_link_nprec.lua stops on it), kappa = 10^9.3; 1.1e-5.
+    Conditioned("solver_singularity", r"^DEPL .*\[NPREC=12\]", 10 ** 9.3, 626,
+                "a stiffness ratio of 1e9 (NPREC = 12): the translation of the stiff block is the soft link's"),
+    # Part (3), SSNP121 C's scene with E_N = 1e14: a pivot loses 8.1 digits
+    # (errors/penalty_too_stiff_nprec.lua), kappa = 10^8.1; 7.0e-7.
+    Conditioned("solver_singularity", r"^DEPL .*\[E_N=1e14 ", 10 ** 8.1, 626,
+                "a penalty of E_N = 1e14 on E = 2e6 (NPREC = 10)"),
+]
+
+
+def conditioned(deck, what):
+    """The CONDITIONED entry of a check (the deck's path, the check's description), or None."""
+    return next((c for c in CONDITIONED if Path(deck).stem == c.deck and re.search(c.label, what)), None)
+
+
+def show_conditioned(stats, what):
+    """Prints, per named entry, the largest difference against what the default rule allows."""
+    for c, share in stats["wider"].items():
+        print(f"  {what}: {c.deck} {c.label}: {share:.2f} of the default 1e-8; allowed {c.tolerance:.1e} ({c.reason})")
+
+
+def verify_suite(exe, source, scratch, full):
     scratch.mkdir(parents=True)
     serial, parallel = scratch / "serial.json", scratch / "np2.json"
-    common = ["verify", "testcases", "-j", "2", "--vale-calc=report"]
+    common = ["verify", *suite_decks(full), "-j", "2", "--vale-calc=report"]
     code_s, out_s, err_s, t_s = run([exe, *common, "--out", scratch / "serial", "--json", serial], source)
     code_p, out_p, err_p, t_p = run([exe, *common, "--np", "2", "--out", scratch / "np2", "--json", parallel], source)
     print(f"serial verify {t_s:.1f} s, verify --np 2 {t_p:.1f} s")
@@ -130,16 +227,20 @@ def verify_suite(exe, source, scratch):
         print("  " + "\n  ".join(out.strip().splitlines()[-2:]))
     check(code_s == code_p, f"the same verify exit status serially and with --np 2 ({code_s}, {code_p})")
     a, b = compare_checks.decks(serial), compare_checks.decks(parallel)
-    check(len(a) > 50, f"the suite is the whole of testcases/ ({len(a)} decks)")
+    check(len(a) > 50 if full else len(a) == len(REPRESENTATIVE) + len(FAILING),
+          f"the suite is {'the whole of testcases/' if full else 'REPRESENTATIVE'} and FAILING ({len(a)} decks)")
     problems, stats = compare_checks.compare(a, b, 1e-8, 1e-8)
     for p in problems[:40]:
         print("  DIFFERENT  " + p)
     print(f"  {stats['decks']} decks, {stats['checks']} values, largest relative difference {stats['largest_rel']:.2e} "
           f"({stats['largest_where']})")
     check(not problems, f"every TEST_RESU value of --np 2 equals the serial one to 1e-8 ({len(problems)} difference(s))")
-    check(stats["checks"] > 2000, f"the checks of every deck were compared ({stats['checks']})")
+    total = sum(len(compare_checks.checks(d["output"])) for d in a.values())
+    check(stats["checks"] == total > (2000 if full else 900), f"every check of every deck was compared ({stats['checks']} "
+                                                              f"of {total})")
     n_mpi_solves = sum("using MUMPS" in d["output"] or "METHODE='MUMPS'" in d["output"] for d in b.values())
-    check(n_mpi_solves > 20, f"decks that factorise with MUMPS across the ranks are part of it ({n_mpi_solves})")
+    check(n_mpi_solves > (20 if full else 4),
+          f"decks that factorise with MUMPS across the ranks are part of it ({n_mpi_solves})")
     # METHODE='MUMPS' or 'PETSC' without contact: the model is shared among the ranks, each
     # assembling its own nodes' stiffness (its values are among those compared above).
     shared = "testcases/distributed_solvers.lua"
@@ -152,6 +253,8 @@ def verify_suite(exe, source, scratch):
     check(len(split) == 8 and all(0 < int(m) < int(n) for m, n in split),
           f"{shared}: each of its 8 CALC_CHAMP computes a part of the cells on rank 0 ({split})")
     check("CALC_CHAMP: each rank" not in a[shared]["output"], f"{shared}: a serial CALC_CHAMP computes every cell")
+    failing = "testcases/errors/contact_step_no_subdivision.lua"
+    check(a[failing]["exit_code"] == b[failing]["exit_code"] == 3, f"{failing}: exit 3 serially and with --np 2")
 
     # The comparison can fail: a value off by 1e-7, a check gone, a status changed.
     name = next(n for n in sorted(b) if test_lines(b[n]["output"]))
@@ -173,19 +276,9 @@ def verify_suite(exe, source, scratch):
     check(len(found) == 1, "the comparison finds a deck missing")
 
 
-# ---------------------------------------------------------------------------------------------
-# What shared_suite runs in a sanitizer build, where the whole suite four times over would take
-# about an hour: the contact methods (the three-rank hang was in a PENALISATION scene), 2D, axis
-# and 3D, relations and gluing, the ill-conditioned deck, and the decks that name MUMPS or PETSc.
-SHARED_SANITIZED = ["axis_contact_patch_continue", "axis_contact_patch_discrete", "axis_contact_patch_mortar",
-                    "ssnp121a", "ssnp121i", "liaison_mail", "liaison_ddl", "solver_singularity",
-                    "distributed_solvers", "petsc_solvers"]
-
-
-def shared_suite(exe, source, scratch):
+def shared_suite(exe, source, scratch, full):
     scratch.mkdir(parents=True)
-    decks = [f"testcases/{d}.lua" for d in SHARED_SANITIZED] if SANITIZED else ["testcases"]
-    whole = not SANITIZED
+    decks = suite_decks(full)
     common = ["verify", *decks, "--vale-calc=report"]
     reports, codes = {}, {}
     # Three ranks as well as two: a rank may then hold no contact column at all, and nodes are
@@ -200,66 +293,41 @@ def shared_suite(exe, source, scratch):
         reports[key] = compare_checks.decks(json_file)
     s, m = reports["serial"], reports["serial_mumps"]
     check(len(set(codes.values())) == 1, f"the same verify exit status in the four runs ({codes})")
-    check(len(s) > 50 if whole else len(s) == len(decks),
-          f"the suite is the whole of testcases/, or the sanitizer build's part of it ({len(s)} decks)")
+    check(len(s) > 50 if full else len(s) == len(REPRESENTATIVE) + len(FAILING),
+          f"the suite is {'the whole of testcases/' if full else 'REPRESENTATIVE'} and FAILING ({len(s)} decks)")
     check(not any("model shared" in d["output"] for d in list(s.values()) + list(m.values())),
           "the serial runs share nothing")
-    # Values two serial solvers give differently beyond 1e-8 of their field's scale: a deck made
-    # ill-conditioned on purpose (a near-singular matrix); their statuses are still compared.
-    backend, between = compare_checks.compare(s, m, 1e-8, 1e-8, field_scale=True)
-    ill = set(between["differing"])
-    check(len(backend) == len(ill), f"serial AUTO and serial MUMPS differ in values only ({backend[:3]})")
-    print("  values ill-conditioned by design (two serial solvers differ): " +
-          (", ".join(f"{d} check {i}" for d, i in sorted(ill)) or "none"))
-    check(len(ill) <= 4, f"those are a handful of the checks ({len(ill)})")
+    # Two serial solvers (AUTO, MUMPS) already give the ill-conditioned values differently: within
+    # their conditioning, as every other value within the rule.
+    problems, stats = compare_checks.compare(s, m, 1e-8, 1e-8, field_scale=True, wider=conditioned)
+    for problem in problems[:40]:
+        print("  DIFFERENT  " + problem)
+    show_conditioned(stats, "serial MUMPS")
+    check(not problems, f"serial AUTO and serial MUMPS give every value to 1e-8 of itself or of its field's scale, "
+                        f"CONDITIONED's to their tolerance ({len(problems)} difference(s))")
     solving = [n for n, d in s.items() if "STAT_NON_LINE" in d["output"] or "MECA_NON_LINE" in d["output"]]
     for ranks in (2, 3):
         p = reports[f"np{ranks}_mumps"]
         # A deck that reads its mesh in parts (PARTITIONNEUR) solves on them rather than sharing a whole model.
         unshared = [n for n in solving if n not in p or (f"model shared among {ranks} ranks" not in p[n]["output"] and
                                                          f"mesh in parts on {ranks} ranks" not in p[n]["output"])]
-        check(len(solving) >= (50 if whole else len(decks)) and not unshared,
+        check(len(solving) >= (50 if full else len(REPRESENTATIVE)) and not unshared,
               f"{ranks} ranks: every deck that solves ({len(solving)}) shares its model among them (not: {unshared[:5]})")
         check(all("--solveur=MUMPS" in p[n]["output"] for n in solving if n in p),
               f"{ranks} ranks: each of their STAT_NON_LINE says that the command line chose MUMPS")
-        problems, stats = compare_checks.compare(s, p, 1e-8, 1e-8, field_scale=True, status_only=ill)
-        if problems and ranks == 3:
-            # MUMPS on three processes chooses the processes that share a front's work from their
-            # load as it goes: two runs of one deck may round off differently (ssnp121d_discrete.lua's
-            # stresses moved by up to 3.5e-8 between two runs on a loaded machine; two ranks, and one,
-            # repeat bit for bit). The decks whose values differ are run again as they were: a value
-            # the two three-rank runs give differently is compared by status, as the ill-conditioned
-            # ones, and the serial value must lie between the two (within the rule); one they agree
-            # on must equal the serial one.
-            again = sorted({pr.split(":")[0] for pr in problems})
-            json_again = scratch / "np3_mumps_again.json"
-            run([exe, "verify", *again, "--vale-calc=report", "-j", "1", "--np", "3", "--solveur=MUMPS",
-                 "--out", scratch / "np3_mumps_again", "--json", json_again], source, timeout=600)
-            p2 = compare_checks.decks(json_again)
-            _, spread = compare_checks.compare({n: p[n] for n in again}, p2, 1e-8, 1e-8, field_scale=True)
-            unsteady = set(spread["differing"])
-            print("  values two three-rank runs give differently (MUMPS's dynamic choices): " +
-                  (", ".join(f"{d} check {i}" for d, i in sorted(unsteady)) or "none"))
-            check(len(unsteady) <= 20, f"3 ranks: those are a handful of the checks ({len(unsteady)})")
-            outside = []
-            for deck, number in sorted(unsteady):
-                scales = compare_checks.field_scales(compare_checks.checks(s[deck]["output"]))
-                x = compare_checks.checks(s[deck]["output"])[number - 1]
-                a = compare_checks.checks(p[deck]["output"])[number - 1][3]
-                b = compare_checks.checks(p2[deck]["output"])[number - 1][3]
-                allowed = max(1e-8 * abs(x[3]), 1e-8, 1e-8 * scales.get(compare_checks.field_of(x[2]), 0.0))
-                if not min(a, b) - allowed <= x[3] <= max(a, b) + allowed:
-                    outside.append(f"{deck}: check {number}: serial {x[3]:.9e} outside {a:.9e} .. {b:.9e}")
-            check(not outside, f"3 ranks: the serial value lies between the two runs' ({outside[:3]})")
-            problems, stats = compare_checks.compare(s, p, 1e-8, 1e-8, field_scale=True, status_only=ill | unsteady)
+        # MUMPS on several processes chooses the processes that share a front's work from their load
+        # as it goes: two runs of one deck round off differently, within the same conditioning.
+        problems, stats = compare_checks.compare(s, p, 1e-8, 1e-8, field_scale=True, wider=conditioned)
         for problem in problems[:40]:
             print("  DIFFERENT  " + problem)
+        show_conditioned(stats, f"{ranks} ranks")
         print(f"  {ranks} ranks: {stats['decks']} decks, {stats['checks']} values; the largest difference is "
               f"{stats['largest_share']:.2f} of the one allowed ({stats['share_where']})")
         check(not problems, f"{ranks} ranks: every value of the shared model equals the serial one to 1e-8 of itself "
-                            f"or of its field's scale ({len(problems)} difference(s))")
-        check(stats["checks"] > (3000 if whole else 500),
-              f"{ranks} ranks: the checks of every deck were compared ({stats['checks']})")
+                            f"or of its field's scale, CONDITIONED's to their tolerance ({len(problems)} difference(s))")
+        total = sum(len(compare_checks.checks(d["output"])) for d in s.values())
+        check(stats["checks"] == total > (3000 if full else 900),
+              f"{ranks} ranks: every check of every deck was compared ({stats['checks']} of {total})")
 
     # The decks that name PETSc, as written, on 3 ranks (verify_suite runs them on 2): PETSc's
     # default ML smoothing, SOR within each rank, made CG stop on an indefinite V-cycle there.
@@ -278,18 +346,28 @@ def shared_suite(exe, source, scratch):
     check(p["testcases/petsc_solvers.lua"]["output"].count("model shared among 3 ranks") >= 4,
           "3 ranks: petsc_solvers.lua shares its models")
 
-    # The field-scale floor still sees a near-zero value moved by 1e-7 of its field's scale.
+    # The field-scale floor still sees a near-zero value moved by 1e-7 of its field's scale, and a
+    # CONDITIONED stress moved by twice its tolerance is seen too.
     p = reports["np2_mumps"]
-    name, number, line = next((n, k + 1, l) for n in sorted(p) for k, l in enumerate(test_lines(p[n]["output"]))
-                              if "refe=0.000000000e+00" in l and "SIGM_NOEU" in l)
-    scale = compare_checks.field_scales(compare_checks.checks(s[name]["output"]))["SIGM_NOEU"]
-    calc = float(re.search(r"calc=(\S+)", line).group(1))
-    changed = json.loads(json.dumps(p))
-    changed[name]["output"] = p[name]["output"].replace(line, line.replace(
-        re.search(r"calc=(\S+)", line).group(0), f"calc={calc + 1e-7 * scale:.9e}"), 1)
-    found, _ = compare_checks.compare(s, changed, 1e-8, 1e-8, field_scale=True, status_only=ill)
-    check(any(f"{name}: check {number} " in f for f in found),
-          f"the comparison finds a zero stress of {name} moved by 1e-7 of its field's scale {scale:.3g} ({found[:1]})")
+
+    def what(line):
+        return compare_checks.CHECK.match(line).group(3)
+
+    for label, pick, size in (
+            ("a zero stress", lambda n, l: "refe=0.000000000e+00" in l and conditioned(n, what(l)) is None, lambda c: 1e-7),
+            ("a CONDITIONED stress", lambda n, l: conditioned(n, what(l)) is not None, lambda c: 2 * c.tolerance)):
+        name, number, line = next((n, k + 1, l) for n in sorted(p) for k, l in enumerate(test_lines(p[n]["output"]))
+                                  if "SIGM_NOEU" in l and pick(n, l))
+        moved = size(conditioned(name, what(line)))
+        scale = compare_checks.field_scales(compare_checks.checks(s[name]["output"]))["SIGM_NOEU"]
+        calc = float(re.search(r"calc=(\S+)", line).group(1))
+        changed = json.loads(json.dumps(p))
+        changed[name]["output"] = p[name]["output"].replace(line, line.replace(
+            re.search(r"calc=(\S+)", line).group(0), f"calc={calc + moved * scale:.9e}"), 1)
+        found, _ = compare_checks.compare(s, changed, 1e-8, 1e-8, field_scale=True, wider=conditioned)
+        check(any(f"{name}: check {number} " in f for f in found),
+              f"the comparison finds {label} of {name} moved by {moved:.1e} of its field's scale {scale:.3g} "
+              f"({found[:1]})")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -465,16 +543,45 @@ CONTACT_PARTS_DECKS = ["axis_contact_patch_continue", "axis_contact_patch_discre
 # -1.000000052e5; on 3 parts -1.000000044e5).
 RELATION_PARTS_DECKS = ["liaison_ddl", "liaison_mail", "liaison_mail_periodic", "liaison_mail_sliding",
                         "relations_in_parts", "ring_sleeve_liaison_mail", "ssnp121a_mortar_relation"]
+# What `make test` runs of the three lists above (the full lists: CTest label mpi_full), one deck
+# for each kind of thing they prove; mesh_in_parts.lua always (parts_suite's errors are made from it).
+PARTS_REPRESENTATIVE = {
+    "patch_3d": "3D, HEXA and TETRA cells cut among the parts",
+    "axis_thick_cylinder": "AXIS, a pressure on a curved boundary cut among the parts",
+    "glued_ssnp121_2d": "2D, two bodies glued on non-matching meshes",
+    "reactions_tables": "POST_RELEVE_T's tables, the serial ones on every rank",
+}
+CONTACT_PARTS_REPRESENTATIVE = {
+    "axis_contact_patch_mortar": "AXIS, mortar PENALISATION",
+    "ssnp121b": "discrete CONTRAINTE, 2D",
+    "ssnp121c": "discrete PENALISATION, 2D",
+    "ssnp121a_mortar": "mortar LAGRANGIEN, 2D QUAD4 on non-matching meshes",
+    "ssnp121h": "QUAD8 on SEG3 master faces, 2D CONTINUE (CONTACT_INIT='INTERPENETRE')",
+    "ssnp121d": "HEXA20 with QUAD8 faces, 3D CONTINUE",
+    "ssnp121j": "PENTA6 on PENTA15, TRIA3 on TRIA6 faces, 3D",
+    "mortar_petsc_in_parts": "PETSc on a mesh in parts, mortar in 3D",
+    "solver_singularity": "ill-conditioned by design: CONDITIONED's tolerances in parts",
+}
+RELATION_REPRESENTATIVE = {
+    "liaison_ddl": "LIAISON_DDL and LIAISON_UNIF, with multipliers and ELIM_LAGR",
+    "liaison_mail": "LIAISON_MAIL, its slave and master nodes in different parts (ghosts)",
+}
 
 
-def in_parts_against_serial(exe, source, scratch, names, least_checks, least_med_values, ill_conditioned=False):
+def case_ranks(full):
+    """The rank counts of the parts suites' single runs (errors, refusals, ties, a failed solve): 2
+    and 3 in the full matrix; 3 in `make test`, where a rank may hold no contact column and nodes are
+    shared by three (the decks' matrix runs 1, 2 and 3 ranks in both)."""
+    return (2, 3) if full else (3,)
+
+
+def in_parts_against_serial(exe, source, scratch, names, least_checks, least_med_values, two_solvers=False):
     """The decks `names` of testcases/ with every mesh read in parts, run by `lunaster verify` on 1,
     2 and 3 ranks, against their serial run on whole meshes: the same checks and statuses, every
-    value to 1e-8 of itself or of its field's scale, and the same output files (MED files and
-    tables likewise, each MED file more than `least_med_values` floats). With `ill_conditioned`,
-    the values two serial solvers (AUTO, MUMPS) already give differently are compared by status
-    only (a deck made near-singular on purpose). Returns the folders of the decks on whole meshes
-    and in parts."""
+    value to 1e-8 of itself or of its field's scale (CONDITIONED's to their tolerance), and the same
+    output files (MED files and tables likewise, each MED file more than `least_med_values` floats).
+    With `two_solvers`, serial AUTO against serial MUMPS as well. Returns the folders of the decks on
+    whole meshes and in parts."""
     scratch.mkdir(parents=True)
     whole, parts = scratch / "whole", scratch / "parts"
     for folder in (whole, parts):
@@ -490,7 +597,7 @@ def in_parts_against_serial(exe, source, scratch, names, least_checks, least_med
     decks = [f"testcases/{n}.lua" for n in names]
     reports, codes = {}, {}
     runs = [("serial", whole, ["-j", "2"])]
-    if ill_conditioned:
+    if two_solvers:
         runs.append(("serial_mumps", whole, ["-j", "2", "--solveur=MUMPS"]))
     runs += [("np1", parts, ["-j", "2"]), ("np2", parts, ["-j", "1", "--np", "2"]),
              ("np3", parts, ["-j", "1", "--np", "3"])]
@@ -504,27 +611,28 @@ def in_parts_against_serial(exe, source, scratch, names, least_checks, least_med
     s = reports["serial"]
     check(len(s) == len(decks) and not any("mesh in parts" in d["output"] for d in s.values()),
           f"the serial reference reads whole meshes ({len(s)} decks)")
-    ill = set()
-    if ill_conditioned:
-        backend, between = compare_checks.compare(s, reports["serial_mumps"], 1e-8, 1e-8, field_scale=True)
-        ill = set(between["differing"])
-        check(len(backend) == len(ill) and len(ill) <= 4,
-              f"serial AUTO and serial MUMPS differ in a handful of values only ({backend[:3]})")
-        print("  values ill-conditioned by design (two serial solvers differ): " +
-              (", ".join(f"{d} check {i}" for d, i in sorted(ill)) or "none"))
+    if two_solvers:
+        problems, stats = compare_checks.compare(s, reports["serial_mumps"], 1e-8, 1e-8, field_scale=True, wider=conditioned)
+        for problem in problems[:20]:
+            print("  DIFFERENT  " + problem)
+        show_conditioned(stats, "serial MUMPS")
+        check(not problems, f"serial AUTO and serial MUMPS give every value to 1e-8 of itself or of its field's scale, "
+                            f"CONDITIONED's to their tolerance ({len(problems)} difference(s))")
     for key, ranks in (("np1", 1), ("np2", 2), ("np3", 3)):
         p = reports[key]
         solves = {n: p[n]["output"].count(f"mesh in parts on {ranks} ranks") for n in p}
         check(len(p) == len(decks) and all(c > 0 for c in solves.values()),
               f"{ranks} rank(s): every deck solves on its mesh in parts ({solves})")
-        problems, stats = compare_checks.compare(s, p, 1e-8, 1e-8, field_scale=True, status_only=ill)
+        problems, stats = compare_checks.compare(s, p, 1e-8, 1e-8, field_scale=True, wider=conditioned)
         for problem in problems[:20]:
             print("  DIFFERENT  " + problem)
+        show_conditioned(stats, f"{ranks} rank(s)")
         print(f"  {ranks} rank(s): {stats['decks']} decks, {stats['checks']} values; the largest difference is "
               f"{stats['largest_share']:.2f} of the one allowed ({stats['share_where']})")
-        check(not problems and stats["checks"] > least_checks,
+        total = sum(len(compare_checks.checks(d["output"])) for d in s.values())
+        check(not problems and stats["checks"] == total > least_checks,
               f"{ranks} rank(s): every value in parts equals the whole mesh's to 1e-8 ({len(problems)} difference(s), "
-              f"{stats['checks']} values)")
+              f"{stats['checks']} of {total} values)")
     # The MED files and the tables IMPR_RESU writes: rank 0 gathers every field on the whole mesh.
     serial_files = output_files(scratch / "serial")
     for key in ("np1", "np2", "np3"):
@@ -544,16 +652,17 @@ def in_parts_against_serial(exe, source, scratch, names, least_checks, least_med
     return whole, parts
 
 
-def parts_suite(exe, source, scratch):
+def parts_suite(exe, source, scratch, full):
     """Linear-elastic decks with their meshes read in parts, under mpirun -np 2 and 3, against the
     serial run of the same decks on whole meshes: the same checks and statuses, every value to 1e-8
     of itself or of its field's scale, the same MED file, and errors found on one rank's part
     stopping every rank alike."""
-    names = PARTS_DECKS + ["mesh_in_parts"]
+    check(set(PARTS_REPRESENTATIVE) <= set(PARTS_DECKS), "PARTS_REPRESENTATIVE is a part of PARTS_DECKS")
+    names = (PARTS_DECKS if full else list(PARTS_REPRESENTATIVE)) + ["mesh_in_parts"]
     for name in names:
         text = (source / "testcases" / f"{name}.lua").read_text()
         check(not BEYOND_ELASTICITY.search(text), f"{name}: a deck of linear elasticity alone")
-    _, parts = in_parts_against_serial(exe, source, scratch, names, 300, 10000)
+    _, parts = in_parts_against_serial(exe, source, scratch, names, 300 if full else 150, 10000)
     check(any(f.endswith("mesh_in_parts_80.rmed") for f in output_files(scratch / "serial")),
           f"the serial run wrote the MED file")
 
@@ -593,7 +702,7 @@ def parts_suite(exe, source, scratch):
     for name, changed, says in cases:
         path = deck.with_name(f"mesh_in_parts_{name}.lua")
         path.write_text(changed)
-        for ranks in (2, 3):
+        for ranks in case_ranks(full):
             code, out, err, _ = run([mpirun(), "-np", ranks, exe, "run", path, "--out", scratch / f"{name}{ranks}"],
                                     parts, timeout=120)
             if says is None:
@@ -614,11 +723,11 @@ def parts_suite(exe, source, scratch):
 
     # C111 (N2197) has DZ = -1.110918013e-03 (the deck's check): its error against 1 is 1.00111,
     # found by the rank holding it whatever the cut (IMPR_MESURE writes 6 digits).
-    check(all(abs(e - 1.001110918) < 1e-5 for e in mesure.values()) and len(mesure) == 2,
+    check(all(abs(e - 1.001110918) < 1e-5 for e in mesure.values()) and len(mesure) == len(case_ranks(full)),
           f"IMPR_MESURE's error in parts is the largest over the ranks ({mesure})")
 
 
-def contact_parts_suite(exe, source, scratch):
+def contact_parts_suite(exe, source, scratch, full):
     """The contact decks a mesh in parts takes (CONTACT_PARTS_DECKS) and the decks of linear relations
     (RELATION_PARTS_DECKS) with their meshes read in parts, on 1, 2 and 3 ranks, against the serial
     run on whole meshes (in_parts_against_serial); each rank works on the whole contact surfaces and
@@ -631,15 +740,20 @@ def contact_parts_suite(exe, source, scratch):
         text = (source / "testcases" / f"{name}.lua").read_text()
         check(re.search(r"\b(LIAISON_DDL|LIAISON_UNIF|LIAISON_MAIL)\b|QUAD8", text),
               f"{name}: a deck of linear relations")
-    names = CONTACT_PARTS_DECKS + RELATION_PARTS_DECKS
-    _, parts = in_parts_against_serial(exe, source, scratch, names, 2100, 1000, ill_conditioned=True)
+    check(set(CONTACT_PARTS_REPRESENTATIVE) <= set(CONTACT_PARTS_DECKS)
+          and set(RELATION_REPRESENTATIVE) <= set(RELATION_PARTS_DECKS),
+          "CONTACT_PARTS_REPRESENTATIVE and RELATION_REPRESENTATIVE are parts of the full lists")
+    contact = CONTACT_PARTS_DECKS if full else list(CONTACT_PARTS_REPRESENTATIVE)
+    relations = RELATION_PARTS_DECKS if full else list(RELATION_REPRESENTATIVE)
+    names = contact + relations
+    _, parts = in_parts_against_serial(exe, source, scratch, names, 2100 if full else 400, 1000, two_solvers=True)
     for key, ranks in (("np2", 2), ("np3", 3)):
         outputs = compare_checks.decks(scratch / f"{key}.json")
         said = {"contact": "the contact surfaces are whole on every rank", "relations": "every rank builds every "
                 "linear relation"}
         whole = [n for n, d in outputs.items()
-                 if Path(n).stem in CONTACT_PARTS_DECKS and said["contact"] not in d["output"]
-                 or Path(n).stem in RELATION_PARTS_DECKS and said["relations"] not in d["output"]]
+                 if Path(n).stem in contact and said["contact"] not in d["output"]
+                 or Path(n).stem in relations and said["relations"] not in d["output"]]
         check(not whole, f"{ranks} ranks: every deck works on the whole contact surfaces and relations ({whole[:3]})")
     # Discrete contact's QUAD8 ties in parts, with multipliers and solved for one unknown each (the
     # deck's CHOLMOD, which parts refuse, made MUMPS): every check of the deck passes on 2 and 3 ranks.
@@ -648,7 +762,7 @@ def contact_parts_suite(exe, source, scratch):
     path = parts / "testcases" / "ssnp121d_discrete_mumps.lua"
     path.write_text(re.sub(r"LIRE_MAILLAGE\s*\{", "LIRE_MAILLAGE{ PARTITIONNEUR = 'PTSCOTCH',", text)
                     .replace("METHODE = 'CHOLMOD', ELIM_LAGR", "METHODE = 'MUMPS', ELIM_LAGR"))
-    for ranks in (2, 3):
+    for ranks in case_ranks(full):
         code, out, err, _ = run([mpirun(), "-np", ranks, exe, "run", path, "--out", scratch / f"ties{ranks}"],
                                 path.parent, timeout=120)
         check(code == 0 and out.count("80 check(s) OK, 0 NOOK") == 1 and f"mesh in parts on {ranks} ranks" in out
@@ -666,7 +780,7 @@ def contact_parts_suite(exe, source, scratch):
                         scratch, timeout=120)
     saved = scratch / "failed" / f"{name}_converged.rmed"
     check(code == 3 and saved.exists(), f"{name}: serially exit 3 and its converged steps saved ({code})")
-    for ranks in (2, 3):
+    for ranks in case_ranks(full):
         out_dir = scratch / f"failed{ranks}"
         code, out, err, _ = run([mpirun(), "-np", ranks, exe, "run", path, "--out", out_dir], path.parent, timeout=120)
         said = [l for l in err.splitlines() if f"saved in {out_dir / (name + '_converged.rmed')}" in l]
@@ -697,7 +811,7 @@ def contact_parts_suite(exe, source, scratch):
         if "PARTITIONNEUR" not in text:
             text = re.sub(r"LIRE_MAILLAGE\s*\{", "LIRE_MAILLAGE{ PARTITIONNEUR = 'PTSCOTCH',", text)
         path.write_text(text)
-        for ranks in (2, 3):
+        for ranks in case_ranks(full):
             code, out, err, _ = run([mpirun(), "-np", ranks, exe, "run", path, "--out",
                                      scratch / f"{path.stem}{ranks}"], path.parent, timeout=120)
             lines = [l for l in err.splitlines() if re.search(says, l)]
@@ -775,7 +889,7 @@ def errors(exe, source, scratch):
     code, out, err, seconds = run([exe, "verify", source / "testcases" / "patch_2d.lua", "--np", "2", "--time-limit",
                                    "1", "--out", "f"], scratch, env=env)
     check(code == 1 and "launcher: SIGTERM" in out and re.search(r"patch_2d\.lua +TIMEOUT", out) is not None
-          and 5.5 < seconds and before(seconds, 9.0), f"verify --np: a launcher still running 5 s past the limit gets SIGTERM ({seconds:.1f} s)")
+          and 5.5 < seconds, f"verify --np: a launcher still running 5 s past the limit gets SIGTERM ({seconds:.1f} s)")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -795,8 +909,8 @@ def rank_failure(exe, meshgen, source, scratch):
             r"the run is stopped")
     code, out, err, seconds = run([mpirun(), "-np", 2, exe, "run", deck, "-q", "--out", "o", "--time-limit", limit],
                                   scratch)
-    check(code == 5 and before(seconds, limit + 4.0),
-          f"--time-limit {limit} on both ranks stops the run inside the solve: exit 5 ({seconds:.1f} s)")
+    check(code == 5 and seconds >= limit,
+          f"--time-limit {limit} on both ranks stops the run: exit 5, not before the limit ({seconds:.1f} s)")
     check(len(re.findall(stop, out + err)) == 1 and "rank 1" not in out + err,
           "the time-limit message once, rank 0's")
 
@@ -808,7 +922,7 @@ def rank_failure(exe, meshgen, source, scratch):
         args = [["run", deck, "-q", "--out", "o"], ["run", deck, "-q", "--out", "o"]]
         args[failing] += ["--memory-limit", limit]
         code, out, err, seconds = run(mpmd(exe, args[0], args[1], scratch / f"memory{failing}.logs"), scratch)
-        check(code == 6 and before(seconds, 10.0),
+        check(code == 6,
               f"--memory-limit {limit} on rank {failing} only: that rank stops, and the run with it: exit 6 ({seconds:.1f} s)")
         check(re.search(memory, out + err) is not None and ((f"lunaster: rank {failing}:" in out + err) == (failing > 0)),
               f"the memory message is printed (by rank {failing}{', which says so' if failing else ''})")
@@ -822,7 +936,7 @@ def rank_failure(exe, meshgen, source, scratch):
         args[failing][1] = error_deck
         code, out, err, seconds = run(mpmd(exe, args[0], args[1], scratch / f"alone{failing}.logs"), scratch, timeout=120)
         text = out + err
-        check(code == 2 and RANK_WAIT_SECONDS - 1 < seconds and before(seconds, RANK_WAIT_SECONDS + 15),
+        check(code == 2 and RANK_WAIT_SECONDS - 1 < seconds,
               f"a deck error on rank {failing} alone ends the run: exit 2 after the wait ({seconds:.1f} s)")
         check("misspelt_keyword.lua:6: DEFI_MATERIAU: ELAS.NUU" in text, "the error is shown")
         check(f"rank {failing} stopped with exit status 2 and the other ranks have not ended" in text,
@@ -835,7 +949,9 @@ def rank_failure(exe, meshgen, source, scratch):
     code, out, err, seconds = run(mpmd(exe, ["run", source / "testcases" / "patch_2d.lua", "--out", "o", "-q"],
                                        ["run", error_deck, "--out", "o"], scratch / "worst.logs"), scratch)
     text = out + err
-    check(code == 2 and before(seconds, RANK_WAIT_SECONDS), f"rank 0 OK, rank 1 deck error: the run exits 2 ({seconds:.1f} s)")
+    # Without the wait: rank 0 ended (no rank was left to abort), whatever the time it took.
+    check(code == 2 and "the other ranks have not ended" not in text,
+          f"rank 0 OK, rank 1 deck error: the run exits 2, without the abort ({seconds:.1f} s)")
     check("lunaster: rank 1 ended with exit status 2 (rank 0: 0)" in text and
           "lunaster: rank 1: " + str(error_deck) + ":6: DEFI_MATERIAU: ELAS.NUU" in text,
           "rank 0 names the rank that ended otherwise, with its error")
@@ -844,6 +960,9 @@ def rank_failure(exe, meshgen, source, scratch):
 def main():
     case = sys.argv[1]
     exe, meshgen, source, scratch = (Path(a).resolve() for a in sys.argv[2:6])
+    full = sys.argv[6:] == ["full"]
+    if sys.argv[6:] and not full:
+        sys.exit(f"expected 'full' or nothing after the scratch folder, got {sys.argv[6:]}")
     shutil.rmtree(scratch, ignore_errors=True)
     # A session directory tree of its own for every mpirun of this case: concurrent OpenMPI
     # jobs of one user share /tmp/ompi.<host>.<uid>, which the last one to end removes while
@@ -853,17 +972,17 @@ def main():
     start = time.monotonic()
     try:
         if case == "verify_suite":
-            verify_suite(exe, source, scratch)
+            verify_suite(exe, source, scratch, full)
         elif case == "shared_suite":
-            shared_suite(exe, source, scratch)
+            shared_suite(exe, source, scratch, full)
         elif case == "outputs":
             outputs(exe, source, scratch)
         elif case == "errors":
             errors(exe, source, scratch)
         elif case == "parts_suite":
-            parts_suite(exe, source, scratch)
+            parts_suite(exe, source, scratch, full)
         elif case == "contact_parts_suite":
-            contact_parts_suite(exe, source, scratch)
+            contact_parts_suite(exe, source, scratch, full)
         elif case == "rank_failure":
             rank_failure(exe, meshgen, source, scratch)
         else:
