@@ -36,6 +36,32 @@ Keyword force_nodale() {
       .with_rules({exactly_one({"GROUP_NO", "NOEUD"}), at_least_one({"FX", "FY", "FZ"})});
 }
 
+/// FORCE_CONTOUR, FORCE_FACE, FORCE_ARETE: a force density on GROUP_MA / MAILLE cells.
+Keyword cell_force(const char* name, const std::string& cells, const std::string& unit, const std::string& doc,
+                   bool tout = false) {
+  std::vector<Keyword> children = {common::group_ma(cells + " groups loaded"), common::maille(cells + " loaded")};
+  if (tout) children.push_back(common::tout("Load every cell of the model"));
+  for (const auto& [kw, axis] : {std::pair{"FX", "x"}, {"FY", "y"}, {"FZ", "z"}})
+    children.push_back(real(kw, "Force along " + std::string(axis) + " (" + unit + ")"));
+  return factor(name, children, doc)
+      .occurs(0, -1)
+      .with_rules({tout ? exactly_one({"TOUT", "GROUP_MA", "MAILLE"}) : at_least_one({"GROUP_MA", "MAILLE"}),
+                   at_least_one({"FX", "FY", "FZ"})});
+}
+
+Keyword pesanteur() {
+  return factor("PESANTEUR",
+                {common::group_ma("Cell groups weighed; absent (and MAILLE absent): every cell of the model"),
+                 common::maille("Cells weighed"),
+                 real("GRAVITE", "Acceleration of gravity (m/s2)").required(),
+                 real("DIRECTION", "Direction of gravity (x, y, z), normalised; in 2D and AXIS z must be 0")
+                     .count(3, 3)
+                     .required()},
+                "Gravity: the force RHO GRAVITE DIRECTION per unit volume of each cell, RHO from its material's "
+                "ELAS (a cell whose material has no RHO is an error)")
+      .occurs(0, 1);
+}
+
 Keyword liaison_ddl() {
   return factor("LIAISON_DDL",
                 {text("GROUP_NO", "Node groups, one term per node, in the order given (a group of one node "
@@ -146,19 +172,34 @@ Keyword contact() {
 const CommandSpec& affe_char_meca_spec() {
   static const CommandSpec spec = make_command(
       "AFFE_CHAR_MECA", "char_meca",
-      "Define mechanical loads: imposed displacements, linear relations, pressures, forces, contact",
+      "Define mechanical loads: imposed displacements, linear relations, pressures, forces, gravity, contact",
       {concept_kw("MODELE", {"modele"}, "Model the loads apply to").required(), ddl_impo(), pres_rep(),
-       force_nodale(), liaison_ddl(), liaison_unif(), liaison_mail(), contact(),
+       force_nodale(),
+       cell_force("FORCE_CONTOUR", "Edge cell (SEG2/SEG3)", "N/m",
+                  "Force per unit length on the edges of a 2D or AXIS model (AXIS: per unit length of the "
+                  "meridian, integrated over r dl per radian as PRES_REP); refused in 3D"),
+       cell_force("FORCE_FACE", "Face cell (TRIA/QUAD)", "N/m2",
+                  "Force per unit area on faces of a 3D model; refused in 2D and AXIS"),
+       cell_force("FORCE_ARETE", "Edge cell (SEG2/SEG3)", "N/m",
+                  "Force per unit length on edges of a 3D model; refused in 2D and AXIS"),
+       cell_force("FORCE_INTERNE", "Cell", "N/m3",
+                  "Force per unit volume on cells of the model's dimension, every model (AXIS: per unit "
+                  "volume, integrated over r dA per radian)",
+                  true),
+       pesanteur(), liaison_ddl(), liaison_unif(), liaison_mail(), contact(),
        text("VERI_NORM",
             "'OUI': PRES_REP on boundary cells whose normal points into the body they bound is an error, and so "
             "is a group whose cells point both ways (MODI_MAILLAGE ORIE_PEAU_2D / ORIE_PEAU_3D turns them out); "
-            "a cell between two cells of the mesh (no outside) or on none is not checked. 'NON': each pressure "
+            "a cell between two cells of the mesh (no outside) or on none is not checked. As code_aster, only "
+            "PRES_REP is checked: FORCE_CONTOUR and FORCE_FACE give their components, which do not depend on "
+            "the normal's sign. 'NON': each pressure "
             "pushes against its cells' normals as they are")
            .into_values({"OUI", "NON"})
            .def("OUI"),
        common::info()},
       {at_least_one(
-          {"DDL_IMPO", "PRES_REP", "FORCE_NODALE", "LIAISON_DDL", "LIAISON_UNIF", "LIAISON_MAIL", "CONTACT"})});
+          {"DDL_IMPO", "PRES_REP", "FORCE_NODALE", "FORCE_CONTOUR", "FORCE_FACE", "FORCE_ARETE", "FORCE_INTERNE",
+           "PESANTEUR", "LIAISON_DDL", "LIAISON_UNIF", "LIAISON_MAIL", "CONTACT"})});
   return spec;
 }
 

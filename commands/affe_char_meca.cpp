@@ -1,5 +1,5 @@
-// AFFE_CHAR_MECA: imposed displacements, linear relations, pressures, nodal forces and (seed
-// syntax) contact.
+// AFFE_CHAR_MECA: imposed displacements, linear relations, pressures, distributed and nodal
+// forces, gravity and (seed syntax) contact.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -172,6 +172,84 @@ void read_force_nodale(const Args& occ, const Modele& mo, CharMeca& load) {
     const double value = occ.real(ck.name);
     for (int n : nodes) load.forces.push_back({n, ck.component, value, 0});
   }
+}
+
+/// FORCE_CONTOUR, FORCE_FACE, FORCE_ARETE, FORCE_INTERNE and PESANTEUR: a force density on the
+/// selected cells of one dimension, refused (with code_aster's reason) on a model they do not apply to.
+struct DistributedKeyword {
+  const char* name;
+  int model_dim;       ///< 2 or 3: the only models it applies to; 0: every model
+  int cells_below;     ///< the loaded cells' dimension is the model's minus this
+  const char* reason;  ///< why it does not apply to the other models, with what to use there
+};
+
+constexpr DistributedKeyword kForceContour{"FORCE_CONTOUR", 2, 1,
+                                           "FORCE_CONTOUR loads the edges of 2D and AXIS models (code_aster: "
+                                           "forces per unit length on the boundary of a 2D domain); in 3D use "
+                                           "FORCE_FACE or FORCE_ARETE"};
+constexpr DistributedKeyword kForceFace{"FORCE_FACE", 3, 1,
+                                        "FORCE_FACE loads the faces of 3D solid elements (code_aster: surface "
+                                        "forces on a face of a volume element); on a 2D or AXIS model use "
+                                        "FORCE_CONTOUR"};
+constexpr DistributedKeyword kForceArete{"FORCE_ARETE", 3, 2,
+                                         "FORCE_ARETE loads the edges of 3D elements (code_aster: forces per unit "
+                                         "length on an edge of a volume element); on a 2D or AXIS model use "
+                                         "FORCE_CONTOUR or FORCE_NODALE"};
+constexpr DistributedKeyword kForceInterne{"FORCE_INTERNE", 0, 0, ""};
+constexpr DistributedKeyword kPesanteur{"PESANTEUR", 0, 0, ""};
+
+const char* model_label(const Modele& mo) {
+  if (mo.dim == 3) return "a 3D model";
+  for (engine::Modelisation m : mo.modelisation)
+    if (m == engine::Modelisation::Axisymmetric) return "an AXIS model";
+  return "a 2D model";
+}
+
+void read_distributed(const Args& occ, const Modele& mo, CharMeca& load, const DistributedKeyword& kw) {
+  const engine::Mesh& mesh = *mo.maillage->mesh;
+  const std::string first = occ.has("GROUP_MA") ? "GROUP_MA" : occ.has("MAILLE") ? "MAILLE" : "TOUT";
+  if (kw.model_dim != 0 && mo.dim != kw.model_dim)
+    throw occ.error(first, kw.model_dim == 2 ? "a 2D or AXIS model" : "a 3D model", model_label(mo), {kw.reason});
+  const int cells_dim = mo.dim - kw.cells_below;
+  const bool pesanteur = std::string(kw.name) == "PESANTEUR";
+  std::array<double, 3> force = {0.0, 0.0, 0.0};
+  if (pesanteur) {
+    const std::vector<double> d = occ.reals("DIRECTION");
+    const double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (norm == 0.0) throw occ.error("DIRECTION", "a non-zero direction (it is normalised)", "(0, 0, 0)");
+    if (mo.dim == 2 && d[2] != 0.0) {
+      char given[64];
+      std::snprintf(given, sizeof given, "a third component %g", d[2]);
+      throw occ.error("DIRECTION", "a direction in the model's plane (third component 0) on " +
+                                       std::string(model_label(mo)),
+                      given);
+    }
+    for (int k = 0; k < 3; ++k) force[k] = occ.real("GRAVITE") * d[k] / norm;
+  } else {
+    if (mo.dim == 2 && occ.has("FZ"))
+      throw occ.error("FZ", std::string("FX or FY on ") + model_label(mo),
+                      "FZ (the out-of-plane force of code_aster's AXIS_FOURIER, which is not modelled here)");
+    for (ComponentKeyword ck : {ComponentKeyword{"FX", engine::DX}, {"FY", engine::DY}, {"FZ", engine::DZ}})
+      if (occ.has(ck.name)) force[ck.component] = occ.real(ck.name);
+  }
+  // PESANTEUR without GROUP_MA or MAILLE: every cell of the model.
+  const bool whole_model = pesanteur && !occ.has("GROUP_MA") && !occ.has("MAILLE");
+  std::vector<int> cells;
+  for (int c : whole_model ? std::vector<int>{} : select_cells(occ, mesh))
+    if (engine::cell_info(mesh.cell_types[c]).dim == cells_dim) cells.push_back(c);
+  if (whole_model)
+    for (int c = 0; c < mesh.n_cells(); ++c)
+      if (mo.modelisation[c] != engine::Modelisation::None) cells.push_back(c);
+  const char* expected = cells_dim == mo.dim ? "cells of the model's dimension"
+                         : cells_dim == 2    ? "face cells (TRIA/QUAD)"
+                                             : "edge cells (SEG2/SEG3)";
+  // On a part, the cells may all be on other ranks: the ranks decide.
+  require_somewhere(mesh, !cells.empty(), occ.error(first, expected, "a selection without any"));
+  if (cells_dim == mo.dim)
+    for (int c : cells)
+      if (mo.modelisation[c] == engine::Modelisation::None)
+        throw occ.error(first, "cells that carry an element of MODELE", "cell " + mesh.cell_names[c] + ", which does not");
+  load.distributed.push_back({cells, cells_dim, force, pesanteur, 0});
 }
 
 /// Per mesh node, whether a cell that carries an element of `mo` holds it.
@@ -633,6 +711,8 @@ ConceptPtr affe_char_meca(const Args& args, Session& session) {
     for (const auto& occ : args.factors("DDL_IMPO")) read_ddl_impo(occ, mo, *load);
     for (const auto& occ : args.factors("PRES_REP")) read_pres_rep(occ, mo, *load, check_facing ? &facing : nullptr);
     for (const auto& occ : args.factors("FORCE_NODALE")) read_force_nodale(occ, mo, *load);
+    for (const DistributedKeyword& kw : {kForceContour, kForceFace, kForceArete, kForceInterne, kPesanteur})
+      for (const auto& occ : args.factors(kw.name)) read_distributed(occ, mo, *load, kw);
   };
   // On a mesh in parts the relations gather their nodes over the ranks: the ranks agree on what
   // they read first (commands/parts.hpp), and the relations' checks fail alike on every rank.

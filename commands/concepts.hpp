@@ -65,13 +65,15 @@ struct ChamMater : Concept {
   bool in_parts() const override { return maillage && maillage->in_parts(); }
 };
 
-/// AFFE_CHAR_MECA: Dirichlet values, pressures, nodal forces and (seed syntax) contact.
+/// AFFE_CHAR_MECA: Dirichlet values, pressures, distributed and nodal forces and (seed syntax) contact.
 /// Load indices inside are all 0; STAT_NON_LINE renumbers them per EXCIT.
 struct CharMeca : Concept {
   std::shared_ptr<Modele> modele;
   std::vector<engine::DirichletValue> dirichlet;
   std::vector<engine::PressureLoad> pressures;
   std::vector<engine::NodalForce> forces;
+  /// FORCE_CONTOUR, FORCE_FACE, FORCE_ARETE, FORCE_INTERNE and PESANTEUR (per_mass).
+  std::vector<engine::DistributedForce> distributed;
   /// LIAISON_DDL and LIAISON_UNIF, as written (load -1); on a mesh in parts their nodes are the
   /// whole mesh's numbers (a relation may tie nodes of several parts), the same on every rank.
   std::vector<engine::LinearRelation> relations;

@@ -1,5 +1,6 @@
 // STAT_NON_LINE: quasi-static incremental analysis (Newton), with contact.
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <set>
@@ -272,6 +273,20 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     for (auto d : charge->dirichlet) { d.load = index; loads.dirichlet.push_back(d); }
     for (auto p : charge->pressures) { p.load = index; loads.pressures.push_back(p); }
     for (auto f : charge->forces) { f.load = index; loads.forces.push_back(f); }
+    for (auto d : charge->distributed) {
+      // PESANTEUR weighs each cell with its material's RHO: said here, where the materials meet the load.
+      if (d.per_mass)
+        for (int c : d.cells) {
+          const int mat = model.material.at(c);
+          if (mat < 0 || std::isnan(model.materials[mat].density))
+            throw excit.error("CHARGE", "RHO in DEFI_MATERIAU ELAS for every cell PESANTEUR weighs",
+                              "cell " + model.mesh->cell_names[c] + ", whose material (CHAM_MATER) has " +
+                                  (mat < 0 ? "none" : "no RHO"),
+                              {"add RHO = ... to the material's ELAS"});
+        }
+      d.load = index;
+      loads.distributed.push_back(d);
+    }
     for (auto r : charge->relations) {
       r.load = index;
       r.label += charge->user_name.empty() ? " of " + excit.path("CHARGE") : " of CHARGE '" + charge->user_name + "'";

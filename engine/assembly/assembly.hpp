@@ -1,5 +1,6 @@
 #pragma once
 /// Assembly of the elastic stiffness, internal forces and external loads.
+#include <array>
 #include <vector>
 
 #include "engine/assembly/dof_map.hpp"
@@ -43,5 +44,14 @@ void assemble_internal_forces(const FeModel& model, const DofMap& dofs, const Ve
 void assemble_pressure(const Mesh& mesh, int dim, const std::vector<int>& cells, double pressure,
                        const DofMap& dofs, Vector& f_ext, bool axisymmetric = false,
                        const std::vector<int>* node_owner = nullptr);
+
+/// Adds the consistent nodal forces of a force density `force` (its first `dim` components)
+/// on `cells`, each of dimension `cells_dim`: N/m on edges (cells_dim 1), N/m2 on faces (2),
+/// N/m3 on the model's cells (dim). The same quadrature as assemble_pressure, with the cell's
+/// measure in place of its oriented normal (the force does not depend on the cells' orientation);
+/// `axisymmetric` and `node_owner` as there.
+void assemble_distributed_force(const Mesh& mesh, int dim, const std::vector<int>& cells, int cells_dim,
+                                const std::array<double, 3>& force, const DofMap& dofs, Vector& f_ext,
+                                bool axisymmetric = false, const std::vector<int>* node_owner = nullptr);
 
 }  // namespace lunaster::engine

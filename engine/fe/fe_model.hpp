@@ -1,6 +1,7 @@
 #pragma once
 /// The finite-element description a solve needs: which cells carry which
 /// mechanical element, and their material. Built by AFFE_MODELE/AFFE_MATERIAU.
+#include <limits>
 #include <vector>
 
 #include "engine/mesh/mesh.hpp"
@@ -16,7 +17,7 @@ enum class Modelisation { None, PlaneStrain, PlaneStress, Solid3D, Axisymmetric 
 struct ElasticMaterial {
   double young = 0.0;
   double poisson = 0.0;
-  double density = 0.0;
+  double density = std::numeric_limits<double>::quiet_NaN();  ///< kg/m3; NaN: not given
 };
 
 struct FeModel {

@@ -1,6 +1,7 @@
 #include "engine/nonlinear/nodal_forces.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "engine/assembly/assembly.hpp"
@@ -41,6 +42,29 @@ Vector external_forces(const FeModel& model, const DofMap& dofs, const Mechanica
   for (const auto& p : loads.pressures)
     assemble_pressure(*model.mesh, model.dim, p.cells, p.pressure * loads.multipliers.at(p.load)(t), dofs, f,
                       model.axisymmetric(), node_owner);
+  for (const auto& d : loads.distributed) {
+    const double m = loads.multipliers.at(d.load)(t);
+    if (!d.per_mass) {
+      assemble_distributed_force(*model.mesh, model.dim, d.cells, d.cells_dim, {m * d.force[0], m * d.force[1], m * d.force[2]},
+                                 dofs, f, model.axisymmetric(), node_owner);
+      continue;
+    }
+    // Per unit mass: the cells of each material together, times its density.
+    std::vector<std::vector<int>> by_material(model.materials.size());
+    for (int c : d.cells) {
+      const int mat = model.material.at(c);
+      if (mat < 0 || std::isnan(model.materials[mat].density))
+        throw DeckError("force per unit mass on cell " + model.mesh->cell_names.at(c) + ", whose material has no density");
+      by_material[mat].push_back(c);
+    }
+    for (size_t mat = 0; mat < by_material.size(); ++mat) {
+      if (by_material[mat].empty()) continue;
+      const double s = m * model.materials[mat].density;
+      assemble_distributed_force(*model.mesh, model.dim, by_material[mat], d.cells_dim,
+                                 {s * d.force[0], s * d.force[1], s * d.force[2]}, dofs, f, model.axisymmetric(),
+                                 node_owner);
+    }
+  }
   const int me = node_owner ? parallel::rank() : 0;
   for (const auto& fn : loads.forces) {
     const int eq = dofs.dof(fn.node, fn.component);

@@ -11,8 +11,8 @@
 
 namespace lunaster::engine {
 
-/// External nodal forces at instant t (N): consistent pressure forces and nodal forces,
-/// each scaled by its load multiplier. DeckError for a nodal force on a node without that
+/// External nodal forces at instant t (N): consistent pressure and distributed forces (a force per
+/// unit mass times each cell's density) and nodal forces, each scaled by its load multiplier. DeckError for a nodal force on a node without that
 /// displacement unknown. With `node_owner` (a shared model's owner rank per node) each rank
 /// computes the pressure cells and nodal forces of its own nodes and the ranks sum
 /// (collective): every rank ends with the whole vector. With `halo` as well (a mesh in parts:
