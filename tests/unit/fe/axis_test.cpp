@@ -152,6 +152,35 @@ TEST(Axis, PressureIsWeightedByRadiusAndVanishesOnTheAxis) {
   EXPECT_EQ(g.cwiseAbs().maxCoeff(), 0.0);
 }
 
+TEST(Axis, DistributedForceSharesThePressureQuadrature) {
+  // The SEG2 of the test above, loaded by a force per unit length (0, -10): the same nodal forces
+  // as the pressure 10 (its normal is +y), whatever the edge's direction; a volume force F on the
+  // triangle (1,0) (2,0) (1,-1) sums to F int r dA = F (1/2) (1 + 2 + 1) / 3 = 2 F / 3 per radian.
+  Mesh mesh;
+  mesh.dim = 2;
+  mesh.coords = {2, 0, 0, 1, 0, 0, 1, -1, 0};
+  mesh.node_names = {"N1", "N2", "N3"};
+  mesh.cell_types = {CellType::Tria3, CellType::Seg2, CellType::Seg2};
+  mesh.cell_nodes = {1, 0, 2, 0, 1, 1, 0};
+  mesh.cell_offsets = {0, 3, 5, 7};
+  mesh.cell_names = {"M1", "M2", "M3"};
+  const DofMap dofs(mesh, {0}, 2);
+  Vector p, f, g, v;
+  assemble_pressure(mesh, 2, {1}, 10.0, dofs, p, true);
+  assemble_distributed_force(mesh, 2, {1}, 1, {0.0, -10.0, 0.0}, dofs, f, true);
+  assemble_distributed_force(mesh, 2, {2}, 1, {0.0, -10.0, 0.0}, dofs, g, true);
+  EXPECT_LT((f - p).cwiseAbs().maxCoeff(), 1e-14);
+  EXPECT_LT((g - p).cwiseAbs().maxCoeff(), 1e-14);
+  assemble_distributed_force(mesh, 2, {0}, 2, {3.0, -6.0, 0.0}, dofs, v, true);
+  double fx = 0, fy = 0;
+  for (int n = 0; n < 3; ++n) fx += v(dofs.dof(n, DX)), fy += v(dofs.dof(n, DY));
+  expect_close(fx, 3.0 * 2.0 / 3.0, 1e-14, 0);
+  expect_close(fy, -6.0 * 2.0 / 3.0, 1e-14, 0);
+  // A cell of another dimension than the one given is refused.
+  Vector w;
+  EXPECT_THROW(assemble_distributed_force(mesh, 2, {0}, 1, {1.0, 0.0, 0.0}, dofs, w, true), DeckError);
+}
+
 TEST(Axis, IntegrationPointOnTheAxisIsADeckError) {
   // A triangle with every node on x = 0 would be degenerate; one curved past the axis is not:
   // a TRIA6 whose mid-side node pulls an edge to x < 0 puts a point at r <= 0.
