@@ -9,7 +9,7 @@ const CommandSpec& defi_materiau_spec() {
       {factor("ELAS",
               {real("E", "Young's modulus (Pa)").required().above(0.0),
                real("NU", "Poisson's ratio").required().above(-1.0).below(0.5),
-               real("RHO", "Density (kg/m3)").range(0.0, std::nullopt)},
+               real("RHO", "Density (kg/m3): the mass AFFE_CHAR_MECA PESANTEUR weighs (no default)").range(0.0, std::nullopt)},
               "Isotropic linear elasticity")
            .required(),
        common::info()});

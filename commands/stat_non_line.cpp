@@ -274,8 +274,9 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     for (auto p : charge->pressures) { p.load = index; loads.pressures.push_back(p); }
     for (auto f : charge->forces) { f.load = index; loads.forces.push_back(f); }
     for (auto d : charge->distributed) {
-      // PESANTEUR weighs each cell with its material's RHO: said here, where the materials meet the load.
-      if (d.per_mass)
+      // PESANTEUR weighs each cell with its material's RHO: said here, where the materials meet the
+      // load (on a mesh in parts the ranks agree, the cell being on one part only).
+      auto weighed = [&] {
         for (int c : d.cells) {
           const int mat = model.material.at(c);
           if (mat < 0 || std::isnan(model.materials[mat].density))
@@ -284,6 +285,9 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
                                   (mat < 0 ? "none" : "no RHO"),
                               {"add RHO = ... to the material's ELAS"});
         }
+      };
+      if (d.per_mass && result->modele->in_parts()) agreed(weighed);
+      else if (d.per_mass) weighed();
       d.load = index;
       loads.distributed.push_back(d);
     }
