@@ -209,7 +209,8 @@ void read_distributed(const Args& occ, const Modele& mo, CharMeca& load, const D
   const engine::Mesh& mesh = *mo.maillage->mesh;
   const std::string first = occ.has("GROUP_MA") ? "GROUP_MA" : occ.has("MAILLE") ? "MAILLE" : "TOUT";
   if (kw.model_dim != 0 && mo.dim != kw.model_dim)
-    throw occ.error(first, kw.model_dim == 2 ? "a 2D or AXIS model" : "a 3D model", model_label(mo), {kw.reason});
+    throw DeckError::at(occ.where(), kw.model_dim == 2 ? "a 2D or AXIS model" : "a 3D model", model_label(mo),
+                        {kw.reason});
   const int cells_dim = mo.dim - kw.cells_below;
   const bool pesanteur = std::string(kw.name) == "PESANTEUR";
   std::array<double, 3> force = {0.0, 0.0, 0.0};

@@ -5,6 +5,8 @@
 -- the deformation; the consistent forces of a uniform line load are exact and the sum of the
 -- nodal reactions holds to the solver's round-off: tolerance 1e-10. The load follows FONC_MULT
 -- (a ramp: half at INST 0.5).
+-- VALE_CALC: a real run's values, equal to the references to the 10 digits it prints (the
+-- exact cases above), written as the references' expressions.
 -- Reference: analytical (equilibrium). Units SI. Runtime label: fast.
 DEBUT()
 MAT = DEFI_MATERIAU{ ELAS = _F{ E = 2.0e11, NU = 0.3 } }

@@ -12,6 +12,8 @@
 --    r dl per radian as the pressure, so it is the same load. Checked against Lame's u_r at the
 --    inner and outer radius at that deck's tolerance (1e-9, its discretisation error 2.1e-10), and
 --    against the PRES_REP run's own u_r to 1e-12 (the same nodal forces up to round-off).
+-- VALE_CALC: a real run's values, equal to the references to the 10 digits it prints (the
+-- exact cases above), written as the references' expressions (AXIS: the run's u_r).
 -- Reference: analytical. Units SI. Runtime label: fast.
 DEBUT()
 local E, NU, P = 2.0e11, 0.3, 1.0e8

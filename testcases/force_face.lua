@@ -6,6 +6,8 @@
 -- A uniform stress is exact on every one of these meshes and a uniform traction on a plane face
 -- integrates exactly: each check holds to round-off, tolerance 1e-12 (1e-10 for the reaction,
 -- a sum of nodal forces); and FORCE_FACE's displacement equals PRES_REP's to 1e-12.
+-- VALE_CALC: a real run's values, equal to the references to the 10 digits it prints (the
+-- exact cases above), written as the references' expressions.
 -- Reference: analytical. Units SI. Runtime label: fast.
 DEBUT()
 local E, NU, P = 2.0e11, 0.3, 1.0e8

@@ -6,6 +6,8 @@
 -- radian integral of r dA = (2^2 - 1^2) / 2 = 1.5. The consistent forces integrate N_a |J| (times
 -- r) exactly with the cells' full rule on these straight-sided cells, and the sum of the nodal
 -- reactions holds to the solver's round-off: tolerance 1e-10.
+-- VALE_CALC: a real run's values, equal to the references to the 10 digits it prints (the
+-- exact cases above), written as the references' expressions.
 -- Reference: analytical (equilibrium). Units SI. Runtime label: fast.
 DEBUT()
 local F = 2.5e4

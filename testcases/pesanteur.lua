@@ -11,6 +11,8 @@
 --     V = h (2^2 - 1^2) / 2 per radian.
 --   3D: unit cube of 12^3 HEXA8 (block_hexa8_12.med), V = 1 m3.
 -- The load follows FONC_MULT (a ramp: half the weight at INST 0.5). DIRECTION is normalised.
+-- VALE_CALC: a real run's values, equal to the references to the 10 digits it prints (the
+-- exact cases above), written as the references' expressions.
 -- Reference: analytical. Units SI. Runtime label: fast.
 DEBUT()
 local E, RHO, G = 2.0e11, 7800.0, 9.81
