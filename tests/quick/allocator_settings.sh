@@ -22,10 +22,10 @@ rm -rf "$scratch"; mkdir -p "$scratch"; cd "$scratch" || exit 1; scratch=$(pwd -
 # A deck that says it runs (a line longer than stdout's buffer, written to the file at once),
 # then waits for go.lua (the script writes it once it has read the process's environment;
 # `require` finds a module next to the deck), however long the machine takes to let the script
-# look. A hang guard, far beyond any wait, ends it with an error.
+# look. A hang guard, far beyond any wait (5e6 looks, about a minute of CPU), ends it with an error.
 printf '%s\n' "print('spin: running ' .. ('.'):rep(1 << 16))" "local n = 0" \
   "while not pcall(require, 'go') do" "  n = n + 1" \
-  "  if n > 2e7 then error('go.lua never came') end" "end" > spin.lua
+  "  if n > 5e6 then error('go.lua never came') end" "end" > spin.lua
 trap 'echo > "$scratch/go.lua"' EXIT  # the last deck never waits for a script that has gone
 
 # environment_of PID OUTPUT: the GLIBC_TUNABLES entry of the running process ("absent" if it has
