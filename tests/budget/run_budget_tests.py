@@ -6,8 +6,8 @@ usage: run_budget_tests.py CASE LUNASTER MESHGEN SOURCE_DIR SCRATCH_DIR
                 OK, TIMEOUT, OUT_OF_MEMORY in the table, the JUnit XML and the JSON; exit 1
   run_budgets   `lunaster run`: the header budget, the command-line override (run and verify),
                 a bad command-line value
-  long_solve    a refined SSNP121 I deck (about 5 s, 400 MB) stopped inside STAT_NON_LINE's
-                C++ solve by --time-limit 1 and by --memory-limit 150
+  long_solve    a refined SSNP121 I deck (200 steps, 500 MB) stopped inside STAT_NON_LINE's
+                C++ solve by --time-limit 5 and by --memory-limit 150
 A stop is checked to be the budget's (the exit status, the message naming the limit and the deck
 line or command) and never before its limit; how long after the limit it comes is the scheduler's
 (`ctest -j` runs deck solves beside these tests, `make test` may run beside another), so no upper
@@ -139,14 +139,20 @@ def long_solve(exe, meshgen, source, scratch):
     shutil.copy(source / "tests" / "bench" / "ssnp121i_refined.lua", deck)
     subprocess.run([meshgen, "--v1", "hexa8:5x5x1", "--v2", "hexa20:4x4x1", "--refine", "5", "-o", scratch / "refined.med"],
                    check=True, stdout=subprocess.DEVNULL)
-    # A limit that the set-up fits in and the solve does not: 1 s, or 10 s in a sanitizer build,
-    # where the set-up takes one to four seconds and the solve half a minute. Refinement 5: at 4
-    # the solve, once its re-pairing pass needed no solve, ended within about a second, and the
-    # limit then fell between two commands.
-    limit = 10 if SANITIZED else 1
+    # A limit that the start and set-up fit in and the solve does not, whatever the load: 5 s, or
+    # 30 s in a sanitizer build (where the start and set-up take one to four seconds), and a
+    # solve of 200 steps instead of 1 (each step after the first about 0.15 s of CPU: 1.96 s user
+    # for the deck with 1 step, 2.26 s with 3, /usr/bin/time), half a minute of CPU, so that the
+    # limit falls inside STAT_NON_LINE, not between two commands, however fast or loaded the
+    # machine. Refinement 5: at 4 the solve, once its re-pairing pass needed no solve, ended
+    # within about a second.
+    text = deck.read_text()
+    assert "INTERVALLE = _F{ JUSQU_A = 1.0, NOMBRE = 1 }" in text
+    deck.write_text(text.replace("INTERVALLE = _F{ JUSQU_A = 1.0, NOMBRE = 1 }", "INTERVALLE = _F{ JUSQU_A = 1.0, NOMBRE = 200 }"))
+    limit = 30 if SANITIZED else 5
     code, out, seconds = run([exe, "run", deck, "--out", "o", "-q", "--time-limit", str(limit)], scratch)
     check(code == 5 and seconds >= limit, f"--time-limit {limit} stops the run: exit 5, not before the limit ({seconds:.2f} s)")
-    check(re.search(rf"refined\.lua: time limit of {limit} s exceeded while running \S*refined\.lua:\d+: [A-Z_]+; "
+    check(re.search(rf"refined\.lua: time limit of {limit} s exceeded while running \S*refined\.lua:\d+: STAT_NON_LINE; "
                     r"the run is stopped", out) is not None, "the message names the command that was running")
     limit = solve_memory_limit()
     code, out, seconds = run([exe, "run", deck, "--out", "o", "-q", "--memory-limit", limit], scratch)
