@@ -33,6 +33,8 @@ constexpr double kMegabyte = 1024.0 * 1024.0;
 constexpr int kBudgetSignal = SIGURG;
 /// The Lua state of the deck running under a budget (one at a time per process), for the handler.
 std::atomic<lua_State*> budget_state{nullptr};
+/// BudgetGuard::grace(), in milliseconds.
+std::atomic<long long> grace_ms{BudgetGuard::kGrace.count()};
 
 DeckError header_error(const fs::path& deck, int line, const std::string& key, std::string message,
                        std::vector<std::string> hints = {}) {
@@ -219,8 +221,12 @@ std::chrono::steady_clock::time_point process_start() {
                    std::chrono::duration<double>(std::max(age, 0.0)));
 }
 
+void BudgetGuard::set_grace(std::chrono::milliseconds grace) { grace_ms = grace.count(); }
+
+std::chrono::milliseconds BudgetGuard::grace() { return std::chrono::milliseconds(grace_ms.load()); }
+
 BudgetGuard::BudgetGuard(const Budget& budget, std::string deck, std::chrono::steady_clock::time_point start)
-    : budget_(budget), deck_(std::move(deck)), deck_thread_(pthread_self()) {
+    : budget_(budget), deck_(std::move(deck)), deck_thread_(pthread_self()), grace_(grace()) {
   using clock = std::chrono::steady_clock;
   if (budget_.seconds)
     deadline_ = start + std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(*budget_.seconds));
@@ -297,7 +303,7 @@ void BudgetGuard::set_running(const std::string& where) {
 }
 
 void BudgetGuard::watch() {
-  const auto grace_end = deadline_ + kGrace;
+  const auto grace_end = deadline_ + grace_;
   bool signalled = false;
   std::unique_lock<std::mutex> lock(watch_mutex_);
   while (!stopping_) {

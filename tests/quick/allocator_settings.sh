@@ -19,39 +19,54 @@ if [ "${3:-}" != sanitized ] && [ "$needed" != "libc.so.6 " ]; then
 fi
 if [ "${3:-}" = sanitized ]; then echo "sanitizer build: its own allocator, no restart"; exit 77; fi
 rm -rf "$scratch"; mkdir -p "$scratch"; cd "$scratch" || exit 1; scratch=$(pwd -P)
-# About half a second of Lua, long enough to read the environment of the running process.
-printf 'local x = 0\nfor i = 1, 3e8 do x = x + i end\n' > spin.lua
+# A deck that says it runs (a line longer than stdout's buffer, written to the file at once),
+# then waits for go.lua (the script writes it once it has read the process's environment;
+# `require` finds a module next to the deck), however long the machine takes to let the script
+# look. A hang guard, far beyond any wait (5e6 looks, about a minute of CPU), ends it with an error.
+printf '%s\n' "print('spin: running ' .. ('.'):rep(1 << 16))" "local n = 0" \
+  "while not pcall(require, 'go') do" "  n = n + 1" \
+  "  if n > 5e6 then error('go.lua never came') end" "end" > spin.lua
+trap 'echo > "$scratch/go.lua"' EXIT  # the last deck never waits for a script that has gone
 
-# environment_of PID: the GLIBC_TUNABLES entry of the running process ("absent" if it has none),
-# once the process runs the deck (lunaster is past its start); "ended" if it ended first.
+# environment_of PID OUTPUT: the GLIBC_TUNABLES entry of the running process ("absent" if it has
+# none), read once the deck runs (it printed to OUTPUT, past lunaster's start and restart), then
+# lets the deck end; "ended" if it ended first.
 environment_of() {
-  local pid=$1 i
-  for i in $(seq 1 100); do
+  local pid=$1 output=$2 i seen
+  for i in $(seq 1 2400); do  # a hang guard of 120 s
     [ -r "/proc/$pid/environ" ] || { echo ended; return; }
-    if [ "$(readlink "/proc/$pid/exe")" = "$engine" ] && [ "$i" -gt 4 ]; then
-      tr '\0' '\n' < "/proc/$pid/environ" | grep '^GLIBC_TUNABLES=' || echo absent
-      return
-    fi
+    grep -q '^spin: running' "$output" 2>/dev/null && break
     sleep 0.05
   done
-  echo "still starting"
+  if ! grep -q '^spin: running' "$output" 2>/dev/null; then
+    seen="still starting"
+  elif [ "$(readlink "/proc/$pid/exe")" != "$engine" ]; then
+    seen="running $(readlink "/proc/$pid/exe"), not the engine"
+  else
+    seen=$(tr '\0' '\n' < "/proc/$pid/environ" | grep '^GLIBC_TUNABLES=' || echo absent)
+  fi
+  echo > go.lua
+  echo "$seen"
 }
 
 # The arguments go through the new start: `run spin.lua` ends with 0, a lost argument with 2.
-env -u GLIBC_TUNABLES "$lunaster" run spin.lua -q & pid=$!
-seen=$(environment_of $pid); wait $pid; code=$?
+rm -f go.lua
+env -u GLIBC_TUNABLES "$lunaster" run spin.lua -q > run1.out & pid=$!
+seen=$(environment_of $pid run1.out); wait $pid; code=$?
 if [ "$seen" != "GLIBC_TUNABLES=glibc.malloc.hugetlb=1" ] || [ $code -ne 0 ]; then
   echo "FAIL: started without GLIBC_TUNABLES, the run saw '$seen' and ended with $code"
   fail=1
 fi
-GLIBC_TUNABLES= "$lunaster" run spin.lua -q & pid=$!
-seen=$(environment_of $pid); wait $pid; code=$?
+rm -f go.lua
+GLIBC_TUNABLES= "$lunaster" run spin.lua -q > run2.out & pid=$!
+seen=$(environment_of $pid run2.out); wait $pid; code=$?
 if [ "$seen" != "GLIBC_TUNABLES=" ] || [ $code -ne 0 ]; then
   echo "FAIL: with GLIBC_TUNABLES set empty by the user, the run saw '$seen' and ended with $code"
   fail=1
 fi
-env -u GLIBC_TUNABLES "$engine" run spin.lua -q & pid=$!
-seen=$(environment_of $pid); wait $pid; code=$?
+rm -f go.lua
+env -u GLIBC_TUNABLES "$engine" run spin.lua -q > run3.out & pid=$!
+seen=$(environment_of $pid run3.out); wait $pid; code=$?
 if [ "$seen" != "GLIBC_TUNABLES=glibc.malloc.hugetlb=1" ] || [ $code -ne 0 ]; then
   echo "FAIL: the engine started directly, without GLIBC_TUNABLES, saw '$seen' and ended with $code"
   fail=1
