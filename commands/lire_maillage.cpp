@@ -1,4 +1,4 @@
-// LIRE_MAILLAGE: reads a MED or Gmsh mesh.
+// LIRE_MAILLAGE: reads a MED, Gmsh or code_aster text (.mail) mesh.
 #include <exception>
 #include <filesystem>
 
@@ -6,6 +6,7 @@
 #include "commands/concepts.hpp"
 #include "commands/failures.hpp"
 #include "commands/parts.hpp"
+#include "engine/io/aster_mail_reader.hpp"
 #include "engine/io/gmsh_reader.hpp"
 #include "engine/io/med_reader.hpp"
 #include "engine/mesh/mesh_bytes.hpp"
@@ -17,14 +18,19 @@ namespace lunaster::cmd {
 
 namespace {
 
-/// Under an .export, UNITE is the unit its `F mmed|msh PATH D UNIT` line binds. Otherwise
-/// UNITE 20 is the mesh of the study: <deck name>.med (or .msh) beside the deck;
+/// The .export file type and the file extension of a FORMAT.
+const char* export_type(const std::string& format) {
+  return format == "GMSH" ? "msh" : format == "ASTER" ? "mail" : "mmed";
+}
+
+/// Under an .export, UNITE is the unit its `F mmed|msh|mail PATH D UNIT` line binds. Otherwise
+/// UNITE 20 is the mesh of the study: <deck name>.med (or .msh, .mail) beside the deck;
 /// any other unit maps to fort.<UNITE> beside the deck, as in a code_aster study folder.
 std::filesystem::path mesh_path(const Args& args, const Session& session, const std::string& format) {
   if (args.has("FICHIER")) return session.resolve_input(args.text("FICHIER"));
   const long long unit = args.integer("UNITE");
   if (!session.export_path.empty()) {
-    const std::string type = format == "GMSH" ? "msh" : "mmed";
+    const std::string type = export_type(format);
     const auto found = session.data_units.find(static_cast<int>(unit));
     std::string units;
     for (const auto& [n, f] : session.data_units) units += (units.empty() ? "" : ", ") + std::to_string(n) + " (" + f.type + ")";
@@ -38,7 +44,7 @@ std::filesystem::path mesh_path(const Args& args, const Session& session, const 
   }
   if (unit == 20) {
     std::filesystem::path p = session.deck_path;
-    p.replace_extension(format == "GMSH" ? ".msh" : ".med");
+    p.replace_extension(format == "GMSH" ? ".msh" : format == "ASTER" ? ".mail" : ".med");
     return p;
   }
   return session.deck_path.parent_path() / ("fort." + std::to_string(unit));
@@ -51,6 +57,8 @@ std::vector<int> read_mesh_file(const Args& args, const std::string& format, con
                                 engine::Mesh& mesh) {
   if (format == "GMSH") {
     mesh = engine::read_gmsh(path.string());
+  } else if (format == "ASTER") {
+    mesh = engine::read_aster_mail(path.string());
   } else {
     try {
       mesh = engine::read_med(path.string(), args.has("NOM_MED") ? args.text("NOM_MED") : std::string());
@@ -67,6 +75,9 @@ std::vector<int> read_mesh_file(const Args& args, const std::string& format, con
 ConceptPtr lire_maillage(const Args& args, Session& session) {
   Session::Timer timer(session, "read");
   const std::string format = args.text("FORMAT");
+  if (format != "MED" && args.has("NOM_MED"))
+    throw args.error("NOM_MED", "no NOM_MED with FORMAT='" + format + "' (the file holds one mesh)",
+                     "NOM_MED='" + args.text("NOM_MED") + "'", {"remove NOM_MED, or read a MED file (FORMAT='MED')"});
   const std::filesystem::path path = mesh_path(args, session, format);
   auto result = std::make_shared<Maillage>();
   result->source_file = path.string();
