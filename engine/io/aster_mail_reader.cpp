@@ -214,7 +214,20 @@ void MailParser::read_cells(const AsterType& type, int start) {
   const std::string how = std::string(type.name) + " takes " + std::to_string(n) + " nodes";
   while (!block_end(type.name, start)) {
     const Token& name = toks_[pos_++];
-    if (!name.first) fail(name.line, "'" + name.text + "' does not start a line: " + how + ", more given?");
+    if (!name.first) {
+      // The previous cell ended on this line: either this line has too many nodes, or the previous
+      // cell's own line had too few and its last nodes were taken from this one.
+      const RawCell* prev = cells_.empty() ? nullptr : &cells_.back();
+      if (prev && prev->line != name.line && prev->nodes.back()->line == name.line) {
+        size_t on_line = 0;
+        for (const Token* t : prev->nodes) on_line += t->line == prev->line;
+        const Token* first_taken = prev->nodes[on_line];
+        fail(prev->line, "cell '" + prev->name + "': " + how + ", line " + std::to_string(prev->line) + " gives " +
+                             std::to_string(on_line) + " (then '" + first_taken->text + "' of line " +
+                             std::to_string(first_taken->line) + " was read as its node)");
+      }
+      fail(name.line, "'" + name.text + "' does not start a line: " + how + ", more given?");
+    }
     RawCell cell{name.text, &type, {}, name.line};
     for (int k = 0; k < n; ++k) {
       while (!at_end() && toks_[pos_].text == "=") ++pos_;
