@@ -19,6 +19,16 @@ const CommandSpec& lire_maillage_spec() {
                              "linear relations' nodes whole); linear elasticity, contact, LIAISON_DDL and "
                              "LIAISON_UNIF, not LIAISON_MAIL")
            .into_values({"PTSCOTCH"}),
+       factor("VERI_MAIL",
+              {text("VERIF", "OUI: the checks below, as warnings; NON: none (not even the warning on nodes in no cell)")
+                   .into_values({"OUI", "NON"})
+                   .def("OUI"),
+               real("APLAT", "A cell is flat when its shortest distance between two nodes is below APLAT times its "
+                             "longest")
+                   .above(0.0)
+                   .def(1.0e-3)},
+              "Mesh checks after reading, as warnings: nodes in no cell, cells on the same nodes, cells listing a "
+              "node twice, flat cells (without VERI_MAIL: nodes in no cell only)"),
        common::info()});
   return spec;
 }

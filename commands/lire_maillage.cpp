@@ -70,6 +70,43 @@ std::vector<int> read_mesh_file(const Args& args, const std::string& format, con
   return engine::orient_cells(mesh, path.string());
 }
 
+/// The first ten of `items`, by `name`, comma-separated.
+template <class T, class Name>
+std::string first_names(const std::vector<T>& items, Name name) {
+  std::string out;
+  for (size_t i = 0; i < items.size() && i < 10; ++i) out += (i ? ", " : "") + name(items[i]);
+  return items.size() > 10 ? out + ", ..." : out;
+}
+
+/// VERI_MAIL: code_aster's checks of a mesh read, as warnings. Without VERI_MAIL only the nodes in
+/// no cell are reported; VERIF='NON' reports nothing.
+void verify_mesh(const Args& args, Session& session, const engine::Mesh& mesh, const std::filesystem::path& path) {
+  const bool given = args.count("VERI_MAIL") > 0;
+  if (given && args.factor("VERI_MAIL").text("VERIF") == "NON") return;
+  const std::string file = "mesh file '" + path.string() + "': ";
+  const auto node_name = [&](int n) { return mesh.node_names[n]; };
+  const auto cell_name = [&](int c) { return mesh.cell_names[c]; };
+  if (const auto orphans = engine::unreferenced_nodes(mesh); !orphans.empty())
+    session.warn(file + std::to_string(orphans.size()) + " node(s) belong to no cell and carry no unknown: " +
+                 first_names(orphans, node_name));
+  if (!given) return;
+  if (const auto twice = engine::cells_repeating_a_node(mesh); !twice.empty())
+    session.warn(file + std::to_string(twice.size()) + " cell(s) list a node twice (VERI_MAIL): " +
+                 first_names(twice, cell_name));
+  if (const auto doubles = engine::duplicate_cells(mesh); !doubles.empty())
+    session.warn(file + std::to_string(doubles.size()) + " pair(s) of cells of one type on the same nodes (VERI_MAIL): " +
+                 first_names(doubles, [&](const std::pair<int, int>& p) {
+                   return mesh.cell_names[p.first] + " = " + mesh.cell_names[p.second];
+                 }));
+  const double aplat = args.factor("VERI_MAIL").real("APLAT");
+  if (const auto flat = engine::flat_cells(mesh, aplat); !flat.empty())
+    session.warn(file + std::to_string(flat.size()) + " flat cell(s), shortest over longest distance between their nodes below APLAT = " +
+                 number_text(aplat) + " (VERI_MAIL): " +
+                 first_names(flat, [&](const std::pair<int, double>& f) {
+                   return mesh.cell_names[f.first] + " (" + number_text(f.second) + ")";
+                 }));
+}
+
 }  // namespace
 
 ConceptPtr lire_maillage(const Args& args, Session& session) {
@@ -126,13 +163,7 @@ ConceptPtr lire_maillage(const Args& args, Session& session) {
   // What the log says of the mesh is said of the whole mesh (rank 0 holds it with a part).
   const auto& mesh = result->whole ? *result->whole : *result->mesh;
   if (result->part && !result->whole) return result;  // a rank other than 0 logs nothing
-  if (const auto orphans = engine::unreferenced_nodes(mesh); !orphans.empty()) {
-    std::string names;
-    for (size_t i = 0; i < orphans.size() && i < 10; ++i) names += (i ? ", " : "") + mesh.node_names[orphans[i]];
-    if (orphans.size() > 10) names += ", ...";
-    session.warn("mesh file '" + path.string() + "': " + std::to_string(orphans.size()) +
-                 " node(s) belong to no cell and carry no unknown: " + names);
-  }
+  verify_mesh(args, session, mesh, path);
   session.log().info("  mesh " + path.filename().string() + ": " + std::to_string(mesh.n_nodes()) + " nodes, " +
                      std::to_string(mesh.n_cells()) + " cells, dimension " + std::to_string(mesh.dim));
   if (result->part)
