@@ -1,4 +1,4 @@
-// LIRE_MAILLAGE: reads a MED or Gmsh mesh.
+// LIRE_MAILLAGE: reads a MED, Gmsh or code_aster text (.mail) mesh.
 #include <exception>
 #include <filesystem>
 
@@ -6,6 +6,7 @@
 #include "commands/concepts.hpp"
 #include "commands/failures.hpp"
 #include "commands/parts.hpp"
+#include "engine/io/aster_mail_reader.hpp"
 #include "engine/io/gmsh_reader.hpp"
 #include "engine/io/med_reader.hpp"
 #include "engine/mesh/mesh_bytes.hpp"
@@ -17,14 +18,19 @@ namespace lunaster::cmd {
 
 namespace {
 
-/// Under an .export, UNITE is the unit its `F mmed|msh PATH D UNIT` line binds. Otherwise
-/// UNITE 20 is the mesh of the study: <deck name>.med (or .msh) beside the deck;
+/// The .export file type and the file extension of a FORMAT.
+const char* export_type(const std::string& format) {
+  return format == "GMSH" ? "msh" : format == "ASTER" ? "mail" : "mmed";
+}
+
+/// Under an .export, UNITE is the unit its `F mmed|msh|mail PATH D UNIT` line binds. Otherwise
+/// UNITE 20 is the mesh of the study: <deck name>.med (or .msh, .mail) beside the deck;
 /// any other unit maps to fort.<UNITE> beside the deck, as in a code_aster study folder.
 std::filesystem::path mesh_path(const Args& args, const Session& session, const std::string& format) {
   if (args.has("FICHIER")) return session.resolve_input(args.text("FICHIER"));
   const long long unit = args.integer("UNITE");
   if (!session.export_path.empty()) {
-    const std::string type = format == "GMSH" ? "msh" : "mmed";
+    const std::string type = export_type(format);
     const auto found = session.data_units.find(static_cast<int>(unit));
     std::string units;
     for (const auto& [n, f] : session.data_units) units += (units.empty() ? "" : ", ") + std::to_string(n) + " (" + f.type + ")";
@@ -38,7 +44,7 @@ std::filesystem::path mesh_path(const Args& args, const Session& session, const 
   }
   if (unit == 20) {
     std::filesystem::path p = session.deck_path;
-    p.replace_extension(format == "GMSH" ? ".msh" : ".med");
+    p.replace_extension(format == "GMSH" ? ".msh" : format == "ASTER" ? ".mail" : ".med");
     return p;
   }
   return session.deck_path.parent_path() / ("fort." + std::to_string(unit));
@@ -51,6 +57,8 @@ std::vector<int> read_mesh_file(const Args& args, const std::string& format, con
                                 engine::Mesh& mesh) {
   if (format == "GMSH") {
     mesh = engine::read_gmsh(path.string());
+  } else if (format == "ASTER") {
+    mesh = engine::read_aster_mail(path.string());
   } else {
     try {
       mesh = engine::read_med(path.string(), args.has("NOM_MED") ? args.text("NOM_MED") : std::string());
@@ -62,11 +70,51 @@ std::vector<int> read_mesh_file(const Args& args, const std::string& format, con
   return engine::orient_cells(mesh, path.string());
 }
 
+/// The first ten of `items`, by `name`, comma-separated.
+template <class T, class Name>
+std::string first_names(const std::vector<T>& items, Name name) {
+  std::string out;
+  for (size_t i = 0; i < items.size() && i < 10; ++i) out += (i ? ", " : "") + name(items[i]);
+  return items.size() > 10 ? out + ", ..." : out;
+}
+
+/// VERI_MAIL: code_aster's checks of a mesh read, as warnings. Without VERI_MAIL only the nodes in
+/// no cell are reported; VERIF='NON' reports nothing.
+void verify_mesh(const Args& args, Session& session, const engine::Mesh& mesh, const std::filesystem::path& path) {
+  const bool given = args.count("VERI_MAIL") > 0;
+  if (given && args.factor("VERI_MAIL").text("VERIF") == "NON") return;
+  const std::string file = "mesh file '" + path.string() + "': ";
+  const auto node_name = [&](int n) { return mesh.node_names[n]; };
+  const auto cell_name = [&](int c) { return mesh.cell_names[c]; };
+  if (const auto orphans = engine::unreferenced_nodes(mesh); !orphans.empty())
+    session.warn(file + std::to_string(orphans.size()) + " node(s) belong to no cell and carry no unknown: " +
+                 first_names(orphans, node_name));
+  if (!given) return;
+  if (const auto twice = engine::cells_repeating_a_node(mesh); !twice.empty())
+    session.warn(file + std::to_string(twice.size()) + " cell(s) list a node twice (VERI_MAIL): " +
+                 first_names(twice, cell_name));
+  if (const auto doubles = engine::duplicate_cells(mesh); !doubles.empty())
+    session.warn(file + std::to_string(doubles.size()) + " pair(s) of cells of one type on the same nodes (VERI_MAIL): " +
+                 first_names(doubles, [&](const std::pair<int, int>& p) {
+                   return mesh.cell_names[p.first] + " = " + mesh.cell_names[p.second];
+                 }));
+  const double aplat = args.factor("VERI_MAIL").real("APLAT");
+  if (const auto flat = engine::flat_cells(mesh, aplat); !flat.empty())
+    session.warn(file + std::to_string(flat.size()) + " flat cell(s), shortest over longest distance between their nodes below APLAT = " +
+                 number_text(aplat) + " (VERI_MAIL): " +
+                 first_names(flat, [&](const std::pair<int, double>& f) {
+                   return mesh.cell_names[f.first] + " (" + number_text(f.second) + ")";
+                 }));
+}
+
 }  // namespace
 
 ConceptPtr lire_maillage(const Args& args, Session& session) {
   Session::Timer timer(session, "read");
   const std::string format = args.text("FORMAT");
+  if (format != "MED" && args.has("NOM_MED"))
+    throw args.error("NOM_MED", "no NOM_MED with FORMAT='" + format + "' (the file holds one mesh)",
+                     "NOM_MED='" + args.text("NOM_MED") + "'", {"remove NOM_MED, or read a MED file (FORMAT='MED')"});
   const std::filesystem::path path = mesh_path(args, session, format);
   auto result = std::make_shared<Maillage>();
   result->source_file = path.string();
@@ -115,13 +163,7 @@ ConceptPtr lire_maillage(const Args& args, Session& session) {
   // What the log says of the mesh is said of the whole mesh (rank 0 holds it with a part).
   const auto& mesh = result->whole ? *result->whole : *result->mesh;
   if (result->part && !result->whole) return result;  // a rank other than 0 logs nothing
-  if (const auto orphans = engine::unreferenced_nodes(mesh); !orphans.empty()) {
-    std::string names;
-    for (size_t i = 0; i < orphans.size() && i < 10; ++i) names += (i ? ", " : "") + mesh.node_names[orphans[i]];
-    if (orphans.size() > 10) names += ", ...";
-    session.warn("mesh file '" + path.string() + "': " + std::to_string(orphans.size()) +
-                 " node(s) belong to no cell and carry no unknown: " + names);
-  }
+  verify_mesh(args, session, mesh, path);
   session.log().info("  mesh " + path.filename().string() + ": " + std::to_string(mesh.n_nodes()) + " nodes, " +
                      std::to_string(mesh.n_cells()) + " cells, dimension " + std::to_string(mesh.dim));
   if (result->part)

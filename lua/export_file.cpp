@@ -26,6 +26,7 @@ constexpr FileType kFileTypes[] = {
     {"mmed", 'D', "a MED mesh, read by LIRE_MAILLAGE(UNITE=n, FORMAT='MED')"},
     {"med", 'D', "a MED mesh, as 'mmed'", "mmed"},
     {"msh", 'D', "a Gmsh mesh, read by LIRE_MAILLAGE(UNITE=n, FORMAT='GMSH')"},
+    {"mail", 'D', "a mesh in code_aster's text format, read by LIRE_MAILLAGE(UNITE=n, FORMAT='ASTER')"},
     {"datg", 'D', "the script that generated the study's mesh (Gibi, SALOME), kept with the study for the record: "
                   "skipped, with a line in the log", nullptr, true},
     {"rmed", 'R', "a MED result file, written by IMPR_RESU(UNITE=n, FORMAT='MED') in the output folder"},
@@ -51,7 +52,6 @@ std::string supported_list() {
 
 /// Why lunaster refuses a file type code_aster knows, where a hint helps.
 std::string refusal_hint(const std::string& type) {
-  if (type == "mail") return "convert the mesh to MED (code_aster: IMPR_RESU(FORMAT='MED') of the mesh) and use 'F mmed'";
   if (type == "mgib" || type == "msup")
     return std::string(type == "mgib" ? "a Gibi" : "an I-DEAS universal") + " mesh, which code_aster reads with " +
            (type == "mgib" ? "PRE_GIBI" : "PRE_IDEAS") + ": convert it to MED (with code_aster: " +

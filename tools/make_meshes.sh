@@ -65,6 +65,11 @@ done
 for t in hexa8 hexa20 penta6 penta15 tetra4 tetra10; do
   "$gen" --block "$t:2" --distort 0.15 -o "$m/patch_$t.med"
 done
+# The same in code_aster's text format, for the quadratic 3D cells (testcases/aster_mail.lua)
+for t in hexa20 penta15 tetra10; do
+  "$gen" --block "$t:2" --distort 0.15 -o "$m/patch_$t.mail"
+done
+"$gen" --upper quad4:12 --lower quad4:11 -o "$m/ssnp121a.mail"
 
 # Axisymmetric (AXIS, x = r) patch tests away from the axis: distorted blocks [1,2]x[0,1]. The
 # patch_*.med blocks above ([0,1]^2, LEFT on x = 0) are the patches touching the axis.

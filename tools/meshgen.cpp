@@ -11,6 +11,7 @@
 #include "engine/io/gmsh_reader.hpp"
 #include "engine/io/med_reader.hpp"
 #include "engine/io/med_writer.hpp"
+#include "tools/aster_mail_writer.hpp"
 #include "tools/gmsh_writer.hpp"
 #include "tools/hertz_mesh.hpp"
 #include "tools/ssnp121_mesh.hpp"
@@ -57,6 +58,7 @@ const char* kUsage =
     "  --test-result adds an analytic result RESU (2 steps, DEPL and SIGM_ELNO) for interop tests\n"
     "  --mirror GROUP[,GROUP] lists the volume cells of these groups in mirror order (clockwise in 2D) and\n"
     "      reverses the boundary cells on them, as Gmsh does for a clockwise curve loop\n"
+    "  -o FILE.mail writes code_aster's text format instead of MED\n"
     "  -o FILE.msh writes Gmsh ASCII instead of MED (--msh-version 2.2 or 4.1, default 4.1; node groups\n"
     "      become physical point groups)\n";
 
@@ -296,7 +298,12 @@ int run(int argc, char** argv) {
     tools::mirror_cell_groups(mesh, groups);
   }
   const bool gmsh = out.size() > 4 && out.substr(out.size() - 4) == ".msh";
-  if (gmsh) {
+  const bool mail = out.size() > 5 && out.substr(out.size() - 5) == ".mail";
+  if (mail) {
+    if (o.test_result || !get("--msh-version").empty())
+      throw DeckError("meshgen: --test-result and --msh-version need a .med or .msh output");
+    tools::write_aster_mail(out, mesh);
+  } else if (gmsh) {
     if (o.test_result) throw DeckError("meshgen: --test-result needs a .med output");
     tools::write_gmsh(out, mesh, get("--msh-version").empty() ? "4.1" : get("--msh-version"));
   } else {

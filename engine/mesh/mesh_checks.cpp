@@ -47,4 +47,57 @@ double coincidence_tolerance(const Mesh& mesh, const std::vector<int>& cells) {
   return longest > 0.0 ? 1e-8 * longest : 1e-12;
 }
 
+std::vector<int> cells_repeating_a_node(const Mesh& mesh) {
+  std::vector<int> out;
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    std::vector<int> nodes(mesh.cell(c), mesh.cell(c) + mesh.cell_n_nodes(c));
+    std::sort(nodes.begin(), nodes.end());
+    if (std::adjacent_find(nodes.begin(), nodes.end()) != nodes.end()) out.push_back(c);
+  }
+  return out;
+}
+
+std::vector<std::pair<int, int>> duplicate_cells(const Mesh& mesh) {
+  std::vector<std::pair<std::vector<int>, int>> keys(static_cast<size_t>(mesh.n_cells()));
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    auto& [nodes, cell] = keys[c];
+    nodes.assign(mesh.cell(c), mesh.cell(c) + mesh.cell_n_nodes(c));
+    std::sort(nodes.begin(), nodes.end());
+    nodes.push_back(static_cast<int>(mesh.cell_types[c]));  // one type only
+    cell = c;
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::pair<int, int>> out;
+  for (size_t i = 0; i < keys.size();) {
+    size_t j = i + 1;
+    while (j < keys.size() && keys[j].first == keys[i].first) {
+      out.emplace_back(keys[i].second, keys[j].second);
+      ++j;
+    }
+    i = j;
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<std::pair<int, double>> flat_cells(const Mesh& mesh, double ratio) {
+  std::vector<std::pair<int, double>> out;
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    const int* nodes = mesh.cell(c);
+    const int n = mesh.cell_n_nodes(c);
+    double shortest = HUGE_VAL, longest = 0.0;
+    for (int a = 0; a < n; ++a)
+      for (int b = a + 1; b < n; ++b) {
+        const double* p = mesh.node(nodes[a]);
+        const double* q = mesh.node(nodes[b]);
+        const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
+        shortest = std::min(shortest, d2);
+        longest = std::max(longest, d2);
+      }
+    if (n < 2 || longest <= 0.0) continue;
+    if (const double r = std::sqrt(shortest / longest); r < ratio) out.emplace_back(c, r);
+  }
+  return out;
+}
+
 }  // namespace lunaster::engine

@@ -22,3 +22,8 @@ lunaster_log_test(warning.ssnp121a_mortar_relation ${CMAKE_SOURCE_DIR}/testcases
   "deck;warning"
   "<A> mortar contact: a linear relation ties the displacement along the contact normal of slave node\\(s\\) N1 \\(DY\\):.*lunaster: 16 check\\(s\\) OK, 0 NOOK"
   "contact normal of slave node.*contact normal of slave node")
+
+# LIRE_MAILLAGE VERI_MAIL (testcases/veri_mail.lua): VERIF='NON' warns of nothing, no VERI_MAIL of the
+# node in no cell only (no warning between the readings: [^<]), VERIF='OUI' of it, of the edge written twice and of the flat triangle.
+lunaster_log_test(warning.veri_mail ${CMAKE_SOURCE_DIR}/testcases/veri_mail.lua "deck;warning"
+  "VERIF='NON' } }\n  mesh veri_mail\\.mail: [^<]*LIRE_MAILLAGE{[^\n]*UNITE=20 }\n<A> [^\n]*: 1 node\\(s\\) belong to no cell and carry no unknown: N9\n  mesh veri_mail\\.mail: [^<]*VERIF='OUI' } }\n<A> [^\n]*: N9\n<A> [^\n]*: 1 pair\\(s\\) of cells of one type on the same nodes \\(VERI_MAIL\\): S1 = S2\n<A> [^\n]*: 1 flat cell\\(s\\), shortest over longest distance between their nodes below APLAT = 0\\.001 \\(VERI_MAIL\\): T1 \\(0\\.0001\\)\n.*lunaster: 6 check\\(s\\) OK, 0 NOOK")

@@ -79,8 +79,7 @@ TEST(ExportFile, RefusesWhatItCannotHonourNamingTheLine) {
     EXPECT_NE(message.find(where), std::string::npos) << message;
     EXPECT_NE(message.find(what), std::string::npos) << message;
   };
-  expect(comm + "F mail mesh.mail D 20\n", "case.export:2: ", "file type 'mail' (unit 20) is not supported");
-  expect(comm + "F mail mesh.mail D 20\n", "case.export:2: ", "convert the mesh to MED");
+  expect(comm + "F mgib mesh.mgib D 19\n", "case.export:2: ", "convert it to MED");
   expect(comm + "F base base R 0\n", "case.export:2: ", "POURSUITE is not supported");
   expect(comm + "F libr data.txt D 33\n", "case.export:2: ", "lunaster reads the file types comm (D), mmed (D)");
   expect(comm + "F mmed mesh.med D 20\nF rmed out.rmed R 20\n", "case.export:3: ", "unit 20 is given twice; first on line 2");
@@ -106,7 +105,7 @@ TEST(ExportFile, RefusesWhatItCannotHonourNamingTheLine) {
   };
   for (const auto& [line, what] : needed) expect(comm + line + "\n", "case.export:2: ", what);
   // The skipped types are not offered as types lunaster reads.
-  EXPECT_EQ(export_error(comm + "F mail m.mail D 20\n").find("datg"), std::string::npos);
+  EXPECT_EQ(export_error(comm + "F mgib m.mgib D 19\n").find("datg"), std::string::npos);
   EXPECT_EQ(export_error(comm + "F mmed mesh.med D 20\n# a comment\n"), "");
 }
 
@@ -130,6 +129,16 @@ TEST(ExportFile, SkipsTheFilesTheStudyNeverReadsAndReadsMedAsMmed) {
   EXPECT_EQ(study.data.at(20).type, "mmed");
   EXPECT_EQ(study.data.at(20).line, 3);
   EXPECT_TRUE(study.results.empty());
+}
+
+TEST(ExportFile, BindsCodeAsterTextMeshesToTheirUnit) {
+  const fs::path dir = scratch("mail");
+  write(dir / "case.comm", "DEBUT()\n");
+  write(dir / "m.mail", "");
+  const auto study = read_export(write(dir / "case.export", "F comm case.comm D 1\nF mail m.mail D 21\n"));
+  ASSERT_EQ(study.data.size(), 1u);
+  EXPECT_EQ(study.data.at(21).type, "mail");
+  EXPECT_EQ(study.data.at(21).path, dir / "m.mail");
 }
 
 TEST(ExportFile, VerifyRunsAnExportInsteadOfItsCommAndKeepsOutputFoldersApart) {
