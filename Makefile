@@ -14,11 +14,20 @@ build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
 	cmake --build $(BUILD) -j $(JOBS)
 
+# What `make verify` runs and nothing more: the launcher, the engine, the mesh generator and the
+# PETSc module the decks load. The unit tests stay configured (LUNASTER_TESTS) and `make test`
+# builds them.
+VERIFY_TARGETS = lunaster lunaster-engine lunaster-meshgen lunaster_petsc
+.PHONY: build-verify
+build-verify: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
+	cmake --build $(BUILD) -j $(JOBS) --target $(VERIFY_TARGETS)
+
 # Runs every deck of testcases/ and prints the TEST_RESU report; each deck gets 300 s and half of
 # the machine's memory unless its header (-- lunaster: time_limit=S memory_limit=MB) says otherwise.
 # The code_aster cases of testcases/comm/ carry code_aster's VALE_CALC: they are reported against
 # lunaster's values (--vale-calc=report); their analytical VALE_REFE checks decide.
-verify: build
+verify: build-verify
 	$(BUILD)/lunaster verify testcases -j $(JOBS) --vale-calc=report --junit $(BUILD)/verify-junit.xml --json $(BUILD)/verify.json
 
 # Unit tests (GoogleTest) and the deck suite under CTest; the MPI suites over testcases/ on their

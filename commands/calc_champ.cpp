@@ -28,7 +28,7 @@ engine::Vector displacement_vector(const engine::DofMap& dofs, const engine::Nod
   return u;
 }
 
-std::vector<size_t> selected_steps(const Args& args, const EvolNoli& resu) {
+std::vector<size_t> calc_steps(const Args& args, const EvolNoli& resu) {
   std::vector<size_t> out;
   for (size_t i = 0; i < resu.steps.size(); ++i) {
     const auto& s = resu.steps[i];
@@ -59,7 +59,7 @@ ConceptPtr calc_champ(const Args& args, Session& session) {
   auto want = [&](const char* name) { return std::find(wanted.begin(), wanted.end(), name) != wanted.end(); };
   const engine::FeModel model = build_fe_model(*resu->modele, *resu->cham_mater, args, "RESULTAT");
   const engine::DofMap dofs(*model.mesh, model.volume_cells(), model.dim);
-  const std::vector<size_t> chosen = selected_steps(args, *resu);
+  const std::vector<size_t> chosen = calc_steps(args, *resu);
   // On a mesh in parts each rank computes its part: its own cells' forces summed into the owners
   // and copied to the ghosts through the halo of its unknowns, every cell's stresses (a part
   // holds all the nodes of its cells), nodal means from the owners.

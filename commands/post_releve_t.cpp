@@ -15,7 +15,7 @@ namespace lunaster::cmd {
 
 namespace {
 
-std::vector<const engine::ResultStep*> selected_steps(const Args& occ, const EvolNoli& resu) {
+std::vector<const engine::ResultStep*> releve_steps(const Args& occ, const EvolNoli& resu) {
   std::vector<const engine::ResultStep*> out;
   if (occ.has("NUME_ORDRE")) {
     for (long long order : occ.integers("NUME_ORDRE")) {
@@ -119,7 +119,7 @@ void add_action(const Args& occ, Table& table) {
   const engine::MeshPart* part = resu->modele->maillage->part.get();
   if (part) agree_over_ranks(nullptr);
   const bool extraction = occ.text("OPERATION") == "EXTRACTION" && !occ.has("RESULTANTE");
-  for (const engine::ResultStep* step : selected_steps(occ, *resu)) {
+  for (const engine::ResultStep* step : releve_steps(occ, *resu)) {
     const engine::NodalField& field = field_of(occ, *step);
     std::vector<std::string> names;
     const std::vector<int> cmps = component_columns(occ, field, names);
