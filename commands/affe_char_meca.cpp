@@ -95,11 +95,11 @@ void read_pres_rep(const Args& occ, const Modele& mo, CharMeca& load, std::vecto
   if (!facing) return;
   if (occ.has("GROUP_MA")) {
     for (const auto& name : occ.texts("GROUP_MA")) {
-      facing->push_back({occ, "GROUP_MA", name});
+      facing->push_back({occ, "GROUP_MA", name, 0.0, 0.0, {}});
       count_facing(mo, cell_group(occ, "GROUP_MA", mesh, name), facing->back());
     }
   } else {
-    facing->push_back({occ, occ.has("MAILLE") ? "MAILLE" : "TOUT", ""});
+    facing->push_back({occ, occ.has("MAILLE") ? "MAILLE" : "TOUT", "", 0.0, 0.0, {}});
     count_facing(mo, cells, facing->back());
   }
 }

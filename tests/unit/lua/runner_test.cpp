@@ -219,7 +219,7 @@ TEST_F(RunnerTest, HandlerErrorsKeepTheirKeywordPath) {
 
 TEST_F(RunnerTest, ErrorsInsideUserFunctionsPointAtTheCall) {
   std::string err = run("local function mesh()\n  return LIRE_MAILLAGE{ FORMAT = 'MEDD' }\nend\nMA = mesh()\n");
-  EXPECT_EQ(err, "t.lua:2: LIRE_MAILLAGE: FORMAT: expected one of 'MED', 'GMSH', got 'MEDD'\n    did you mean 'MED'?");
+  EXPECT_EQ(err, "t.lua:2: LIRE_MAILLAGE: FORMAT: expected one of 'MED', 'GMSH', 'ASTER', got 'MEDD'\n    did you mean 'MED'?");
   err = run("local function f(x)\n  return x.y + 1\nend\nf({})\n");
   EXPECT_EQ(err.substr(0, 45), "t.lua:2: attempt to perform arithmetic on a n");
   EXPECT_EQ(kind, ErrorKind::Deck);
