@@ -25,10 +25,10 @@ build-verify: deps
 
 # Runs every deck of testcases/ and prints the TEST_RESU report; each deck gets 300 s and half of
 # the machine's memory unless its header (-- lunaster: time_limit=S memory_limit=MB) says otherwise.
-# The code_aster cases of testcases/comm/ carry code_aster's VALE_CALC: they are reported against
-# lunaster's values (--vale-calc=report); their analytical VALE_REFE checks decide.
+# The code_aster cases of testcases/comm/ carry code_aster's VALE_CALC: verify reports them against
+# lunaster's values by default; their analytical VALE_REFE checks decide (--vale-calc=check counts them).
 verify: build-verify
-	$(BUILD)/lunaster verify testcases -j $(JOBS) --vale-calc=report --junit $(BUILD)/verify-junit.xml --json $(BUILD)/verify.json
+	$(BUILD)/lunaster verify testcases -j $(JOBS) --junit $(BUILD)/verify-junit.xml --json $(BUILD)/verify.json
 
 # Unit tests (GoogleTest) and the deck suite under CTest; the MPI suites over testcases/ on their
 # representative decks (tests/mpi/mpi_runs.py REPRESENTATIVE).
