@@ -36,7 +36,8 @@ for _, mesh in ipairs({ { 'MED', 'ssnp121a.med' }, { 'ASTER', 'meshes/ssnp121a.m
                               CONVERGENCE = _F{ RESI_GLOB_MAXI = 2e-8, ITER_GLOB_MAXI = 30 } }
   local checks = {}
   for _, point in ipairs({ 'A', 'O', 'B' }) do
-    for cmp, refe in pairs({ DY = -0.05, LAGS_C = -1.0e5 }) do
+    for _, c in ipairs({ { 'DY', -0.05 }, { 'LAGS_C', -1.0e5 } }) do  -- in this order: the checks' order is compared
+      local cmp, refe = c[1], c[2]
       checks[#checks + 1] = _F{ RESULTAT = RESU, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', GROUP_NO = point, NOM_CMP = cmp,
                                 VALE_CALC = calc[point][cmp], REFERENCE = 'ANALYTIQUE', VALE_REFE = refe,
                                 PRECISION = 1.0e-2, LEGENDE = 'SSNP121 A, ' .. mesh[2] }

@@ -23,7 +23,7 @@ R = CALC_CHAMP{ reuse = R, RESULTAT = R, FORCE = 'REAC_NODA' }
 T = POST_RELEVE_T{ ACTION = _F{ OPERATION = 'EXTRACTION', INTITULE = 'BASE', RESULTAT = R, NOM_CHAM = 'REAC_NODA',
                                 GROUP_NO = 'BOTTOM', RESULTANTE = { 'DX', 'DY', 'DZ' } } }
 for _, cmp in ipairs({ 'DX', 'DY', 'DZ' }) do
-  for order, scale in pairs({ [1] = 0.5, [2] = 1.0 }) do
+  for order, scale in ipairs({ 0.5, 1.0 }) do
     local refe = -F[cmp] * 2.0 * scale
     TEST_TABLE{ TABLE = T, NOM_PARA = cmp, FILTRE = _F{ NOM_PARA = 'NUME_ORDRE', VALE_I = order },
                 REFERENCE = 'ANALYTIQUE', VALE_REFE = refe, PRECISION = 1.0e-10 }

@@ -70,7 +70,8 @@ for _, kind in ipairs({ 'PRES_REP', 'FORCE_CONTOUR' }) do
                                 or AFFE_CHAR_MECA{ MODELE = MO, FORCE_CONTOUR = _F{ GROUP_MA = 'LEFT', FX = P } }
   local R = solve(MO, CM, { BC, CH })
   local checks = {}
-  for node, r in pairs({ C00 = A, C10 = B }) do
+  for _, n in ipairs({ { 'C00', A }, { 'C10', B } }) do  -- in this order: the checks' order is compared
+    local node, r = n[1], n[2]
     checks[#checks + 1] = _F{ RESULTAT = R, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', NOM_CMP = 'DX', GROUP_NO = node,
                               LEGENDE = 'AXIS ' .. kind, REFERENCE = 'ANALYTIQUE', VALE_REFE = ur(r),
                               PRECISION = 1.0e-9, VALE_CALC = calc[node] }
