@@ -388,10 +388,11 @@ def med_datasets(path):
     return out
 
 
-def same_med(a, b, field_scale=False):
-    """Differences between two MED files: the same datasets and attributes, floats to 1e-8 (of
-    themselves or 1e-8; with `field_scale`, or of the largest value of their dataset: a value zero
-    analytically is round-off of its field's size, which two solvers give differently)."""
+def same_med(a, b, field_scale=False, rel=1e-8, least_scale=1.0):
+    """Differences between two MED files: the same datasets and attributes, floats to `rel` (of
+    themselves or `rel`; with `field_scale`, or of the largest value of their dataset: a value zero
+    analytically is round-off of its field's size, which two solvers give differently; a dataset's
+    scale is at least `least_scale`)."""
     import numpy
 
     da, db = med_datasets(a), med_datasets(b)
@@ -404,8 +405,8 @@ def same_med(a, b, field_scale=False):
             problems.append(f"{key}: {x.dtype}{x.shape} against {y.dtype}{y.shape}")
         elif numpy.issubdtype(x.dtype, numpy.floating):
             n_values += x.size
-            floor = 1e-8 * max(float(numpy.abs(x).max(initial=0.0)), 1.0) if field_scale else 1e-8
-            bad = numpy.abs(x - y) > numpy.maximum(1e-8 * numpy.maximum(numpy.abs(x), numpy.abs(y)), floor)
+            floor = rel * max(float(numpy.abs(x).max(initial=0.0)), least_scale) if field_scale else rel
+            bad = numpy.abs(x - y) > numpy.maximum(rel * numpy.maximum(numpy.abs(x), numpy.abs(y)), floor)
             if bad.any():
                 i = int(numpy.argmax(bad.ravel()))
                 problems.append(f"{key}: {int(bad.sum())} value(s) differ, first {x.ravel()[i]!r} against {y.ravel()[i]!r}")
@@ -414,9 +415,9 @@ def same_med(a, b, field_scale=False):
     return problems, len(da), n_values
 
 
-def same_table(a, b):
+def same_table(a, b, rel=1e-8):
     """Differences between two text results (IMPR_RESU FORMAT='RESULTAT', IMPR_TABLE): the same text
-    but numbers, each to 1e-8 of itself or of the largest value of its field at its step (of the
+    but numbers, each to `rel` of itself or of the largest value of its field at its step (of the
     file, for a table)."""
     number = re.compile(r"[-+]?\d+\.\d+[eE][-+]\d+")
     la, lb = a.read_text().splitlines(), b.read_text().splitlines()
@@ -432,7 +433,7 @@ def same_table(a, b):
         nx, ny = number.findall(x), number.findall(y)
         if number.sub("#", x).split() != number.sub("#", y).split():  # a sign moves the column's spaces
             problems.append(f"line {k + 1}: {x!r} against {y!r}")
-        elif any(abs(float(u) - float(v)) > max(1e-8 * max(abs(float(u)), abs(float(v))), 1e-8 * scale)
+        elif any(abs(float(u) - float(v)) > max(rel * max(abs(float(u)), abs(float(v))), rel * scale)
                  for u, v in zip(nx, ny)):
             problems.append(f"line {k + 1}: {x!r} against {y!r}")
     return problems
