@@ -50,6 +50,7 @@ with `full` every deck of their matrix.
 mpirun settings for a root user on a small machine are set here (never in lunaster), each one
 kept if the environment gives it.
 """
+import concurrent.futures
 import json
 import math
 import os
@@ -82,6 +83,7 @@ for key, value in {
     ENV.setdefault(key, value)
 # The end-of-run wait of a rank that stopped on an error (lua/main.cpp kRankWaitSeconds).
 RANK_WAIT_SECONDS = 10.0
+WAITERS = concurrent.futures.ThreadPoolExecutor(max_workers=2)  # runs that mostly wait
 
 
 def check(condition, what):
@@ -899,6 +901,22 @@ def errors(exe, source, scratch):
 # ---------------------------------------------------------------------------------------------
 def rank_failure(exe, meshgen, source, scratch):
     scratch.mkdir(parents=True)
+    # A deck error on one rank while the other waits for it in MUMPS: the failing rank waits
+    # RANK_WAIT_SECONDS for the others at the end of its run, then aborts the run with its status.
+    # Those two runs mostly wait (the waiting ranks yield their core): they run beside the time
+    # and memory limits below, not after them, and are checked at the end.
+    error_deck = source / "testcases" / "errors" / "misspelt_keyword.lua"
+    good_deck = source / "testcases" / "ssnp121a.lua"
+    # Each mpirun at once has a session directory of its own (see main).
+    waiting, sessions = {}, []
+    for failing in (0, 1):
+        args = [["run", good_deck, "--out", f"o{failing}"], ["run", good_deck, "--out", f"o{failing}"]]
+        args[failing][1] = error_deck
+        sessions.append(tempfile.mkdtemp(prefix="lunaster-ompi-"))
+        env = dict(ENV, OMPI_MCA_orte_tmpdir_base=sessions[-1])
+        waiting[failing] = WAITERS.submit(run, mpmd(exe, args[0], args[1], scratch / f"alone{failing}.logs"), scratch,
+                                          env=env, timeout=120)
+
     deck = scratch / "refined.lua"  # about 3.6 s and 590 MB serially; MUMPS (collective) for its contact system
     shutil.copy(source / "tests" / "bench" / "ssnp121i_refined.lua", deck)
     # Refinement 5, as budget.long_solve: at 4 the solve ends within about a second since its
@@ -937,14 +955,9 @@ def rank_failure(exe, meshgen, source, scratch):
         check(re.search(memory, out + err) is not None and ((f"lunaster: rank {failing}:" in out + err) == (failing > 0)),
               f"the memory message is printed (by rank {failing}{', which says so' if failing else ''})")
 
-    # A deck error on one rank while the other waits for it in MUMPS: the failing rank waits
-    # RANK_WAIT_SECONDS for the others at the end of its run, then aborts the run with its status.
-    error_deck = source / "testcases" / "errors" / "misspelt_keyword.lua"
-    good_deck = source / "testcases" / "ssnp121a.lua"
     for failing in (0, 1):
-        args = [["run", good_deck, "--out", "o"], ["run", good_deck, "--out", "o"]]
-        args[failing][1] = error_deck
-        code, out, err, seconds = run(mpmd(exe, args[0], args[1], scratch / f"alone{failing}.logs"), scratch, timeout=120)
+        code, out, err, seconds = waiting[failing].result()
+        shutil.rmtree(sessions[failing], ignore_errors=True)
         text = out + err
         check(code == 2 and RANK_WAIT_SECONDS - 1 < seconds,
               f"a deck error on rank {failing} alone ends the run: exit 2 after the wait ({seconds:.1f} s)")
