@@ -35,8 +35,11 @@ verify: build-verify
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE mpi_full
 
-# The MPI suites' full matrix: every deck of testcases/ on 1, 2 and 3 ranks (CTest label mpi_full).
+# The MPI suites' full matrix: every deck of testcases/ on 1, 2 and 3 ranks (CTest label mpi_full),
+# after building the benchmark programs (tests/bench: no test runs them; built here so that CI
+# compiles them).
 test-mpi-full: build
+	cmake --build $(BUILD) -j $(JOBS) --target benchmarks
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L mpi_full
 
 # The whole suite under AddressSanitizer + UBSan. -O1 keeps the deck suite fast enough;
