@@ -516,7 +516,7 @@ def outputs(exe, source, scratch):
 # The decks of testcases/ that are linear elasticity with what a mesh in parts takes today
 # (docs/distributed-model.md, step 4): their meshes are read in parts for parts_suite.
 PARTS_DECKS = ["patch_2d", "patch_3d", "axis_patch", "axis_thick_cylinder", "clockwise_2d_pressure", "glued_ssnp121_2d",
-               "glued_ssnp121_3d", "reactions_tables", "force_face", "pesanteur"]
+               "glued_ssnp121_3d", "reactions_tables", "force_face", "pesanteur", "first_deck"]
 # What a deck of linear elasticity alone does not use (contact_parts_suite takes the decks of
 # contact and of linear relations; parts_suite's 'mesure' case runs IMPR_MESURE).
 BEYOND_ELASTICITY = re.compile(r"\b(IMPR_MESURE|DEFI_CONTACT|DEFI_CONT|CONTACT|LIAISON_DDL|LIAISON_UNIF|LIAISON_MAIL)\b")

@@ -13,7 +13,7 @@ using namespace contact_test;
 
 namespace {
 
-constexpr double kYoung = 2.0e6;
+constexpr double kSolveYoung = 2.0e6;
 
 
 NewtonOptions auto_solver() {
@@ -39,7 +39,7 @@ void expect_same(const SolveResult& a, const SolveResult& b, const char* what) {
 
 TEST(ContactInterfaceSolve, EveryLawGivesTheWholeSystemAnswer) {
   const TwoBlocks tb = make_two_blocks(48, 44, false);
-  const FeModel model = make_model(tb.mesh, kYoung, 0.0);
+  const FeModel model = make_model(tb.mesh, kSolveYoung, 0.0);
   struct Case { ContactMethod method; ContactInit init; const char* name; };
   for (const Case& c : {Case{ContactMethod::Continuous, ContactInit::No, "CONTINUE, CONTACT_INIT='NON'"},
                         Case{ContactMethod::Continuous, ContactInit::Yes, "CONTINUE, CONTACT_INIT='OUI'"},
@@ -68,7 +68,7 @@ TEST(ContactInterfaceSolve, ABodyHeldByContactAloneIsSolvedWhole) {
   // SSNP121 G: the upper block under pressure, held only by contact (and DX at one node):
   // without contact its stiffness is singular, so no elastic factorisation can be kept.
   const TwoBlocks tb = make_two_blocks(48, 44, false);
-  const FeModel model = make_model(tb.mesh, kYoung, 0.0);
+  const FeModel model = make_model(tb.mesh, kSolveYoung, 0.0);
   const ContactDefinition def = zone_ab_on_ef(tb, ContactMethod::Continuous, ContactInit::Yes);
   std::vector<Imposed> bcs = {{tb.cd_nodes[0], DX, 0.0}};
   for (int n : tb.gh_nodes) bcs.push_back({n, DX, 0.0}), bcs.push_back({n, DY, 0.0});
@@ -85,7 +85,7 @@ TEST(ContactInterfaceSolve, TheNormalComponentsAloneWhereTheWholeSurfacesAreTooM
   // DY and the LAGS_C: 25 equations, and the answer is the whole system's. With
   // CONTACT_INIT='NON' the first solve has no contact term: the normals decide alone.
   const TwoBlocks tb = make_two_blocks(8, 6, false);
-  const FeModel model = make_model(tb.mesh, kYoung, 0.0);
+  const FeModel model = make_model(tb.mesh, kSolveYoung, 0.0);
   for (ContactInit init : {ContactInit::Yes, ContactInit::No}) {
     SCOPED_TRACE(init == ContactInit::Yes ? "CONTACT_INIT='OUI'" : "CONTACT_INIT='NON'");
     const ContactDefinition def = zone_ab_on_ef(tb, ContactMethod::Continuous, init);
@@ -106,7 +106,7 @@ TEST(ContactInterfaceSolve, ATermOnAnotherComponentLaterGivesTheInterfaceUp) {
   // the re-pairing on the tilted surfaces reaches DX too. The driver then gives the interface
   // solver up and solves the whole system from that pass on, with the whole system's answer.
   const TwoBlocks tb = make_two_blocks(8, 6, false);
-  const FeModel model = make_model(tb.mesh, kYoung, 0.0);
+  const FeModel model = make_model(tb.mesh, kSolveYoung, 0.0);
   std::vector<Imposed> bcs;
   for (int n : tb.cd_nodes) {
     const double x = tb.mesh.coords[3 * static_cast<std::size_t>(n)];

@@ -15,7 +15,7 @@ using namespace lunaster::engine::contact;
 
 namespace {
 
-const CellType kAll[] = {CellType::Seg2, CellType::Seg3, CellType::Tria3, CellType::Tria6, CellType::Quad4,
+const CellType kEveryCellType[] = {CellType::Seg2, CellType::Seg3, CellType::Tria3, CellType::Tria6, CellType::Quad4,
                          CellType::Quad8};
 
 // Node coordinates of a curved cell: reference node positions mapped by a smooth map.
@@ -36,7 +36,7 @@ std::vector<double> curved_cell(CellType t, double bend) {
 TEST(ContactSurface, ShapeFunctionsInterpolateAndDerivativesMatchFiniteDifferences) {
   std::mt19937 gen(3);
   std::uniform_real_distribution<double> dist(-0.3, 0.3);
-  for (CellType t : kAll) {
+  for (CellType t : kEveryCellType) {
     const int nn = surface_n_nodes(t);
     for (int b = 0; b < nn; ++b) {  // Kronecker property
       double xi[2], n[8];
@@ -85,7 +85,7 @@ TEST(ContactSurface, NormalFollowsNodeOrder) {
 TEST(ContactProjection, RecoversFootOfNormalOnCurvedCells) {
   std::mt19937 gen(7);
   std::uniform_real_distribution<double> dist(-0.8, 0.8), gap(-0.2, 0.2);
-  for (CellType t : kAll) {
+  for (CellType t : kEveryCellType) {
     const std::vector<double> xyz = curved_cell(t, 0.3);
     for (int trial = 0; trial < 20; ++trial) {
       double xi0[2] = {dist(gen), surface_ref_dim(t) == 1 ? 0.0 : dist(gen)};

@@ -28,7 +28,7 @@ struct Case {
   double tolerance;  // on every slave node
 };
 
-Mesh load(const std::string& name) {
+Mesh load_3d_case(const std::string& name) {
   return read_med(std::string(LUNASTER_SOURCE_DIR) + "/testcases/" + name + ".med");
 }
 
@@ -59,7 +59,7 @@ class Ssnp121_3d : public ::testing::TestWithParam<Case> {};
 
 TEST_P(Ssnp121_3d, ReproducesTheUniformPressureOnEverySlaveNode) {
   const Case& c = GetParam();
-  const Mesh mesh = load(c.mesh);
+  const Mesh mesh = load_3d_case(c.mesh);
   const FeModel model = solid_model(mesh);
   ContactDefinition def;
   def.method = ContactMethod::Continuous;
@@ -96,7 +96,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(Ssnp121_3dCompatibility, QuadrangleSlaveOnTria6MasterIsFlagged) {
   for (const char* name : {"ssnp121f_quad8_on_tria6", "ssnp121k_quad4_on_tria6"}) {
-    const Mesh mesh = load(name);
+    const Mesh mesh = load_3d_case(name);
     const ContactZone z = zone_of(mesh, Case{name, IntegrationScheme::Auto, 0, ContactInit::Interpenetrated, 0});
     const auto messages = check_contact_zone_compatibility(mesh, z, 0);
     ASSERT_EQ(messages.size(), 1u) << name;
@@ -107,7 +107,7 @@ TEST(Ssnp121_3dCompatibility, QuadrangleSlaveOnTria6MasterIsFlagged) {
 // A rule with fewer points than a slave cell has LAGS_C unknowns leaves the
 // multipliers under-determined: the continuous method must say so.
 TEST(Ssnp121_3dCompatibility, TooFewIntegrationPointsAreFlagged) {
-  const Mesh mesh = load("ssnp121e");  // TRIA6 slave: 6 LAGS_C per cell
+  const Mesh mesh = load_3d_case("ssnp121e");  // TRIA6 slave: 6 LAGS_C per cell
   ContactZone z = zone_of(mesh, Case{"ssnp121e", IntegrationScheme::Gauss, 3, ContactInit::Interpenetrated, 0});
   auto messages = check_contact_zone_integration(mesh, z, 0);
   ASSERT_EQ(messages.size(), 1u);
@@ -123,7 +123,7 @@ TEST(Ssnp121_3dCompatibility, TooFewIntegrationPointsAreFlagged) {
 // A linear slave integrated at its vertices (AUTO) against a quadratic master leaves the
 // master mid-side nodes unloaded wherever the vertices coincide: the continuous method says so.
 TEST(Ssnp121_3dCompatibility, VertexRuleOnQuadraticMasterIsFlagged) {
-  const Mesh mesh = load("ssnp121i");  // QUAD4 slave SURESC on QUAD8 master SURMAI
+  const Mesh mesh = load_3d_case("ssnp121i");  // QUAD4 slave SURESC on QUAD8 master SURMAI
   ContactZone z = zone_of(mesh, Case{"ssnp121i", IntegrationScheme::Auto, 0, ContactInit::Interpenetrated, 0});
   auto messages = check_contact_zone_integration(mesh, z, 0);
   ASSERT_EQ(messages.size(), 1u);

@@ -17,7 +17,7 @@ using test::BlockBuilder;
 using test::expect_close;
 using test::type_name;
 
-const ElasticMaterial kMat{2.0e6, 0.3, 0.0};
+const ElasticMaterial kAxisMat{2.0e6, 0.3, 0.0};
 const CellType kTypes[] = {CellType::Tria3, CellType::Tria6, CellType::Quad4, CellType::Quad8};
 
 /// A distorted block [x0, x0 + 1] x [0, 1] of `type` (x0 = 0 touches the axis).
@@ -103,25 +103,25 @@ TEST(Axis, UniformRadialDisplacementGivesExactHoopStrain) {
 TEST(Axis, RigidAxialTranslationGivesNoForceButRadialOneDoes) {
   for (CellType t : kTypes) {
     const Mesh mesh = axis_block(t, 1.0);
-    const FeModel model = test::make_model(mesh, 2, Modelisation::Axisymmetric, kMat);
+    const FeModel model = test::make_model(mesh, 2, Modelisation::Axisymmetric, kAxisMat);
     const DofMap dofs(mesh, model.volume_cells(), 2);
     Vector u = Vector::Zero(dofs.n_dofs()), f;
     for (int n = 0; n < mesh.n_nodes(); ++n) u(dofs.dof(n, DY)) = 1.0;
     assemble_internal_forces(model, dofs, u, f);
-    EXPECT_LT(f.cwiseAbs().maxCoeff(), 1e-9 * kMat.young) << type_name(t);
+    EXPECT_LT(f.cwiseAbs().maxCoeff(), 1e-9 * kAxisMat.young) << type_name(t);
     const SparseMatrix k = test::assemble_matrix(model, dofs);
-    EXPECT_LT((k * u).cwiseAbs().maxCoeff(), 1e-9 * kMat.young) << type_name(t);
+    EXPECT_LT((k * u).cwiseAbs().maxCoeff(), 1e-9 * kAxisMat.young) << type_name(t);
     // A uniform radial displacement stretches the hoops: not a rigid motion in AXIS.
     u.setZero();
     for (int n = 0; n < mesh.n_nodes(); ++n) u(dofs.dof(n, DX)) = 1.0;
     assemble_internal_forces(model, dofs, u, f);
-    EXPECT_GT(f.cwiseAbs().maxCoeff(), 1e-3 * kMat.young) << type_name(t);
+    EXPECT_GT(f.cwiseAbs().maxCoeff(), 1e-3 * kAxisMat.young) << type_name(t);
   }
 }
 
 TEST(Axis, ElasticMatrixIsTheRestrictedThreeDimensionalOne) {
-  const Eigen::Matrix4d d = elasticity_axis(kMat);
-  const double e = kMat.young, nu = kMat.poisson;
+  const Eigen::Matrix4d d = elasticity_axis(kAxisMat);
+  const double e = kAxisMat.young, nu = kAxisMat.poisson;
   const double lambda = e * nu / ((1 + nu) * (1 - 2 * nu)), mu = e / (2 * (1 + nu));
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) expect_close(d(i, j), i == j ? lambda + 2 * mu : lambda, 1e-14, 0);
@@ -192,7 +192,7 @@ TEST(Axis, IntegrationPointOnTheAxisIsADeckError) {
   mesh.cell_nodes = {0, 1, 2, 3, 4, 5};
   mesh.cell_offsets = {0, 6};
   mesh.cell_names = {"M1"};
-  const FeModel model = test::make_model(mesh, 2, Modelisation::Axisymmetric, kMat);
+  const FeModel model = test::make_model(mesh, 2, Modelisation::Axisymmetric, kAxisMat);
   const DofMap dofs(mesh, {0}, 2);
   std::vector<Triplet> t;
   try {

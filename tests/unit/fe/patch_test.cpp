@@ -19,7 +19,7 @@ using test::BlockBuilder;
 using test::expect_close;
 using test::type_name;
 
-const ElasticMaterial kMat{1000.0, 0.3, 0.0};
+const ElasticMaterial kPatchMat{1000.0, 0.3, 0.0};
 
 bool on_boundary(const double* x, int dim) {
   for (int d = 0; d < dim; ++d)
@@ -35,12 +35,12 @@ struct LinearField {
   std::vector<double> stress(int dim, Modelisation mod) const {
     const Eigen::Matrix3d e = 0.5 * (a + a.transpose());
     if (dim == 2) {
-      const Eigen::Vector3d s = elasticity_2d(kMat, mod) * Eigen::Vector3d(e(0, 0), e(1, 1), 2 * e(0, 1));
-      return {s(0), s(1), sigma_zz_2d(kMat, mod, s(0), s(1)), s(2)};
+      const Eigen::Vector3d s = elasticity_2d(kPatchMat, mod) * Eigen::Vector3d(e(0, 0), e(1, 1), 2 * e(0, 1));
+      return {s(0), s(1), sigma_zz_2d(kPatchMat, mod, s(0), s(1)), s(2)};
     }
     Eigen::Matrix<double, 6, 1> v;
     v << e(0, 0), e(1, 1), e(2, 2), 2 * e(0, 1), 2 * e(0, 2), 2 * e(1, 2);
-    const Eigen::Matrix<double, 6, 1> s = elasticity_3d(kMat) * v;
+    const Eigen::Matrix<double, 6, 1> s = elasticity_3d(kPatchMat) * v;
     return {s(0), s(1), s(2), s(3), s(4), s(5)};
   }
 };
@@ -63,7 +63,7 @@ void run_patch(CellType type, Modelisation mod) {
   const int dim = block.dim();
   block.fill();
   const Mesh& mesh = block.mesh();
-  const FeModel model = test::make_model(mesh, dim, mod, kMat);
+  const FeModel model = test::make_model(mesh, dim, mod, kPatchMat);
   const DofMap dofs(mesh, model.volume_cells(), dim);
   const SparseMatrix k = test::assemble_matrix(model, dofs);
   const LinearField field = patch_field(dim);
@@ -136,7 +136,7 @@ TEST(Patch, RigidBodyModesHaveNoEnergy) {
       if (dim == 3) x[2] = 1.1 * x2 + 0.1 * x0 - 0.05 * x1;
     }
     block.fill();  // mid-side nodes are created from the moved vertices
-    const FeModel model = test::make_model(m, dim, dim == 2 ? Modelisation::PlaneStrain : Modelisation::Solid3D, kMat);
+    const FeModel model = test::make_model(m, dim, dim == 2 ? Modelisation::PlaneStrain : Modelisation::Solid3D, kPatchMat);
     const DofMap dofs(m, model.volume_cells(), dim);
     const Eigen::MatrixXd k = Eigen::MatrixXd(test::assemble_matrix(model, dofs));
     const double knorm = k.norm();
@@ -180,7 +180,7 @@ void run_pressure_patch(CellType type) {
   block.fill();
   const std::vector<int> top = block.top_faces();
   const Mesh& mesh = block.mesh();
-  const FeModel model = test::make_model(mesh, dim, dim == 2 ? Modelisation::PlaneStrain : Modelisation::Solid3D, kMat);
+  const FeModel model = test::make_model(mesh, dim, dim == 2 ? Modelisation::PlaneStrain : Modelisation::Solid3D, kPatchMat);
   const DofMap dofs(mesh, model.volume_cells(), dim);
   Vector f = Vector::Zero(dofs.n_dofs());
   assemble_pressure(mesh, dim, top, p, dofs, f);
@@ -204,7 +204,7 @@ void run_pressure_patch(CellType type) {
   const ElnoField elno = compute_sigm_elno(model, dofs, u);
   std::vector<double> sigma(elno.n_components(), 0.0);
   sigma[dim - 1] = -p;
-  if (dim == 2) sigma[2] = kMat.poisson * -p;  // plane strain SIZZ
+  if (dim == 2) sigma[2] = kPatchMat.poisson * -p;  // plane strain SIZZ
   for (int c = 0; c < elno.n_cells(); ++c)
     for (int a = 0; a < elno.n_rows(c); ++a)
       for (int k2 = 0; k2 < elno.n_components(); ++k2)

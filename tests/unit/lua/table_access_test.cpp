@@ -25,15 +25,15 @@ catalog::ConceptPtr fake_table(const catalog::Args&, cmd::Session&) {
 }
 
 /// Every other command: a concept of its result type, holding nothing.
-struct FakeConcept : catalog::Concept {
-  explicit FakeConcept(std::string type) : type_(std::move(type)) {}
+struct FakeTableConcept : catalog::Concept {
+  explicit FakeTableConcept(std::string type) : type_(std::move(type)) {}
   std::string type_name() const override { return type_; }
   std::string type_;
 };
 catalog::ConceptPtr fake(const catalog::Args&, cmd::Session& session) {
   const auto* spec = catalog::find_command(session.current.command);
   if (spec->result_type.empty()) return nullptr;
-  return std::make_shared<FakeConcept>(spec->result_type);
+  return std::make_shared<FakeTableConcept>(spec->result_type);
 }
 
 class TableAccess : public ::testing::Test {

@@ -168,7 +168,7 @@ TEST(AsterMail, WriterRoundTripsEveryCellTypeWithNamesAndGroups) {
   EXPECT_THROW(tools::write_aster_mail(dir + "/bad.mail", bad), DeckError);
 }
 
-std::string error_of(const std::string& text) {
+std::string mail_error_of(const std::string& text) {
   try {
     read_aster_mail_text(text, "bad.mail");
   } catch (const DeckError& e) {
@@ -180,7 +180,7 @@ std::string error_of(const std::string& text) {
 TEST(AsterMail, ErrorsNameTheFileAndLine) {
   const std::string nodes = "COOR_2D\n N1 0 0\n N2 1 0\n N3 1 1\n N4 0 1\nFINSF\n";  // lines 1-6
   auto expect = [](const std::string& text, const std::string& what) {
-    const std::string message = error_of(text);
+    const std::string message = mail_error_of(text);
     EXPECT_NE(message.find("'bad.mail'"), std::string::npos) << message;
     EXPECT_NE(message.find(what), std::string::npos) << message;
   };
@@ -214,7 +214,7 @@ TEST(AsterMail, ErrorsNameTheFileAndLine) {
   const std::string good = nodes + "QUAD4\n M1 N1 N2 N3 N4\nFINSF\nGROUP_MA NOM=G\n M1\nFINSF\nFIN\n";
   for (size_t cut = 0; cut + 4 < good.size(); ++cut) {
     if (cut >= 3 && good.compare(cut - 3, 3, "FIN") == 0) continue;
-    const std::string message = error_of(good.substr(0, cut));
+    const std::string message = mail_error_of(good.substr(0, cut));
     EXPECT_NE(message.find("'bad.mail'"), std::string::npos) << cut << ": " << message;
   }
 }

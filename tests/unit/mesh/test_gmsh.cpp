@@ -131,7 +131,7 @@ TEST(Gmsh, Version22TwoDimensionalQuad8) {
   EXPECT_EQ(mesh.cell_groups.at("GM4"), std::vector<int>{1});
 }
 
-std::string error_of(const std::string& text) {
+std::string gmsh_error_of(const std::string& text) {
   try {
     read_gmsh_text(text, "bad.msh");
   } catch (const DeckError& e) {
@@ -142,18 +142,18 @@ std::string error_of(const std::string& text) {
 
 TEST(Gmsh, ErrorsAreDeckErrors) {
   const std::string good = file22(17, gmsh_hexa20());
-  EXPECT_NE(error_of("$MeshFormat\n2.2 1 8\n$EndMeshFormat\n").find("binary"), std::string::npos);
-  EXPECT_NE(error_of("$MeshFormat\n3.0 0 8\n$EndMeshFormat\n").find("version"), std::string::npos);
-  EXPECT_NE(error_of("hello\n").find("not a Gmsh file"), std::string::npos);
-  EXPECT_NE(error_of("").find("bad.msh"), std::string::npos);
+  EXPECT_NE(gmsh_error_of("$MeshFormat\n2.2 1 8\n$EndMeshFormat\n").find("binary"), std::string::npos);
+  EXPECT_NE(gmsh_error_of("$MeshFormat\n3.0 0 8\n$EndMeshFormat\n").find("version"), std::string::npos);
+  EXPECT_NE(gmsh_error_of("hello\n").find("not a Gmsh file"), std::string::npos);
+  EXPECT_NE(gmsh_error_of("").find("bad.msh"), std::string::npos);
   for (size_t cut : {good.size() / 4, good.size() / 2, good.size() - 20})
-    EXPECT_NE(error_of(good.substr(0, cut)).find("bad.msh"), std::string::npos) << cut;
+    EXPECT_NE(gmsh_error_of(good.substr(0, cut)).find("bad.msh"), std::string::npos) << cut;
   std::string unknown_node = good;
   unknown_node.replace(unknown_node.find("5 15 2 7 1 101"), 14, "5 15 2 7 1 999");
-  EXPECT_NE(error_of(unknown_node).find("unknown node 999"), std::string::npos);
+  EXPECT_NE(gmsh_error_of(unknown_node).find("unknown node 999"), std::string::npos);
   std::string quad9 = good;
   quad9.replace(quad9.find("9 17 2"), 6, "9 10 2");
-  EXPECT_NE(error_of(quad9).find("unsupported element type 10"), std::string::npos);
+  EXPECT_NE(gmsh_error_of(quad9).find("unsupported element type 10"), std::string::npos);
   EXPECT_THROW(read_gmsh("/nonexistent/file.msh"), DeckError);
 }
 
