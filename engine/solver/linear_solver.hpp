@@ -8,16 +8,9 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Sparse>
+#include "engine/core/linalg.hpp"
 
 namespace lunaster::engine {
-
-using Vector = Eigen::VectorXd;
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
-using Triplet = Eigen::Triplet<double, int>;
-
-/// What the caller knows about the matrix; backends use it to pick a factorisation.
-enum class MatrixKind { SymmetricPositiveDefinite, SymmetricIndefinite, General };
 
 /// Available backends. Cholmod needs an SPD matrix; Umfpack and Mumps take any.
 /// Petsc is iterative (a Krylov method and a preconditioner, IterativeSettings).

@@ -14,12 +14,12 @@
 
 #include "engine/assembly/assembly.hpp"
 #include "engine/assembly/dof_map.hpp"
+#include "engine/assembly/equation_name.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/memory.hpp"
 #include "engine/solver/backends.hpp"
 #include "engine/solver/interface_solver.hpp"
 #include "engine/solver/linear_solver.hpp"
-#include "engine/solver/singularity.hpp"
 #include "fe_test_util.hpp"
 
 namespace lunaster::engine {
