@@ -7,6 +7,7 @@
 #include "engine/core/error.hpp"
 #include "engine/fe/fe_model.hpp"
 #include "engine/mesh/mesh.hpp"
+#include "tests/unit/fe/axis_past_the_axis.hpp"
 
 namespace {
 
@@ -76,14 +77,7 @@ TEST(FailureKeywords, AnAxisymmetricCellIsAnAxisOne) {
   // The engine's own refusal (a TRIA6 curved past the axis puts an integration point at r <= 0, as in
   // tests/unit/fe/axis_test.cpp) names the cell's modelling in engine words; the deck's is 'AXIS'.
   using namespace lunaster::engine;
-  Mesh mesh;
-  mesh.dim = 2;
-  mesh.coords = {0, 0, 0, 0.1, 0, 0, 0, 1, 0, 0.05, 0, 0, 0.05, 0.5, 0, -0.4, 0.5, 0};
-  mesh.node_names = {"N1", "N2", "N3", "N4", "N5", "N6"};
-  mesh.cell_types = {CellType::Tria6};
-  mesh.cell_nodes = {0, 1, 2, 3, 4, 5};
-  mesh.cell_offsets = {0, 6};
-  mesh.cell_names = {"M1"};
+  const Mesh mesh = test::tria6_past_the_axis();
   FeModel model;
   model.mesh = &mesh;
   model.dim = 2;
