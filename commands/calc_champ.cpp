@@ -8,7 +8,7 @@
 #include "commands/parts.hpp"
 #include "engine/assembly/global_dofs.hpp"
 #include "engine/assembly/halo.hpp"
-#include "engine/fe/stress.hpp"
+#include "engine/assembly/stress.hpp"
 #include "engine/nonlinear/nodal_forces.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 

@@ -107,11 +107,32 @@ void say_in_keywords(Error& err) {
           h = "raise NMAX_ITER or RESI_RELA, choose another PRE_COND, or use a direct solver: METHODE='MUMPS'";
       }
       break;
+    case Failure::What::NotInParts: {
+      // A linear solver's option that a mesh in parts cannot take, by its keyword.
+      static const std::regex ordering("MUMPS: the (.*) ordering, computed from the whole matrix's pattern on one "
+                                       "process, is not available on a mesh in parts");
+      std::smatch m;
+      if (message.rfind("MUMPS: filtering the matrix's small entries", 0) == 0) {
+        message = "MUMPS: FILTRAGE_MATRICE is not available on a mesh in parts";
+        hints = {"leave FILTRAGE_MATRICE out, or read the mesh whole (LIRE_MAILLAGE without PARTITIONNEUR)"};
+      } else if (std::regex_match(message, m, ordering)) {
+        message = "MUMPS: the " + m[1].str() + " ordering asked for (RENUM) is computed from the whole matrix's "
+                  "pattern on one process, which a mesh in parts does not gather";
+        hints = {"choose RENUM = 'AMD', 'AMF', 'QAMD', 'PORD' or 'AUTO', or read the mesh whole"};
+      } else if (message.rfind("PETSc: a single-precision factorisation as preconditioner", 0) == 0) {
+        message = "PRE_COND='LDLT_SP' is not available on a mesh in parts: it gathers the whole system on one rank; "
+                  "use an algebraic multigrid (GAMG, ML, BOOMER), JACOBI or SOR";
+        hints.clear();
+      }
+      break;
+    }
     case Failure::What::NotAMedFile:
       for (auto& h : hints)
         if (h.rfind("this reader reads MED files", 0) == 0) h = "LIRE_MAILLAGE reads MED files; use FORMAT='GMSH' for .msh";
       break;
   }
+  // Whatever the failure: an axisymmetric cell is an AXIS one (AFFE_MODELE MODELISATION).
+  replace(" (axisymmetric): integration point at radius", " (AXIS): integration point at radius");
   // Whatever the failure: MUMPS settings the system did not fit (TYPE_RESOL, PRETRAITEMENTS,
   // ACCELERATION, MIXER_PRECISION, FILTRAGE_MATRICE).
   for (auto& h : hints) {

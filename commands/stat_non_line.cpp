@@ -94,6 +94,8 @@ void read_petsc(const Args& solveur, engine::IterativeSettings& settings) {
                             : precond == "SOR"    ? S::Preconditioner::Sor
                             : precond == "SANS"   ? S::Preconditioner::None
                                                   : S::Preconditioner::LdltSp;
+  settings.krylov_label = algorithm;  // the log and the messages name them as the deck does
+  settings.preconditioner_label = precond;
   settings.relative_residual = solveur.real("RESI_RELA");
   settings.max_iterations = static_cast<int>(solveur.integer("NMAX_ITER"));
   // code_aster's LDLT_SP: 100 iterations when NMAX_ITER is 0, REAC_PRECOND, PCENT_PIVOT and

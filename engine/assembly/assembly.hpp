@@ -4,8 +4,8 @@
 #include <vector>
 
 #include "engine/assembly/dof_map.hpp"
+#include "engine/core/linalg.hpp"
 #include "engine/fe/fe_model.hpp"
-#include "engine/solver/linear_solver.hpp"
 
 namespace lunaster::engine {
 

@@ -150,8 +150,8 @@ double axis_point(const ReferenceElement& re, int q, const Eigen::Matrix<double,
   double r = 0.0;
   for (int a = 0; a < NN; ++a) r += n[a] * x(a, 0);
   if (!(r > 0.0))
-    throw DeckError("cell " + cell_label(mesh, cell) + " (AXIS): integration point at radius r = " + std::to_string(r) +
-                    " (expected r > 0; x is the radius in an axisymmetric model)");
+    throw DeckError("cell " + cell_label(mesh, cell) + " (axisymmetric): integration point at radius r = " +
+                    std::to_string(r) + " (expected r > 0; x is the radius in an axisymmetric model)");
   axis_strain_matrix<NN>(g, n, r, b);
   return std::abs(det) * re.weight[q] * r;
 }

@@ -4,7 +4,6 @@
 #include <string>
 
 #include "engine/core/error.hpp"
-#include "engine/nonlinear/loads.hpp"
 
 namespace lunaster::engine {
 

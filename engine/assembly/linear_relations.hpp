@@ -20,11 +20,13 @@
 #include <vector>
 
 #include "engine/assembly/dof_map.hpp"
-#include "engine/solver/linear_solver.hpp"
+#include "engine/core/linalg.hpp"
 
 namespace lunaster::engine {
 
-struct DirichletValue;
+/// Imposed value of one displacement component; `load` indexes the multiplier (loads.hpp).
+/// Here, beside the relations, because a one-term relation becomes one (split_dirichlet).
+struct DirichletValue { int node; int component; double value; int load; };
 
 struct LinearRelation {
   struct Term { int node; int component; double coef; };

@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "engine/assembly/dof_map.hpp"
+#include "engine/core/linalg.hpp"
 #include "engine/fields/fields.hpp"
 #include "engine/mesh/mesh.hpp"
-#include "engine/solver/linear_solver.hpp"
 
 namespace lunaster::engine::contact {
 

@@ -24,9 +24,9 @@
 #include <memory>
 
 #include "engine/contact/contact_definition.hpp"
+#include "engine/contact/contact_hook.hpp"
 #include "engine/core/error.hpp"
 #include "engine/mesh/mesh.hpp"
-#include "engine/nonlinear/static_solver.hpp"
 
 namespace lunaster::engine {
 

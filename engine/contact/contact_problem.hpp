@@ -17,10 +17,10 @@
 #include "engine/assembly/linear_relations.hpp"
 #include "engine/contact/contact_common.hpp"
 #include "engine/contact/contact_definition.hpp"
+#include "engine/contact/contact_hook.hpp"
 #include "engine/contact/contact_law.hpp"
 #include "engine/contact/discretisation.hpp"
 #include "engine/contact/master_search.hpp"
-#include "engine/nonlinear/contact_hook.hpp"
 
 namespace lunaster::engine::contact {
 

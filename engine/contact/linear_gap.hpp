@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "engine/assembly/dof_map.hpp"
-#include "engine/solver/linear_solver.hpp"
+#include "engine/core/linalg.hpp"
 
 namespace lunaster::engine::contact {
 

@@ -30,10 +30,10 @@
 #include <vector>
 
 #include "engine/contact/contact_definition.hpp"
+#include "engine/contact/contact_hook.hpp"
 #include "engine/contact/contact_law.hpp"
 #include "engine/contact/mortar_segments.hpp"
 #include "engine/mesh/mesh.hpp"
-#include "engine/nonlinear/contact_hook.hpp"
 
 namespace lunaster::engine::contact {
 

@@ -28,9 +28,9 @@
 
 #include "engine/assembly/dof_map.hpp"
 #include "engine/contact/contact_definition.hpp"
+#include "engine/core/linalg.hpp"
 #include "engine/core/log.hpp"
 #include "engine/mesh/mesh.hpp"
-#include "engine/solver/linear_solver.hpp"
 
 namespace lunaster::engine::contact {
 

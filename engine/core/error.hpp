@@ -35,6 +35,7 @@ struct Failure {
     OutOfMemory,          ///< a linear solver's factors do not fit
     NotAMedFile,          ///< a mesh file that is not MED
     IterativeSolve,       ///< an iterative linear solver that did not converge or cannot precondition this system
+    NotInParts,           ///< a linear solver's option that a mesh in parts cannot take
   };
   What what = What::Unspecified;
   int limit = 0;

@@ -8,8 +8,6 @@
 
 namespace lunaster::engine {
 
-/// Imposed value of one displacement component; `load` indexes the multiplier.
-struct DirichletValue { int node; int component; double value; int load; };
 /// Pressure on boundary cells (PRES_REP), Pa.
 struct PressureLoad { std::vector<int> cells; double pressure; int load; };
 /// Force density on cells of dimension `cells_dim` (N/m on edges, N/m2 on faces, N/m3 on the

@@ -4,10 +4,10 @@
 #include "engine/assembly/dof_map.hpp"
 #include "engine/assembly/halo.hpp"
 #include "engine/assembly/mesh_part.hpp"
+#include "engine/core/linalg.hpp"
 #include "engine/fe/fe_model.hpp"
 #include "engine/fields/fields.hpp"
 #include "engine/nonlinear/loads.hpp"
-#include "engine/solver/linear_solver.hpp"
 
 namespace lunaster::engine {
 

@@ -1,6 +1,7 @@
 #include "engine/nonlinear/reduction.hpp"
 
 #include "engine/core/error.hpp"
+#include "engine/solver/linear_solver.hpp"  // symmetric_times
 
 namespace lunaster::engine {
 

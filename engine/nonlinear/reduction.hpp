@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "engine/solver/linear_solver.hpp"
+#include "engine/core/linalg.hpp"
 
 namespace lunaster::engine {
 

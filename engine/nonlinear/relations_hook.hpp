@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "engine/nonlinear/contact_hook.hpp"
+#include "engine/contact/contact_hook.hpp"
 
 namespace lunaster::engine {
 

@@ -6,7 +6,7 @@
 /// own numbering (vectors permuted in and out, triplets and equation lists renumbered).
 #include <vector>
 
-#include "engine/nonlinear/contact_hook.hpp"
+#include "engine/contact/contact_hook.hpp"
 
 namespace lunaster::engine {
 

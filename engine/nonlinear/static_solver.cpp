@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "engine/assembly/assembly.hpp"
+#include "engine/assembly/equation_name.hpp"
 #include "engine/assembly/partition.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/memory.hpp"
@@ -25,7 +26,6 @@
 #include "engine/solver/backends.hpp"
 #include "engine/solver/krylov.hpp"
 #include "engine/solver/saddle_solver.hpp"
-#include "engine/solver/singularity.hpp"
 
 namespace lunaster::engine {
 

@@ -8,16 +8,9 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Sparse>
+#include "engine/core/linalg.hpp"
 
 namespace lunaster::engine {
-
-using Vector = Eigen::VectorXd;
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
-using Triplet = Eigen::Triplet<double, int>;
-
-/// What the caller knows about the matrix; backends use it to pick a factorisation.
-enum class MatrixKind { SymmetricPositiveDefinite, SymmetricIndefinite, General };
 
 /// Available backends. Cholmod needs an SPD matrix; Umfpack and Mumps take any.
 /// Petsc is iterative (a Krylov method and a preconditioner, IterativeSettings).
@@ -58,7 +51,35 @@ struct IterativeSettings {
   LowRank low_rank{};
   /// Receives one line per Krylov iteration (iteration, residual) when set.
   std::function<void(const std::string&)> history;
+  /// How the log and the messages name the Krylov method and the preconditioner: the caller's words
+  /// (commands/ gives the deck's); empty: the engine's (krylov_name, preconditioner_name).
+  std::string krylov_label, preconditioner_label;
 };
+
+/// The engine's name of a Krylov method. Inline: the PETSc module (petsc_module.cpp) uses it too.
+inline const char* krylov_name(IterativeSettings::Krylov krylov) {
+  switch (krylov) {
+    case IterativeSettings::Krylov::CG: return "CG";
+    case IterativeSettings::Krylov::GMRES: return "GMRES";
+    case IterativeSettings::Krylov::FGMRES: return "FGMRES";
+  }
+  return "?";
+}
+
+/// The engine's name of a preconditioner.
+inline const char* preconditioner_name(IterativeSettings::Preconditioner preconditioner) {
+  using P = IterativeSettings::Preconditioner;
+  switch (preconditioner) {
+    case P::Gamg: return "GAMG";
+    case P::Ml: return "ML";
+    case P::Boomer: return "BoomerAMG";
+    case P::LdltSp: return "single-precision LDL^T";
+    case P::Jacobi: return "Jacobi";
+    case P::Sor: return "SOR";
+    case P::None: return "no preconditioner";
+  }
+  return "?";
+}
 
 /// The node blocks of a system: which equations are the displacement components of one
 /// node. Dirichlet conditions remove some of a node's components, so the system's own

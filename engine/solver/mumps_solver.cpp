@@ -33,6 +33,14 @@
 namespace lunaster::engine {
 namespace {
 
+/// `what` (an option of the factorisation) refused on a mesh in parts; `instead` says what to ask.
+/// Typed (Failure::What::NotInParts) for commands/ to name the deck's keyword.
+DeckError not_in_parts(const std::string& what, const std::string& instead) {
+  DeckError error("MUMPS: " + what + " is not available on a mesh in parts", {instead + ", or read the mesh whole"});
+  error.failure().what = Failure::What::NotInParts;
+  return error;
+}
+
 /// The ordering `give` (given_ordering) of a matrix shared among the ranks, each holding its
 /// own columns complete: every rank sends its columns' patterns to rank 0, which orders the
 /// whole pattern. Collective; the order on rank 0, empty on the others.
@@ -349,9 +357,7 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
     // that numbering, each entry on the one rank owning its column.
     LUNASTER_ASSERT(static_cast<Eigen::Index>(global_.size()) == a.rows() && n_global_ < (1LL << 31),
                     "MUMPS: a system in parts without its numbering");
-    if (settings_.filter > 0.0)
-      throw DeckError("MUMPS: FILTRAGE_MATRICE is not available on a mesh in parts",
-                      {"leave FILTRAGE_MATRICE out, or read the mesh whole (LIRE_MAILLAGE without PARTITIONNEUR)"});
+    if (settings_.filter > 0.0) throw not_in_parts("filtering the matrix's small entries", "keep every entry");
     for (int c = 0; c < a.outerSize(); ++c)
       for (SparseMatrix::InnerIterator it(a, c); it; ++it) {
         const long long gi = global_[it.row()], gj = global_[c];
@@ -427,9 +433,9 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
     // A mesh in parts gives no ordering: MUMPS's own (its analysis gathers the pattern itself).
     if (parts_ && (settings_.ordering == FactorOrdering::Metis || settings_.ordering == FactorOrdering::Rcm ||
                    settings_.ordering == FactorOrdering::Natural))
-      throw DeckError("MUMPS: the " + ordering_name(settings_.ordering) + " ordering asked for (RENUM) is computed "
-                      "from the whole matrix's pattern on one process, which a mesh in parts does not gather",
-                      {"choose RENUM = 'AMD', 'AMF', 'QAMD', 'PORD' or 'AUTO', or read the mesh whole"});
+      throw not_in_parts("the " + ordering_name(settings_.ordering) + " ordering, computed from the whole matrix's "
+                         "pattern on one process,",
+                         "choose the AMD, AMF, QAMD or PORD ordering, or the backend's choice");
     switch (settings_.ordering) {
       case FactorOrdering::Auto:
         if (!parts_ && sym != 0 && entries_per_row >= 40.0 && a.rows() >= 10000) give = FactorOrdering::Metis;

@@ -77,28 +77,6 @@ void initialise_petsc() {
   std::atexit([] { PetscFinalize(); });
 }
 
-const char* krylov_name(Settings::Krylov k) {
-  switch (k) {
-    case Settings::Krylov::CG: return "CG";
-    case Settings::Krylov::GMRES: return "GMRES";
-    case Settings::Krylov::FGMRES: return "FGMRES";
-  }
-  return "?";
-}
-
-const char* preconditioner_name(Settings::Preconditioner p) {
-  switch (p) {
-    case Settings::Preconditioner::Gamg: return "GAMG";
-    case Settings::Preconditioner::Ml: return "ML";
-    case Settings::Preconditioner::Boomer: return "BOOMER";
-    case Settings::Preconditioner::LdltSp: return "LDLT_SP";
-    case Settings::Preconditioner::Jacobi: return "JACOBI";
-    case Settings::Preconditioner::Sor: return "SOR";
-    case Settings::Preconditioner::None: return "SANS";
-  }
-  return "?";
-}
-
 /// LDLT_SP: a single-precision MUMPS factorisation of the whole matrix, applied as the
 /// preconditioner (code_aster's choice for contact and other hard systems). The matrix and
 /// the residuals are gathered on the host, rank 0, which is where MUMPS takes them.
@@ -185,8 +163,7 @@ class PetscSolver final : public LinearSolver {
   bool multiply(const Vector& x, Vector& y) const override;
   Vector solve(const Vector& b) const override;
   std::string name() const override {
-    return std::string("PETSc ") + krylov_name(settings_.krylov) + " + " +
-           preconditioner_name(settings_.preconditioner) + low_rank_name() +
+    return "PETSc " + krylov_label() + " + " + preconditioner_label() + low_rank_name() +
            (kept_      ? " (kept from an earlier matrix)"
             : renewed_ ? " (factorised again: the kept one did not converge)"
                        : "");
@@ -224,6 +201,14 @@ class PetscSolver final : public LinearSolver {
   void for_each_local_row(const SparseMatrix& a, Row row, bool sorted = true) const;
   void set_symmetry_options(MatrixKind kind);
   void attach_near_null_space();
+  /// The method and the preconditioner as the caller names them (IterativeSettings), else the engine's names.
+  std::string krylov_label() const {
+    return settings_.krylov_label.empty() ? krylov_name(settings_.krylov) : settings_.krylov_label;
+  }
+  std::string preconditioner_label() const {
+    return settings_.preconditioner_label.empty() ? preconditioner_name(settings_.preconditioner)
+                                                  : settings_.preconditioner_label;
+  }
   /// " in block low rank (threshold 1e-08)" for LDLT_SP's compressed factors, else empty.
   std::string low_rank_name() const {
     if (settings_.preconditioner != Settings::Preconditioner::LdltSp || !settings_.low_rank.on) return {};
@@ -588,10 +573,14 @@ void PetscSolver::set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* t
                                 "positive definite)",
                             {"a saddle-point system (contact multipliers) needs a single-precision factorisation as "
                              "preconditioner with FGMRES or GMRES"});
-  // LDLT_SP factorises the whole system on the host and gathers every vector there.
-  if (layout_.in_parts() && factorised_pc)
-    throw DeckError("PRE_COND='LDLT_SP' is not available on a mesh in parts: it gathers the whole system on one "
-                    "rank; use an algebraic multigrid (GAMG, ML, BOOMER), JACOBI or SOR");
+  // The single-precision factorisation works on the whole system on the host, every vector gathered there.
+  if (layout_.in_parts() && factorised_pc) {
+    DeckError error("PETSc: a single-precision factorisation as preconditioner is not available on a mesh in parts: it "
+                    "gathers the whole system on one rank",
+                    {"an algebraic multigrid (GAMG, ML, BoomerAMG), Jacobi or SOR preconditions the parts"});
+    error.failure().what = Failure::What::NotInParts;  // commands/ names PRE_COND
+    throw error;
+  }
   release();
   if (settings_.preconditioner == Settings::Preconditioner::Boomer) build_hypre_matrix(a, kind);
   else build_matrix(a, kind);
@@ -712,7 +701,7 @@ void PetscSolver::set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* t
       check(PCSetType(pc, PCSHELL), "PCSetType");
       check(PCShellSetContext(pc, this), "PCShellSetContext");
       check(PCShellSetApply(pc, &PetscSolver::apply_single_precision), "PCShellSetApply");
-      check(PCShellSetName(pc, "LDLT_SP"), "PCShellSetName");
+      check(PCShellSetName(pc, preconditioner_label().c_str()), "PCShellSetName");
       break;
     case Settings::Preconditioner::Jacobi: check(PCSetType(pc, PCJACOBI), "PCSetType"); break;
     case Settings::Preconditioner::Sor: check(PCSetType(pc, PCSOR), "PCSetType"); break;
@@ -823,7 +812,8 @@ Vector PetscSolver::solve(const Vector& b) const {
       // An earlier matrix's factorisation no longer preconditions this one (REAC_PRECOND, as
       // code_aster does): factorise this matrix and solve again.
       if (settings_.history)
-        settings_.history("    LDLT_SP: the kept factorisation did not converge (" + detail + "); factorised again");
+        settings_.history("    " + preconditioner_label() + ": the kept factorisation did not converge (" + detail +
+                          "); factorised again");
       single_->factorize(*source_, kind_, layout_.distributed(), settings_.workspace_relaxation, settings_.low_rank);
       kept_ = false, renewed_ = true;
       check(KSPSetTolerances(ksp_, settings_.relative_residual, 0.0, 1e100, iteration_limit()), "KSPSetTolerances");

@@ -3,7 +3,11 @@
 #include <gtest/gtest.h>
 
 #include "commands/failures.hpp"
+#include "engine/assembly/assembly.hpp"
 #include "engine/core/error.hpp"
+#include "engine/fe/fe_model.hpp"
+#include "engine/mesh/mesh.hpp"
+#include "tests/unit/fe/axis_past_the_axis.hpp"
 
 namespace {
 
@@ -67,6 +71,29 @@ TEST(FailureKeywords, ContactLoopsNameTheirLimits) {
             "contact geometry loop did not converge after 10 iterations (ITER_GEOM_MAXI): geometric residual 0.5 > "
             "RESI_GEOM 0.01");
   EXPECT_NE(text(geom).find("ALGO_RESO_GEOM='NEWTON'"), std::string::npos);
+}
+
+TEST(FailureKeywords, AnAxisymmetricCellIsAnAxisOne) {
+  // The engine's own refusal (a TRIA6 curved past the axis puts an integration point at r <= 0, as in
+  // tests/unit/fe/axis_test.cpp) names the cell's modelling in engine words; the deck's is 'AXIS'.
+  using namespace lunaster::engine;
+  const Mesh mesh = test::tria6_past_the_axis();
+  FeModel model;
+  model.mesh = &mesh;
+  model.dim = 2;
+  model.materials = {ElasticMaterial{2.0e6, 0.3, 0.0}};
+  model.modelisation = {Modelisation::Axisymmetric};
+  model.material = {0};
+  const DofMap dofs(mesh, {0}, 2);
+  std::vector<Triplet> triplets;
+  try {
+    assemble_stiffness(model, dofs, triplets);
+    FAIL() << "expected a DeckError";
+  } catch (lunaster::DeckError& e) {
+    EXPECT_NE(e.message().find("cell M1 (axisymmetric): integration point at radius"), std::string::npos) << e.message();
+    lunaster::cmd::say_in_keywords(e);
+    EXPECT_NE(e.message().find("cell M1 (AXIS): integration point at radius"), std::string::npos) << e.message();
+  }
 }
 
 TEST(FailureKeywords, AnUntypedErrorIsLeftAlone) {

@@ -8,6 +8,7 @@
 #include "engine/assembly/assembly.hpp"
 #include "engine/assembly/element_kernels.hpp"
 #include "engine/core/error.hpp"
+#include "axis_past_the_axis.hpp"
 #include "fe_test_util.hpp"
 
 namespace lunaster::engine {
@@ -184,14 +185,7 @@ TEST(Axis, DistributedForceSharesThePressureQuadrature) {
 TEST(Axis, IntegrationPointOnTheAxisIsADeckError) {
   // A triangle with every node on x = 0 would be degenerate; one curved past the axis is not:
   // a TRIA6 whose mid-side node pulls an edge to x < 0 puts a point at r <= 0.
-  Mesh mesh;
-  mesh.dim = 2;
-  mesh.coords = {0, 0, 0, 0.1, 0, 0, 0, 1, 0, 0.05, 0, 0, 0.05, 0.5, 0, -0.4, 0.5, 0};
-  mesh.node_names = {"N1", "N2", "N3", "N4", "N5", "N6"};
-  mesh.cell_types = {CellType::Tria6};
-  mesh.cell_nodes = {0, 1, 2, 3, 4, 5};
-  mesh.cell_offsets = {0, 6};
-  mesh.cell_names = {"M1"};
+  const Mesh mesh = test::tria6_past_the_axis();
   const FeModel model = test::make_model(mesh, 2, Modelisation::Axisymmetric, kAxisMat);
   const DofMap dofs(mesh, {0}, 2);
   std::vector<Triplet> t;
@@ -199,7 +193,8 @@ TEST(Axis, IntegrationPointOnTheAxisIsADeckError) {
     assemble_stiffness(model, dofs, t);
     FAIL() << "expected a DeckError";
   } catch (const DeckError& e) {
-    EXPECT_NE(std::string(e.what()).find("cell M1 (AXIS): integration point at radius"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("cell M1 (axisymmetric): integration point at radius"), std::string::npos)
+        << e.what();
   }
 }
 

@@ -14,12 +14,12 @@
 
 #include "engine/assembly/assembly.hpp"
 #include "engine/assembly/dof_map.hpp"
+#include "engine/assembly/equation_name.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/memory.hpp"
 #include "engine/solver/backends.hpp"
 #include "engine/solver/interface_solver.hpp"
 #include "engine/solver/linear_solver.hpp"
-#include "engine/solver/singularity.hpp"
 #include "fe_test_util.hpp"
 
 namespace lunaster::engine {
@@ -232,23 +232,23 @@ TEST(Solvers, PetscKeepsTheSinglePrecisionFactorisationAsCodeAsterReacPrecondSay
   EXPECT_FALSE(s->factorize_taking(first, MatrixKind::SymmetricPositiveDefinite));
   EXPECT_EQ(first.nonZeros(), a.nonZeros());
   check_solution(a, s->solve(rhs(n)), s->name());
-  EXPECT_EQ(s->name(), "PETSc FGMRES + LDLT_SP");
+  EXPECT_EQ(s->name(), "PETSc FGMRES + single-precision LDL^T");
   s->factorize(near, MatrixKind::SymmetricPositiveDefinite);
-  EXPECT_EQ(s->name(), "PETSc FGMRES + LDLT_SP (kept from an earlier matrix)");
+  EXPECT_EQ(s->name(), "PETSc FGMRES + single-precision LDL^T (kept from an earlier matrix)");
   check_solution(near, s->solve(rhs(n)), s->name());
   EXPECT_LE(s->iterations(), 20);
   s->factorize(far, MatrixKind::SymmetricPositiveDefinite);
-  EXPECT_EQ(s->name(), "PETSc FGMRES + LDLT_SP (kept from an earlier matrix)");
+  EXPECT_EQ(s->name(), "PETSc FGMRES + single-precision LDL^T (kept from an earlier matrix)");
   check_solution(far, s->solve(rhs(n)), s->name());
-  EXPECT_EQ(s->name(), "PETSc FGMRES + LDLT_SP (factorised again: the kept one did not converge)");
+  EXPECT_EQ(s->name(), "PETSc FGMRES + single-precision LDL^T (factorised again: the kept one did not converge)");
   EXPECT_GT(s->iterations(), 20);  // the kept factorisation's 20, then the solve on far's own
   s->factorize(far, MatrixKind::SymmetricPositiveDefinite);
-  EXPECT_EQ(s->name(), "PETSc FGMRES + LDLT_SP (kept from an earlier matrix)");  // far's own, kept
+  EXPECT_EQ(s->name(), "PETSc FGMRES + single-precision LDL^T (kept from an earlier matrix)");  // far's own, kept
   check_solution(far, s->solve(rhs(n)), s->name());
   EXPECT_LE(s->iterations(), 5);
   const SparseMatrix smaller = spd_matrix(50);
   s->factorize(smaller, MatrixKind::SymmetricPositiveDefinite);
-  EXPECT_EQ(s->name(), "PETSc FGMRES + LDLT_SP");
+  EXPECT_EQ(s->name(), "PETSc FGMRES + single-precision LDL^T");
   check_solution(smaller, s->solve(rhs(50)), s->name());
 
   settings.reac_precond = 1;  // a solve takes 2 iterations or more
@@ -257,13 +257,13 @@ TEST(Solvers, PetscKeepsTheSinglePrecisionFactorisationAsCodeAsterReacPrecondSay
   check_solution(a, strict->solve(rhs(n)), strict->name());
   EXPECT_GT(strict->iterations(), 1);
   strict->factorize(near, MatrixKind::SymmetricPositiveDefinite);
-  EXPECT_EQ(strict->name(), "PETSc FGMRES + LDLT_SP");
+  EXPECT_EQ(strict->name(), "PETSc FGMRES + single-precision LDL^T");
 
   auto every = make_linear_solver(SolverKind::Petsc, petsc(S::Krylov::FGMRES, S::Preconditioner::LdltSp, 20));
   every->factorize(a, MatrixKind::SymmetricPositiveDefinite);
   every->solve(rhs(n));
   every->factorize(near, MatrixKind::SymmetricPositiveDefinite);
-  EXPECT_EQ(every->name(), "PETSc FGMRES + LDLT_SP");
+  EXPECT_EQ(every->name(), "PETSc FGMRES + single-precision LDL^T");
 }
 
 TEST(Solvers, PetscSaddlePointNeedsAFactorisationAsPreconditioner) {
@@ -1086,7 +1086,7 @@ TEST(Solvers, PetscLdltSpInBlockLowRankPreconditionsWithCoarserFactors) {
   settings.low_rank = {true, 1e-2};
   settings.workspace_relaxation = 50;
   auto compressed = make_linear_solver(SolverKind::Petsc, settings);
-  EXPECT_EQ(compressed->name(), "PETSc FGMRES + LDLT_SP in block low rank (threshold 0.01)");
+  EXPECT_EQ(compressed->name(), "PETSc FGMRES + single-precision LDL^T in block low rank (threshold 0.01)");
   compressed->factorize(a, MatrixKind::SymmetricIndefinite);
   const Vector x = compressed->solve(f);
   EXPECT_GT(compressed->iterations(), full->iterations());

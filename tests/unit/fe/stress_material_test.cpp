@@ -3,8 +3,8 @@
 
 #include <Eigen/Dense>
 
+#include "engine/assembly/stress.hpp"
 #include "engine/core/error.hpp"
-#include "engine/fe/stress.hpp"
 #include "engine/material/elasticity.hpp"
 #include "fe_test_util.hpp"
 

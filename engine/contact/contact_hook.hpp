@@ -1,7 +1,8 @@
 #pragma once
 /// The contact algorithm as the Newton driver (static_solver.hpp) sees it.
 /// Implemented in engine/contact (contact_problem.hpp); the driver knows no
-/// contact method, only this interface.
+/// contact method, only this interface. It lives here, below the driver (engine/nonlinear),
+/// so that the folder implementing it does not include the folder that calls it.
 #include <array>
 #include <functional>
 #include <memory>
@@ -9,10 +10,10 @@
 #include <vector>
 
 #include "engine/assembly/dof_map.hpp"
+#include "engine/assembly/linear_relations.hpp"
+#include "engine/core/linalg.hpp"
 #include "engine/core/log.hpp"
 #include "engine/fields/fields.hpp"
-#include "engine/nonlinear/loads.hpp"
-#include "engine/solver/linear_solver.hpp"
 
 namespace lunaster::engine {
 

@@ -2,9 +2,9 @@
 /// Post-processing: stresses at cell nodes, nodal averages, equivalent stresses.
 #include "engine/assembly/dof_map.hpp"
 #include "engine/assembly/mesh_part.hpp"
+#include "engine/core/linalg.hpp"
 #include "engine/fe/fe_model.hpp"
 #include "engine/fields/fields.hpp"
-#include "engine/solver/linear_solver.hpp"
 
 namespace lunaster::engine {
 

@@ -1,5 +1,5 @@
 /// describe_equation: equation -> "node N12, component DY".
-#include "engine/solver/singularity.hpp"
+#include "engine/assembly/equation_name.hpp"
 
 namespace lunaster::engine {
 

@@ -3,7 +3,7 @@
 /// least-squares vertex fit of reference_element.hpp (code_aster's rule: exact
 /// for fields of the linear space, e.g. bilinear extrapolation from the 2x2
 /// points of a QUAD4; mid-side nodes take the mean of their edge's vertices).
-#include "engine/fe/stress.hpp"
+#include "engine/assembly/stress.hpp"
 
 #include <cmath>
 
