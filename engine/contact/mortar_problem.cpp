@@ -37,7 +37,7 @@ MortarProblem::MortarProblem(const ContactDefinition& definition, const Mesh& me
 }
 
 MortarProblem::MortarProblem(const ContactDefinition& definition, const Mesh& mesh, int dim)
-    : MortarProblem(definition, mesh, dim, make_contact_law(definition.method)) {}
+    : MortarProblem(definition, mesh, dim, make_contact_law(definition.method.how)) {}
 
 void MortarProblem::set_dirichlet(const std::vector<DirichletValue>& dirichlet) {
   for (const auto& d : dirichlet) imposed_.insert({d.node, d.component});
