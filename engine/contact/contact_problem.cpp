@@ -679,12 +679,10 @@ void ContactProblem::write_fields(const Vector& u, ResultStep& step) const {
       for (int k = 0; k < 3; ++k) s.force[k] = force[3 * static_cast<size_t>(s.node) + k];
       s.pressure = p.active ? law_->pressure(p, multiplier(u, p), s.gap, rho(p.zone)) : 0.0;
     }
-    step.nodal["CONT_NOEU"] = nodal_contact_field(states, mesh_.n_nodes(), dim_);
+    step.nodal[kContactStateField] = nodal_contact_field(states, mesh_.n_nodes(), dim_);
     return;
   }
-  std::vector<std::string> cmps = {"CONT", "JEU", "RN", "RNX", "RNY"};
-  if (dim_ == 3) cmps.push_back("RNZ");
-  NodalField field(cmps, mesh_.n_nodes());
+  NodalField field(contact_state_components(dim_, false), mesh_.n_nodes());
   auto set_force = [&](int node) {
     const double* f = &force[3 * static_cast<size_t>(node)];
     field.set(node, 2, std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]));
@@ -711,7 +709,7 @@ void ContactProblem::write_fields(const Vector& u, ResultStep& step) const {
     field.set(node, 1, gap);
     set_force(node);
   }
-  step.nodal["CONT_NOEU"] = std::move(field);
+  step.nodal[kContactStateField] = std::move(field);
 }
 
 }  // namespace lunaster::engine::contact
