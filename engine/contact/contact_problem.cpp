@@ -550,6 +550,32 @@ PointResponse ContactProblem::respond(const ContactPoint& p, double lambda, doub
   return law_->evaluate(in, start, state);
 }
 
+PointKinematics ContactProblem::kinematics(const ContactPoint& p, const Vector& u, const Vector& u_start,
+                                           int n_tangents) const {
+  PointKinematics in;
+  in.n_tangents = n_tangents;
+  in.q[0] = p.gap.value(u);
+  in.dq_step[0] = in.q[0] - p.gap.value(u_start);
+  in.z[0] = multiplier(u, p);
+  in.weight = p.wjac;
+  in.coefficient = rho(p.zone);
+  if (n_tangents == 0 || !p.paired) return in;
+  double t[2][3];
+  tangent_frame(p.normal, dim_, t);
+  const MasterSurface& master = *masters_[p.zone];
+  const int k = master.local_index(p.master_cell);
+  double nm[kMaxSurfaceNodes];
+  surface_shape(master.geometry_type(k), p.xi_master, nm, nullptr, nullptr);
+  const auto& mnodes = master.cell_nodes(k);
+  for (int a = 0; a < n_tangents; ++a) {
+    const LinearGap slip = make_linear_gap(mesh_.coords, dofs_, dim_, p.slave_nodes, p.phi, p.n_slave, mnodes.data(),
+                                           nm, static_cast<int>(mnodes.size()), t[a]);
+    in.q[1 + a] = slip.value(u);
+    in.dq_step[1 + a] = in.q[1 + a] - slip.value(u_start);
+  }
+  return in;
+}
+
 void ContactProblem::add_point_residual(const ContactPoint& p, const PointResponse& r, Vector& residual) const {
   if (r.r_q[0] != 0.0) add_gradient(p.gap, r.r_q[0], residual);
   if (multiplier_nodes_.empty()) return;

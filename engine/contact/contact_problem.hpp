@@ -56,6 +56,11 @@ class ContactProblem final : public ContactHook {
   const LinearRelations& relations() const { return relations_; }
   /// The law (its `symmetric()` decides whether the system needs an unsymmetric factorisation).
   const ContactLaw& law() const { return *law_; }
+  /// What a law reads at point p (point_law.hpp), the pairing frozen: q = its normal gap and
+  /// its tangential relative displacement along tangent_frame(normal) (x_slave - x_master),
+  /// dq_step their change since `u_start` (the step's start), z its LAGS_C, its weight and
+  /// the zone's coefficient. `n_tangents`: 0 (the normal gap only) or dim - 1.
+  PointKinematics kinematics(const ContactPoint& p, const Vector& u, const Vector& u_start, int n_tangents) const;
   /// Pressure interpolated at a point from LAGS_C (0 without multipliers).
   double multiplier(const Vector& u, const ContactPoint& p) const;
   /// Forces the statuses of the paired points (tests).
