@@ -14,8 +14,49 @@ const char* component_name(int component) {
     case LAGR_DX: return "LAGR_DX";
     case LAGR_DY: return "LAGR_DY";
     case LAGR_DZ: return "LAGR_DZ";
+    case LAGS_F1: return "LAGS_F1";
+    case LAGS_F2: return "LAGS_F2";
     default: return "?";
   }
+}
+
+int component_of_name(std::string_view name) {
+  for (int c = 0; c < N_COMPONENTS; ++c)
+    if (name == component_name(c)) return c;
+  return -1;
+}
+
+namespace {
+/// The order in which results list components.
+constexpr int kListOrder[N_COMPONENTS] = {DX, DY, DZ, LAGS_C, LAGS_F1, LAGS_F2, LAGR_DX, LAGR_DY, LAGR_DZ};
+}  // namespace
+
+int DofMap::dof_named(int node, std::string_view name) const {
+  const int c = component_of_name(name);
+  if (c < 0 || node < 0 || node >= n_nodes()) return -1;
+  return dof(node, c);
+}
+
+std::vector<int> DofMap::components() const {
+  bool present[N_COMPONENTS] = {};
+  for (int c : eq_cmp_) present[c] = true;
+  std::vector<int> out;
+  for (int c : kListOrder)
+    if (present[c]) out.push_back(c);
+  return out;
+}
+
+std::vector<int> DofMap::result_components() const {
+  std::vector<int> out;
+  for (int c : components())
+    if (is_displacement(c) || is_contact_multiplier(c)) out.push_back(c);
+  return out;
+}
+
+std::vector<std::string> DofMap::result_component_names() const {
+  std::vector<std::string> out;
+  for (int c : result_components()) out.emplace_back(component_name(c));
+  return out;
 }
 
 DofMap::DofMap(const Mesh& mesh, const std::vector<int>& cells, int dim) : dim_(dim) {

@@ -19,9 +19,8 @@ class ActiveSetLaw final : public ContactLaw {
   double coefficient(const ContactZone& zone) const override { return zone.coef_cont; }
   bool status(double lambda, double g, double /*rho*/) const override { return g < 0.0 || lambda < 0.0; }
   bool statuses_in_newton_allowed() const override { return false; }
-  PointCoefficients coefficients(const ContactPoint& p, double rho) const override {
-    const double w = p.wjac;
-    if (!p.active) return {0.0, 0.0, 0.0, w / rho};
+  PointCoefficients point_coefficients(bool active, double w, double rho) const override {
+    if (!active) return {0.0, 0.0, 0.0, w / rho};
     return {w, 0.0, w, 0.0};
   }
   double pressure(const ContactPoint&, double lambda, double, double) const override { return lambda; }

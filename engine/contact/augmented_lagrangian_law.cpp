@@ -13,9 +13,8 @@ class AugmentedLagrangianLaw final : public ContactLaw {
   bool has_multipliers() const override { return true; }
   double coefficient(const ContactZone& zone) const override { return zone.coef_cont; }
   bool status(double lambda, double g, double rho) const override { return lambda + rho * g < 0.0; }
-  PointCoefficients coefficients(const ContactPoint& p, double rho) const override {
-    const double w = p.wjac;
-    if (!p.active) return {0.0, 0.0, 0.0, w / rho};
+  PointCoefficients point_coefficients(bool active, double w, double rho) const override {
+    if (!active) return {0.0, 0.0, 0.0, w / rho};
     return {w, w * rho, w, 0.0};
   }
   double pressure(const ContactPoint&, double lambda, double g, double rho) const override {

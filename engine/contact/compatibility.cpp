@@ -82,7 +82,7 @@ std::vector<IntegrationWarning> check_contact_zone_integration(const Mesh& mesh,
                      "contact zone " + std::to_string(zone_index + 1) + ": the integration rule has " +
                     std::to_string(n_points) + " point(s) on slave " + contact::surface_type_name(type) + " cell " +
                     contact::cell_label(mesh, cell) + ", which carries " + std::to_string(n_multipliers) +
-                    " LAGS_C unknowns: the contact pressure is under-determined (singular system or wrong "
+                    " " + component_name(LAGS_C) + " unknowns: the contact pressure is under-determined (singular system or wrong "
                     "values); raise the rule's order or use the automatic, Simpson or Newton-Cotes rule"});
   }
   return out;

@@ -26,9 +26,9 @@ class ComplementarityLaw final : public ContactLaw {
   double coefficient(const ContactZone& zone) const override { return zone.coef_cont; }
   bool relative_coefficient() const override { return true; }
   bool status(double lambda, double g, double rho) const override { return lambda + rho * g < 0.0; }
-  PointCoefficients coefficients(const ContactPoint& p, double /*rho*/) const override {
-    if (!p.active) return {};
-    return {p.wjac, 0.0, p.wjac, 0.0};
+  PointCoefficients point_coefficients(bool active, double w, double /*rho*/) const override {
+    if (!active) return {};
+    return {w, 0.0, w, 0.0};
   }
   double pressure(const ContactPoint&, double lambda, double, double) const override { return lambda; }
 

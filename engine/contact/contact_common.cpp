@@ -62,10 +62,15 @@ double smallest_edge(const Mesh& mesh, const std::vector<int>& cells) {
   return h;
 }
 
-NodalField nodal_contact_field(const std::vector<NodalContactState>& states, int n_nodes, int dim) {
+std::vector<std::string> contact_state_components(int dim, bool pressure) {
   std::vector<std::string> cmps = {"CONT", "JEU", "RN", "RNX", "RNY"};
   if (dim == 3) cmps.push_back("RNZ");
-  cmps.push_back("PRES");
+  if (pressure) cmps.push_back("PRES");
+  return cmps;
+}
+
+NodalField nodal_contact_field(const std::vector<NodalContactState>& states, int n_nodes, int dim) {
+  const std::vector<std::string> cmps = contact_state_components(dim, true);
   NodalField field(cmps, n_nodes);
   const int pres = static_cast<int>(cmps.size()) - 1;
   for (const auto& s : states) {

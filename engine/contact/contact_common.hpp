@@ -26,6 +26,15 @@ double geometric_residual(const std::vector<int>& nodes, const DofMap& dofs, int
 /// Smallest vertex-to-vertex edge length of surface cells (m).
 double smallest_edge(const Mesh& mesh, const std::vector<int>& cells);
 
+/// The result fields contact writes (fields.hpp's ResultStep::nodal), by the names the results
+/// keep: the displacements (where a method without multiplier unknowns reports its pressure,
+/// as the DOF map's LAGS_C component) and the nodal contact state.
+inline constexpr const char* kDisplacementField = "DEPL";
+inline constexpr const char* kContactStateField = "CONT_NOEU";
+/// The contact state's components: CONT (status), JEU (gap), RN (norm of the force), RNX, RNY[,
+/// RNZ] (the force), and with `pressure` PRES.
+std::vector<std::string> contact_state_components(int dim, bool pressure);
+
 /// One slave node of a method with one condition per slave node (node to segment, mortar).
 struct NodalContactState {
   int node = -1;

@@ -6,14 +6,49 @@
 
 namespace lunaster::engine {
 
-enum class ContactMethod {
-  Continuous,        ///< FORMULATION='CONTINUE' (ALGO_CONT='STANDARD'): augmented Lagrangian, LAGS_C
-  ContinuousPenalty, ///< FORMULATION='CONTINUE', ALGO_CONT='PENALISATION'
-  DiscreteLagrange,  ///< METHODE='CONTRAINTE' / FORMULATION='DISCRETE', ALGO_CONT='CONTRAINTE'
-  DiscretePenalty,   ///< METHODE='PENALISATION' / ALGO_CONT='PENALISATION'
-  MortarLagrange,    ///< DEFI_CONT APPARIEMENT='MORTAR', ALGO_CONT='LAGRANGIEN' (mortar_problem.hpp)
-  MortarPenalty,     ///< DEFI_CONT APPARIEMENT='MORTAR', ALGO_CONT='PENALISATION'
+/// Where the contact conditions live (discretisation.hpp, mortar_segments.hpp).
+enum class ContactDiscretisation {
+  NodeToSegment,      ///< one point per slave vertex (FORMULATION='DISCRETE')
+  IntegrationPoints,  ///< the points of a rule on each slave cell (FORMULATION='CONTINUE')
+  MortarSegments,     ///< one dual weighted-gap row per slave node (DEFI_CONT, APPARIEMENT='MORTAR')
 };
+
+/// How they are enforced: the law (contact_law.hpp).
+enum class ContactEnforcement {
+  AugmentedLagrangian,  ///< LAGS_C unknowns, active iff lambda + rho g < 0 (ALGO_CONT='STANDARD')
+  ActiveSet,            ///< exact LAGS_C, an active set updated after each Newton (ALGO_CONT='CONTRAINTE')
+  Complementarity,      ///< primal-dual active set held exactly by elimination (mortar 'LAGRANGIEN')
+  Penalty,              ///< a pressure per gap (Pa/m), LAGS_C reported (ALGO_CONT='PENALISATION')
+  Springs,              ///< a spring per slave node (N/m, discrete E_N), no LAGS_C (discrete 'PENALISATION')
+};
+
+/// A contact method: a discretisation times an enforcement. The six combinations the decks
+/// offer are named below (contact_factory.hpp's table).
+struct ContactMethod {
+  ContactDiscretisation where = ContactDiscretisation::IntegrationPoints;
+  ContactEnforcement how = ContactEnforcement::AugmentedLagrangian;
+
+  friend bool operator==(const ContactMethod&, const ContactMethod&) = default;
+
+  static const ContactMethod Continuous;         ///< FORMULATION='CONTINUE' (ALGO_CONT='STANDARD')
+  static const ContactMethod ContinuousPenalty;  ///< FORMULATION='CONTINUE', ALGO_CONT='PENALISATION'
+  static const ContactMethod DiscreteLagrange;   ///< METHODE='CONTRAINTE' / FORMULATION='DISCRETE', ALGO_CONT='CONTRAINTE'
+  static const ContactMethod DiscretePenalty;    ///< METHODE='PENALISATION' / ALGO_CONT='PENALISATION'
+  static const ContactMethod MortarLagrange;     ///< DEFI_CONT APPARIEMENT='MORTAR', ALGO_CONT='LAGRANGIEN'
+  static const ContactMethod MortarPenalty;      ///< DEFI_CONT APPARIEMENT='MORTAR', ALGO_CONT='PENALISATION'
+};
+inline constexpr ContactMethod ContactMethod::Continuous{ContactDiscretisation::IntegrationPoints,
+                                                         ContactEnforcement::AugmentedLagrangian};
+inline constexpr ContactMethod ContactMethod::ContinuousPenalty{ContactDiscretisation::IntegrationPoints,
+                                                                ContactEnforcement::Penalty};
+inline constexpr ContactMethod ContactMethod::DiscreteLagrange{ContactDiscretisation::NodeToSegment,
+                                                               ContactEnforcement::ActiveSet};
+inline constexpr ContactMethod ContactMethod::DiscretePenalty{ContactDiscretisation::NodeToSegment,
+                                                              ContactEnforcement::Springs};
+inline constexpr ContactMethod ContactMethod::MortarLagrange{ContactDiscretisation::MortarSegments,
+                                                             ContactEnforcement::Complementarity};
+inline constexpr ContactMethod ContactMethod::MortarPenalty{ContactDiscretisation::MortarSegments,
+                                                            ContactEnforcement::Penalty};
 
 enum class IntegrationScheme { Auto, Gauss, Simpson, NewtonCotes, Nodes };
 enum class ContactInit { No, Yes, Interpenetrated };

@@ -2,13 +2,14 @@
 /// Entry point of engine/contact: builds the contact algorithm the Newton
 /// driver (engine/nonlinear/static_solver) plugs in as a ContactHook.
 ///
-/// Every method is a discretisation times a law (contact_law.hpp), assembled by a shared part:
+/// Every method is a discretisation (ContactMethod::where) times a law (ContactMethod::how,
+/// contact_law.hpp), assembled by a shared part:
 /// | ContactMethod     | discretisation                           | law                          | shared part    |
 /// |-------------------|------------------------------------------|------------------------------|----------------|
 /// | Continuous        | integration points (discretisation.hpp)  | augmented Lagrangian         | ContactProblem |
 /// | ContinuousPenalty | integration points                       | penalty (Pa/m)               | ContactProblem |
 /// | DiscreteLagrange  | node to segment                          | active set                   | ContactProblem |
-/// | DiscretePenalty   | node to segment                          | penalty (N/m per node)       | ContactProblem |
+/// | DiscretePenalty   | node to segment                          | springs (N/m per node)       | ContactProblem |
 /// | MortarLagrange    | segment to segment (mortar_segments.hpp) | primal-dual active set (exact) | MortarProblem |
 /// | MortarPenalty     | segment to segment                       | penalty (Pa/m)               | MortarProblem  |
 /// ContactProblem (contact_problem.hpp) takes point discretisations, whose conditions share

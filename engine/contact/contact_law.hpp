@@ -14,7 +14,8 @@
 /// |----------------------------------------------|-----------------------------------|----------------------|
 /// | augmented Lagrangian (CONTINUE, ALGO_CONT='STANDARD') | alpha = sigma = w, beta = w rho | kappa = w / rho |
 /// | active set (CONTRAINTE)                      | alpha = sigma = w, beta = 0        | kappa = w / c (scaling) |
-/// | penalty (PENALISATION)                       | beta = w rho (or E_N per node); sigma = w, kappa = w / rho when LAGS_C is reported | kappa = w / rho |
+/// | penalty (PENALISATION, penalty_law.cpp)      | beta = w rho; sigma = w, kappa = w / rho (LAGS_C reports rho g) | kappa = w / rho |
+/// | springs (discrete PENALISATION, spring_law.cpp) | beta = E_N (a spring per slave node) | nothing       |
 /// | primal-dual active set (mortar LAGRANGIEN)   | alpha = sigma = w: g = 0 exactly   | nothing              |
 ///
 /// w is the point's weight (contact_point.hpp). When no point has alpha != 0 the
@@ -32,6 +33,7 @@
 
 #include "engine/contact/contact_definition.hpp"
 #include "engine/contact/contact_point.hpp"
+#include "engine/contact/point_law.hpp"
 
 namespace lunaster::engine::contact {
 
@@ -46,12 +48,19 @@ struct StatusInputs {
   const std::vector<double>& min_edge;  ///< smallest slave edge of each zone (m)
 };
 
-class ContactLaw {
+/// A frictionless law (one condition per point, at most one multiplier, LAGS_C) as the shared
+/// parts (contact_problem.hpp, mortar_problem.hpp) drive it: its statuses set by their loops
+/// (`update_statuses`), its terms the four coefficients above. As a PointLaw (point_law.hpp) it
+/// answers from the same coefficients, with the status held in the point's state: r_q = alpha
+/// lambda + beta g, r_z = sigma g - kappa lambda; symmetric.
+class ContactLaw : public PointLaw {
  public:
-  virtual ~ContactLaw() = default;
-  virtual const char* name() const = 0;
   /// True: the slave nodes carry LAGS_C unknowns.
   virtual bool has_multipliers() const = 0;
+  /// LAGS_C, or none.
+  std::vector<int> multipliers(int dim) const override;
+  /// The point's coefficients with its status (Open: inactive), as above.
+  PointResponse evaluate(const PointKinematics& in, const PointState& start, PointState& state) const override;
   /// True: an active condition holds g = 0 exactly by eliminating an unknown of its slave
   /// node (dual rows only, mortar_problem.hpp); no LAGS_C unknown.
   virtual bool exact_by_elimination() const { return false; }
@@ -72,7 +81,11 @@ class ContactLaw {
   /// True when statuses may be updated inside Newton (ALGO_RESO_CONT='NEWTON').
   virtual bool statuses_in_newton_allowed() const { return true; }
   /// Coefficients of a paired point with its current status.
-  virtual PointCoefficients coefficients(const ContactPoint& p, double rho) const = 0;
+  PointCoefficients coefficients(const ContactPoint& p, double rho) const {
+    return point_coefficients(p.active, p.wjac, rho);
+  }
+  /// Coefficients of a paired point of weight w (wjac) with the status `active`.
+  virtual PointCoefficients point_coefficients(bool active, double w, double rho) const = 0;
   /// Contact pressure of an active point (Pa, negative in compression).
   virtual double pressure(const ContactPoint& p, double lambda, double g, double rho) const = 0;
 
@@ -92,11 +105,12 @@ std::unique_ptr<ContactLaw> make_active_set_law();
 /// Primal-dual active set inside Newton, with exact conditions held by elimination (mortar's
 /// ALGO_CONT='LAGRANGIEN').
 std::unique_ptr<ContactLaw> make_complementarity_law();
-/// `spring_per_node`: the coefficient is a nodal stiffness (N/m, discrete E_N), not a
-/// pressure per gap (Pa/m), and no LAGS_C is reported.
-std::unique_ptr<ContactLaw> make_penalty_law(bool spring_per_node);
+/// Penalty with a pressure per gap (COEF_PENA_CONT, Pa/m); LAGS_C reports rho g.
+std::unique_ptr<ContactLaw> make_penalty_law();
+/// Penalty with a spring per slave node (discrete E_N, N/m); no LAGS_C.
+std::unique_ptr<ContactLaw> make_spring_law();
 
-/// The law of a method (the table of contact_factory.hpp).
-std::unique_ptr<ContactLaw> make_contact_law(ContactMethod method);
+/// The law of an enforcement (the table of contact_factory.hpp).
+std::unique_ptr<ContactLaw> make_contact_law(ContactEnforcement how);
 
 }  // namespace lunaster::engine::contact

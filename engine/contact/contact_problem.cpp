@@ -152,6 +152,7 @@ std::array<bool, 3> ContactProblem::displacement_components() const {
 }
 
 MatrixKind ContactProblem::matrix_kind() const {
+  if (!law_->symmetric()) return MatrixKind::General;
   if (coupled() || !relations_.empty()) return MatrixKind::SymmetricIndefinite;
   return MatrixKind::SymmetricPositiveDefinite;
 }
@@ -438,13 +439,24 @@ ContactSnapshot ContactProblem::snapshot() const {
   s.first_step = first_step_;
   s.active.reserve(points_.size());
   for (const auto& p : points_) s.active.push_back(p.active);
+  // Every point's state (status and history) in the hook's own part of the snapshot. The
+  // frictionless laws keep their status in the point and no history: at a step's start the
+  // state there is the state at the step's end.
+  auto states = std::make_shared<PointStates::Snapshot>();
+  states->present.resize(points_.size());
+  for (size_t i = 0; i < points_.size(); ++i)
+    states->present[i].status = points_[i].active ? PointStatus::Stick : PointStatus::Open;
+  states->start = states->present;
+  s.pairing = std::move(states);
   return s;
 }
 
 void ContactProblem::restore(const ContactSnapshot& state) {
   if (state.active.size() != points_.size()) return;  // a snapshot of nothing (taken before add_dofs)
   first_step_ = state.first_step;
-  for (size_t i = 0; i < points_.size(); ++i) points_[i].active = state.active[i] != 0;
+  const auto* states = static_cast<const PointStates::Snapshot*>(state.pairing.get());
+  for (size_t i = 0; i < points_.size(); ++i)
+    points_[i].active = states ? states->present[i].status != PointStatus::Open : state.active[i] != 0;
 }
 
 bool ContactProblem::settle(const Vector& u, const Log& log) {
@@ -521,18 +533,53 @@ bool ContactProblem::add_residual(const Vector& u, Vector& residual) {
   relations_.add_to_system(dofs_, u, relation_terms, residual);
   for (const ContactPoint& p : points_) {
     if (p.wjac == 0.0) continue;
-    const PointCoefficients c = law_->coefficients(p, rho(p.zone));
-    add_point_residual(p, c, multiplier(u, p), p.gap.value(u), residual);
+    add_point_residual(p, respond(p, multiplier(u, p), p.gap.value(u)), residual);
   }
   return true;
 }
 
-void ContactProblem::add_point_residual(const ContactPoint& p, const PointCoefficients& c, double lambda, double g,
-                                        Vector& residual) const {
-  if (c.alpha != 0.0 || c.beta != 0.0) add_gradient(p.gap, c.alpha * lambda + c.beta * g, residual);
+PointResponse ContactProblem::respond(const ContactPoint& p, double lambda, double g) const {
+  PointKinematics in;
+  in.q[0] = g;
+  in.z[0] = lambda;
+  in.weight = p.wjac;
+  in.coefficient = rho(p.zone);
+  PointState state;
+  state.status = p.active ? PointStatus::Stick : PointStatus::Open;
+  const PointState start = state;
+  return law_->evaluate(in, start, state);
+}
+
+PointKinematics ContactProblem::kinematics(const ContactPoint& p, const Vector& u, const Vector& u_start,
+                                           int n_tangents) const {
+  PointKinematics in;
+  in.n_tangents = n_tangents;
+  in.q[0] = p.gap.value(u);
+  in.dq_step[0] = in.q[0] - p.gap.value(u_start);
+  in.z[0] = multiplier(u, p);
+  in.weight = p.wjac;
+  in.coefficient = rho(p.zone);
+  if (n_tangents == 0 || !p.paired) return in;
+  double t[2][3];
+  tangent_frame(p.normal, dim_, t);
+  const MasterSurface& master = *masters_[p.zone];
+  const int k = master.local_index(p.master_cell);
+  double nm[kMaxSurfaceNodes];
+  surface_shape(master.geometry_type(k), p.xi_master, nm, nullptr, nullptr);
+  const auto& mnodes = master.cell_nodes(k);
+  for (int a = 0; a < n_tangents; ++a) {
+    const LinearGap slip = make_linear_gap(mesh_.coords, dofs_, dim_, p.slave_nodes, p.phi, p.n_slave, mnodes.data(),
+                                           nm, static_cast<int>(mnodes.size()), t[a]);
+    in.q[1 + a] = slip.value(u);
+    in.dq_step[1 + a] = in.q[1 + a] - slip.value(u_start);
+  }
+  return in;
+}
+
+void ContactProblem::add_point_residual(const ContactPoint& p, const PointResponse& r, Vector& residual) const {
+  if (r.r_q[0] != 0.0) add_gradient(p.gap, r.r_q[0], residual);
   if (multiplier_nodes_.empty()) return;
-  for (int a = 0; a < p.n_slave; ++a)
-    residual[dofs_.dof(p.slave_nodes[a], LAGS_C)] += p.phi[a] * (c.sigma * g - c.kappa * lambda);
+  for (int a = 0; a < p.n_slave; ++a) residual[dofs_.dof(p.slave_nodes[a], LAGS_C)] += p.phi[a] * r.r_z[0];
 }
 
 void ContactProblem::add_to_system(const Vector& u, std::vector<Triplet>& tangent, Vector& residual) {
@@ -565,14 +612,12 @@ void ContactProblem::add_to_system(const Vector& u, std::vector<Triplet>& tangen
       }
     }
     if (p.wjac == 0.0) continue;  // unpaired inactive points still hold their multiplier rows
-    const PointCoefficients c = law_->coefficients(p, rho(p.zone));
-    const double lambda = multiplier(u, p);
-    const double g = p.gap.value(u);
-    add_point_residual(p, c, lambda, g, residual);
+    const PointResponse c = respond(p, multiplier(u, p), p.gap.value(u));
+    add_point_residual(p, c, residual);
     if (shared_ && !touches_mine_[i]) continue;  // the driver would drop every term of it
     // Every entry the pairing allows is emitted, zeros included (flush emits the whole block):
     // the pattern then depends on the pairing only, not on the statuses.
-    local.add_outer(p.gap, p.gap, c.beta);
+    local.add_outer(p.gap, p.gap, c.k_qq[0][0]);
     if (multiplier_nodes_.empty()) continue;
     for (int a = 0; a < p.n_slave; ++a) leq[a] = dofs_.dof(p.slave_nodes[a], LAGS_C);
     // Condensed: the multiplier rows are solved in recover(); their entries stay zero here.
@@ -581,8 +626,8 @@ void ContactProblem::add_to_system(const Vector& u, std::vector<Triplet>& tangen
     for (int a = 0; a < p.n_slave; ++a) la[a] = local.index(leq[a]);
     for (int k = 0; k < p.gap.n; ++k) lk[k] = local.index(p.gap.eq[k]);
     for (int a = 0; a < p.n_slave; ++a) {
-      const double kappa_a = -on * c.kappa * p.phi[a], sigma_a = on * c.sigma * p.phi[a],
-                   alpha_a = on * c.alpha * p.phi[a];
+      const double kappa_a = on * c.k_zz[0][0] * p.phi[a], sigma_a = on * c.k_zq[0][0] * p.phi[a],
+                   alpha_a = on * c.k_qz[0][0] * p.phi[a];
       for (int b = 0; b < p.n_slave; ++b) local.add_at(la[a], la[b], kappa_a * p.phi[b]);
       for (int k = 0; k < p.gap.n; ++k) {
         local.add_at(la[a], lk[k], sigma_a * p.gap.coef[k]);
@@ -660,12 +705,10 @@ void ContactProblem::write_fields(const Vector& u, ResultStep& step) const {
       for (int k = 0; k < 3; ++k) s.force[k] = force[3 * static_cast<size_t>(s.node) + k];
       s.pressure = p.active ? law_->pressure(p, multiplier(u, p), s.gap, rho(p.zone)) : 0.0;
     }
-    step.nodal["CONT_NOEU"] = nodal_contact_field(states, mesh_.n_nodes(), dim_);
+    step.nodal[kContactStateField] = nodal_contact_field(states, mesh_.n_nodes(), dim_);
     return;
   }
-  std::vector<std::string> cmps = {"CONT", "JEU", "RN", "RNX", "RNY"};
-  if (dim_ == 3) cmps.push_back("RNZ");
-  NodalField field(cmps, mesh_.n_nodes());
+  NodalField field(contact_state_components(dim_, false), mesh_.n_nodes());
   auto set_force = [&](int node) {
     const double* f = &force[3 * static_cast<size_t>(node)];
     field.set(node, 2, std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]));
@@ -692,7 +735,7 @@ void ContactProblem::write_fields(const Vector& u, ResultStep& step) const {
     field.set(node, 1, gap);
     set_force(node);
   }
-  step.nodal["CONT_NOEU"] = std::move(field);
+  step.nodal[kContactStateField] = std::move(field);
 }
 
 }  // namespace lunaster::engine::contact

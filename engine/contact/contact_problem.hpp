@@ -54,6 +54,13 @@ class ContactProblem final : public ContactHook {
   /// Nodes carrying LAGS_C (sorted); empty for a law without multipliers.
   const std::vector<int>& multiplier_nodes() const { return multiplier_nodes_; }
   const LinearRelations& relations() const { return relations_; }
+  /// The law (its `symmetric()` decides whether the system needs an unsymmetric factorisation).
+  const ContactLaw& law() const { return *law_; }
+  /// What a law reads at point p (point_law.hpp), the pairing frozen: q = its normal gap and
+  /// its tangential relative displacement along tangent_frame(normal) (x_slave - x_master),
+  /// dq_step their change since `u_start` (the step's start), z its LAGS_C, its weight and
+  /// the zone's coefficient. `n_tangents`: 0 (the normal gap only) or dim - 1.
+  PointKinematics kinematics(const ContactPoint& p, const Vector& u, const Vector& u_start, int n_tangents) const;
   /// Pressure interpolated at a point from LAGS_C (0 without multipliers).
   double multiplier(const Vector& u, const ContactPoint& p) const;
   /// Forces the statuses of the paired points (tests).
@@ -95,9 +102,10 @@ class ContactProblem final : public ContactHook {
   bool statuses_in_newton() const;
   /// The statuses at iterate u, when they are updated inside Newton (else unchanged).
   void update_statuses_in_newton(const Vector& u);
+  /// The law at point p with multiplier lambda and gap g, its status the point's.
+  PointResponse respond(const ContactPoint& p, double lambda, double g) const;
   /// Point p's terms of the residual: its gap gradient and its multiplier rows.
-  void add_point_residual(const ContactPoint& p, const PointCoefficients& c, double lambda, double g,
-                          Vector& residual) const;
+  void add_point_residual(const ContactPoint& p, const PointResponse& r, Vector& residual) const;
 
   const ContactDefinition def_;
   const Mesh& mesh_;

@@ -38,6 +38,25 @@ LinearGap make_linear_gap(const std::vector<double>& coords, const DofMap& dofs,
   return gap;
 }
 
+void tangent_frame(const double* n, int dim, double t[2][3]) {
+  if (dim == 2) {
+    t[0][0] = -n[1], t[0][1] = n[0], t[0][2] = 0.0;
+    return;
+  }
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(n[k]) < std::abs(n[axis])) axis = k;
+  double e[3] = {0.0, 0.0, 0.0};
+  e[axis] = 1.0;
+  double norm2 = 0.0;
+  for (int k = 0; k < 3; ++k) t[0][k] = e[k] - n[axis] * n[k], norm2 += t[0][k] * t[0][k];
+  const double inv = 1.0 / std::sqrt(norm2);
+  for (int k = 0; k < 3; ++k) t[0][k] *= inv;
+  t[1][0] = n[1] * t[0][2] - n[2] * t[0][1];
+  t[1][1] = n[2] * t[0][0] - n[0] * t[0][2];
+  t[1][2] = n[0] * t[0][1] - n[1] * t[0][0];
+}
+
 void add_outer(const LinearGap& a, const LinearGap& b, double factor, std::vector<Triplet>& tangent) {
   for (int i = 0; i < a.n; ++i)
     for (int j = 0; j < b.n; ++j) tangent.emplace_back(a.eq[i], b.eq[j], factor * a.coef[i] * b.coef[j]);

@@ -37,7 +37,7 @@ MortarProblem::MortarProblem(const ContactDefinition& definition, const Mesh& me
 }
 
 MortarProblem::MortarProblem(const ContactDefinition& definition, const Mesh& mesh, int dim)
-    : MortarProblem(definition, mesh, dim, make_contact_law(definition.method)) {}
+    : MortarProblem(definition, mesh, dim, make_contact_law(definition.method.how)) {}
 
 void MortarProblem::set_dirichlet(const std::vector<DirichletValue>& dirichlet) {
   for (const auto& d : dirichlet) imposed_.insert({d.node, d.component});
@@ -139,8 +139,9 @@ void MortarProblem::begin_step(const Vector& u, const Log& log) {
     if (tied.size() > 5) names += " and " + std::to_string(tied.size() - 5) + " more";
     log.warning("mortar contact: a linear relation ties the displacement along the contact normal of slave "
                 "node(s) " + names + ": the relation and the contact condition act on the same unknown, so "
-                "the relation carries the force there and the node's contact pressure (LAGS_C) reads 0 (or "
-                "the two contradict each other); leave such nodes out of the relation or of the slave group");
+                "the relation carries the force there and the node's contact pressure (" + std::string(component_name(LAGS_C)) +
+                ") reads 0 (or the two contradict each other); leave such nodes out of the relation or of the "
+                "slave group");
   }
 }
 
@@ -386,25 +387,27 @@ void MortarProblem::restore(const ContactSnapshot& state) {
 
 namespace {
 
-/// The index of LAGS_C in DEPL, the component added (undefined everywhere) if DEPL has none.
+/// The index of LAGS_C in the displacements, the component added (undefined everywhere) if
+/// they have none.
 int lags_c_of(NodalField& depl) {
-  int lags = depl.component_index("LAGS_C");
+  const std::string name = component_name(LAGS_C);
+  int lags = depl.component_index(name);
   if (lags >= 0) return lags;
   std::vector<std::string> components = depl.components;
-  components.push_back("LAGS_C");
+  components.push_back(name);
   NodalField wider(components, depl.n_nodes);
   for (int node = 0; node < depl.n_nodes; ++node)
     for (int c = 0; c < depl.n_components(); ++c)
       if (depl.has(node, c)) wider.set(node, c, depl.value(node, c));
   depl = std::move(wider);
-  return depl.component_index("LAGS_C");
+  return depl.component_index(name);
 }
 
 }  // namespace
 
 void MortarProblem::write_initial_fields(ResultStep& step) const {
   // Before contact: no pressure at the nodes of the slave surfaces, where LAGS_C will live.
-  NodalField& depl = step.nodal.at("DEPL");
+  NodalField& depl = step.nodal.at(kDisplacementField);
   const int lags = lags_c_of(depl);
   for (int z = 0; z < segments_.n_zones(); ++z)
     for (const OrientedCell& oc : segments_.slave_cells(z))
@@ -413,7 +416,7 @@ void MortarProblem::write_initial_fields(ResultStep& step) const {
 
 void MortarProblem::write_fields(const Vector& u, ResultStep& step) const {
   // LAGS_C in DEPL: the nodal pressure, negative in compression (no unknown carries it).
-  NodalField& depl = step.nodal.at("DEPL");
+  NodalField& depl = step.nodal.at(kDisplacementField);
   const int lags = lags_c_of(depl);
   std::vector<NodalContactState> states(rows_.size());
   for (size_t i = 0; i < rows_.size(); ++i) {
@@ -427,7 +430,7 @@ void MortarProblem::write_fields(const Vector& u, ResultStep& step) const {
     for (int k = 0; k < dim_; ++k) s.force[k] = -lambda * r.d * r.normal[k];  // -lambda D_j n_j
     s.pressure = -lambda;
   }
-  step.nodal["CONT_NOEU"] = nodal_contact_field(states, mesh_.n_nodes(), dim_);
+  step.nodal[kContactStateField] = nodal_contact_field(states, mesh_.n_nodes(), dim_);
 }
 
 }  // namespace lunaster::engine::contact

@@ -52,7 +52,9 @@ class MortarProblem final : public ContactHook {
   const std::vector<Elimination>& eliminations() const override { return eliminations_; }
   bool newton_converged() const override;
   bool settle(const Vector& u, const Log& log) override;
-  MatrixKind matrix_kind() const override { return MatrixKind::SymmetricPositiveDefinite; }
+  MatrixKind matrix_kind() const override {
+    return law_->symmetric() ? MatrixKind::SymmetricPositiveDefinite : MatrixKind::General;
+  }
   long pattern_version() const override { return pattern_version_; }
   unsigned long long status_key() const override;
   int n_active() const override;
@@ -71,6 +73,8 @@ class MortarProblem final : public ContactHook {
   /// Times the rows were integrated (a pairing, or a re-pairing checked against the last).
   int n_row_builds() const { return n_row_builds_; }
   int n_status_changes() const { return n_status_changes_; }
+  /// The law (its `symmetric()` decides whether the system needs an unsymmetric factorisation).
+  const ContactLaw& law() const { return *law_; }
 
  private:
   void pair(const Vector& u, const Log* log);

@@ -455,7 +455,7 @@ void MortarSegments::report(const std::vector<MortarRow>& rows, int n_active, co
   std::ostringstream msg;
   msg << "mortar contact: " << rows.size() << " slave nodes paired, " << n_active << " initially in contact; "
       << "the master surface covers " << covered << " of the slave surface's " << total
-      << (axisymmetric_ ? " m^2 per radian (AXIS)" : dim_ == 2 ? " m" : " m^2");
+      << (axisymmetric_ ? " m^2 per radian (axisymmetric)" : dim_ == 2 ? " m" : " m^2");
   log.info(msg.str());
 }
 

@@ -82,8 +82,8 @@ class NodeToSegment final : public Discretisation {
   void report(const Log& log) const override {
     if (!tied_.empty())
       log.info("discrete contact on QUAD8 faces: " + std::to_string(tied_.size()) +
-               " mid-side node(s) tied to the mean of their edge's vertices (linear relations, as code_aster's "
-               "CONTACT_8); only vertex nodes are slave nodes");
+               " mid-side node(s) tied to the mean of their edge's vertices (linear relations); only vertex "
+               "nodes are slave nodes");
     if (free_mid_side_)
       log.warning("discrete contact on quadratic SEG3/TRIA6 faces: only vertex nodes are slave nodes and master "
                   "cells are linearised; their mid-side nodes are not constrained and may penetrate (the "

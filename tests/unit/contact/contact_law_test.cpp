@@ -57,9 +57,9 @@ TEST(ComplementarityLaw, StatusesChangeOnlyBeyondRoundOff) {
 TEST(ContactLaws, OnlyTheComplementarityLawEliminates) {
   EXPECT_FALSE(make_augmented_lagrangian_law()->exact_by_elimination());
   EXPECT_FALSE(make_active_set_law()->exact_by_elimination());
-  EXPECT_FALSE(make_penalty_law(false)->exact_by_elimination());
-  EXPECT_FALSE(make_penalty_law(true)->exact_by_elimination());
-  EXPECT_FALSE(make_penalty_law(false)->relative_coefficient());
+  EXPECT_FALSE(make_penalty_law()->exact_by_elimination());
+  EXPECT_FALSE(make_spring_law()->exact_by_elimination());
+  EXPECT_FALSE(make_penalty_law()->relative_coefficient());
 }
 
 }  // namespace

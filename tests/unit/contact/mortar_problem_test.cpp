@@ -111,7 +111,7 @@ TEST(MortarProblem, TheLawDecidesHowTheRowsAreHeld) {
   MortarProblem exact(def, tb.mesh, 2, make_complementarity_law());
   expect_uniform(run_mortar(model, displacement_bcs(tb), exact), exact, -1e5, -0.05, 1e-11);
   def.method = ContactMethod::MortarLagrange;
-  MortarProblem penalty(def, tb.mesh, 2, make_penalty_law(false));
+  MortarProblem penalty(def, tb.mesh, 2, make_penalty_law());
   const MortarRun run = run_mortar(model, displacement_bcs(tb), penalty);
   const double p = 0.1 * 2e6 / (2.0 + 2e6 / 1e9);  // the floor of PenaltyGivesItsFloorAndNoWorse
   expect_uniform(run, penalty, -p, -0.05 - 0.5 * p / 1e9, 1e-10);
