@@ -671,7 +671,26 @@ class Translator {
       Statement& hs = a_.statements[heads[i]];
       const Token& g = t_[hs.toks.front()];
       add_lexical(hs);
-      if (hs.reasons.empty()) {
+      Context inner = context;
+      if (word == "for" || word == "while") inner.in_loop = true;
+      if (word == "def") inner = Context{true, false};
+      const std::size_t inline_colon = ends[i] == heads[i] + 1 && word != "def" ? top_level_colon(hs) : 0;
+      if (hs.reasons.empty() && inline_colon) {
+        // `if c: return x` on one line: the header, then its one-statement body, `end` after it
+        Statement head = hs, body = hs;
+        head.toks.resize(inline_colon + 1);
+        body.toks.erase(body.toks.begin(), body.toks.begin() + static_cast<std::ptrdiff_t>(inline_colon) + 1);
+        head.reasons.clear();
+        body.reasons.clear();
+        translate_header(head, heads[i], ends[i]);
+        if (is_block_header(body))
+          body.reasons.push_back({t_[body.toks.front()].line, "a block inside a one-line '" + g.text + "'",
+                                  "put the body on the lines below it, indented"});
+        else
+          translate(body, inner);
+        hs.reasons = head.reasons;
+        hs.reasons.insert(hs.reasons.end(), body.reasons.begin(), body.reasons.end());
+      } else if (hs.reasons.empty()) {
         if (!is_op(t_[hs.toks.back()], ":"))
           hs.reasons.push_back({g.line, "'" + g.text + "' with its body on the same line",
                                 "put the body on the lines below it, indented"});
@@ -681,9 +700,6 @@ class Translator {
           translate_header(hs, heads[i], ends[i]);
       }
       if (!hs.reasons.empty()) hs.refused = true;
-      Context inner = context;
-      if (word == "for" || word == "while") inner.in_loop = true;
-      if (word == "def") inner = Context{true, false};
       translate_range(heads[i] + 1, ends[i], inner);
     }
     const std::size_t last = ends.back();
@@ -693,6 +709,17 @@ class Translator {
     if (refused)
       for (std::size_t j = k; j < last; ++j) a_.statements[j].refused = true;
     return last;
+  }
+
+  /// Position of the ':' ending a header followed by its body on the same line (0 if none).
+  std::size_t top_level_colon(const Statement& st) const {
+    for (std::size_t p = 1; p + 1 < st.toks.size(); ++p) {
+      const Token& t = t_[st.toks[p]];
+      if (t.kind == Kind::Op && t.match > st.toks[p] && std::strchr("([{", t.text[0])) p = pos_of(st, t.match);
+      else if (is_name(t, "lambda")) return 0;
+      else if (is_op(t, ":")) return p;
+    }
+    return 0;
   }
 
   auto refuser(Statement& st) {
@@ -992,7 +1019,11 @@ class Translator {
       return;
     }
     translate_tokens(st, 0, n - 1, refuse);
-    check_statement_form(st, refuse);
+    if (std::all_of(st.toks.begin(), st.toks.end(), [&](int k) { return t_[k].kind == Kind::String; })) {
+      a_.pre[st.toks.front()] = "local _ = " + a_.pre[st.toks.front()];  // a docstring: Lua has no bare values
+    } else {
+      check_statement_form(st, refuse);
+    }
     if (!why.empty()) st.refused = true;
   }
 

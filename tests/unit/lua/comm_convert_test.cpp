@@ -331,7 +331,7 @@ TEST(CommConvert, RefusedFormsAreReportedAndCommentedOut) {
       {"class C:\n    pass\nA = 1\n", 1, "class definition 'class C'", "by hand", {1, 2}},
       {"for i, j in zip(a, b):\n    X = CMD(A=i)  # body\n    Y = 2\nZ = 1\n", 1, "'for' loop over several names",
        "one name", {1, 2, 3}},
-      {"while n < 3: n = n + 1\nZ = 1\n", 1, "'while' with its body on the same line", "lines below", {1}},
+      {"def f(x): return x\nZ = 1\n", 1, "'def' with its body on the same line", "lines below", {1}},
       {"A = 1\nif A > 0:\n    B = 1\nelif A < 0:\n    B = {1: 2}\nelse:\n    B = 3\nC = 4\n", 5, "dict", "_F(...)",
        {2, 3, 4, 5, 6, 7}},
       {"for i in range(2):\n    A = i\nelse:\n    A = 3\nC = 4\n", 3, "'else' block", "branch", {3, 4}},
@@ -586,4 +586,27 @@ TEST(CommConvert, PythonFormattingOfNumbers) {
   EXPECT_EQ(lua.eval("py.format('{}-{:.3f}-{0}|{:>5}|{:05.1f}', 1, 2.5, 'ab', -2.5)"), "1-2.500-1|   ab|-02.5");
   EXPECT_EQ(lua.eval("select(2, pcall(py.math.sqrt, -1))"), "math.sqrt: math domain error");
   EXPECT_EQ(lua.eval("select(2, pcall(py.fmt, '%d %d', 1))"), "not enough arguments for format string");
+}
+
+// One-line bodies (`if c: return x`) and docstrings, as code_aster's files write small helpers.
+TEST(CommConvert, OneLineBodiesAndDocstrings) {
+  const std::string comm =
+      "def pr(y) :\n"
+      "   \"\"\" the pressure\n"
+      "       by parts \"\"\"\n"
+      "   if y < 1.e-15 : return 0.E07\n"
+      "   if y > 1.e-15 : return 15.E07\n"
+      "   return 0.\n"
+      "for i in range(3): last = i\n"
+      "if last == 2: ok = 1\n"
+      "else: ok = 0\n"
+      "A = CMD(P=[pr(y) for y in (0., 1.)], L=last, OK=ok)\n";
+  Lua lua;
+  const std::string out = convert_clean(comm, lua);
+  EXPECT_EQ(lines_of(out)[3], "   if y < 1.e-15  then return 0.E07 end");
+  EXPECT_EQ(lua.eval("CALLS[1].args.P[2]"), "float:150000000.0");
+  EXPECT_EQ(lua.eval("CALLS[1].args.L + CALLS[1].args.OK"), "integer:3");
+  const auto refused = convert_comm("if A: for i in B: pass\n").refused;
+  ASSERT_EQ(refused.size(), 1u);
+  EXPECT_EQ(refused[0].what, "a block inside a one-line 'if'");
 }
