@@ -1344,6 +1344,18 @@ class Translator {
       stringy_end_.insert(st.toks[last]);
       return;
     }
+    if (op == "*" && before && before->kind == Kind::String && after &&
+        (after->kind == Kind::Number || after->kind == Kind::Name || is_op(*after, "("))) {
+      // '-' * 80: string.rep('-', 80)
+      std::size_t q = p - 1;
+      while (q > 0 && t_[st.toks[q - 1]].kind == Kind::String) --q;
+      const std::size_t last = primary_end(st, p + 1);
+      a_.pre[st.toks[q]] = "string.rep(" + a_.pre[st.toks[q]];
+      a_.out[k] = ",";
+      a_.post[st.toks[last]] += ")";
+      stringy_end_.insert(st.toks[last]);
+      return;
+    }
     if (op == ".") {
       std::string what = (before && before->kind == Kind::Name ? before->text : "") + "." +
                          (after && after->kind == Kind::Name ? after->text : "");
@@ -1358,7 +1370,13 @@ class Translator {
       const bool text_before = before && (before->kind == Kind::String || stringy_end_.count(st.toks[p - 1]) ||
                                           (is_op(*before, ")") && p >= 1 && is_str_call(st, pos_of(st, before->match))));
       const bool text_after = after && (after->kind == Kind::String || (is_name(*after, "str") && !shadowed("str")));
-      if (text_before || text_after) a_.out[k] = "..";
+      const bool unary = !before || (before->kind == Kind::Op && before->text != ")" && before->text != "]" &&
+                                     before->text != "}") ||
+                         (before->kind == Kind::Name && is_python_keyword(before->text) && before->text != "True" &&
+                          before->text != "False" && before->text != "None");
+      if (unary) a_.out[k] = "";  // +x: Lua has no unary plus
+      else if (text_before || text_after)
+        a_.out[k] = before->kind == Kind::Number && t.begin == before->end ? " .." : "..";  // 80.. would read as a number
     } else if (op == "=") {
       // keyword argument of a command call: fine; the statement's own '=' is checked by the form.
     } else if (op == "&" || op == "|" || op == "^" || op == "~" || op == "<<" || op == ">>") {

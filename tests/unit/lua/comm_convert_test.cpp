@@ -610,3 +610,19 @@ TEST(CommConvert, OneLineBodiesAndDocstrings) {
   ASSERT_EQ(refused.size(), 1u);
   EXPECT_EQ(refused[0].what, "a block inside a one-line 'if'");
 }
+
+// Unary plus (VALE=+1.0), text repeated by '*', and '+' joining a number's text: Lua spellings.
+TEST(CommConvert, UnaryPlusAndTextRepetition) {
+  const std::string comm =
+      "A = +2.0E-5\n"
+      "B = CMD(V=+1.0, W=(+1, -2), X=2 + +3)\n"
+      "S = '-'*3+\"\"\"x\"\"\"\n"
+      "N = str(80)+'!'\n";
+  Lua lua;
+  const std::string out = convert_clean(comm, lua);
+  EXPECT_EQ(lines_of(out)[0], "A = 2.0E-5");
+  EXPECT_EQ(lua.eval("CALLS[1].args.V"), "float:1.0");
+  EXPECT_EQ(lua.eval("CALLS[1].args.X"), "integer:5");
+  EXPECT_EQ(lua.eval("S"), "---x");
+  EXPECT_EQ(lua.eval("N"), "80!");
+}
