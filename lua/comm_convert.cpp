@@ -1153,6 +1153,17 @@ class Translator {
     return o >= 1 && is_name(t_[st.toks[o - 1]], "str") && !shadowed("str");
   }
 
+  /// TEXT op OPERAND (the operator at position p, after string literals) -> call(TEXT, OPERAND).
+  void text_call(const Statement& st, std::size_t p, const char* call) {
+    std::size_t q = p - 1;
+    while (q > 0 && t_[st.toks[q - 1]].kind == Kind::String) --q;
+    const std::size_t last = primary_end(st, p + 1);
+    a_.pre[st.toks[q]] = call + a_.pre[st.toks[q]];
+    a_.out[st.toks[p]] = ",";
+    a_.post[st.toks[last]] += ")";
+    stringy_end_.insert(st.toks[last]);
+  }
+
   /// Position of the last token of the operand starting at position q: a name, number, text or bracket,
   /// with its calls, subscripts and attributes.
   std::size_t primary_end(const Statement& st, std::size_t q) const {
@@ -1333,27 +1344,13 @@ class Translator {
       return;
     }
     if (op == "." && method(st, p, before, after)) return;
-    if (op == "%" && before && before->kind == Kind::String) {
-      // 'text %d' % value, 'text %s %s' % (a, b): py.fmt(text, value) (a tuple becomes a table)
-      std::size_t q = p - 1;
-      while (q > 0 && t_[st.toks[q - 1]].kind == Kind::String) --q;
-      const std::size_t last = primary_end(st, p + 1);
-      a_.pre[st.toks[q]] = "py.fmt(" + a_.pre[st.toks[q]];
-      a_.out[k] = ",";
-      a_.post[st.toks[last]] += ")";
-      stringy_end_.insert(st.toks[last]);
+    if (op == "%" && before && before->kind == Kind::String) {  // 'text %d' % v, 'text %s %s' % (a, b)
+      text_call(st, p, "py.fmt(");  // a tuple becomes a table
       return;
     }
     if (op == "*" && before && before->kind == Kind::String && after &&
         (after->kind == Kind::Number || after->kind == Kind::Name || is_op(*after, "("))) {
-      // '-' * 80: string.rep('-', 80)
-      std::size_t q = p - 1;
-      while (q > 0 && t_[st.toks[q - 1]].kind == Kind::String) --q;
-      const std::size_t last = primary_end(st, p + 1);
-      a_.pre[st.toks[q]] = "string.rep(" + a_.pre[st.toks[q]];
-      a_.out[k] = ",";
-      a_.post[st.toks[last]] += ")";
-      stringy_end_.insert(st.toks[last]);
+      text_call(st, p, "string.rep(");  // '-' * 80
       return;
     }
     if (op == ".") {
