@@ -13,11 +13,23 @@ Args::Args(const KwNode& node, const Keyword& spec, std::string path, std::strin
 const Keyword* Args::declared(const std::string& kw) const {
   const Keyword* found = find_active(*spec_, *node_, kw);
   if (!found) found = find_declared(*spec_, kw);
+  if (!found && node_->simple.count(kw) && node_->simple.at(kw).size() == 1) {
+    // a named value (FORMULE's): the deck's own name, not a catalogue path to record
+    if (const Keyword* form = find_other_form(*spec_, node_->simple.at(kw).front())) return form;
+  }
   if (!found)
     throw InternalError("keyword " + path(kw) + " is not declared in the catalogue of '" +
                         (path_.empty() ? spec_->name : path_) + "'");
   if (reads_) reads_->record(catalog_path_ + "/" + kw);
   return found;
+}
+
+std::vector<std::string> Args::other_names() const {
+  std::vector<std::string> names;
+  if (spec_->other_keywords.empty()) return names;
+  for (const auto& [name, values] : node_->simple)
+    if (!find_active(*spec_, *node_, name) && !find_declared(*spec_, name)) names.push_back(name);
+  return names;
 }
 
 bool Args::declares(const std::string& kw) const {

@@ -46,6 +46,8 @@ class Args {
   Args(const KwNode& node, const Keyword& spec, std::string path = {}, KeywordReads* reads = nullptr);
 
   bool has(const std::string& kw) const;
+  /// The names given here that the spec does not declare and takes as other_keywords (FORMULE's named values).
+  std::vector<std::string> other_names() const;
   /// True if the spec (or an active block) declares `kw` here; never throws.
   bool declares(const std::string& kw) const;
   double real(const std::string& kw) const;

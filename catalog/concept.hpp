@@ -11,7 +11,8 @@ class Concept {
  public:
   virtual ~Concept() = default;
   /// code_aster type name: "maillage", "modele", "mater", "cham_mater", "char_meca",
-  /// "char_contact", "listr8", "list_inst", "fonction", "evol_noli", "table".
+  /// "char_contact", "listr8", "list_inst", "fonction", "formule", "evol_noli", "table"; "function" is a
+  /// function of the deck given to FORMULE.
   virtual std::string type_name() const = 0;
   /// True for a concept on a mesh in parts (LIRE_MAILLAGE's PARTITIONNEUR): only the commands
   /// written for parts take it (docs/distributed-model.md).

@@ -15,8 +15,23 @@ const CommandSpec& debut_spec() {
                        text("VISU_EFICAS", "code_aster GUI flag, ignored").into_values({"OUI", "NON"})})
            .legacy(),
        text("PAR_LOT", "code_aster batch mode switch, accepted and ignored").into_values({"OUI", "NON"}).legacy(),
-       factor("DEBUG", {text("SDVERI", "code_aster data-structure checks, accepted and ignored").into_values({"OUI", "NON"})},
+       factor("DEBUG", {text("SDVERI", "code_aster data-structure checks, accepted and ignored").into_values({"OUI", "NON"}),
+                        text("JXVERI", "code_aster memory-manager checks, accepted and ignored").into_values({"OUI", "NON"}),
+                        text("JEVEUX", "code_aster memory-manager debugging, accepted and ignored").into_values({"OUI", "NON"}),
+                        text("HIST_ETAPE", "code_aster command history, accepted and ignored").into_values({"OUI", "NON"})},
               "code_aster debugging switches, accepted and ignored")
+           .legacy(),
+       factor("ERREUR", {text("ERREUR_F", "code_aster's reaction to an error: lunaster always stops the deck at its "
+                                          "first error with the reason, which both values end in")
+                             .into_values({"ABORT", "EXCEPTION"})},
+              "code_aster error handling, accepted (a lunaster error always stops the deck)")
+           .legacy(),
+       integer("INFO", "code_aster message level of DEBUT, accepted and ignored (lunaster's log has one level)")
+           .into_values({1LL, 2LL})
+           .legacy(),
+       text("IMPR_MACRO", "code_aster's echo of the commands inside its macros, accepted and ignored (lunaster's "
+                          "commands are not macros)")
+           .into_values({"OUI", "NON"})
            .legacy(),
        text("IGNORE_ALARM", "code_aster alarm identifiers to silence, accepted and ignored (lunaster's warnings "
                             "have no identifiers)")

@@ -70,6 +70,7 @@ void text_keywords(std::ostringstream& out, const Keyword& spec, int depth) {
   for (const auto& kw : spec.children) one(kw, "");
   for (const auto& block : spec.blocks)
     for (const auto& kw : block.keywords) one(kw, condition_text(block));
+  for (const auto& kw : spec.other_keywords) one(kw, "any other name");
   for (const auto& rule : spec.rules) out << pad << "rule: " << rule_text(rule) << "\n";
   for (const auto& block : spec.blocks)
     for (const auto& rule : block.rules) out << pad << "rule (" << condition_text(block) << "): " << rule_text(rule) << "\n";
@@ -86,6 +87,7 @@ void markdown_rows(std::ostringstream& out, const Keyword& spec, const std::stri
   for (const auto& kw : spec.children) row(kw, "");
   for (const auto& block : spec.blocks)
     for (const auto& kw : block.keywords) row(kw, condition_text(block));
+  for (const auto& kw : spec.other_keywords) row(kw, "any other name");
 }
 
 void markdown_rules(std::ostringstream& out, const Keyword& spec, const std::string& prefix) {

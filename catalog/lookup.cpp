@@ -89,6 +89,29 @@ const Keyword* find_declared(const Keyword& spec, const std::string& name) {
   return nullptr;
 }
 
+const Keyword* find_other_form(const Keyword& spec, const Value& value) {
+  for (const auto& form : spec.other_keywords) {
+    switch (form.type) {
+      case ValueType::Real:
+        if (std::holds_alternative<double>(value) || std::holds_alternative<long long>(value)) return &form;
+        break;
+      case ValueType::Int:
+        if (std::holds_alternative<long long>(value)) return &form;
+        break;
+      case ValueType::Text:
+        if (std::holds_alternative<std::string>(value)) return &form;
+        break;
+      case ValueType::Concept: {
+        const auto* c = std::get_if<ConceptPtr>(&value);
+        if (c && *c && std::find(form.concept_types.begin(), form.concept_types.end(), (*c)->type_name()) != form.concept_types.end())
+          return &form;
+        break;
+      }
+    }
+  }
+  return nullptr;
+}
+
 std::string join_path(const std::string& prefix, const std::string& name) {
   return prefix.empty() ? name : prefix + "." + name;
 }

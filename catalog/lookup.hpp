@@ -19,6 +19,8 @@ std::vector<const Keyword*> active_keywords(const Keyword& spec, const KwNode& n
 const Keyword* find_active(const Keyword& spec, const KwNode& node, const std::string& name);
 /// A keyword named `name` declared anywhere in `spec` (children or any block), or nullptr.
 const Keyword* find_declared(const Keyword& spec, const std::string& name);
+/// The form of spec.other_keywords that `value` takes (a named value of FORMULE), or nullptr.
+const Keyword* find_other_form(const Keyword& spec, const Value& value);
 /// Path of a child keyword: "A.B" (or "B" at the root).
 std::string join_path(const std::string& prefix, const std::string& name);
 /// Path of occurrence `index` (0-based) of factor `kw`: "EXCIT[2]" if it may repeat, else "CONVERGENCE".

@@ -70,6 +70,9 @@ struct Keyword {
   /// A simple keyword that code_aster also takes as a factor occurrence (DEBUT's CODE='OUI'
   /// and older CODE=_F(NIV_PUB_WEB=...)): the children of that form (empty: simple only).
   std::vector<Keyword> factor_form;
+  /// Names the spec does not declare, each a simple keyword taking one of these forms (FORMULE's
+  /// named values: a real or a function); empty: an undeclared name is an unknown keyword.
+  std::vector<Keyword> other_keywords;
 
   // ---- fluent construction (each returns a modified copy) ----
   Keyword required() const { Keyword k = *this; k.status = Status::Required; if (k.is_factor && k.min_occurs < 1) k.min_occurs = 1; return k; }
@@ -93,6 +96,8 @@ struct Keyword {
   Keyword with_rules(std::vector<Rule> r) const { Keyword k = *this; k.rules = std::move(r); return k; }
   Keyword with_blocks(std::vector<Block> b) const;
   Keyword help(std::string text) const { Keyword k = *this; k.doc = std::move(text); return k; }
+  /// Any other name is a simple keyword of one of these forms (their `name` is shown in the help).
+  Keyword others(std::vector<Keyword> forms) const { Keyword k = *this; k.other_keywords = std::move(forms); return k; }
 };
 
 

@@ -19,6 +19,8 @@ const CommandSpec& defi_cont_spec();
 const CommandSpec& defi_list_reel_spec();
 const CommandSpec& defi_list_inst_spec();
 const CommandSpec& defi_fonction_spec();
+const CommandSpec& defi_constante_spec();
+const CommandSpec& formule_spec();
 const CommandSpec& stat_non_line_spec();
 const CommandSpec& meca_non_line_spec();
 const CommandSpec& calc_champ_spec();

@@ -42,7 +42,7 @@ std::vector<Keyword> keywords(bool meca_non_line) {
       concept_kw("CHAM_MATER", {"cham_mater"}, "Material field").required(),
       factor("EXCIT",
              {concept_kw("CHARGE", {"char_meca"}, "Load").required(),
-              concept_kw("FONC_MULT", {"fonction"}, "Time multiplier of the load (default: 1 at every time)")},
+              concept_kw("FONC_MULT", {"fonction", "formule"}, "Time multiplier of the load, a function of INST (default: 1 at every time)")},
              "Loads applied")
           .occurs(0, -1),
       meca_non_line ? factor("CONTACT", {concept_kw("DEFINITION", {"char_contact"}, "Contact definition from DEFI_CONT or DEFI_CONTACT").required()},

@@ -111,6 +111,21 @@ void Checker::check_unknown(const Keyword& spec, KwNode& node, const std::string
   for (const auto& name : unknown) {
     if (std::find(names.begin(), names.end(), name) != names.end()) continue;
     std::string path = join_path(prefix, name);
+    if (!spec.other_keywords.empty() && node.simple.count(name)) {  // a named value (FORMULE's)
+      const auto& values = node.simple[name];
+      std::vector<std::string> forms;
+      for (const auto& form : spec.other_keywords) forms.push_back(expected_text(form));
+      if (values.size() == 1 && find_other_form(spec, values.front())) {
+        if (auto i = std::get_if<long long>(&node.simple[name].front());
+            i && find_other_form(spec, values.front())->type == ValueType::Real)
+          node.simple[name].front() = static_cast<double>(*i);
+        continue;
+      }
+      add(path, "a single value: " + join_names(forms, " or "),
+          values.size() == 1 ? describe(values.front()) : plural(values.size(), "value"));
+      node.simple.erase(name);
+      continue;
+    }
     // Keywords of inactive blocks: say when they would be valid (conditions merged per keyword).
     std::vector<std::pair<std::string, std::vector<std::string>>> conditions;
     for (const auto& block : spec.blocks) {

@@ -32,6 +32,8 @@ ConceptPtr defi_cont(const Args& args, Session& session);
 ConceptPtr defi_list_reel(const Args& args, Session& session);
 ConceptPtr defi_list_inst(const Args& args, Session& session);
 ConceptPtr defi_fonction(const Args& args, Session& session);
+ConceptPtr defi_constante(const Args& args, Session& session);
+ConceptPtr formule(const Args& args, Session& session);
 ConceptPtr stat_non_line(const Args& args, Session& session);
 ConceptPtr meca_non_line(const Args& args, Session& session);
 ConceptPtr calc_champ(const Args& args, Session& session);

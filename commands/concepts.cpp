@@ -1,5 +1,8 @@
 #include "commands/concepts.hpp"
 
+#include "commands/commands.hpp"
+#include "commands/formula.hpp"
+
 #include <algorithm>
 #include <cstdio>
 
@@ -31,6 +34,28 @@ double Fonction::operator()(double x) const {
   const size_t i0 = i1 - 1;
   const double s = (x - abscissas[i0]) / (abscissas[i1] - abscissas[i0]);
   return ordinates[i0] + s * (ordinates[i1] - ordinates[i0]);
+}
+
+double Fonction::evaluate(const std::vector<double>& values) const {
+  if (values.size() != 1)
+    throw DeckError("function " + (user_name.empty() ? std::string("DEFI_FONCTION") : user_name) + " of " + nom_para +
+                    " called with " + std::to_string(values.size()) + " values");
+  return (*this)(values[0]);
+}
+
+double Formule::evaluate(const std::vector<double>& values) const {
+  if (values.size() != nom_para.size())
+    throw DeckError("FORMULE " + user_name + " of " + std::to_string(nom_para.size()) + " parameter(s) called with " +
+                    std::to_string(values.size()) + " value(s)");
+  try {
+    return compiled(values);
+  } catch (const FormulaDomainError& e) {
+    std::string at;
+    for (std::size_t i = 0; i < values.size(); ++i)
+      at += (i ? ", " : "") + nom_para[i] + " = " + number_text(values[i]);
+    throw DeckError("FORMULE " + (user_name.empty() ? std::string() : user_name + " ") + "'" + vale + "': " + e.what +
+                    " at " + at);
+  }
 }
 
 }  // namespace lunaster::cmd

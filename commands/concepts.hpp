@@ -97,14 +97,34 @@ struct ListR8 : Concept {
   std::string type_name() const override { return "listr8"; }
 };
 
-/// DEFI_FONCTION: piecewise linear function of one parameter.
-struct Fonction : Concept {
+/// A function of named real parameters: DEFI_FONCTION, DEFI_CONSTANTE, FORMULE, a deck's own function.
+struct RealFunction : Concept {
+  /// The parameter names, in the order of a call; empty for a deck's function (any number of arguments).
+  virtual std::vector<std::string> parameters() const = 0;
+  /// The value for these parameter values; DeckError where it is not defined.
+  virtual double evaluate(const std::vector<double>& values) const = 0;
+};
+
+/// DEFI_FONCTION: piecewise linear function of one parameter (DEFI_CONSTANTE: one point, constant).
+struct Fonction : RealFunction {
   std::string nom_para = "INST";
   std::vector<double> abscissas, ordinates;
   char prol_gauche = 'E', prol_droite = 'E';  ///< 'E' exclu, 'C' constant, 'L' linéaire
   /// Value at x; throws DeckError outside the range when prolongation is 'E'.
   double operator()(double x) const;
+  std::vector<std::string> parameters() const override { return {nom_para}; }
+  double evaluate(const std::vector<double>& values) const override;
   std::string type_name() const override { return "fonction"; }
+};
+
+/// FORMULE: an expression of named parameters (commands/formula.hpp reads it).
+struct Formule : RealFunction {
+  std::vector<std::string> nom_para;
+  std::string vale;  ///< the expression as given
+  std::function<double(const std::vector<double>&)> compiled;
+  std::vector<std::string> parameters() const override { return nom_para; }
+  double evaluate(const std::vector<double>& values) const override;
+  std::string type_name() const override { return "formule"; }
 };
 
 /// STAT_NON_LINE result (and CALC_CHAMP reuse).

@@ -19,6 +19,8 @@ const std::vector<CommandEntry>& all_handlers() {
       {"DEFI_LIST_REEL", defi_list_reel},
       {"DEFI_LIST_INST", defi_list_inst},
       {"DEFI_FONCTION", defi_fonction},
+      {"DEFI_CONSTANTE", defi_constante},
+      {"FORMULE", formule},
       {"STAT_NON_LINE", stat_non_line},
       {"MECA_NON_LINE", meca_non_line},
       {"CALC_CHAMP", calc_champ},

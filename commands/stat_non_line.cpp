@@ -267,8 +267,13 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
       throw excit.error("CHARGE", "a load defined on MODELE", "'" + charge->user_name + "' defined on another model");
     const int index = static_cast<int>(loads.multipliers.size());
     if (excit.has("FONC_MULT")) {
-      auto f = excit.concept_as<Fonction>("FONC_MULT");
-      loads.multipliers.push_back([f](double t) { return (*f)(t); });
+      auto f = excit.concept_as<RealFunction>("FONC_MULT");
+      if (std::dynamic_pointer_cast<Formule>(f) && f->parameters() != std::vector<std::string>{"INST"})
+        throw excit.error("FONC_MULT", "a function of INST alone",
+                          "a FORMULE of " + std::to_string(f->parameters().size()) + " parameter(s), the first '" +
+                              f->parameters().front() + "'",
+                          {"write the multiplier as FORMULE(VALE=..., NOM_PARA='INST')"});
+      loads.multipliers.push_back([f](double t) { return f->evaluate({t}); });
     } else {
       loads.multipliers.push_back([](double) { return 1.0; });
     }

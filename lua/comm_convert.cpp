@@ -524,6 +524,8 @@ std::string hint_for_function(const std::string& name) {
 struct Analysis {
   Tokenized tz;
   std::vector<std::string> out;  ///< per token
+  std::vector<std::string> pre, post;  ///< per token: text written before / after its translation
+  std::set<std::string> functions;     ///< names of the file's `def`s (called as functions, not commands)
   std::vector<Statement> statements;
   std::vector<CommIssue> refused;
   std::vector<char> refused_line;  ///< per line (1-based)
@@ -536,19 +538,13 @@ class Translator {
   void run() {
     split_statements();
     a_.out.resize(t_.size());
+    a_.pre.assign(t_.size(), std::string());
+    a_.post.assign(t_.size(), std::string());
+    skip_.assign(t_.size(), 0);
     for (std::size_t k = 0; k < t_.size(); ++k) a_.out[k] = t_[k].text;
-    std::size_t k = 0;
-    while (k < a_.statements.size()) {
-      Statement& st = a_.statements[k];
-      std::size_t body_end = block_end(k);
-      if (body_end != k + 1 || is_block_header(st)) {
-        refuse_block(k, body_end);
-        k = body_end;
-        continue;
-      }
-      translate(st);
-      ++k;
-    }
+    prepass();
+    translate_range(0, a_.statements.size(), Context{});
+    a_.functions = functions_;
     // issues: lexical first-class, then statements, in line order
     a_.refused_line.assign(static_cast<std::size_t>(a_.tz.n_lines) + 2, 0);
     for (const auto& st : a_.statements) {
@@ -563,6 +559,284 @@ class Translator {
  private:
   Analysis& a_;
   std::vector<Token>& t_;
+  /// Where a statement sits: inside a `def` body (return, local names) and inside a loop (break).
+  struct Context {
+    bool in_def = false, in_loop = false;
+  };
+  std::vector<char> skip_;  ///< per token: already written by a construct's rewrite, not translated again
+  std::set<std::string> assigned_;    ///< names the file binds (assignment, loop, def parameters)
+  std::set<std::string> functions_;   ///< names of its defs, and of its function concepts (FORMULE ...)
+  /// math's names a deck uses bare: code_aster runs command files with math's functions at hand,
+  /// so all of them unless the deck binds the name itself
+  std::set<std::string> math_names_ = math_module_names();
+  bool math_local_ = false;  ///< the deck imports math: `local math = py.math` is written at its import
+  std::set<int> stringy_end_;         ///< tokens ending an expression that gives a text ('%' or .format)
+
+  static const std::set<std::string>& math_module_names() {
+    static const std::set<std::string> k = {
+        "pi",   "e",     "tau",   "inf",  "nan",  "sqrt",  "exp",   "log",     "log10",    "log2",   "pow",
+        "sin",  "cos",   "tan",   "asin", "acos", "atan",  "atan2", "sinh",    "cosh",     "tanh",   "asinh",
+        "acosh", "atanh", "fabs", "floor", "ceil", "trunc", "fmod", "hypot",   "degrees",  "radians", "copysign",
+        "isnan", "isinf", "isfinite", "factorial"};
+    return k;
+  }
+  /// Python built-ins the `py` library provides (called as py.NAME).
+  static const std::set<std::string>& builtin_names() {
+    static const std::set<std::string> k = {"abs", "min",   "max",   "len",   "range", "int",    "float", "str",
+                                            "round", "sum", "list",  "tuple", "pow",   "bool",   "sorted"};
+    return k;
+  }
+  bool shadowed(const std::string& name) const { return assigned_.count(name) || functions_.count(name); }
+  /// A name a translated call may name: a def of the file, a math function imported, a built-in, print.
+  bool callable_name(const std::string& name) const {
+    return functions_.count(name) || (math_names_.count(name) && !shadowed(name)) ||
+           (builtin_names().count(name) && !shadowed(name)) || name == "print";
+  }
+
+  /// Names bound anywhere in the file, the defs, and what `from math import` brings.
+  void prepass() {
+    for (const Statement& st : a_.statements) {
+      const auto& tk = st.toks;
+      const Token& f = t_[tk.front()];
+      if (is_name(f, "def") && tk.size() > 2 && t_[tk[1]].kind == Kind::Name) {
+        functions_.insert(t_[tk[1]].text);
+        for (std::size_t p = 3; p < tk.size(); ++p)
+          if (t_[tk[p]].kind == Kind::Name && (is_op(t_[tk[p - 1]], "(") || is_op(t_[tk[p - 1]], ",")))
+            assigned_.insert(t_[tk[p]].text);
+      } else if (is_name(f, "for")) {
+        for (std::size_t p = 1; p < tk.size() && !is_name(t_[tk[p]], "in"); ++p)
+          if (t_[tk[p]].kind == Kind::Name) assigned_.insert(t_[tk[p]].text);
+      } else if ((is_name(f, "from") || is_name(f, "import")) && tk.size() >= 2 && is_name(t_[tk[1]], "math")) {
+        math_local_ = true;
+      } else {  // A = ..., A, B = ..., each part of A = 1; B = 2
+        std::size_t start = 0;
+        bool seen = false;
+        for (std::size_t p = 0; p < tk.size(); ++p) {
+          const Token& t = t_[tk[p]];
+          if (is_op(t, ";")) {
+            start = p + 1;
+            seen = false;
+          } else if (t.kind == Kind::Op && t.match > tk[p] && std::strchr("([{", t.text[0])) {
+            seen = true;
+            p = pos_of(st, t.match);
+          } else if (is_op(t, "=") && !seen) {
+            for (std::size_t q = start; q < p; ++q)
+              if (t_[tk[q]].kind == Kind::Name) assigned_.insert(t_[tk[q]].text);
+            seen = true;
+            // F = FORMULE(...): F(x) is then a call of the function, as in code_aster's Python
+            static const std::set<std::string> makers = {"FORMULE", "DEFI_FONCTION", "DEFI_CONSTANTE", "CALC_FONC_INTERP"};
+            if (p == start + 1 && p + 2 < tk.size() && makers.count(t_[tk[p + 1]].text) && is_op(t_[tk[p + 2]], "("))
+              functions_.insert(t_[tk[start]].text);
+          }
+        }
+      }
+    }
+  }
+
+  void translate_range(std::size_t from, std::size_t to, Context context) {
+    std::size_t k = from;
+    while (k < to) {
+      if (is_block_header(a_.statements[k])) {
+        k = translate_block(k, to, context);
+        continue;
+      }
+      translate(a_.statements[k], context);
+      ++k;
+    }
+  }
+
+  /// for / while / if-elif-else / def blocks: the header in Lua, the body translated, `end` after its last token.
+  /// Any statement of the block refused refuses the whole block. Returns the index past the block.
+  std::size_t translate_block(std::size_t k, std::size_t to, Context context) {
+    Statement& h = a_.statements[k];
+    const Token& f = t_[h.toks.front()];
+    const std::size_t end = std::min(block_end(k), to);
+    const std::string word = f.kind == Kind::Name ? f.text : std::string();
+    if (word != "for" && word != "if" && word != "while" && word != "def") {
+      refuse_block(k, end);
+      return end;
+    }
+    std::vector<std::size_t> heads = {k}, ends = {end};
+    if (word == "if") {
+      while (ends.back() < to) {
+        const Statement& s = a_.statements[ends.back()];
+        const Token& g = t_[s.toks.front()];
+        if (s.indent != h.indent || !(is_name(g, "elif") || is_name(g, "else"))) break;
+        heads.push_back(ends.back());
+        ends.push_back(std::min(block_end(ends.back()), to));
+        if (g.text == "else") break;
+      }
+    }
+    for (std::size_t i = 0; i < heads.size(); ++i) {
+      Statement& hs = a_.statements[heads[i]];
+      const Token& g = t_[hs.toks.front()];
+      add_lexical(hs);
+      Context inner = context;
+      if (word == "for" || word == "while") inner.in_loop = true;
+      if (word == "def") inner = Context{true, false};
+      const std::size_t inline_colon = ends[i] == heads[i] + 1 && word != "def" ? top_level_colon(hs) : 0;
+      if (hs.reasons.empty() && inline_colon) {
+        // `if c: return x` on one line: the header, then its one-statement body, `end` after it
+        Statement head = hs, body = hs;
+        head.toks.resize(inline_colon + 1);
+        body.toks.erase(body.toks.begin(), body.toks.begin() + static_cast<std::ptrdiff_t>(inline_colon) + 1);
+        head.reasons.clear();
+        body.reasons.clear();
+        translate_header(head, heads[i], ends[i]);
+        if (is_block_header(body))
+          body.reasons.push_back({t_[body.toks.front()].line, "a block inside a one-line '" + g.text + "'",
+                                  "put the body on the lines below it, indented"});
+        else
+          translate(body, inner);
+        hs.reasons = head.reasons;
+        hs.reasons.insert(hs.reasons.end(), body.reasons.begin(), body.reasons.end());
+      } else if (hs.reasons.empty()) {
+        if (!is_op(t_[hs.toks.back()], ":"))
+          hs.reasons.push_back({g.line, "'" + g.text + "' with its body on the same line",
+                                "put the body on the lines below it, indented"});
+        else if (ends[i] == heads[i] + 1)
+          hs.reasons.push_back({g.line, "'" + g.text + "' without a body", "write the body, indented, below it"});
+        else
+          translate_header(hs, heads[i], ends[i]);
+      }
+      if (!hs.reasons.empty()) hs.refused = true;
+      translate_range(heads[i] + 1, ends[i], inner);
+    }
+    const std::size_t last = ends.back();
+    a_.post[a_.statements[last - 1].toks.back()] += " end";
+    bool refused = false;
+    for (std::size_t j = k; j < last; ++j) refused = refused || a_.statements[j].refused;
+    if (refused)
+      for (std::size_t j = k; j < last; ++j) a_.statements[j].refused = true;
+    return last;
+  }
+
+  /// Position of the ':' ending a header followed by its body on the same line (0 if none).
+  std::size_t top_level_colon(const Statement& st) const {
+    for (std::size_t p = 1; p + 1 < st.toks.size(); ++p) {
+      const Token& t = t_[st.toks[p]];
+      if (t.kind == Kind::Op && t.match > st.toks[p] && std::strchr("([{", t.text[0])) p = pos_of(st, t.match);
+      else if (is_name(t, "lambda")) return 0;
+      else if (is_op(t, ":")) return p;
+    }
+    return 0;
+  }
+
+  auto refuser(Statement& st) {
+    return [this, &st](const Token& t, std::string what, std::string hint) {
+      for (const auto& r : st.reasons)
+        if (r.line == t.line && r.what == what) return;
+      st.reasons.push_back({t.line, std::move(what), std::move(hint)});
+    };
+  }
+
+  /// The header of a block (its last token is ':'), statement `head` whose body ends before `end`.
+  void translate_header(Statement& st, std::size_t head, std::size_t end) {
+    auto refuse = refuser(st);
+    const std::size_t n = st.toks.size();
+    const int word = st.toks.front(), colon = st.toks.back();
+    const std::string& w = t_[word].text;
+    if (w == "else") {
+      a_.out[colon] = "";
+      if (n != 2) refuse(t_[word], "'else' followed by something before ':'", "write else: alone");
+      return;
+    }
+    if (w == "if" || w == "elif" || w == "while") {
+      if (n < 3) {
+        refuse(t_[word], "'" + w + "' without a condition", "write the condition before ':'");
+        return;
+      }
+      if (w == "elif") a_.out[word] = "elseif";
+      a_.out[colon] = w == "while" ? " do" : " then";
+      translate_tokens(st, 1, n - 2, refuse);
+      return;
+    }
+    if (w == "for") {
+      if (n < 5 || t_[st.toks[1]].kind != Kind::Name || !is_name(t_[st.toks[2]], "in")) {
+        refuse(t_[word], "'for' loop over several names", "loop over one name: for x in values:");
+        return;
+      }
+      skip_[st.toks[2]] = 1;
+      translate_tokens(st, 1, n - 2, refuse);
+      a_.out[colon] = " do";
+      const std::size_t a = 3, b = n - 2;  // the iterable
+      const Token& r = t_[st.toks[a]];
+      if (is_name(r, "range") && !shadowed("range") && a + 1 < b && is_op(t_[st.toks[a + 1]], "(") &&
+          t_[st.toks[a + 1]].match == st.toks[b]) {
+        const auto args = arguments(st, a + 1, b);
+        std::string close = ") - 1";
+        bool numeric = !args.empty() && args.size() <= 3;
+        if (args.size() == 3) {  // a literal step: the bound is inclusive in Lua
+          const bool negative = is_op(t_[st.toks[args[2].first]], "-");
+          const std::size_t lit = args[2].first + (negative ? 1 : 0);
+          const std::string& digits = t_[st.toks[lit]].text;
+          numeric = lit == args[2].second && t_[st.toks[lit]].kind == Kind::Number &&
+                    digits.find_first_not_of("0123456789") == std::string::npos && digits.find_first_not_of('0') != std::string::npos;
+          if (negative) close = ") + 1";
+        }
+        if (numeric) {
+          const auto& stop = args.size() == 1 ? args[0] : args[1];
+          a_.out[st.toks[2]] = "=";
+          a_.pre[st.toks[a]] = "";
+          a_.out[st.toks[a]] = args.size() == 1 ? "0, " : "";
+          a_.out[st.toks[a + 1]] = "";
+          a_.pre[st.toks[stop.first]] = "(" + a_.pre[st.toks[stop.first]];
+          a_.post[st.toks[stop.second]] += close;
+          a_.out[st.toks[b]] = "";
+          return;
+        }
+      }
+      a_.pre[st.toks[1]] = "_, " + a_.pre[st.toks[1]];
+      a_.pre[st.toks[a]] = "ipairs(" + a_.pre[st.toks[a]];
+      a_.post[st.toks[b]] += ")";
+      return;
+    }
+    // def NAME(a, b): -> function NAME(a, b) local <the names its body assigns>
+    if (n < 5 || t_[st.toks[1]].kind != Kind::Name || !is_op(t_[st.toks[2]], "(") ||
+        t_[st.toks[2]].match != st.toks[n - 2]) {
+      refuse(t_[word], "function definition in another form than 'def name(a, b):'", "write it as a Lua function by hand");
+      return;
+    }
+    std::set<std::string> parameters;
+    for (const auto& [x, y] : arguments(st, 2, n - 2)) {
+      if (x != y || t_[st.toks[x]].kind != Kind::Name) {
+        refuse(t_[st.toks[x]], "parameter with a default value or a '*' form in 'def " + t_[st.toks[1]].text + "'",
+               "give every parameter at each call, or finish by hand in Lua");
+        return;
+      }
+      parameters.insert(t_[st.toks[x]].text);
+    }
+    translate_tokens(st, 1, n - 2, refuse);
+    a_.out[word] = "function";
+    a_.pre[st.toks[1]].clear();
+    std::set<std::string> globals;
+    std::vector<std::string> locals;
+    for (std::size_t j = head + 1; j < end; ++j) {
+      const auto& tk = a_.statements[j].toks;
+      if (is_name(t_[tk.front()], "global"))
+        for (int q : tk)
+          if (t_[q].kind == Kind::Name) globals.insert(t_[q].text);
+    }
+    for (std::size_t j = head + 1; j < end; ++j) {
+      const auto& tk = a_.statements[j].toks;
+      if (is_block_header(a_.statements[j])) continue;
+      for (std::size_t p = 0; p < tk.size(); ++p) {
+        const Token& t = t_[tk[p]];
+        if (t.kind == Kind::Op && t.match > tk[p] && std::strchr("([{", t.text[0])) break;
+        if (!is_op(t, "=")) continue;
+        for (std::size_t q = 0; q < p; ++q) {
+          const std::string& name = t_[tk[q]].text;
+          if (t_[tk[q]].kind == Kind::Name && !parameters.count(name) && !globals.count(name) &&
+              std::find(locals.begin(), locals.end(), name) == locals.end())
+            locals.push_back(name);
+        }
+        break;
+      }
+    }
+    std::string declared;
+    for (const auto& name : locals) declared += (declared.empty() ? " local " : ", ") + name;
+    a_.out[colon] = declared;
+  }
 
   void split_statements() {
     Statement cur;
@@ -715,35 +989,81 @@ class Translator {
     return false;
   }
 
-  void translate(Statement& st) {
+  void translate(Statement& st, Context context) {
     std::vector<CommIssue>& why = st.reasons;
     add_lexical(st);
     if (!why.empty()) {  // unterminated or stray: the statement is not read further, one issue says why
       st.refused = true;
       return;
     }
-    auto refuse = [&](const Token& t, std::string what, std::string hint) {
-      for (const auto& r : why)
-        if (r.line == t.line && r.what == what) return;
-      why.push_back({t.line, std::move(what), std::move(hint)});
-    };
+    auto refuse = refuser(st);
     const Token& first = t_[st.toks.front()];
+    const std::size_t n = st.toks.size();
     static const std::set<std::string> statement_words = {"import", "from",     "return", "pass",  "del",
                                                           "global", "nonlocal", "raise",  "assert", "yield",
                                                           "break",  "continue"};
     if (first.kind == Kind::Name && statement_words.count(first.text)) {
-      if (first.text == "import" || first.text == "from")
-        refuse(first, "import", "remove it; for mathematics use Lua's math library (math.sqrt, math.pi)");
+      const std::string& w = first.text;
+      if (w == "import" || w == "from") translate_import(st, refuse);
+      else if (w == "return" && context.in_def) translate_tokens(st, 1, n - 1, refuse);
+      else if (w == "return") refuse(first, "'return' outside a function", "remove it");
+      else if (w == "pass") a_.out[st.toks.front()] = "";
+      else if (w == "break" && context.in_loop && n == 1) {
+      } else if (w == "global" && context.in_def && st.first_line == st.last_line) {
+        a_.out[st.toks.front()] = "-- global";  // Lua's names are global unless declared local
+      } else if (w == "continue")
+        refuse(first, "'continue' statement", "put the rest of the loop's body under an 'if', or finish by hand in Lua (goto)");
       else
-        refuse(first, "'" + first.text + "' statement", "not translatable: finish by hand in Lua");
-      st.refused = true;
+        refuse(first, "'" + w + "' statement", "not translatable: finish by hand in Lua");
+      if (!why.empty()) st.refused = true;
       return;
     }
+    translate_tokens(st, 0, n - 1, refuse);
+    if (std::all_of(st.toks.begin(), st.toks.end(), [&](int k) { return t_[k].kind == Kind::String; })) {
+      a_.pre[st.toks.front()] = "local _ = " + a_.pre[st.toks.front()];  // a docstring: Lua has no bare values
+    } else {
+      check_statement_form(st, refuse);
+    }
+    if (!why.empty()) st.refused = true;
+  }
+
+  /// import math, from math import ..., from code_aster.Commands import ...: the rest is refused.
+  template <class Refuse>
+  void translate_import(Statement& st, Refuse& refuse) {
+    const auto& tk = st.toks;
+    const Token& first = t_[tk.front()];
+    std::string module;
+    for (std::size_t p = 1; p < tk.size() && !is_name(t_[tk[p]], "import") && !is_name(t_[tk[p]], "as"); ++p)
+      module += t_[tk[p]].text;
+    const bool as = std::any_of(tk.begin(), tk.end(), [&](int k) { return is_name(t_[k], "as"); });
+    if (st.first_line == st.last_line && !as) {
+      if (first.text == "import" && module == "math" && tk.size() == 2) {
+        a_.out[tk[0]] = "local";
+        a_.out[tk[1]] = "math = py.math";
+        return;
+      }
+      if (first.text == "from" && module == "math") {
+        a_.out[tk[0]] = "local math = py.math -- from";
+        return;
+      }
+      if (first.text == "from" && module == "code_aster.Commands") {  // the commands are lunaster's own
+        a_.out[tk[0]] = "-- from";
+        return;
+      }
+    }
+    refuse(first, "import of '" + module + "'" + (as ? " under another name" : ""),
+           "lunaster translates 'import math' and 'from math import ...' (Lua's math with Python's names); "
+           "remove this one or finish by hand");
+  }
+
+  /// Translates the tokens at positions [from, to] of `st` (an expression, a simple statement, a header's part).
+  template <class Refuse>
+  void translate_tokens(Statement& st, std::size_t from, std::size_t to, Refuse& refuse) {
     // Bracket kinds: '(' call of a command, tuple, parenthesised value; '[' list.
     bool comprehension = false, ternary = false;
-    const std::size_t n = st.toks.size();
-    for (std::size_t p = 0; p < n; ++p) {
+    for (std::size_t p = from; p <= to && p < st.toks.size(); ++p) {
       const int k = st.toks[p];
+      if (skip_[k]) continue;
       const Token& t = t_[k];
       const Token* before = prev(st, p);
       const Token* after = next(st, p);
@@ -777,6 +1097,7 @@ class Translator {
           } else {
             bool ascii = std::all_of(t.text.begin(), t.text.end(), [](char c) { return (c & 0x80) == 0; });
             if (!ascii) refuse(t, "non-ASCII identifier '" + t.text + "'", "rename it with ASCII letters");
+            translate_name(k, before, after);
           }
           break;
         }
@@ -806,9 +1127,6 @@ class Translator {
             lua += " ..";
             if (t.end < a_.tz.source.size() && !std::isspace(static_cast<unsigned char>(a_.tz.source[t.end]))) lua += ' ';
           }
-          if (after && is_op(*after, "%")) {
-            refuse(t, "'%' string formatting", "write the text, or build it in Lua with .. and string.format");
-          }
           a_.out[k] = lua;
           break;
         }
@@ -819,8 +1137,154 @@ class Translator {
           break;
       }
     }
-    check_statement_form(st, refuse);
-    if (!why.empty()) st.refused = true;
+  }
+
+  /// A name of the deck: math's names imported bare become math.NAME, built-ins called become py.NAME.
+  void translate_name(int k, const Token* before, const Token* after) {
+    const std::string& name = t_[k].text;
+    if (before && is_op(*before, ".")) return;
+    if (after && is_op(*after, "=")) return;  // a keyword argument or an assignment's target
+    if (math_names_.count(name) && !shadowed(name)) a_.pre[k] = (math_local_ ? "math." : "py.math.") + a_.pre[k];
+    else if (after && is_op(*after, "(") && builtin_names().count(name) && !shadowed(name)) a_.pre[k] = "py." + a_.pre[k];
+  }
+
+  /// True if the '(' at position o of `st` is the call of str(...).
+  bool is_str_call(const Statement& st, std::size_t o) const {
+    return o >= 1 && is_name(t_[st.toks[o - 1]], "str") && !shadowed("str");
+  }
+
+  /// TEXT op OPERAND (the operator at position p, after string literals) -> call(TEXT, OPERAND).
+  void text_call(const Statement& st, std::size_t p, const char* call) {
+    std::size_t q = p - 1;
+    while (q > 0 && t_[st.toks[q - 1]].kind == Kind::String) --q;
+    const std::size_t last = primary_end(st, p + 1);
+    a_.pre[st.toks[q]] = call + a_.pre[st.toks[q]];
+    a_.out[st.toks[p]] = ",";
+    a_.post[st.toks[last]] += ")";
+    stringy_end_.insert(st.toks[last]);
+  }
+
+  /// Position of the last token of the operand starting at position q: a name, number, text or bracket,
+  /// with its calls, subscripts and attributes.
+  std::size_t primary_end(const Statement& st, std::size_t q) const {
+    const std::size_t n = st.toks.size();
+    if (q >= n) return n - 1;
+    const Token& t = t_[st.toks[q]];
+    if ((is_op(t, "-") || is_op(t, "+")) && q + 1 < n) return primary_end(st, q + 1);
+    std::size_t e = (t.kind == Kind::Op && t.match > st.toks[q]) ? pos_of(st, t.match) : q;
+    while (e + 1 < n) {
+      const Token& u = t_[st.toks[e + 1]];
+      if ((is_op(u, "(") || is_op(u, "[")) && u.match > st.toks[e + 1]) e = pos_of(st, u.match);
+      else if (is_op(u, ".") && e + 2 < n && t_[st.toks[e + 2]].kind == Kind::Name) e += 2;
+      else break;
+    }
+    return e;
+  }
+
+  /// Methods with a Lua spelling: 'text'.format(...), 'sep'.join(list), L.append(x), math.NAME.
+  /// False if the '.' at position p is none of them (it is then refused).
+  bool method(Statement& st, std::size_t p, const Token* before, const Token* after) {
+    if (!before || !after || after->kind != Kind::Name) return false;
+    if (before->kind == Kind::Name && before->text == "math" && (p < 2 || !is_op(t_[st.toks[p - 2]], ".")))
+      return math_module_names().count(after->text) > 0;
+    if (p + 2 >= st.toks.size() || !is_op(t_[st.toks[p + 2]], "(")) return false;
+    const int dot = st.toks[p], name = st.toks[p + 1], open = st.toks[p + 2], close = t_[open].match;
+    if (close < 0) return false;
+    const bool empty = close == st.toks[p + 3 < st.toks.size() ? p + 3 : p + 2];
+    if (before->kind == Kind::String && (after->text == "format" || after->text == "join")) {
+      std::size_t q = p - 1;
+      while (q > 0 && t_[st.toks[q - 1]].kind == Kind::String) --q;
+      a_.pre[st.toks[q]] = "py." + after->text + "(" + a_.pre[st.toks[q]];
+      a_.out[dot] = a_.out[name] = "";
+      a_.out[open] = empty ? "" : ", ";
+      skip_[name] = 1;
+      stringy_end_.insert(close);
+      return true;
+    }
+    if (before->kind == Kind::Name && after->text == "append" && !empty && (p < 2 || !is_op(t_[st.toks[p - 2]], "."))) {
+      a_.pre[st.toks[p - 1]] = "table.insert(" + a_.pre[st.toks[p - 1]];
+      a_.out[dot] = a_.out[name] = "";
+      a_.out[open] = ", ";
+      skip_[name] = 1;
+      return true;
+    }
+    return false;
+  }
+
+  /// NAME[i] with a 0-based Python index: NAME[i + 1]; NAME[-n]: NAME[#NAME + 1 - n]; a text key stays.
+  template <class Refuse>
+  void subscript(Statement& st, std::size_t p, const Token* before, Refuse& refuse) {
+    const Token& t = t_[st.toks[p]];
+    const std::string what = before->kind == Kind::Name ? before->text + "[...]" : "[...]";
+    if (t.match < 0) return;
+    const std::size_t c = pos_of(st, t.match);
+    bool plain = c > p + 1;
+    for (std::size_t q = p + 1; q < c && plain; ++q) {
+      const Token& u = t_[st.toks[q]];
+      if (u.kind == Kind::Op && u.match > st.toks[q]) q = pos_of(st, u.match);
+      else if (is_op(u, ":") || is_op(u, ",")) plain = false;
+    }
+    if (!plain) {
+      refuse(t, "slice or several indices in '" + what + "'", "write the values out, or finish by hand in Lua");
+      return;
+    }
+    const Token& first = t_[st.toks[p + 1]];
+    const bool integer = c == p + 2 && first.kind == Kind::Number &&
+                         first.text.find_first_not_of("0123456789") == std::string::npos;
+    if (c == p + 2 && first.kind == Kind::String) return;
+    if (integer) {
+      a_.out[st.toks[p + 1]] = std::to_string(std::stoll(first.text) + 1);
+      skip_[st.toks[p + 1]] = 1;
+      return;
+    }
+    if (c == p + 3 && is_op(first, "-") && t_[st.toks[p + 2]].kind == Kind::Number && before->kind == Kind::Name &&
+        t_[st.toks[p + 2]].text.find_first_not_of("0123456789") == std::string::npos) {
+      a_.out[st.toks[p + 1]] = "#" + before->text + " + 1 -";
+      skip_[st.toks[p + 1]] = 1;
+      return;
+    }
+    a_.pre[st.toks[p + 1]] = "(" + a_.pre[st.toks[p + 1]];
+    a_.post[st.toks[c - 1]] = ") + 1" + a_.post[st.toks[c - 1]];
+  }
+
+  /// [E for x in I] and [E for x in I if C]: py.comp(function(x) return E end, I, function(x) return C end).
+  /// False if the list at position p is a plain list.
+  template <class Refuse>
+  bool comprehension(Statement& st, std::size_t p, Refuse& refuse) {
+    const std::size_t c = pos_of(st, t_[st.toks[p]].match);
+    std::size_t at_for = 0, at_if = 0;
+    int n_for = 0;
+    for (std::size_t q = p + 1; q < c; ++q) {
+      const Token& u = t_[st.toks[q]];
+      if (u.kind == Kind::Op && u.match > st.toks[q]) {
+        q = pos_of(st, u.match);
+        continue;
+      }
+      if (is_name(u, "for")) {
+        if (!n_for++) at_for = q;
+      } else if (is_name(u, "if") && n_for && !at_if) at_if = q;
+    }
+    if (!n_for) return false;
+    const Token& open = t_[st.toks[p]];
+    if (n_for > 1 || at_for == p + 1 || at_for + 3 >= c || t_[st.toks[at_for + 1]].kind != Kind::Name ||
+        !is_name(t_[st.toks[at_for + 2]], "in") || (at_if && at_if == at_for + 3) || at_if + 1 == c) {
+      refuse(open, "list comprehension in another form than [value for x in values if condition]",
+             "write the values out, or build the table with a Lua loop");
+      return true;
+    }
+    const std::string& x = t_[st.toks[at_for + 1]].text;
+    a_.out[st.toks[p]] = "py.comp(function(" + x + ") return ";
+    a_.out[st.toks[at_for]] = "end,";
+    a_.out[st.toks[at_for + 1]] = a_.out[st.toks[at_for + 2]] = "";
+    for (std::size_t q : {at_for, at_for + 1, at_for + 2}) skip_[st.toks[q]] = 1;
+    if (at_if) {
+      a_.out[st.toks[at_if]] = ", function(" + x + ") return";
+      skip_[st.toks[at_if]] = 1;
+      a_.out[st.toks[c]] = " end)";
+    } else {
+      a_.out[st.toks[c]] = ")";
+    }
+    return true;
   }
 
   template <class Refuse>
@@ -832,7 +1296,10 @@ class Translator {
       if (t.match < 0) return;
       const std::size_t c = pos_of(st, t.match);
       if (callable_before(before)) {
-        if (before->kind == Kind::Name && is_upper_name(before->text)) {
+        const bool attribute = p >= 2 && is_op(t_[st.toks[p - 2]], ".");
+        if (before->kind == Kind::Name && attribute) {
+          // a method or module function: the '.' decided
+        } else if (before->kind == Kind::Name && is_upper_name(before->text) && !functions_.count(before->text)) {
           a_.out[k] = "{";
           a_.out[t.match] = "}";
           for (const auto& [a0, a1] : arguments(st, p, c)) {
@@ -845,7 +1312,8 @@ class Translator {
                      "code_aster commands take keywords only: write KEY=value");
           }
         } else if (before->kind == Kind::Name) {
-          if (before->text != "exec" && before->text != "eval" && !is_lua_only_reserved(before->text))
+          if (before->text != "exec" && before->text != "eval" && !is_lua_only_reserved(before->text) &&
+              !callable_name(before->text))
             refuse(*before, "Python function call '" + before->text + "'", hint_for_function(before->text));
         } else {
           refuse(t, "call of an expression", "compute the value and write it, or finish in Lua");
@@ -861,11 +1329,10 @@ class Translator {
     if (op == "[") {
       if (callable_before(before) && before->kind == Kind::Name && t.match >= 0 && table_cell(st, p)) return;
       if (callable_before(before)) {
-        std::string what = before->kind == Kind::Name ? before->text + "[...]" : "[...]";
-        refuse(t, "subscript '" + what + "'",
-               "write the value itself, or finish in Lua (Lua tables are indexed from 1)");
+        subscript(st, p, before, refuse);
         return;
       }
+      if (t.match >= 0 && comprehension(st, p, refuse)) return;
       if (t.match >= 0) {
         a_.out[k] = "{";
         a_.out[t.match] = "}";
@@ -874,6 +1341,16 @@ class Translator {
     }
     if (op == "{") {
       refuse(t, "dict or set '{...}'", "use _F(...) for a factor keyword, or build a Lua table by hand");
+      return;
+    }
+    if (op == "." && method(st, p, before, after)) return;
+    if (op == "%" && before && before->kind == Kind::String) {  // 'text %d' % v, 'text %s %s' % (a, b)
+      text_call(st, p, "py.fmt(");  // a tuple becomes a table
+      return;
+    }
+    if (op == "*" && before && before->kind == Kind::String && after &&
+        (after->kind == Kind::Number || after->kind == Kind::Name || is_op(*after, "("))) {
+      text_call(st, p, "string.rep(");  // '-' * 80
       return;
     }
     if (op == ".") {
@@ -887,11 +1364,28 @@ class Translator {
     if (op == "**") a_.out[k] = "^";
     else if (op == "!=") a_.out[k] = "~=";
     else if (op == "+") {
-      if ((before && before->kind == Kind::String) || (after && after->kind == Kind::String)) a_.out[k] = "..";
+      const bool text_before = before && (before->kind == Kind::String || stringy_end_.count(st.toks[p - 1]) ||
+                                          (is_op(*before, ")") && p >= 1 && is_str_call(st, pos_of(st, before->match))));
+      const bool text_after = after && (after->kind == Kind::String || (is_name(*after, "str") && !shadowed("str")));
+      const bool unary = !before || (before->kind == Kind::Op && before->text != ")" && before->text != "]" &&
+                                     before->text != "}") ||
+                         (before->kind == Kind::Name && is_python_keyword(before->text) && before->text != "True" &&
+                          before->text != "False" && before->text != "None");
+      if (unary) a_.out[k] = "";  // +x: Lua has no unary plus
+      else if (text_before || text_after)
+        a_.out[k] = before->kind == Kind::Number && t.begin == before->end ? " .." : "..";  // 80.. would read as a number
     } else if (op == "=") {
       // keyword argument of a command call: fine; the statement's own '=' is checked by the form.
     } else if (op == "&" || op == "|" || op == "^" || op == "~" || op == "<<" || op == ">>") {
       refuse(t, "bitwise operator '" + op + "'", "compute the value and write it, or finish in Lua");
+    } else if (op.size() >= 2 && op.back() == '=' && op != "==" && op != "<=" && op != ">=" && p == 1 &&
+               before->kind == Kind::Name && op != "&=" && op != "|=" && op != "^=" && op != "<<=" && op != ">>=" &&
+               op != "@=") {
+      // X += v -> X = X + v
+      std::string arithmetic = op.substr(0, op.size() - 1);
+      if (arithmetic == "**") arithmetic = "^";
+      if (arithmetic == "+" && after && after->kind == Kind::String) arithmetic = "..";
+      a_.out[k] = "= " + before->text + " " + arithmetic;
     } else if (op.size() >= 2 && op.back() == '=' && op != "==" && op != "<=" && op != ">=") {
       refuse(t, "augmented assignment '" + op + "'",
              "write the assignment out: X = X " + op.substr(0, op.size() - 1) + " value");
@@ -943,11 +1437,17 @@ class Translator {
       return;
     }
     if (eqs.empty()) {
-      // a command call statement
+      // a command call statement, a function or method call, X += value
       const Token& last = t_[st.toks[b]];
       const bool call = first.kind == Kind::Name && a + 1 <= b && is_op(t_[st.toks[a + 1]], "(") &&
                         t_[st.toks[a + 1]].match == st.toks[b] && is_op(last, ")");
-      if (!(call && is_upper_name(first.text)) && !others)
+      const bool method_call = first.kind == Kind::Name && a + 2 <= b && is_op(t_[st.toks[a + 1]], ".") && is_op(last, ")");
+      const Token* second = a + 1 <= b ? &t_[st.toks[a + 1]] : nullptr;
+      const bool augmented = first.kind == Kind::Name && second && second->kind == Kind::Op && second->text.size() >= 2 &&
+                             second->text.back() == '=' && second->text != "==" && second->text != "<=" &&
+                             second->text != ">=" && second->text != "!=";
+      if (augmented || method_call || (call && (is_upper_name(first.text) || callable_name(first.text)))) return;
+      if (!others)
         refuse(first, "statement that is neither an assignment nor a command call",
                "drop it, or finish by hand in Lua");
       return;
@@ -963,6 +1463,11 @@ class Translator {
       if (want_name) ++n_targets;
     }
     if (e > a && is_op(t_[st.toks[e - 1]], ",")) names_only = false;
+    if (first.kind == Kind::Name && a + 1 < e && is_op(t_[st.toks[a + 1]], "[") &&
+        t_[st.toks[a + 1]].match == st.toks[e - 1]) {  // L[i] = value
+      names_only = true;
+      n_targets = 1;
+    }
     if (!names_only) {
       if (!others) refuse(first, "assignment to something else than a name", "assign to a plain name");
       return;
@@ -1028,7 +1533,8 @@ std::vector<std::string> declared_names(const catalog::Keyword& spec) {
 
 class Checker {
  public:
-  Checker(const std::vector<Token>& tokens, std::vector<CommIssue>& issues) : issues_(issues) {
+  Checker(const std::vector<Token>& tokens, const std::set<std::string>& functions, std::vector<CommIssue>& issues)
+      : issues_(issues), functions_(functions) {
     for (int k = 0; k < static_cast<int>(tokens.size()); ++k)
       if (significant(tokens[k])) {
         index_of_.push_back(k);
@@ -1041,7 +1547,7 @@ class Checker {
   void run() {
     for (std::size_t p = 0; p + 1 < sig_.size(); ++p) {
       const Token& t = *sig_[p];
-      if (t.kind != Kind::Name || !is_upper_name(t.text) || t.text == "_F") continue;
+      if (t.kind != Kind::Name || !is_upper_name(t.text) || t.text == "_F" || functions_.count(t.text)) continue;
       if (p > 0 && (is_op(*sig_[p - 1], ".") || is_name(*sig_[p - 1], "def") || is_name(*sig_[p - 1], "class")))
         continue;
       const Token& o = *sig_[p + 1];
@@ -1062,6 +1568,7 @@ class Checker {
 
  private:
   std::vector<CommIssue>& issues_;
+  const std::set<std::string>& functions_;
   std::vector<const Token*> sig_;
   std::vector<int> index_of_;
   std::vector<std::size_t> pos_;  ///< token index -> position in sig_
@@ -1133,6 +1640,7 @@ class Checker {
       }
       const auto* kw = catalog::find_declared(spec, key.text);
       const std::string path = prefix.empty() ? key.text : prefix + "/" + key.text;
+      if (!kw && !spec.other_keywords.empty()) continue;  // a named value (FORMULE's)
       if (!kw) {
         const std::string s = catalog::closest_name(key.text, declared_names(spec));
         issues_.push_back({key.line,
@@ -1167,7 +1675,7 @@ CommConversion convert_comm(std::string_view text) {
     lua.append(a.tz.source, at, t.begin - at);
     if (t.kind == Kind::Comment) lua += comment_text(t.text, lua.empty() ? '\0' : lua.back());
     else if (t.kind == Kind::Continuation) lua += t.text.substr(1);
-    else lua += a.out[k];
+    else lua += a.pre[k] + a.out[k] + a.post[k];
     at = t.end;
   }
   lua.append(a.tz.source, at, std::string::npos);
@@ -1201,7 +1709,7 @@ CommConversion convert_comm(std::string_view text) {
 std::vector<CommIssue> check_comm(std::string_view text) {
   Analysis a = analyse(text);
   std::vector<CommIssue> issues = a.refused;
-  Checker(a.tz.tokens, issues).run();
+  Checker(a.tz.tokens, a.functions, issues).run();
   std::stable_sort(issues.begin(), issues.end(), [](const CommIssue& x, const CommIssue& y) { return x.line < y.line; });
   return issues;
 }

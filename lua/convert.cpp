@@ -3,6 +3,8 @@
 
 #include "lua/bridge.hpp"
 
+#include "commands/concepts.hpp"
+
 namespace lunaster::lua {
 
 using catalog::ConceptPtr;
@@ -28,6 +30,43 @@ int concept_tostring(lua_State* L) {
   return 1;
 }
 
+/// A function of the deck (a Python def converted, or written in Lua) given where the catalogue takes
+/// a function (FORMULE's named values): called with numbers, it must return a number. It lives as long
+/// as the deck's Lua state, which runs every command that may call it.
+class LuaFunction : public cmd::RealFunction {
+ public:
+  LuaFunction(lua_State* L, int index) : L_(L) {
+    lua_Debug ar;
+    lua_pushvalue(L, index);
+    lua_getinfo(L, ">S", &ar);
+    where_ = std::string(ar.short_src) + ":" + std::to_string(ar.linedefined);
+    lua_pushvalue(L, index);
+    ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
+  }
+  std::vector<std::string> parameters() const override { return {}; }
+  double evaluate(const std::vector<double>& values) const override {
+    lua_rawgeti(L_, LUA_REGISTRYINDEX, ref_);
+    for (double v : values) lua_pushnumber(L_, v);
+    if (lua_pcall(L_, static_cast<int>(values.size()), 1, 0) != LUA_OK) {
+      std::string message = lua_type(L_, -1) == LUA_TSTRING ? lua_tostring(L_, -1) : "an error";
+      lua_pop(L_, 1);
+      throw DeckError("the deck's function defined at " + where_ + " failed: " + message);
+    }
+    int is_number = 0;
+    const double x = lua_tonumberx(L_, -1, &is_number);
+    const std::string type = luaL_typename(L_, -1);
+    lua_pop(L_, 1);
+    if (!is_number) throw DeckError("the deck's function defined at " + where_ + " returned a " + type + ", not a number");
+    return x;
+  }
+  std::string type_name() const override { return "function"; }
+
+ private:
+  lua_State* L_;
+  int ref_ = LUA_NOREF;
+  std::string where_;
+};
+
 Value to_value(lua_State* L, int index, const std::string& path) {
   switch (lua_type(L, index)) {
     case LUA_TNUMBER:
@@ -41,6 +80,8 @@ Value to_value(lua_State* L, int index, const std::string& path) {
     case LUA_TUSERDATA:
       if (auto* c = to_concept(L, index)) return *c;
       break;
+    case LUA_TFUNCTION:
+      return ConceptPtr(std::make_shared<LuaFunction>(L, lua_absindex(L, index)));
     default: break;
   }
   throw DeckError::at(path, "a real, an integer, a text or a concept", lua_type_text(L, index));
@@ -121,6 +162,23 @@ KwNode node_at(lua_State* L, int index, const std::string& path, int depth, Valu
   return node;
 }
 
+/// __call of a function concept: its value at the numbers given.
+int function_call(lua_State* L) {
+  auto* c = static_cast<ConceptPtr*>(lua_touserdata(L, 1));
+  auto f = c ? std::dynamic_pointer_cast<cmd::RealFunction>(*c) : nullptr;
+  if (!f) return luaL_error(L, "not a function");
+  std::vector<double> values;
+  for (int i = 2; i <= lua_gettop(L); ++i) values.push_back(luaL_checknumber(L, i));
+  std::string message;
+  try {
+    lua_pushnumber(L, f->evaluate(values));
+    return 1;
+  } catch (const std::exception& e) {
+    message = e.what();
+  }
+  return luaL_error(L, "%s", message.c_str());
+}
+
 }  // namespace
 
 std::string lua_type_text(lua_State* L, int index) {
@@ -142,6 +200,10 @@ void push_concept(lua_State* L, const ConceptPtr& c) {
     lua_pushboolean(L, 1);
     lua_setfield(L, -2, kConceptTag);
     if (type == "table") add_table_access(L);
+    if (std::dynamic_pointer_cast<cmd::RealFunction>(c)) {  // F(x), as code_aster's Python calls a function
+      lua_pushcfunction(L, function_call);
+      lua_setfield(L, -2, "__call");
+    }
   }
   lua_setmetatable(L, -2);
 }

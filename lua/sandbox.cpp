@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "lua/bridge.hpp"
+#include "lua/python_compat.hpp"
 #include "lua/runner.hpp"
 
 namespace lunaster::lua {
@@ -198,6 +199,7 @@ void open_libraries(lua_State* L) {
 
 void setup_state(lua_State* L, Runner& runner) {
   open_libraries(L);
+  open_python_compat(L);
   lua_newtable(L);
   lua_setfield(L, LUA_REGISTRYINDEX, "lunaster.modules");
   lua_pushglobaltable(L);

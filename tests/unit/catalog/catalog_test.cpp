@@ -14,7 +14,8 @@ using namespace lunaster::catalog;
 namespace {
 
 const std::set<std::string> kConceptTypes = {"maillage", "modele",   "mater",    "cham_mater", "char_meca", "char_contact",
-                                             "listr8",   "list_inst", "fonction", "evol_noli",  "table"};
+                                             "listr8",   "list_inst", "fonction", "formule",    "function",
+                                             "evol_noli", "table"};
 
 bool scalar_matches(const Scalar& s, ValueType type) {
   switch (type) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "lua/comm_convert.hpp"
+#include "lua/python_compat.hpp"
 
 using lunaster::lua::check_comm;
 using lunaster::lua::CommIssue;
@@ -41,6 +42,7 @@ class Lua {
  public:
   Lua() : L(luaL_newstate()) {
     luaL_openlibs(L);
+    lunaster::lua::open_python_compat(L);
     const char* harness = R"(
       CALLS = {}
       _F = function(t) return t end
@@ -323,39 +325,37 @@ void expect_refused(const Refusal& r) {
 
 TEST(CommConvert, RefusedFormsAreReportedAndCommentedOut) {
   const std::vector<Refusal> cases = {
-      {"import math\nA = 1\n", 1, "import", "math", {1}},
-      {"A = 1\nfrom Utilitai.partition import *\n", 2, "import", "remove it", {2}},
-      {"def f(x):\n    return x*2\n\nA = 1\n", 1, "function definition 'def f'", "Lua function", {1, 2}},
+      {"import numpy as NP\nA = 1\n", 1, "import of 'numpy' under another name", "import math", {1}},
+      {"A = 1\nfrom Utilitai.partition import *\n", 2, "import of 'Utilitai.partition'", "remove this one", {2}},
+      {"def f(x=1):\n    return x*2\n\nA = 1\n", 1, "parameter with a default value", "by hand", {1, 2}},
       {"class C:\n    pass\nA = 1\n", 1, "class definition 'class C'", "by hand", {1, 2}},
-      {"for i in range(3):\n    X = CMD(A=i)  # body\n    Y = 2\nZ = 1\n", 1, "'for' loop", "Lua loop", {1, 2, 3}},
-      {"while n < 3:\n    n = n + 1\nZ = 1\n", 1, "'while' loop", "Lua loop", {1, 2}},
-      {"A = 1\nif A > 0:\n    B = 1\nelif A < 0:\n    B = 2\nelse:\n    B = 3\nC = 4\n", 2, "'if' block", "branch",
+      {"for i, j in zip(a, b):\n    X = CMD(A=i)  # body\n    Y = 2\nZ = 1\n", 1, "'for' loop over several names",
+       "one name", {1, 2, 3}},
+      {"def f(x): return x\nZ = 1\n", 1, "'def' with its body on the same line", "lines below", {1}},
+      {"A = 1\nif A > 0:\n    B = 1\nelif A < 0:\n    B = {1: 2}\nelse:\n    B = 3\nC = 4\n", 5, "dict", "_F(...)",
        {2, 3, 4, 5, 6, 7}},
-      {"A = 1\nif A > 0:\n    B = 1\nelif A < 0:\n    B = 2\nelse:\n    B = 3\nC = 4\n", 6, "'else' block", "branch",
-       {2, 3, 4, 5, 6, 7}},
+      {"for i in range(2):\n    A = i\nelse:\n    A = 3\nC = 4\n", 3, "'else' block", "branch", {3, 4}},
       {"try:\n    A = 1\nexcept Exception:\n    A = 2\n", 3, "'except' block", "clear error", {1, 2, 3, 4}},
       {"with open('f') as f:\n    A = 1\nB = 2\n", 1, "'with' block", "body", {1, 2}},
-      {"A = 1\nreturn A\n", 2, "'return' statement", "by hand", {2}},
+      {"A = 1\nreturn A\n", 2, "'return' outside a function", "remove it", {2}},
       {"F = lambda x: x**2\nA = 1\n", 1, "'lambda'", "function (x)", {1}},
-      {"L = [i*2 for i in range(3)]\nA = 1\n", 1, "comprehension", "Lua loop", {1}},
+      {"L = [i*j for i in range(3) for j in range(2)]\nA = 1\n", 1, "list comprehension in another form", "Lua loop", {1}},
       {"T = f'N{i}'\nA = 1\n", 1, "f-string", "string.format", {1}},
       {"D = {'a': 1}\nA = 1\n", 1, "dict", "_F(...)", {1}},
       {"A = 1\nX = RESU.LIST_PARA()\n", 2, "method call 'RESU.LIST_PARA()'", "no Python methods", {2}},
       {"X = MA.nom\n", 1, "attribute access 'MA.nom'", "finish in Lua", {1}},
-      {"A = 1\nV = TAB[1]\n", 2, "subscript 'TAB[...]'", "indexed from 1", {2}},
-      {"A = 1\nV = TAB['X', 1, 2]\n", 2, "subscript 'TAB[...]'", "indexed from 1", {2}},
-      {"Y = sqrt(2.)\n", 1, "Python function call 'sqrt'", "math.sqrt", {1}},
-      {"A = CMD(LIST=range(3))\n", 1, "Python function call 'range'", "Lua loop", {1}},
-      {"print('done')\n", 1, "Python function call 'print'", "drop it", {1}},
-      {"B = abs(-1)\n", 1, "Python function call 'abs'", "math.abs", {1}},
+      {"A = 1\nV = TAB[1:3]\n", 2, "slice or several indices in 'TAB[...]'", "write the values", {2}},
+      {"A = 1\nV = TAB['X', 1, 2]\n", 2, "slice or several indices in 'TAB[...]'", "write the values", {2}},
+      {"Y = divmod(7, 2)\n", 1, "Python function call 'divmod'", "compute the value", {1}},
+      {"A = CMD(LIST=enumerate(L))\n", 1, "Python function call 'enumerate'", "compute the value", {1}},
+      {"print 'done'\n", 1, "neither an assignment nor a command call", "drop it", {1}},
       {"end = 3\nA = 1\n", 1, "identifier 'end' (a Lua reserved word)", "rename", {1}},
       {"A = CMD(X=local)\n", 1, "identifier 'local' (a Lua reserved word)", "rename", {1}},
       {"exec('A = 1')\n", 1, "'exec'", "write out", {1}},
       {"A = eval('1+2')\n", 1, "'eval'", "write out", {1}},
       {"A = DEFI_GROUP(MA,\n               CREA_GROUP_NO=_F(GROUP_MA='AB'))\nB = 1\n", 1,
        "positional argument in DEFI_GROUP(...)", "keywords only", {1, 2}},
-      {"A = 1\nB = 'N%d' % A\n", 2, "'%' string formatting", "string.format", {2}},
-      {"A = 1\nA += 2\n", 2, "augmented assignment '+='", "X = X + value", {2}},
+      {"A = 1\nA |= 2\n", 2, "augmented assignment '|='", "X = X | value", {2}},
       {"A = B = 1\n", 1, "chained assignment", "one assignment per name", {1}},
       {"A = 1 if B else 2\n", 1, "conditional expression", "c and a or b", {1}},
   };
@@ -365,7 +365,7 @@ TEST(CommConvert, RefusedFormsAreReportedAndCommentedOut) {
 TEST(CommConvert, RefusedStatementIsCommentedOutOnAllItsLinesAndTheRestConverted) {
   const std::string comm =
       "A = CMD(X=1)\n"
-      "B = CMD(Y=sqrt(2.),\n"
+      "B = CMD(Y=divmod(2.),\n"
       "        Z=(1, 2))   # note\n"
       "C = CMD(W=[3])\n";
   const auto c = convert_comm(comm);
@@ -373,7 +373,7 @@ TEST(CommConvert, RefusedStatementIsCommentedOutOnAllItsLinesAndTheRestConverted
   EXPECT_EQ(c.refused[0].line, 2);
   const auto l = lines_of(c.lua);
   EXPECT_EQ(l[0], "A = CMD{X=1}");
-  EXPECT_EQ(l[1], kMarker + "B = CMD(Y=sqrt(2.),");
+  EXPECT_EQ(l[1], kMarker + "B = CMD(Y=divmod(2.),");
   EXPECT_EQ(l[2], kMarker + "        Z=(1, 2))   -- note");
   EXPECT_EQ(l[3], "C = CMD{W={3}}");
   Lua lua;
@@ -460,7 +460,7 @@ TEST(CommCheck, AKnownStudyHasNoIssueAndRefusedFormsAreIncluded) {
   const auto issues = check_comm(comm + "import os\n");
   ASSERT_EQ(issues.size(), 1u);
   EXPECT_EQ(issues[0].line, 7);
-  EXPECT_EQ(issues[0].what, "import");
+  EXPECT_EQ(issues[0].what, "import of 'os'");
 }
 
 TEST(CommConvert, RandomAndTruncatedInputsReturnWithTheLineCountKept) {
@@ -512,4 +512,117 @@ TEST(CommConvert, TableCellsBecomeTheDeckSpelling) {
   const auto converted = convert_comm("F = TAB['DY', 1]\nG = -2.0 * TAB[\"DX\", n + 1] / TAB['DY', len]\n");
   ASSERT_TRUE(converted.refused.empty()) << converted.refused.front().what;
   EXPECT_EQ(converted.lua, "F = TAB['DY'][ 1]\nG = -2.0 * TAB[\"DX\"][ n + 1] / TAB['DY'][ len]\n");
+}
+
+// The Python around the commands of code_aster's own studies: math imported, built-ins, loops,
+// if/elif/else, defs with local names, list comprehensions, %-formatting and str.format, 0-based
+// indexing, augmented assignment, list appends. Each line stays on its line, and the values are Python's.
+TEST(CommConvert, ThePythonOfStudiesRunsLineForLineWithPythonsValues) {
+  const std::string comm =
+      "import math\n"
+      "from math import *\n"
+      "E = 2.0E5 ; nu = 0.3 ; e = 0.5\n"
+      "R = sqrt(2.) * cos(pi/4) + math.atan2(1., 1.) * 4 / math.pi\n"
+      "N = 3\n"
+      "groups = ['G%d' % i for i in range(N)]\n"
+      "sizes = [(1./2.**(i+1)) for i in range(N) if i > 0]\n"
+      "names = []\n"
+      "for i in range(1, N + 1):\n"
+      "    names.append('S_%d_%s' % (i, 'x'))\n"
+      "    if i == 2:\n"
+      "        X2 = i * 10\n"
+      "    elif i == 3:\n"
+      "        X3 = -1\n"
+      "    else:\n"
+      "        X1 = 1\n"
+      "total = 0\n"
+      "for g in groups:\n"
+      "    total += len(g)\n"
+      "def radius(x, y):\n"
+      "    r2 = x*x + y*y\n"
+      "    return sqrt(r2)\n"
+      "def EPSI_XX(x, y):\n"
+      "    return radius(x, y) / 2.\n"
+      "label = 'E={} nu={:.2f}'.format(E, nu) + '_' + str(N) + '_' + str(e)\n"
+      "first = groups[0] ; last = groups[-1] ; k = 1 ; mid = groups[k]\n"
+      "CH = CMD(DDL_IMPO=[_F(GROUP_MA=g, DX=EPSI_XX(3., 4.)) for g in groups], N=int(7.9), P=pow(2, 10))\n"
+      "for j in range(10, 0, -4):\n"
+      "    last_j = j\n";
+  Lua lua;
+  const std::string out = convert_clean(comm, lua);
+  const auto l = lines_of(out);
+  EXPECT_EQ(l[0], "local math = py.math");
+  EXPECT_EQ(l[5], "groups = py.comp(function(i) return py.fmt('G%d' , i) end,   py.range(N))");
+  EXPECT_EQ(l[8], "for i = 1, (N + 1) - 1 do");
+  EXPECT_EQ(l[15], "        X1 = 1 end end");
+  EXPECT_EQ(l[19], "function radius(x, y) local r2");
+  EXPECT_EQ(l[25], "first = groups[1] ; last = groups[#groups + 1 -1] ; k = 1 ; mid = groups[(k) + 1]");
+  EXPECT_EQ(lua.eval("R"), "float:2.0");
+  EXPECT_EQ(lua.eval("table.concat(groups, ',')"), "G0,G1,G2");
+  EXPECT_EQ(lua.eval("table.concat(sizes, ',')"), "0.25,0.125");
+  EXPECT_EQ(lua.eval("table.concat(names, ',')"), "S_1_x,S_2_x,S_3_x");
+  EXPECT_EQ(lua.eval("X1 + X2 + X3"), "integer:20");
+  EXPECT_EQ(lua.eval("total"), "integer:6");
+  EXPECT_EQ(lua.eval("r2"), "nil");  // the def's name is local
+  EXPECT_EQ(lua.eval("label"), "E=200000.0 nu=0.30_3_0.5");
+  EXPECT_EQ(lua.eval("first .. last .. mid"), "G0G2G1");
+  EXPECT_EQ(lua.eval("#CALLS"), "integer:1");
+  EXPECT_EQ(lua.eval("CALLS[1].args.DDL_IMPO[3].GROUP_MA"), "G2");
+  EXPECT_EQ(lua.eval("CALLS[1].args.DDL_IMPO[1].DX"), "float:2.5");
+  EXPECT_EQ(lua.eval("CALLS[1].args.N"), "integer:7");
+  EXPECT_EQ(lua.eval("CALLS[1].args.P"), "float:1024.0");  // math's pow after from math import *, as in Python
+  EXPECT_EQ(lua.eval("last_j"), "integer:2");
+  // a def named like a command is called as a function, and --check does not take it for one
+  EXPECT_TRUE(check_comm("def EPSI_XX(x):\n    return x\nA = EPSI_XX(1.)\n").empty());
+}
+
+// py.fmt and py.str write what Python's % and str write.
+TEST(CommConvert, PythonFormattingOfNumbers) {
+  Lua lua;
+  EXPECT_EQ(lua.eval("py.str(1.0) .. ' ' .. py.str(0.1) .. ' ' .. py.str(2.1e11) .. ' ' .. py.str(1e16) .. ' ' .. py.str(1e-5)"),
+            "1.0 0.1 210000000000.0 1e+16 1e-05");
+  EXPECT_EQ(lua.eval("py.fmt('%5.2f|%-4d|%e|%%|%i|%s|%r', {3.14159, 2.0, 1500.0, 7.9, 1.5, 'a'})"),
+            " 3.14|2   |1.500000e+03|%|7|1.5|'a'");
+  EXPECT_EQ(lua.eval("py.format('{}-{:.3f}-{0}|{:>5}|{:05.1f}', 1, 2.5, 'ab', -2.5)"), "1-2.500-1|   ab|-02.5");
+  EXPECT_EQ(lua.eval("select(2, pcall(py.math.sqrt, -1))"), "math.sqrt: math domain error");
+  EXPECT_EQ(lua.eval("select(2, pcall(py.fmt, '%d %d', 1))"), "not enough arguments for format string");
+}
+
+// One-line bodies (`if c: return x`) and docstrings, as code_aster's files write small helpers.
+TEST(CommConvert, OneLineBodiesAndDocstrings) {
+  const std::string comm =
+      "def pr(y) :\n"
+      "   \"\"\" the pressure\n"
+      "       by parts \"\"\"\n"
+      "   if y < 1.e-15 : return 0.E07\n"
+      "   if y > 1.e-15 : return 15.E07\n"
+      "   return 0.\n"
+      "for i in range(3): last = i\n"
+      "if last == 2: ok = 1\n"
+      "else: ok = 0\n"
+      "A = CMD(P=[pr(y) for y in (0., 1.)], L=last, OK=ok)\n";
+  Lua lua;
+  const std::string out = convert_clean(comm, lua);
+  EXPECT_EQ(lines_of(out)[3], "   if y < 1.e-15  then return 0.E07 end");
+  EXPECT_EQ(lua.eval("CALLS[1].args.P[2]"), "float:150000000.0");
+  EXPECT_EQ(lua.eval("CALLS[1].args.L + CALLS[1].args.OK"), "integer:3");
+  const auto refused = convert_comm("if A: for i in B: pass\n").refused;
+  ASSERT_EQ(refused.size(), 1u);
+  EXPECT_EQ(refused[0].what, "a block inside a one-line 'if'");
+}
+
+// Unary plus (VALE=+1.0), text repeated by '*', and '+' joining a number's text: Lua spellings.
+TEST(CommConvert, UnaryPlusAndTextRepetition) {
+  const std::string comm =
+      "A = +2.0E-5\n"
+      "B = CMD(V=+1.0, W=(+1, -2), X=2 + +3)\n"
+      "S = '-'*3+\"\"\"x\"\"\"\n"
+      "N = str(80)+'!'\n";
+  Lua lua;
+  const std::string out = convert_clean(comm, lua);
+  EXPECT_EQ(lines_of(out)[0], "A = 2.0E-5");
+  EXPECT_EQ(lua.eval("CALLS[1].args.V"), "float:1.0");
+  EXPECT_EQ(lua.eval("CALLS[1].args.X"), "integer:5");
+  EXPECT_EQ(lua.eval("S"), "---x");
+  EXPECT_EQ(lua.eval("N"), "80!");
 }
