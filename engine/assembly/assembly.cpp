@@ -12,13 +12,13 @@
 
 #include "engine/core/memory.hpp"
 #include "engine/core/two_workers.hpp"
-#include "engine/assembly/element_kernels.hpp"
+#include "engine/assembly/element_response.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::engine {
 namespace {
 
-using kernels::dispatch_volume;
+using kernels::with_small_strain;
 
 /// Global equations of a cell's displacement DOFs, node by node.
 template <int NN, int DIM>
@@ -31,62 +31,39 @@ void cell_equations(const Mesh& mesh, const DofMap& dofs, int cell, int* eq) {
     }
 }
 
-/// AXIS element stiffness K_e = sum_q B^T D B |det J| w_q r (per radian).
-template <int NN>
-void axis_element_stiffness(const FeModel& model, int cell, Eigen::Matrix<double, NN * 2, NN * 2>& ke) {
-  constexpr int NS = kernels::kVoigtAxis;
-  const Mesh& mesh = *model.mesh;
-  const ReferenceElement& re = reference_element(mesh.cell_types[cell]);
-  const auto x = kernels::cell_coordinates<NN, 2>(mesh, cell);
-  const Eigen::Matrix4d d = kernels::cell_hooke_axis(model, cell);
-  Eigen::Matrix<double, NN, 2> g;
-  Eigen::Matrix<double, NS, NN * 2> b;
-  Eigen::Matrix<double, NS, NN * 2> db;
-  ke.setZero();
-  double sign = 0.0;
-  for (int q = 0; q < re.n_qp; ++q) {
-    const double w = kernels::axis_point<NN>(re, q, x, mesh, cell, sign, g, b);
-    db.noalias() = w * (d * b);
-    ke.noalias() += b.transpose() * db;
-  }
+/// Calls f(kinematics, equations) with a volume cell's small-strain kinematics and the global
+/// equations of its displacement DOFs (node by node).
+template <class F>
+void with_cell(const FeModel& model, const DofMap& dofs, int cell, F&& f) {
+  with_small_strain(model, cell, [&](auto& kin) {
+    using Kin = std::decay_t<decltype(kin)>;
+    int eq[Kin::kDofs];
+    cell_equations<Kin::kNodes, Kin::kDim>(*model.mesh, dofs, cell, eq);
+    f(kin, static_cast<const int*>(eq));
+  });
 }
 
-/// Element stiffness K_e = sum_q B^T D B |det J| w_q (thickness 1 in 2D; AXIS: see above).
-template <int NN, int DIM>
-void element_stiffness(const FeModel& model, int cell, Eigen::Matrix<double, NN * DIM, NN * DIM>& ke) {
-  if constexpr (DIM == 2) {
-    if (model.modelisation[cell] == Modelisation::Axisymmetric) return axis_element_stiffness<NN>(model, cell, ke);
-  }
-  constexpr int NS = kernels::kVoigt<DIM>;
-  const Mesh& mesh = *model.mesh;
-  const ReferenceElement& re = reference_element(mesh.cell_types[cell]);
-  const auto x = kernels::cell_coordinates<NN, DIM>(mesh, cell);
-  const auto d = kernels::cell_hooke<DIM>(model, cell);
-  Eigen::Matrix<double, NN, DIM> g;
-  Eigen::Matrix<double, NS, NN * DIM> b;
-  Eigen::Matrix<double, NS, NN * DIM> db;
-  ke.setZero();
-  double sign = 0.0;
-  for (int q = 0; q < re.n_qp; ++q) {
-    const double det = kernels::physical_gradients<NN, DIM>(re, q, x, g);
-    kernels::check_jacobian(det, sign, mesh, cell);
-    kernels::strain_matrix<NN, DIM>(g, b);
-    db.noalias() = (std::abs(det) * re.weight[q]) * (d * b);
-    ke.noalias() += b.transpose() * db;
-  }
+/// Element stiffness K_e = sum_q B^T D B w_q from the cell's behaviour at rest (thickness 1
+/// in 2D; AXIS: per radian, weight r = x).
+template <class Kin>
+void element_stiffness(const FeModel& model, const CellBehaviours& behaviours, int cell, Kin& kin,
+                       Eigen::Matrix<double, Kin::kDofs, Kin::kDofs>& ke) {
+  kernels::CellRequest<Kin> req;
+  req.ke = &ke;
+  kernels::cell_response(behaviours.of(cell), model.modelisation[cell], cell, kin, req);
 }
 
 /// Stiffness triplets of cells[begin, end) written at out[offset[i] ...].
-void stiffness_range(const FeModel& model, const DofMap& dofs, const std::vector<int>& cells,
-                     const std::vector<size_t>& offset, size_t begin, size_t end, Triplet* out) {
+void stiffness_range(const FeModel& model, const CellBehaviours& behaviours, const DofMap& dofs,
+                     const std::vector<int>& cells, const std::vector<size_t>& offset, size_t begin, size_t end,
+                     Triplet* out) {
   for (size_t i = begin; i < end; ++i) {
     const int cell = cells[i];
-    dispatch_volume(model.mesh->cell_types[cell], [&](auto nn, auto dim) {
-      constexpr int NN = decltype(nn)::value, DIM = decltype(dim)::value, ND = NN * DIM;
+    with_cell(model, dofs, cell, [&](auto& kin, const int* eq) {
+      using Kin = std::decay_t<decltype(kin)>;
+      constexpr int ND = Kin::kDofs;
       Eigen::Matrix<double, ND, ND> ke;
-      element_stiffness<NN, DIM>(model, cell, ke);
-      int eq[ND];
-      cell_equations<NN, DIM>(*model.mesh, dofs, cell, eq);
+      element_stiffness(model, behaviours, cell, kin, ke);
       Triplet* t = out + offset[i];
       for (int c = 0; c < ND; ++c)
         for (int r = 0; r < ND; ++r) *t++ = Triplet(eq[r], eq[c], ke(r, c));
@@ -154,44 +131,52 @@ void stiffness_pattern(const Mesh& mesh, const DofMap& dofs, const std::vector<i
   }
 }
 
-/// Adds the stiffness of cells[i] for the cells touching columns [col_begin, col_end) of k,
-/// in cell order, into those columns only. `failed_at` is set to the position of a cell
-/// whose stiffness throws.
-void stiffness_columns(const FeModel& model, const DofMap& dofs, const std::vector<int>& cells, int col_begin,
-                       int col_end, SparseMatrix& k, size_t& failed_at) {
-  const Mesh& mesh = *model.mesh;
+/// Adds an element matrix into the columns [col_begin, col_end) of a compressed matrix whose
+/// pattern holds the cell's entries (stiffness_pattern's); empty columns (another rank's) stay empty.
+template <int NN, int DIM>
+void add_element_matrix(const int* eq, const Eigen::Matrix<double, NN * DIM, NN * DIM>& ke, int col_begin,
+                        int col_end, SparseMatrix& k) {
   const int* outer = k.outerIndexPtr();
   const int* inner = k.innerIndexPtr();
   double* values = k.valuePtr();
-  std::fill(values + outer[col_begin], values + outer[col_end], 0.0);
+  for (int b = 0; b < NN; ++b) {
+    const int j0 = eq[DIM * b];
+    if (j0 < col_begin || j0 >= col_end || outer[j0] == outer[j0 + 1]) continue;  // not ours, or another rank's
+    const int* col = inner + outer[j0];
+    const int* col_end_ptr = inner + outer[j0 + 1];
+    for (int a = 0; a < NN; ++a) {
+      // Offset of node a's rows in the columns of node b (the same in its DIM columns).
+      const int offset = static_cast<int>(std::lower_bound(col, col_end_ptr, eq[DIM * a]) - col);
+      LUNASTER_DASSERT(col + offset < col_end_ptr && col[offset] == eq[DIM * a], "stiffness entry outside its pattern");
+      for (int kk = 0; kk < DIM; ++kk) {
+        double* v = values + outer[j0 + kk] + offset;
+        for (int l = 0; l < DIM; ++l) v[l] += ke(DIM * a + l, DIM * b + kk);
+      }
+    }
+  }
+}
+
+/// Adds the stiffness of cells[i] for the cells touching columns [col_begin, col_end) of k,
+/// in cell order, into those columns only. `failed_at` is set to the position of a cell
+/// whose stiffness throws.
+void stiffness_columns(const FeModel& model, const CellBehaviours& behaviours, const DofMap& dofs,
+                       const std::vector<int>& cells, int col_begin, int col_end, SparseMatrix& k,
+                       size_t& failed_at) {
+  const int* outer = k.outerIndexPtr();
+  std::fill(k.valuePtr() + outer[col_begin], k.valuePtr() + outer[col_end], 0.0);
   size_t i = 0;
   try {
     for (; i < cells.size(); ++i) {
       const int cell = cells[i];
-      dispatch_volume(mesh.cell_types[cell], [&](auto nn, auto dim) {
-        constexpr int NN = decltype(nn)::value, DIM = decltype(dim)::value, ND = NN * DIM;
-        int eq[ND];
-        cell_equations<NN, DIM>(mesh, dofs, cell, eq);
+      with_cell(model, dofs, cell, [&](auto& kin, const int* eq) {
+        using Kin = std::decay_t<decltype(kin)>;
+        constexpr int NN = Kin::kNodes, DIM = Kin::kDim, ND = Kin::kDofs;
         bool mine = false;
         for (int b = 0; b < NN && !mine; ++b) mine = eq[DIM * b] >= col_begin && eq[DIM * b] < col_end;
         if (!mine) return;
         Eigen::Matrix<double, ND, ND> ke;
-        element_stiffness<NN, DIM>(model, cell, ke);
-        for (int b = 0; b < NN; ++b) {
-          const int j0 = eq[DIM * b];
-          if (j0 < col_begin || j0 >= col_end || outer[j0] == outer[j0 + 1]) continue;  // not ours, or another rank's
-          const int* col = inner + outer[j0];
-          const int* col_end_ptr = inner + outer[j0 + 1];
-          for (int a = 0; a < NN; ++a) {
-            // Offset of node a's rows in the columns of node b (the same in its DIM columns).
-            const int offset = static_cast<int>(std::lower_bound(col, col_end_ptr, eq[DIM * a]) - col);
-            LUNASTER_DASSERT(col + offset < col_end_ptr && col[offset] == eq[DIM * a], "stiffness entry outside its pattern");
-            for (int kk = 0; kk < DIM; ++kk) {
-              double* v = values + outer[j0 + kk] + offset;
-              for (int l = 0; l < DIM; ++l) v[l] += ke(DIM * a + l, DIM * b + kk);
-            }
-          }
-        }
+        element_stiffness(model, behaviours, cell, kin, ke);
+        add_element_matrix<NN, DIM>(eq, ke, col_begin, col_end, k);
       });
     }
   } catch (...) {
@@ -202,8 +187,63 @@ void stiffness_columns(const FeModel& model, const DofMap& dofs, const std::vect
 
 }  // namespace
 
+MaterialStates make_material_states(const CellBehaviours& behaviours) {
+  const FeModel& model = behaviours.model();
+  const int n = model.mesh->n_cells();
+  std::vector<int> points(n, 0), variables(n, 0);
+  for (int c : model.volume_cells()) {
+    points[c] = reference_element(model.mesh->cell_types[c]).n_qp;
+    variables[c] = behaviours.of(c).n_variables();
+  }
+  return MaterialStates(tensor_size(model.dim), points, variables);
+}
+
+bool assemble_internal_force(const CellBehaviours& behaviours, const DofMap& dofs, const Vector& u,
+                             MaterialStates& states, Vector* f_int, SparseMatrix* k_t) {
+  const FeModel& model = behaviours.model();
+  LUNASTER_ASSERT(model.mesh != nullptr, "assemble_internal_force: model without mesh");
+  const Mesh& mesh = *model.mesh;
+  const std::vector<int> cells = model.volume_cells();
+  if (f_int) *f_int = Vector::Zero(dofs.n_dofs());
+  if (k_t) {
+    stiffness_pattern(mesh, dofs, cells, nullptr, *k_t);
+    std::fill(k_t->valuePtr(), k_t->valuePtr() + k_t->nonZeros(), 0.0);
+  }
+  bool ok = true;
+  for (size_t i = 0; i < cells.size() && ok; ++i) {
+    const int cell = cells[i];
+    with_cell(model, dofs, cell, [&](auto& kin, const int* eq) {
+      using Kin = std::decay_t<decltype(kin)>;
+      constexpr int NN = Kin::kNodes, DIM = Kin::kDim, ND = Kin::kDofs;
+      Eigen::Matrix<double, ND, 1> ue, fe;
+      Eigen::Matrix<double, ND, ND> ke;
+      for (int r = 0; r < ND; ++r) ue(r) = u(eq[r]);
+      kernels::CellRequest<Kin> req;
+      req.ue = &ue;
+      req.states = &states;
+      req.fe = f_int ? &fe : nullptr;
+      req.ke = k_t ? &ke : nullptr;
+      const Behaviour& behaviour = behaviours.of(cell);
+      if (kernels::cell_response(behaviour, model.modelisation[cell], cell, kin, req) != IntegrationStatus::Ok) {
+        ok = false;
+        return;
+      }
+      if (f_int)
+        for (int r = 0; r < ND; ++r) (*f_int)(eq[r]) += fe(r);
+      if (k_t) add_element_matrix<NN, DIM>(eq, ke, 0, dofs.n_dofs(), *k_t);
+    });
+  }
+  return ok;
+}
+
 SparseMatrix assemble_stiffness_matrix(const FeModel& model, const DofMap& dofs, const std::vector<char>* owned_nodes) {
   LUNASTER_ASSERT(model.mesh != nullptr, "assemble_stiffness_matrix: model without mesh");
+  return assemble_stiffness_matrix(CellBehaviours(model), dofs, owned_nodes);
+}
+
+SparseMatrix assemble_stiffness_matrix(const CellBehaviours& behaviours, const DofMap& dofs,
+                                       const std::vector<char>* owned_nodes) {
+  const FeModel& model = behaviours.model();
   std::vector<int> cells = model.volume_cells();
   if (owned_nodes) {  // the cells of the owned nodes
     const Mesh& mesh = *model.mesh;
@@ -226,7 +266,7 @@ SparseMatrix assemble_stiffness_matrix(const FeModel& model, const DofMap& dofs,
   int split = static_cast<int>(std::lower_bound(outer, outer + n, outer[n] / 2) - outer);
   while (split < n && dofs.component_of(split) != DX && is_displacement(dofs.component_of(split))) ++split;  // a node's columns together
   run_two_workers([&](int w, size_t& failed_at) {
-    stiffness_columns(model, dofs, cells, w == 0 ? 0 : split, w == 0 ? split : n, k, failed_at);
+    stiffness_columns(model, behaviours, dofs, cells, w == 0 ? 0 : split, w == 0 ? split : n, k, failed_at);
   });
   return k;
 }
@@ -243,16 +283,17 @@ void assemble_stiffness(const FeModel& model, const DofMap& dofs, std::vector<Tr
   // Two workers on disjoint halves (the target machine has 2 cores); an
   // exception in the helper thread is re-thrown here.
   const size_t half = cells.size() / 2;
+  const CellBehaviours behaviours(model);
   std::exception_ptr failure;
   std::thread helper([&] {
     try {
-      stiffness_range(model, dofs, cells, offset, half, cells.size(), out.data());
+      stiffness_range(model, behaviours, dofs, cells, offset, half, cells.size(), out.data());
     } catch (...) {
       failure = std::current_exception();
     }
   });
   try {
-    stiffness_range(model, dofs, cells, offset, 0, half, out.data());
+    stiffness_range(model, behaviours, dofs, cells, offset, 0, half, out.data());
   } catch (...) {
     helper.join();
     throw;
@@ -265,45 +306,19 @@ void assemble_internal_forces(const FeModel& model, const DofMap& dofs, const Ve
                               const std::vector<int>* cell_rank) {
   LUNASTER_ASSERT(model.mesh != nullptr, "assemble_internal_forces: model without mesh");
   f_int = Vector::Zero(dofs.n_dofs());
-  const Mesh& mesh = *model.mesh;
+  const CellBehaviours behaviours(model);
   const int rank = cell_rank ? parallel::rank() : 0;
   for (int cell : model.volume_cells()) {
     if (cell_rank && (*cell_rank)[cell] != rank) continue;
-    dispatch_volume(mesh.cell_types[cell], [&](auto nn, auto dim) {
-      constexpr int NN = decltype(nn)::value, DIM = decltype(dim)::value, ND = NN * DIM;
-      constexpr int NS = kernels::kVoigt<DIM>;
-      int eq[ND];
-      cell_equations<NN, DIM>(mesh, dofs, cell, eq);
-      Eigen::Matrix<double, ND, 1> ue, fe = Eigen::Matrix<double, ND, 1>::Zero();
+    with_cell(model, dofs, cell, [&](auto& kin, const int* eq) {
+      using Kin = std::decay_t<decltype(kin)>;
+      constexpr int ND = Kin::kDofs;
+      Eigen::Matrix<double, ND, 1> ue, fe;
       for (int r = 0; r < ND; ++r) ue(r) = u(eq[r]);
-      const ReferenceElement& re = reference_element(mesh.cell_types[cell]);
-      const auto x = kernels::cell_coordinates<NN, DIM>(mesh, cell);
-      if constexpr (DIM == 2) {
-        if (model.modelisation[cell] == Modelisation::Axisymmetric) {
-          const Eigen::Matrix4d d4 = kernels::cell_hooke_axis(model, cell);
-          Eigen::Matrix<double, NN, 2> g;
-          Eigen::Matrix<double, kernels::kVoigtAxis, ND> b;
-          double sign = 0.0;
-          for (int q = 0; q < re.n_qp; ++q) {
-            const double w = kernels::axis_point<NN>(re, q, x, mesh, cell, sign, g, b);
-            const Eigen::Matrix<double, kernels::kVoigtAxis, 1> sigma = d4 * (b * ue);
-            fe.noalias() += w * (b.transpose() * sigma);
-          }
-          for (int r = 0; r < ND; ++r) f_int(eq[r]) += fe(r);
-          return;
-        }
-      }
-      const auto d = kernels::cell_hooke<DIM>(model, cell);
-      Eigen::Matrix<double, NN, DIM> g;
-      Eigen::Matrix<double, NS, ND> b;
-      double sign = 0.0;
-      for (int q = 0; q < re.n_qp; ++q) {
-        const double det = kernels::physical_gradients<NN, DIM>(re, q, x, g);
-        kernels::check_jacobian(det, sign, mesh, cell);
-        kernels::strain_matrix<NN, DIM>(g, b);
-        const Eigen::Matrix<double, NS, 1> sigma = d * (b * ue);
-        fe.noalias() += (std::abs(det) * re.weight[q]) * (b.transpose() * sigma);
-      }
+      kernels::CellRequest<Kin> req;
+      req.ue = &ue;
+      req.fe = &fe;
+      kernels::cell_response(behaviours.of(cell), model.modelisation[cell], cell, kin, req);
       for (int r = 0; r < ND; ++r) f_int(eq[r]) += fe(r);
     });
   }

@@ -9,6 +9,9 @@
 
 namespace lunaster::engine {
 
+class CellBehaviours;
+class MaterialStates;
+
 /// Appends the stiffness of every volume cell of `model` as triplets.
 /// Full integration for every element type (see engine/fe/quadrature). AXIS cells are
 /// integrated per radian (weight r = x), as code_aster's AXIS elements.
@@ -28,11 +31,30 @@ void assemble_stiffness(const FeModel& model, const DofMap& dofs, std::vector<Tr
 SparseMatrix assemble_stiffness_matrix(const FeModel& model, const DofMap& dofs,
                                        const std::vector<char>* owned_nodes = nullptr);
 
+/// The same for the linear behaviours `behaviours` (each Behaviour::is_linear; the model's own
+/// elasticity in the overload above): the tangent at rest.
+SparseMatrix assemble_stiffness_matrix(const CellBehaviours& behaviours, const DofMap& dofs,
+                                       const std::vector<char>* owned_nodes = nullptr);
+
 /// f_int = K u for linear elasticity, assembled cell by cell (no global matrix needed).
 /// With `cell_rank` (per mesh cell, the rank whose cell it is: a shared model's partition),
 /// only this rank's cells are assembled: the ranks' vectors sum to the whole one.
 void assemble_internal_forces(const FeModel& model, const DofMap& dofs, const Vector& u, Vector& f_int,
                               const std::vector<int>* cell_rank = nullptr);
+
+/// Zero states (MaterialStates) for the full-integration points of every volume cell of the
+/// behaviours' model, with each cell's behaviour's internal variables. DeckError for a cell
+/// carrying an element but no material.
+MaterialStates make_material_states(const CellBehaviours& behaviours);
+
+/// The model's internal force f_int = sum_e f_e and tangent K_t = sum_e K_e at displacement `u`,
+/// every point integrated by its cell's behaviour from `states`' step start to the strain of `u`
+/// (small strain); the states' trial slot (end of step) is written. Each of `f_int` (n_dofs) and
+/// `k_t` (n_dofs x n_dofs, the pattern of assemble_stiffness_matrix) is computed when given.
+/// Returns false when a point's integration failed (the step is to be subdivided; the outputs
+/// and the trial slot are then incomplete).
+bool assemble_internal_force(const CellBehaviours& behaviours, const DofMap& dofs, const Vector& u,
+                             MaterialStates& states, Vector* f_int, SparseMatrix* k_t);
 
 /// Adds the consistent nodal forces of a pressure `pressure` (Pa, positive
 /// pushes against the boundary cell's normal, as PRES_REP) on boundary cells

@@ -11,7 +11,6 @@
 #include "engine/core/error.hpp"
 #include "engine/fe/fe_model.hpp"
 #include "engine/fe/reference_element.hpp"
-#include "engine/material/elasticity.hpp"
 
 namespace lunaster::engine::kernels {
 
@@ -104,18 +103,6 @@ inline void check_jacobian(double det, double& first_sign, const Mesh& mesh, int
   }
 }
 
-/// Material of a cell; DeckError naming the cell if none was assigned.
-inline const ElasticMaterial& cell_material(const FeModel& model, int cell) {
-  const int m = cell < static_cast<int>(model.material.size()) ? model.material[cell] : -1;
-  if (m < 0 || m >= static_cast<int>(model.materials.size())) {
-    const Mesh& mesh = *model.mesh;
-    const std::string name = cell < static_cast<int>(mesh.cell_names.size()) ? mesh.cell_names[cell]
-                                                                                : "#" + std::to_string(cell + 1);
-    throw DeckError("cell " + name + " carries an element but no material");
-  }
-  return model.materials[m];
-}
-
 /// Axisymmetric (AXIS) kernels. x is the radius r, y the axis. Strains in the order of the
 /// stress components SIXX SIYY SIZZ SIXY: (eps_rr, eps_zz, eps_tt = u_r / r, gamma_rz), with
 /// z the axis (mesh y) and t the hoop direction (reported as SIZZ, as code_aster does).
@@ -154,22 +141,6 @@ double axis_point(const ReferenceElement& re, int q, const Eigen::Matrix<double,
                     std::to_string(r) + " (expected r > 0; x is the radius in an axisymmetric model)");
   axis_strain_matrix<NN>(g, n, r, b);
   return std::abs(det) * re.weight[q] * r;
-}
-
-/// Hooke matrix of an AXIS cell, order rr, zz, tt, rz.
-inline Eigen::Matrix4d cell_hooke_axis(const FeModel& model, int cell) {
-  return elasticity_axis(cell_material(model, cell));
-}
-
-/// Hooke matrix of a cell in kernel Voigt order (3x3 in 2D, 6x6 in 3D).
-template <int DIM>
-Eigen::Matrix<double, kVoigt<DIM>, kVoigt<DIM>> cell_hooke(const FeModel& model, int cell) {
-  const ElasticMaterial& mat = cell_material(model, cell);
-  if constexpr (DIM == 2) {
-    return elasticity_2d(mat, model.modelisation[cell]);
-  } else {
-    return elasticity_3d(mat);
-  }
 }
 
 }  // namespace lunaster::engine::kernels

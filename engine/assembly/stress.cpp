@@ -9,58 +9,34 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "engine/assembly/element_kernels.hpp"
+#include "engine/assembly/element_response.hpp"
 #include "engine/assembly/halo.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::engine {
 namespace {
 
-/// Stresses at the Gauss points of one cell, n_qp x n_out (SIXX SIYY SIZZ SIXY [SIXZ SIYZ]).
+/// Stresses at the Gauss points of one cell, n_qp x n_out (SIXX SIYY SIZZ SIXY [SIXZ SIYZ]):
+/// the cell's behaviour from a zero state at the strain of `u` (AXIS: radial, axial, hoop, rz).
 /// Nodal values come from extrapolating these: nothing is evaluated at a node, so nodes on
 /// the axis of an AXIS model need no special case.
-template <int NN, int DIM>
-Eigen::MatrixXd gauss_stresses(const FeModel& model, const DofMap& dofs, const Vector& u, int cell) {
-  constexpr int NS = kernels::kVoigt<DIM>, ND = NN * DIM;
-  const Mesh& mesh = *model.mesh;
-  const ReferenceElement& re = reference_element(mesh.cell_types[cell]);
-  const auto x = kernels::cell_coordinates<NN, DIM>(mesh, cell);
-  const auto d = kernels::cell_hooke<DIM>(model, cell);
-  const ElasticMaterial& mat = kernels::cell_material(model, cell);
-  Eigen::Matrix<double, ND, 1> ue;
-  const int* nodes = mesh.cell(cell);
-  for (int a = 0; a < NN; ++a)
-    for (int k = 0; k < DIM; ++k) ue(DIM * a + k) = u(dofs.dof(nodes[a], k));
-  Eigen::MatrixXd out(re.n_qp, DIM == 2 ? 4 : 6);
-  if constexpr (DIM == 2) {
-    // AXIS: (SIXX, SIYY, SIZZ, SIXY) = (radial, axial, hoop, rz) straight from the 4x4 law.
-    if (model.modelisation[cell] == Modelisation::Axisymmetric) {
-      const Eigen::Matrix4d d4 = kernels::cell_hooke_axis(model, cell);
-      Eigen::Matrix<double, NN, 2> g;
-      Eigen::Matrix<double, kernels::kVoigtAxis, ND> b;
-      double sign = 0.0;
-      for (int q = 0; q < re.n_qp; ++q) {
-        kernels::axis_point<NN>(re, q, x, mesh, cell, sign, g, b);
-        out.row(q) = (d4 * (b * ue)).transpose();
-      }
-      return out;
-    }
-  }
-  Eigen::Matrix<double, NN, DIM> g;
-  Eigen::Matrix<double, NS, ND> b;
-  double sign = 0.0;
-  for (int q = 0; q < re.n_qp; ++q) {
-    const double det = kernels::physical_gradients<NN, DIM>(re, q, x, g);
-    kernels::check_jacobian(det, sign, mesh, cell);
-    kernels::strain_matrix<NN, DIM>(g, b);
-    const Eigen::Matrix<double, NS, 1> s = d * (b * ue);
-    if constexpr (DIM == 2) {
-      out.row(q) << s(0), s(1), sigma_zz_2d(mat, model.modelisation[cell], s(0), s(1)), s(2);
-    } else {
-      out.row(q) = s.transpose();
-    }
-  }
-  return out;
+Eigen::MatrixXd gauss_stresses(const FeModel& model, const CellBehaviours& behaviours, const DofMap& dofs,
+                               const Vector& u, int cell) {
+  return kernels::with_small_strain(model, cell, [&](auto& kin) {
+    using Kin = std::decay_t<decltype(kin)>;
+    constexpr int NN = Kin::kNodes, DIM = Kin::kDim;
+    const Behaviour& behaviour = behaviours.of(cell);
+    Eigen::Matrix<double, Kin::kDofs, 1> ue;
+    const int* nodes = model.mesh->cell(cell);
+    for (int a = 0; a < NN; ++a)
+      for (int k = 0; k < DIM; ++k) ue(DIM * a + k) = u(dofs.dof(nodes[a], k));
+    Eigen::MatrixXd out;
+    kernels::CellRequest<Kin> req;
+    req.ue = &ue;
+    req.point_stresses = &out;
+    kernels::cell_response(behaviour, model.modelisation[cell], cell, kin, req);
+    return out;
+  });
 }
 
 }  // namespace
@@ -79,11 +55,10 @@ ElnoField compute_sigm_elno(const FeModel& model, const DofMap& dofs, const Vect
   for (int c = 0; c < mesh.n_cells(); ++c) f.cell_offsets[c + 1] = f.cell_offsets[c] + (is_volume[c] ? mesh.cell_n_nodes(c) : 0);
   f.values.assign(static_cast<size_t>(f.cell_offsets.back()) * nc, 0.0);
   const int rank = cell_rank ? parallel::rank() : 0;
+  const CellBehaviours behaviours(model);
   for (int c = 0; c < mesh.n_cells(); ++c) {
     if (!is_volume[c] || (cell_rank && (*cell_rank)[c] != rank)) continue;
-    const Eigen::MatrixXd sg = kernels::dispatch_volume(mesh.cell_types[c], [&](auto nn, auto dim) {
-      return gauss_stresses<decltype(nn)::value, decltype(dim)::value>(model, dofs, u, c);
-    });
+    const Eigen::MatrixXd sg = gauss_stresses(model, behaviours, dofs, u, c);
     const ReferenceElement& re = reference_element(mesh.cell_types[c]);
     const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> e(
         re.extrapolation.data(), re.n_nodes, re.n_qp);

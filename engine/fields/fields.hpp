@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/mesh/cell_type.hpp"
+
 namespace lunaster::engine {
 
 /// Values at mesh nodes, one column per component. A component may be
@@ -46,12 +48,28 @@ struct ElnoField {
   }
 };
 
+/// Where the integration points of a cell type lie (a MED localization): the reference cell's
+/// nodes and the points' reference coordinates and weights, `dim` coordinates each.
+struct PointLayout {
+  int dim = 0;
+  std::vector<double> nodes;    ///< n_nodes * dim, the cell type's node order
+  std::vector<double> points;   ///< n_points * dim
+  std::vector<double> weights;  ///< n_points
+};
+
+/// Values at the integration points of each cell (ELGA): the rows of a cell are its points, in
+/// the order of its type's layout. Cells that carry no value have zero rows.
+struct ElgaField : ElnoField {
+  std::map<CellType, PointLayout> layouts;  ///< one per cell type carrying rows
+};
+
 /// One stored instant of a nonlinear result (numéro d'ordre, instant).
 struct ResultStep {
   int nume_ordre = 0;
   double inst = 0.0;
   std::map<std::string, NodalField> nodal;  ///< "DEPL", "SIGM_NOEU", "CONT_NOEU" ...
   std::map<std::string, ElnoField> elno;    ///< "SIGM_ELNO", "SIEQ_ELNO" ...
+  std::map<std::string, ElgaField> elga;    ///< "SIEF_ELGA", "VARI_ELGA" ...
 };
 
 }  // namespace lunaster::engine

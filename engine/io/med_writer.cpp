@@ -30,6 +30,15 @@ class MedWriter {
   void write_families();
   void write_nodal(const std::string& name, const ResultStep& step, const NodalField& field);
   void write_elno(const std::string& name, const ResultStep& step, const ElnoField& field);
+  void write_elga(const std::string& name, const ResultStep& step, const ElgaField& field);
+  std::string localization(CellType type, const PointLayout& layout);
+  struct TypeRows {
+    std::vector<med_float> values;
+    std::vector<med_int> profile;
+    int n_type_cells = 0;
+  };
+  TypeRows type_rows(const std::string& name, const ElnoField& field, CellType type, const char* kind, int expected,
+                     const char* unit) const;
   void create_field(const std::string& name, const std::vector<std::string>& components);
 
   med_idt fid_;
@@ -37,6 +46,7 @@ class MedWriter {
   const Mesh& mesh_;
   std::vector<med_int> node_family_, cell_family_;
   std::map<std::string, std::vector<std::string>> created_fields_;
+  std::map<std::string, PointLayout> localizations_;
   int n_profiles_ = 0;
 };
 
@@ -158,28 +168,35 @@ void MedWriter::write_nodal(const std::string& name, const ResultStep& step, con
         "field " + name);
 }
 
+/// The rows of `field` on the cells of `type` in file order, `expected` rows per cell (InternalError
+/// otherwise), the 1-based positions among the type's cells of those carrying rows (a profile)
+/// and the type's cell count.
+MedWriter::TypeRows MedWriter::type_rows(const std::string& name, const ElnoField& field, CellType type,
+                                         const char* kind, int expected, const char* unit) const {
+  TypeRows out;
+  const int nc = field.n_components();
+  for (int c = 0; c < mesh_.n_cells(); ++c) {
+    if (mesh_.cell_types[c] != type) continue;
+    ++out.n_type_cells;
+    const int rows = field.n_rows(c);
+    if (rows == 0) continue;
+    if (rows != expected)
+      throw InternalError(std::string(kind) + " field '" + name + "': cell " + mesh_.cell_names[c] + " has " +
+                          std::to_string(rows) + " rows for " + std::to_string(expected) + " " + unit);
+    out.profile.push_back(out.n_type_cells);
+    for (int r = 0; r < rows; ++r)
+      for (int k = 0; k < nc; ++k) out.values.push_back(field.value(c, r, k));
+  }
+  return out;
+}
+
 void MedWriter::write_elno(const std::string& name, const ResultStep& step, const ElnoField& field) {
   if (field.n_cells() != mesh_.n_cells())
     throw InternalError("ELNO field '" + name + "' has " + std::to_string(field.n_cells()) + " cells, mesh has " +
                         std::to_string(mesh_.n_cells()));
   create_field(name, field.components);
-  const int nc = field.n_components();
   for (CellType type : cell_types_in_med_order()) {
-    std::vector<med_float> values;
-    std::vector<med_int> profile;
-    int position = 0;
-    for (int c = 0; c < mesh_.n_cells(); ++c) {
-      if (mesh_.cell_types[c] != type) continue;
-      ++position;
-      const int rows = field.n_rows(c);
-      if (rows == 0) continue;
-      if (rows != mesh_.cell_n_nodes(c))
-        throw InternalError("ELNO field '" + name + "': cell " + mesh_.cell_names[c] + " has " +
-                            std::to_string(rows) + " rows for " + std::to_string(mesh_.cell_n_nodes(c)) + " nodes");
-      profile.push_back(position);
-      for (int r = 0; r < rows; ++r)
-        for (int k = 0; k < nc; ++k) values.push_back(field.value(c, r, k));
-    }
+    auto [values, profile, position] = type_rows(name, field, type, "ELNO", cell_info(type).n_nodes, "nodes");
     if (profile.empty()) continue;
     const med_geometry_type geo = to_med(type);
     const auto* data = reinterpret_cast<const unsigned char*>(values.data());
@@ -199,11 +216,54 @@ void MedWriter::write_elno(const std::string& name, const ResultStep& step, cons
   }
 }
 
+/// The MED localization of a cell type's points, written on first use ("<TYPE>_<n> points").
+std::string MedWriter::localization(CellType type, const PointLayout& layout) {
+  const int n_points = static_cast<int>(layout.weights.size());
+  const std::string name = std::string(cell_info(type).name) + "_" + std::to_string(n_points) + "_POINTS";
+  const auto it = localizations_.find(name);
+  if (it != localizations_.end()) {
+    if (it->second.points != layout.points || it->second.weights != layout.weights)
+      throw InternalError("ELGA fields with two point layouts of one cell type (" + name + ")");
+    return name;
+  }
+  check(MEDlocalizationWr(fid_, name.c_str(), to_med(type), layout.dim, layout.nodes.data(), MED_FULL_INTERLACE,
+                          n_points, layout.points.data(), layout.weights.data(), MED_NO_INTERPOLATION,
+                          MED_NO_MESH_SUPPORT),
+        "localization " + name);
+  localizations_.emplace(name, layout);
+  return name;
+}
+
+void MedWriter::write_elga(const std::string& name, const ResultStep& step, const ElgaField& field) {
+  if (field.n_cells() != mesh_.n_cells())
+    throw InternalError("ELGA field '" + name + "' has " + std::to_string(field.n_cells()) + " cells, mesh has " +
+                        std::to_string(mesh_.n_cells()));
+  create_field(name, field.components);
+  for (CellType type : cell_types_in_med_order()) {
+    const auto layout = field.layouts.find(type);
+    const int n_points = layout == field.layouts.end() ? -1 : static_cast<int>(layout->second.weights.size());
+    auto [values, profile, position] = type_rows(name, field, type, "ELGA", n_points, "points");
+    if (profile.empty()) continue;
+    const std::string loc = localization(type, field.layouts.at(type));
+    std::string pname = MED_ALLENTITIES_PROFILE;
+    const med_int n = static_cast<med_int>(profile.size());
+    if (static_cast<int>(profile.size()) != position) {
+      pname = "PROFIL_" + std::to_string(++n_profiles_);
+      check(MEDprofileWr(fid_, pname.c_str(), n, profile.data()), "profile " + pname);
+    }
+    check(MEDfieldValueWithProfileWr(fid_, name.c_str(), step.nume_ordre, MED_NO_IT, step.inst, MED_CELL, to_med(type),
+                                     MED_COMPACT_STMODE, pname.c_str(), loc.c_str(), MED_FULL_INTERLACE,
+                                     MED_ALL_CONSTITUENT, n, reinterpret_cast<const unsigned char*>(values.data())),
+          "field " + name);
+  }
+}
+
 void MedWriter::write_result(const MedResult& result) {
   if (!result.steps) return;
   for (const ResultStep& step : *result.steps) {
     for (const auto& [field, values] : step.nodal) write_nodal(med_field_name(result.name, field), step, values);
     for (const auto& [field, values] : step.elno) write_elno(med_field_name(result.name, field), step, values);
+    for (const auto& [field, values] : step.elga) write_elga(med_field_name(result.name, field), step, values);
   }
 }
 

@@ -16,7 +16,9 @@
 /// per ResultStep (numdt = numéro d'ordre, numit = none, dt = instant).
 /// Nodal fields are written on all nodes (MED_NODE); a component undefined
 /// at a node is written as 0. ELNO fields are written per cell type
-/// (MED_NODE_ELEMENT), with a profile when only some cells of a type carry values.
+/// (MED_NODE_ELEMENT), with a profile when only some cells of a type carry values. ELGA fields
+/// likewise on the cells (MED_CELL), with one localization per cell type giving its points
+/// ("QUAD4_4_POINTS": the reference nodes, the points and their weights).
 #include <string>
 #include <vector>
 

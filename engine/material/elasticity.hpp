@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 
 #include "engine/fe/fe_model.hpp"
+#include "engine/material/behaviour.hpp"
 
 namespace lunaster::engine {
 
@@ -24,5 +25,28 @@ Eigen::Matrix4d elasticity_2d_full(const ElasticMaterial& mat, Modelisation mod)
 /// Axisymmetric (AXIS) matrix, order rr, zz (axial), tt (hoop), rz acting on
 /// (e_rr, e_zz, e_tt, g_rz): the 3D matrix restricted to those components.
 Eigen::Matrix4d elasticity_axis(const ElasticMaterial& mat);
+
+/// True for E > 0 and -1 < nu < 0.5 (the matrices above throw InternalError otherwise).
+bool is_admissible(const ElasticMaterial& mat);
+
+/// Linear isotropic elasticity as a behaviour: stress = D strain with the matrices above for the
+/// point's hypothesis (plane strain, plane stress, axisymmetric, 3D); no internal variables.
+/// The matrices are built once here; a material that is not admissible throws the matrices'
+/// InternalError when a point is integrated, not before (as when the matrices were built per cell).
+class Elasticity final : public Behaviour {
+ public:
+  explicit Elasticity(const ElasticMaterial& mat);
+  bool is_linear() const override { return true; }
+  const std::vector<std::string>& variable_names() const override;
+  IntegrationStatus integrate(const PointInput& in, PointOutput& out) const override;
+  const ElasticMaterial& material() const { return mat_; }
+
+ private:
+  ElasticMaterial mat_;
+  bool admissible_ = false;
+  Eigen::Matrix<double, 6, 6> d3_;
+  Eigen::Matrix3d plane_strain_, plane_stress_;           // in-plane (xx, yy, xy)
+  Eigen::Matrix4d plane_strain_full_, plane_stress_full_, axis_;
+};
 
 }  // namespace lunaster::engine

@@ -7,6 +7,7 @@
 
 #include "engine/assembly/assembly.hpp"
 #include "engine/assembly/element_kernels.hpp"
+#include "engine/material/elasticity.hpp"
 #include "engine/core/error.hpp"
 #include "axis_past_the_axis.hpp"
 #include "fe_test_util.hpp"
