@@ -4,7 +4,7 @@
 #include "engine/assembly/dof_map.hpp"
 #include "engine/material/cell_behaviours.hpp"
 #include "engine/material/material_states.hpp"
-#include "engine/solver/linear_solver.hpp"
+#include "engine/core/linalg.hpp"
 
 namespace lunaster::engine {
 
