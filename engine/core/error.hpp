@@ -35,6 +35,8 @@ struct Failure {
     OutOfMemory,          ///< a linear solver's factors do not fit
     NotAMedFile,          ///< a mesh file that is not MED
     IterativeSolve,       ///< an iterative linear solver that did not converge or cannot precondition this system
+    PartsBackend,         ///< a run in parts with a backend that does not solve in parts (`count` 1: the automatic choice)
+    PartsMultipliers,     ///< a run in parts with multipliers and a backend that does not solve such a system
   };
   What what = What::Unspecified;
   int limit = 0;

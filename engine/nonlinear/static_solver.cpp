@@ -18,6 +18,7 @@
 #include "engine/core/error.hpp"
 #include "engine/core/memory.hpp"
 #include "engine/core/two_workers.hpp"
+#include "engine/nonlinear/constraints.hpp"
 #include "engine/nonlinear/nodal_forces.hpp"
 #include "engine/nonlinear/renumbered_hook.hpp"
 #include "engine/nonlinear/rigid_body.hpp"
@@ -28,14 +29,6 @@
 #include "engine/solver/singularity.hpp"
 
 namespace lunaster::engine {
-
-/// Dirichlet conditions at one instant, applied by elimination.
-struct Constraints {
-  std::vector<int> free_index;   ///< per equation: index in the reduced system, -1 if constrained
-  std::vector<int> constrained;  ///< constrained equations
-  std::vector<double> values;    ///< imposed value per constrained equation
-  int n_free = 0;
-};
 
 namespace {
 
@@ -122,43 +115,6 @@ constexpr int kKrylovIterations = 30;
 constexpr double kKrylovTolerance = 1e-12;
 
 
-Constraints build_constraints(const DofMap& dofs, const MechanicalLoads& loads, double t, const Mesh& mesh) {
-  Constraints c;
-  c.free_index.assign(dofs.n_dofs(), 0);
-  std::map<int, double> imposed;
-  for (const auto& d : loads.dirichlet) {
-    const int eq = dofs.dof(d.node, d.component);
-    if (eq < 0)
-      throw DeckError("imposed " + std::string(component_name(d.component)) + " on node " + mesh.node_names[d.node] +
-                      ", which carries no such unknown in the model");
-    imposed[eq] = d.value * loads.multipliers.at(d.load)(t);
-  }
-  for (const auto& [eq, value] : imposed) {
-    c.free_index[eq] = -1;
-    c.constrained.push_back(eq);
-    c.values.push_back(value);
-  }
-  for (int eq = 0; eq < dofs.n_dofs(); ++eq)
-    if (c.free_index[eq] == 0) c.free_index[eq] = c.n_free++;
-  return c;
-}
-
-/// The equations the Dirichlet conditions constrain: the same set at every instant (only
-/// the imposed values follow the load functions). Sorted.
-std::vector<int> constrained_equations(const DofMap& dofs, const MechanicalLoads& loads, const Mesh& mesh) {
-  std::vector<int> eqs;
-  for (const auto& d : loads.dirichlet) {
-    const int eq = dofs.dof(d.node, d.component);
-    if (eq < 0)
-      throw DeckError("imposed " + std::string(component_name(d.component)) + " on node " + mesh.node_names[d.node] +
-                      ", which carries no such unknown in the model");
-    eqs.push_back(eq);
-  }
-  std::sort(eqs.begin(), eqs.end());
-  eqs.erase(std::unique(eqs.begin(), eqs.end()), eqs.end());
-  return eqs;
-}
-
 }  // namespace
 
 StaticSolver::StaticSolver(const FeModel& model, const MechanicalLoads& loads, NewtonOptions options,
@@ -167,23 +123,6 @@ StaticSolver::StaticSolver(const FeModel& model, const MechanicalLoads& loads, N
   LUNASTER_ASSERT(options_.reac_iter >= 0, "reac_iter must be >= 0");
   // The elastic matrix has no contact terms: the multiplier equations would be empty.
   LUNASTER_ASSERT(!(options_.elastic_matrix && contact_), "the elastic matrix is not for runs with contact");
-}
-
-NodalField StaticSolver::make_depl(const Vector& u) const {
-  std::vector<std::string> cmps = {"DX", "DY"};
-  std::vector<int> ids = {DX, DY};
-  if (model_.dim == 3) { cmps.push_back("DZ"); ids.push_back(DZ); }
-  bool has_lagrange = false;
-  for (int eq = 0; eq < dofs_.n_dofs() && !has_lagrange; ++eq) has_lagrange = dofs_.component_of(eq) == LAGS_C;
-  if (has_lagrange) { cmps.push_back("LAGS_C"); ids.push_back(LAGS_C); }
-  const Mesh& mesh = *model_.mesh;
-  NodalField depl(cmps, mesh.n_nodes());
-  for (int node = 0; node < mesh.n_nodes(); ++node)
-    for (size_t c = 0; c < ids.size(); ++c) {
-      const int eq = dofs_.dof(node, ids[c]);
-      if (eq >= 0) depl.set(node, static_cast<int>(c), u[eq]);
-    }
-  return depl;
 }
 
 std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
@@ -226,11 +165,12 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
     if (n != displacement_dofs) {
       // The hook's multipliers came after every node's displacements: the owned unknowns go
       // first (global_dofs.hpp), each class in its order, and the hook keeps its numbering.
-      if (options_.solver == SolverKind::Petsc)
-        throw DeckError("contact or linear relations with multipliers (LAGS_C, LAGR_DX..) on a mesh in parts are "
-                        "solved by MUMPS, not PETSc",
-                        {"SOLVEUR=_F{ METHODE = 'MUMPS' }, or no multipliers: contact by the discrete formulation's "
-                         "PENALISATION or by mortar (DEFI_CONT), linear relations with SOLVEUR ELIM_LAGR = 'OUI'"});
+      if (options_.solver == SolverKind::Petsc) {
+        DeckError refused("the multipliers of contact or linear relations on a mesh in parts are solved by the "
+                          "MUMPS backend, not PETSc");
+        refused.failure().what = Failure::What::PartsMultipliers;
+        throw refused;
+      }
       std::vector<int> new_of_old(n);
       int next = 0;
       for (int owned_class : {1, 0})
@@ -240,9 +180,13 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
       renumbered_contact_ = std::make_unique<RenumberedHook>(*contact_, std::move(new_of_old));
       contact_ = renumbered_contact_.get();
     }
-    if (options_.auto_solver || (options_.solver != SolverKind::Mumps && options_.solver != SolverKind::Petsc))
-      throw DeckError("on a mesh in parts MUMPS or PETSc solves (SOLVEUR=_F{METHODE='MUMPS'} or 'PETSC'), not " +
-                      std::string(options_.auto_solver ? "METHODE='AUTO'" : "a solver of one process"));
+    if (options_.auto_solver || (options_.solver != SolverKind::Mumps && options_.solver != SolverKind::Petsc)) {
+      DeckError refused("on a mesh in parts the MUMPS or PETSc backend solves, not " +
+                        std::string(options_.auto_solver ? "the automatic choice" : "a backend of one process"));
+      refused.failure().what = Failure::What::PartsBackend;
+      refused.failure().count = options_.auto_solver ? 1 : 0;
+      throw refused;
+    }
   }
   distributed_ = in_parts_ || shares_model();
   cell_rank_.clear();
@@ -252,7 +196,7 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   elastic_holder_ = nullptr;
   {
     Stopwatch watch(stats_.assemble_seconds);
-    std::vector<int> constrained = constrained_equations(dofs_, loads_, *model_.mesh);
+    std::vector<int> constrained = Constraints::held_equations(dofs_, loads_, *model_.mesh);
     elastic_.ff = SparseMatrix();  // the previous run's matrices go before these are built
     elastic_.c = SparseMatrix();
     equation_halo_.reset();
@@ -271,11 +215,8 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
       // The constrained set the owners decide; the free unknowns, numbered across the ranks in
       // the order of the system's equations (free_index: ascending, the owned ones first).
       {
-        Constraints owners;
-        owners.free_index.assign(n, 0);
-        for (int eq : constrained) owners.free_index[eq] = -1, owners.constrained.push_back(eq);
-        owners.values.assign(constrained.size(), 0.0);
-        take_owners_constraints(owners);
+        Constraints owners = Constraints::holding(n, constrained);
+        owners.take_from_owners(*equation_halo_);
         constrained = owners.constrained;
       }
       std::vector<char> free(n, 1);
@@ -333,12 +274,9 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
 
   Vector u = Vector::Zero(n);
   steps_.clear();
-  ResultStep initial;
-  initial.nume_ordre = 0;
-  initial.inst = instants[0];
-  initial.nodal["DEPL"] = make_depl(u);
-  if (contact_) write_contact_fields(nullptr, initial);
-  steps_.push_back(std::move(initial));
+  results_ = std::make_unique<StepResults>(dofs_, model_.mesh->n_nodes(), contact_,
+                                          in_parts_ && hook_part_ ? hook_part_->mesh.n_nodes() : model_.mesh->n_nodes());
+  steps_.push_back(results_->step(0, instants[0], u, true));
   for (size_t i = 1; i < instants.size(); ++i) {
     try {
       advance(instants[i - 1], instants[i], 0, u);
@@ -384,12 +322,7 @@ void StaticSolver::advance(double t0, double t1, int level, Vector& u) {
   }
   u = trial;
   ++stats_.instants;
-  ResultStep result;
-  result.nume_ordre = static_cast<int>(steps_.size());
-  result.inst = t1;
-  result.nodal["DEPL"] = make_depl(u);
-  if (contact_) write_contact_fields(&u, result);
-  steps_.push_back(std::move(result));
+  steps_.push_back(results_->step(static_cast<int>(steps_.size()), t1, u, false));
 }
 
 std::vector<DirichletValue> owners_dirichlet(const MeshPart& numbered, const NodeHalo& node_halo,
@@ -412,23 +345,6 @@ std::vector<DirichletValue> owners_dirichlet(const MeshPart& numbered, const Nod
       if (at[0] != 0.0) out.push_back({v, c, at[1], static_cast<int>(at[2])});
     }
   return out;
-}
-
-void StaticSolver::write_contact_fields(const Vector* u, ResultStep& step) const {
-  // In parts the hook's nodes are the whole surfaces' part's: its fields are written on those
-  // and kept on the part's nodes (the ones beyond are other ranks' and theirs to give).
-  const int part_nodes = model_.mesh->n_nodes();
-  const int hook_nodes = in_parts_ && hook_part_ ? hook_part_->mesh.n_nodes() : part_nodes;
-  auto resize = [](NodalField& f, int nodes) {
-    f.values.resize(static_cast<size_t>(nodes) * f.components.size(), 0.0);
-    f.defined.resize(static_cast<size_t>(nodes) * f.components.size(), 0);
-    f.n_nodes = nodes;
-  };
-  if (hook_nodes != part_nodes) resize(step.nodal.at("DEPL"), hook_nodes);
-  if (u) contact_->write_fields(*u, step);
-  else contact_->write_initial_fields(step);
-  if (hook_nodes != part_nodes)
-    for (auto& [name, field] : step.nodal) resize(field, part_nodes);
 }
 
 SystemLayout StaticSolver::system_layout(const Constraints& cons, const std::vector<int>& condensed,
@@ -490,27 +406,6 @@ bool StaticSolver::shares_model() const {
   // every rank for an SPD system), so a deck gives the same values under mpirun.
   if (parallel::size() < 2 || options_.auto_solver) return false;
   return (options_.solver == SolverKind::Mumps && options_.share_model) || options_.solver == SolverKind::Petsc;
-}
-
-void StaticSolver::take_owners_constraints(Constraints& c) const {
-  const int n = static_cast<int>(c.free_index.size());
-  // Per unknown: constrained or not, and its value, from its owner.
-  std::vector<double> said(2 * static_cast<size_t>(n), 0.0);
-  for (size_t i = 0; i < c.constrained.size(); ++i) {
-    said[2 * c.constrained[i]] = 1.0;
-    said[2 * c.constrained[i] + 1] = c.values[i];
-  }
-  equation_halo_->copy_to_ghosts(said, 2);
-  c.constrained.clear(), c.values.clear();
-  c.n_free = 0;
-  for (int eq = 0; eq < n; ++eq)
-    if (said[2 * eq] != 0.0) {
-      c.free_index[eq] = -1;
-      c.constrained.push_back(eq);
-      c.values.push_back(said[2 * eq + 1]);
-    } else {
-      c.free_index[eq] = c.n_free++;
-    }
 }
 
 void StaticSolver::complete_part_vector(Vector& v) const {
@@ -722,118 +617,42 @@ SparseMatrix StaticSolver::gathered_columns(const std::vector<int>& nodes) const
   return out;
 }
 
-std::vector<int> StaticSolver::eliminate(const Constraints& cons, const std::vector<Elimination>& relations,
-                                         const Vector& residual, std::vector<Triplet>& triplets, Vector& r_free) {
-  const int n = dofs_.n_dofs();
-  std::vector<int> index_of(n, -1);
-  std::vector<int> eqs;
-  eqs.reserve(relations.size());
-  for (size_t i = 0; i < relations.size(); ++i) {
-    const int eq = relations[i].eq;
-    LUNASTER_ASSERT(eq >= 0 && eq < n && cons.free_index[eq] >= 0 && index_of[eq] < 0,
-                    "an eliminated unknown must be free and eliminated once");
-    index_of[eq] = static_cast<int>(i);
-    eqs.push_back(eq);
+Constraints::ColumnSource StaticSolver::stiffness_columns(const Constraints& cons,
+                                                         const std::vector<Elimination>& relations) {
+  if (!distributed_) {
+    // Its constrained rows are left out: their residual is not solved for and no term of K'
+    // lies on them. So are zeros (the contact positions update_system added to K_ff's
+    // pattern): the fill, and with it the system's pattern, follows the relations.
+    return [this, &cons](int e, Constraints::Column& column) {
+      for (SparseMatrix::InnerIterator it(elastic_.ff, cons.free_index[e]); it; ++it)
+        if (it.value() != 0.0) column.emplace_back(elastic_.equation[it.row()], it.value());
+    };
   }
-  // Columns of K at the eliminated equations: elastic part and contact triplets.
-  std::vector<std::vector<std::pair<int, double>>> column(relations.size());
-  if (in_parts_) {
-    // The owner of an eliminated unknown's node holds every cell around it: it assembles the
-    // node's columns whole and every rank gets them (kept while the set of nodes holds). Their
-    // rows are on every rank: the slave surfaces came with the cells around their nodes
-    // (with_whole_surfaces, layered).
-    std::vector<int> nodes;
-    for (int eq : eqs) nodes.push_back(dofs_.node_of(eq));
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    if (nodes != ghost_nodes_) ghost_ = gathered_columns(nodes), ghost_nodes_ = std::move(nodes);
-    for (size_t i = 0; i < relations.size(); ++i)
-      for (SparseMatrix::InnerIterator it(ghost_, relations[i].eq); it; ++it)
-        if (cons.free_index[it.row()] >= 0) column[i].emplace_back(static_cast<int>(it.row()), it.value());
-  } else if (distributed_) {
-    // This rank holds only its own nodes' columns: every rank computes the whole columns of
-    // the eliminated equations' nodes (kept while the set of nodes holds), so that each one
-    // gets the whole fill and keeps its own columns of it.
-    std::vector<int> nodes;
-    for (int eq : eqs) nodes.push_back(dofs_.node_of(eq));
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    if (nodes != ghost_nodes_) {
+  // This rank holds only its own nodes' columns: the whole columns of the eliminated
+  // equations' nodes are computed (kept while the set of nodes holds), so that each rank gets
+  // the whole fill and keeps its own columns of it. A shared model: every rank assembles them.
+  // In parts: the owner of an eliminated unknown's node holds every cell around it, assembles
+  // the node's columns whole and every rank gets them; their rows are on every rank (the slave
+  // surfaces came with the cells around their nodes: with_whole_surfaces, layered).
+  std::vector<int> nodes;
+  for (const Elimination& e : relations) nodes.push_back(dofs_.node_of(e.eq));
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  if (nodes != ghost_nodes_) {
+    if (in_parts_) {
+      ghost_ = gathered_columns(nodes);
+    } else {
       std::vector<char> mask(model_.mesh->n_nodes(), 0);
       for (int v : nodes) mask[v] = 1;
       ghost_ = SparseMatrix();
       ghost_ = assemble_stiffness_matrix(model_, dofs_, &mask);
-      ghost_nodes_ = std::move(nodes);
     }
-    for (size_t i = 0; i < relations.size(); ++i)
-      for (SparseMatrix::InnerIterator it(ghost_, relations[i].eq); it; ++it)
-        if (cons.free_index[it.row()] >= 0) column[i].emplace_back(static_cast<int>(it.row()), it.value());
-  } else {
-    for (size_t i = 0; i < relations.size(); ++i) {
-      const int e = relations[i].eq;
-      // Its constrained rows are left out: their residual is not solved for and no term
-      // of K' lies on them. So are zeros (the contact positions update_system added to
-      // K_ff's pattern): the fill, and with it the system's pattern, follows the relations.
-      for (SparseMatrix::InnerIterator it(elastic_.ff, cons.free_index[e]); it; ++it)
-        if (it.value() != 0.0) column[i].emplace_back(elastic_.equation[it.row()], it.value());
-    }
+    ghost_nodes_ = std::move(nodes);
   }
-  for (const auto& tr : triplets)
-    if (index_of[tr.col()] >= 0) column[index_of[tr.col()]].emplace_back(tr.row(), tr.value());
-  // r + K b over the whole numbering.
-  Vector rb = residual;
-  for (size_t i = 0; i < relations.size(); ++i)
-    if (relations[i].value != 0.0)
-      for (const auto& [row, v] : column[i]) rb[row] += v * relations[i].value;
-  for (int eq = 0; eq < n; ++eq) {
-    const int k = cons.free_index[eq];
-    if (k >= 0) r_free[k] = index_of[eq] >= 0 ? 0.0 : rb[eq];
-  }
-  for (size_t i = 0; i < relations.size(); ++i)
-    for (const auto& [k, a] : relations[i].terms)
-      if (cons.free_index[k] >= 0) r_free[cons.free_index[k]] += a * rb[relations[i].eq];
-  // The fill as sparse products, which sum the contributions of neighbouring relations
-  // (one triplet per product term would be tens of millions in 3D): with KE the columns of K
-  // at E (rows over the whole numbering) and A the relations' coefficients,
-  // P = KE A holds K_RE A in its R rows and K_EE A in its E rows; then K' - K_RR =
-  // P_R + P_R^T + A^T P_E.
-  const int m = static_cast<int>(relations.size());
-  std::vector<Triplet> t;
-  for (int i = 0; i < m; ++i)
-    for (const auto& [row, v] : column[i])
-      if (cons.free_index[row] >= 0) t.emplace_back(row, i, v);
-  SparseMatrix ke(n, m);
-  ke.setFromTriplets(t.begin(), t.end());
-  t.clear();
-  for (int i = 0; i < m; ++i)
-    for (const auto& [k, a] : relations[i].terms)
-      if (cons.free_index[k] >= 0) t.emplace_back(i, k, a);
-  SparseMatrix a(m, n);
-  a.setFromTriplets(t.begin(), t.end());
-  std::vector<Triplet>().swap(t);
-  const SparseMatrix p = ke * a;  // n x n, column-major
-  // P_E as an m x n matrix (its rows at the eliminated equations), then A^T P_E.
-  std::vector<Triplet> pe;
-  for (int k = 0; k < p.outerSize(); ++k)
-    for (SparseMatrix::InnerIterator it(p, k); it; ++it)
-      if (index_of[it.row()] >= 0) pe.emplace_back(index_of[it.row()], k, it.value());
-  SparseMatrix pe_m(m, n);
-  pe_m.setFromTriplets(pe.begin(), pe.end());
-  const SparseMatrix s = SparseMatrix(a.transpose()) * pe_m;
-  // The fill goes into triplets in one allocation (millions of terms in 3D: growing the
-  // vector by doubling copied it onto fresh pages several times over).
-  const std::size_t fill = 2 * (static_cast<std::size_t>(p.nonZeros()) - pe.size()) + static_cast<std::size_t>(s.nonZeros());
-  reserve_on_huge_pages(triplets, triplets.size() + fill);
-  for (int k = 0; k < p.outerSize(); ++k)
-    for (SparseMatrix::InnerIterator it(p, k); it; ++it) {
-      const int row = static_cast<int>(it.row());
-      if (index_of[row] >= 0) continue;
-      triplets.emplace_back(row, k, it.value());
-      triplets.emplace_back(k, row, it.value());
-    }
-  for (int k = 0; k < s.outerSize(); ++k)
-    for (SparseMatrix::InnerIterator it(s, k); it; ++it) triplets.emplace_back(static_cast<int>(it.row()), k, it.value());
-  return eqs;
+  return [this, &cons](int e, Constraints::Column& column) {
+    for (SparseMatrix::InnerIterator it(ghost_, e); it; ++it)
+      if (cons.free_index[it.row()] >= 0) column.emplace_back(static_cast<int>(it.row()), it.value());
+  };
 }
 
 void StaticSolver::choose_interface(const Constraints& cons, const std::vector<Triplet>& contact) {
@@ -1204,9 +1023,9 @@ void StaticSolver::restore_elastic() {
 void StaticSolver::solve_instant(double t, Vector& u) {
   const int n = dofs_.n_dofs();
   log_.info("instant " + sci(t));
-  Constraints cons = build_constraints(dofs_, loads_, t, *model_.mesh);
-  if (in_parts_) take_owners_constraints(cons);
-  for (size_t i = 0; i < cons.constrained.size(); ++i) u[cons.constrained[i]] = cons.values[i];
+  Constraints cons = Constraints::at_instant(dofs_, loads_, t, *model_.mesh);
+  if (in_parts_) cons.take_from_owners(*equation_halo_);
+  cons.impose(u);
   const Vector f_ext = external_forces(model_, dofs_, loads_, t, distributed_ ? &node_owner_ : nullptr,
                                        in_parts_ ? equation_halo_.get() : nullptr);
   stats_.n_free = std::max(stats_.n_free, in_parts_ ? static_cast<int>(free_numbers_.n_global) : cons.n_free);
@@ -1305,7 +1124,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       std::vector<int> eliminated_eqs;
       if (!eliminated.empty()) {
         Stopwatch watch(stats_.assemble_seconds);
-        eliminated_eqs = eliminate(cons, eliminated, residual, k_contact, r_free);
+        eliminated_eqs = cons.eliminate(eliminated, stiffness_columns(cons, eliminated), residual, k_contact, r_free);
       }
       if (distributed_) {
         // The hook built the terms of the points that touch this rank's columns, which also
@@ -1634,13 +1453,7 @@ void StaticSolver::solve_instant(double t, Vector& u) {
           if (cons.free_index[eq] >= 0) carried_residual[eq] = accuracy.ax_minus_b[cons.free_index[eq]];
         elastic_.add_constrained_rows(du, carried_residual);
       }
-      for (const Elimination& e : eliminated) {
-        // du_e = b_e + sum a_k du_k (its own entry of du is the zero of its unit row).
-        double d = e.value;
-        for (const auto& [k, a] : e.terms)
-          if (cons.free_index[k] >= 0) d += a * du[cons.free_index[k]];
-        u[e.eq] += d;
-      }
+      cons.recover(eliminated, du, u);
       if (!condensed.empty()) {
         Stopwatch watch(stats_.contact_seconds);
         contact_->recover(u);
