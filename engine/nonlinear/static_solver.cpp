@@ -1,6 +1,5 @@
 #include "engine/nonlinear/static_solver.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <algorithm>
 #include <array>
@@ -19,9 +18,12 @@
 #include "engine/core/memory.hpp"
 #include "engine/core/two_workers.hpp"
 #include "engine/nonlinear/constraints.hpp"
+#include "engine/nonlinear/failure_diagnosis.hpp"
 #include "engine/nonlinear/nodal_forces.hpp"
 #include "engine/nonlinear/renumbered_hook.hpp"
 #include "engine/nonlinear/rigid_body.hpp"
+#include "engine/nonlinear/stopwatch.hpp"
+#include "engine/nonlinear/time_stepper.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 #include "engine/solver/backends.hpp"
 #include "engine/solver/krylov.hpp"
@@ -31,21 +33,6 @@
 namespace lunaster::engine {
 
 namespace {
-
-/// Adds the wall time of its scope to a SolverStats counter.
-class Stopwatch {
- public:
-  explicit Stopwatch(double& seconds) : seconds_(seconds), t0_(std::chrono::steady_clock::now()) {}
-  ~Stopwatch() { seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count(); }
-  Stopwatch(const Stopwatch&) = delete;
-  Stopwatch& operator=(const Stopwatch&) = delete;
-
- private:
-  double& seconds_;
-  std::chrono::steady_clock::time_point t0_;
-};
-
-double inf_norm(const Vector& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
 
 /// FNV-1a key of a system's values: equal keys, equal matrices.
 struct ValuesKey {
@@ -102,19 +89,6 @@ std::string sci(double v) {
   return buf;
 }
 
-/// A linear solve is accepted when |K du + r| / |r| is below this (after iterative
-/// refinement): far above round-off for a well-posed system, far below what a singular
-/// one leaves (a rigid-body mode, a contact block without rank). Newton corrects the
-/// remaining inaccuracy at its next iteration. A direct solve's own tolerance
-/// (NewtonOptions::direct_solve_tolerance) replaces it when given.
-constexpr double kSolveTolerance = 1e-6;
-
-/// GMRES with the previous factorisation as preconditioner (a new pairing, same statuses):
-/// at most this many iterations, to this relative residual, before refactorising.
-constexpr int kKrylovIterations = 30;
-constexpr double kKrylovTolerance = 1e-12;
-
-
 }  // namespace
 
 StaticSolver::StaticSolver(const FeModel& model, const MechanicalLoads& loads, NewtonOptions options,
@@ -125,8 +99,7 @@ StaticSolver::StaticSolver(const FeModel& model, const MechanicalLoads& loads, N
   LUNASTER_ASSERT(!(options_.elastic_matrix && contact_), "the elastic matrix is not for runs with contact");
 }
 
-std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
-  LUNASTER_ASSERT(!instants.empty(), "no instants");
+void StaticSolver::number_unknowns(std::optional<NodeHalo>& node_halo) {
   in_parts_ = part_ != nullptr;
   contact_ = given_contact_;
   renumbered_contact_.reset();
@@ -144,121 +117,132 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   const int displacement_dofs = dofs_.n_dofs();
   // In parts, the exchanges of the part's nodes (the owners' Dirichlet conditions for the hook,
   // then the numbering across the ranks).
-  std::optional<NodeHalo> node_halo;
   if (in_parts_) node_halo.emplace(numbered_part());
   if (contact_) {
     contact_->set_dirichlet(in_parts_ && hook_part_ ? owners_dirichlet(*hook_part_, *node_halo, loads_.dirichlet)
                                                    : loads_.dirichlet);
     contact_->add_dofs(dofs_);
   }
+  if (!in_parts_) return;
   const int n = dofs_.n_dofs();
-  stats_ = SolverStats{};
-  backend_note_logged_ = false;
-  system_.reset();
-  for (auto& s : solvers_) s.reset();
-  stats_.n_dofs = n;
-  if (in_parts_) {
-    // What a mesh in parts does not do yet (docs/distributed-model.md): said alike on every rank.
-    LUNASTER_ASSERT(model_.mesh == &part_->mesh && part_->parts == parallel::size(),
-                    "a run in parts takes the model of this rank's part, one part per rank");
-    LUNASTER_ASSERT(!contact_ || hook_part_, "a hook on a mesh in parts takes the part with the hook's nodes");
-    if (n != displacement_dofs) {
-      // The hook's multipliers came after every node's displacements: the owned unknowns go
-      // first (global_dofs.hpp), each class in its order, and the hook keeps its numbering.
-      if (options_.solver == SolverKind::Petsc) {
-        DeckError refused("the multipliers of contact or linear relations on a mesh in parts are solved by the "
-                          "MUMPS backend, not PETSc");
-        refused.failure().what = Failure::What::PartsMultipliers;
-        throw refused;
-      }
-      std::vector<int> new_of_old(n);
-      int next = 0;
-      for (int owned_class : {1, 0})
-        for (int eq = 0; eq < n; ++eq)
-          if (part_->owns(dofs_.node_of(eq)) == (owned_class == 1)) new_of_old[eq] = next++;
-      dofs_ = dofs_.renumbered(new_of_old);
-      renumbered_contact_ = std::make_unique<RenumberedHook>(*contact_, std::move(new_of_old));
-      contact_ = renumbered_contact_.get();
-    }
-    if (options_.auto_solver || (options_.solver != SolverKind::Mumps && options_.solver != SolverKind::Petsc)) {
-      DeckError refused("on a mesh in parts the MUMPS or PETSc backend solves, not " +
-                        std::string(options_.auto_solver ? "the automatic choice" : "a backend of one process"));
-      refused.failure().what = Failure::What::PartsBackend;
-      refused.failure().count = options_.auto_solver ? 1 : 0;
+  // What a mesh in parts does not do yet (docs/distributed-model.md): said alike on every rank.
+  LUNASTER_ASSERT(model_.mesh == &part_->mesh && part_->parts == parallel::size(),
+                  "a run in parts takes the model of this rank's part, one part per rank");
+  LUNASTER_ASSERT(!contact_ || hook_part_, "a hook on a mesh in parts takes the part with the hook's nodes");
+  if (n != displacement_dofs) {
+    // The hook's multipliers came after every node's displacements: the owned unknowns go
+    // first (global_dofs.hpp), each class in its order, and the hook keeps its numbering.
+    if (options_.solver == SolverKind::Petsc) {
+      DeckError refused("the multipliers of contact or linear relations on a mesh in parts are solved by the "
+                        "MUMPS backend, not PETSc");
+      refused.failure().what = Failure::What::PartsMultipliers;
       throw refused;
     }
+    std::vector<int> new_of_old(n);
+    int next = 0;
+    for (int owned_class : {1, 0})
+      for (int eq = 0; eq < n; ++eq)
+        if (part_->owns(dofs_.node_of(eq)) == (owned_class == 1)) new_of_old[eq] = next++;
+    dofs_ = dofs_.renumbered(new_of_old);
+    renumbered_contact_ = std::make_unique<RenumberedHook>(*contact_, std::move(new_of_old));
+    contact_ = renumbered_contact_.get();
   }
+  if (options_.auto_solver || (options_.solver != SolverKind::Mumps && options_.solver != SolverKind::Petsc)) {
+    DeckError refused("on a mesh in parts the MUMPS or PETSc backend solves, not " +
+                      std::string(options_.auto_solver ? "the automatic choice" : "a backend of one process"));
+    refused.failure().what = Failure::What::PartsBackend;
+    refused.failure().count = options_.auto_solver ? 1 : 0;
+    throw refused;
+  }
+}
+
+void StaticSolver::lay_out_parts(std::vector<int>& constrained, const NodeHalo& node_halo) {
+  const int n = dofs_.n_dofs();
+  const MeshPart& numbered = numbered_part();
+  node_owner_ = numbered.node_owner;
+  cell_rank_ = part_->cell_part;
+  owned_nodes_.assign(numbered.mesh.n_nodes(), 0);
+  std::fill(owned_nodes_.begin(), owned_nodes_.begin() + part_->n_owned_nodes, 1);
+  unknown_numbers_ = number_across_ranks(numbered, dofs_, node_halo);
+  const GlobalDofs& numbers = unknown_numbers_;
+  stats_.n_dofs = static_cast<int>(numbers.n_global);
+  layout_ = RankLayout(std::make_unique<Halo>(equation_halo(numbered, dofs_, numbers)), numbers.n_owned);
+  // The constrained set the owners decide; the free unknowns, numbered across the ranks in
+  // the order of the system's equations (free_index: ascending, the owned ones first).
+  {
+    Constraints owners = Constraints::holding(n, constrained);
+    owners.take_from_owners(layout_.equation_halo());
+    constrained = owners.constrained;
+  }
+  std::vector<char> free(n, 1);
+  for (int eq : constrained) free[eq] = 0;
+  free_numbers_ = number_across_ranks(numbered, dofs_, node_halo, &free);
+  free_halo_ = std::make_unique<Halo>(equation_halo(numbered, dofs_, free_numbers_));
+  std::string counts;
+  for (int owned : parallel::gather_all(std::vector<int>{part_->n_owned_nodes}))
+    counts += (counts.empty() ? "" : ", ") + std::to_string(owned);
+  std::string hook_said;
+  if (contact_ && contact_->has_contact())
+    hook_said += "; the contact surfaces are whole on every rank, which pairs every point and keeps the contact "
+                 "terms of its own nodes' columns";
+  if (contact_ && !contact_->related_equations().empty())
+    hook_said += "; every rank builds every linear relation (their nodes beyond its part are its ghosts) and "
+                 "keeps the terms of its own nodes' columns";
+  log_.info("mesh in parts on " + std::to_string(part_->parts) + " ranks: owned nodes per rank " + counts + ", " +
+            std::to_string(numbers.n_global) + " unknowns; each rank assembles the stiffness of its own nodes and "
+            "holds its part's vectors" + hook_said);
+}
+
+void StaticSolver::lay_out_shared() {
+  const Mesh& mesh = *model_.mesh;
+  const std::vector<int> cells = model_.volume_cells();
+  const CellPartition part = partition_cells(mesh, cells, model_.dim);
+  layout_ = RankLayout(RankLayout::Kind::Shared);
+  node_owner_ = part.node_owner;
+  cell_rank_.assign(mesh.n_cells(), -1);
+  for (size_t i = 0; i < cells.size(); ++i) cell_rank_[cells[i]] = part.cell_part[i];
+  owned_nodes_.assign(mesh.n_nodes(), 0);
+  std::vector<int> nodes_of(part.parts, 0), cells_of(part.parts, 0);
+  for (int v = 0; v < mesh.n_nodes(); ++v)
+    if (node_owner_[v] >= 0) ++nodes_of[node_owner_[v]], owned_nodes_[v] = node_owner_[v] == parallel::rank();
+  if (contact_) contact_->share_among_ranks(owned_nodes_);
+  for (int p : part.cell_part) ++cells_of[p];
+  std::string counts;
+  for (int r = 0; r < part.parts; ++r)
+    counts += (r ? ", " : "") + std::to_string(cells_of[r]) + " / " + std::to_string(nodes_of[r]);
+  log_.info("model shared among " + std::to_string(part.parts) + " ranks, " +
+            std::to_string(parallel::ranks_on_this_machine()) + " on this machine (Scotch): cells / nodes per rank " +
+            counts + "; " + std::to_string(part.interface_nodes) +
+            " nodes on interfaces; each rank assembles the stiffness of its own nodes" +
+            (contact_ ? std::string(", pairs its share of the contact points and builds the contact terms "
+                                    "of its own columns")
+                      : std::string()));
+}
+
+std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
+  LUNASTER_ASSERT(!instants.empty(), "no instants");
+  std::optional<NodeHalo> node_halo;
+  number_unknowns(node_halo);
+  const int n = dofs_.n_dofs();
+  stats_ = SolverStats{};
+  system_.reset();
+  linear_ = std::make_unique<LinearSolve>(options_, stats_, log_);
+  stats_.n_dofs = n;
   distributed_ = in_parts_ || shares_model();
   cell_rank_.clear();
   ghost_ = SparseMatrix();
   ghost_nodes_.clear();
-  elastic_in_solver_ = false;
-  elastic_holder_ = nullptr;
   {
     Stopwatch watch(stats_.assemble_seconds);
     std::vector<int> constrained = Constraints::held_equations(dofs_, loads_, *model_.mesh);
     elastic_.ff = SparseMatrix();  // the previous run's matrices go before these are built
     elastic_.c = SparseMatrix();
-    equation_halo_.reset();
+    layout_ = RankLayout();
     free_halo_.reset();
     if (in_parts_) {
-      const MeshPart& numbered = numbered_part();
-      node_owner_ = numbered.node_owner;
-      cell_rank_ = part_->cell_part;
-      owned_nodes_.assign(numbered.mesh.n_nodes(), 0);
-      std::fill(owned_nodes_.begin(), owned_nodes_.begin() + part_->n_owned_nodes, 1);
-      unknown_numbers_ = number_across_ranks(numbered, dofs_, *node_halo);
-      const GlobalDofs& numbers = unknown_numbers_;
-      owned_equations_ = numbers.n_owned;
-      stats_.n_dofs = static_cast<int>(numbers.n_global);
-      equation_halo_ = std::make_unique<Halo>(equation_halo(numbered, dofs_, numbers));
-      // The constrained set the owners decide; the free unknowns, numbered across the ranks in
-      // the order of the system's equations (free_index: ascending, the owned ones first).
-      {
-        Constraints owners = Constraints::holding(n, constrained);
-        owners.take_from_owners(*equation_halo_);
-        constrained = owners.constrained;
-      }
-      std::vector<char> free(n, 1);
-      for (int eq : constrained) free[eq] = 0;
-      free_numbers_ = number_across_ranks(numbered, dofs_, *node_halo, &free);
-      free_halo_ = std::make_unique<Halo>(equation_halo(numbered, dofs_, free_numbers_));
-      std::string counts;
-      for (int owned : parallel::gather_all(std::vector<int>{part_->n_owned_nodes}))
-        counts += (counts.empty() ? "" : ", ") + std::to_string(owned);
-      std::string hook_said;
-      if (contact_ && contact_->has_contact())
-        hook_said += "; the contact surfaces are whole on every rank, which pairs every point and keeps the contact "
-                     "terms of its own nodes' columns";
-      if (contact_ && !contact_->related_equations().empty())
-        hook_said += "; every rank builds every linear relation (their nodes beyond its part are its ghosts) and "
-                     "keeps the terms of its own nodes' columns";
-      log_.info("mesh in parts on " + std::to_string(part_->parts) + " ranks: owned nodes per rank " + counts + ", " +
-                std::to_string(numbers.n_global) + " unknowns; each rank assembles the stiffness of its own nodes and "
-                "holds its part's vectors" + hook_said);
+      lay_out_parts(constrained, *node_halo);
     } else if (distributed_) {
-      const Mesh& mesh = *model_.mesh;
-      const std::vector<int> cells = model_.volume_cells();
-      const CellPartition part = partition_cells(mesh, cells, model_.dim);
-      node_owner_ = part.node_owner;
-      cell_rank_.assign(mesh.n_cells(), -1);
-      for (size_t i = 0; i < cells.size(); ++i) cell_rank_[cells[i]] = part.cell_part[i];
-      owned_nodes_.assign(mesh.n_nodes(), 0);
-      std::vector<int> nodes_of(part.parts, 0), cells_of(part.parts, 0);
-      for (int v = 0; v < mesh.n_nodes(); ++v)
-        if (node_owner_[v] >= 0) ++nodes_of[node_owner_[v]], owned_nodes_[v] = node_owner_[v] == parallel::rank();
-      if (contact_) contact_->share_among_ranks(owned_nodes_);
-      for (int p : part.cell_part) ++cells_of[p];
-      std::string counts;
-      for (int r = 0; r < part.parts; ++r)
-        counts += (r ? ", " : "") + std::to_string(cells_of[r]) + " / " + std::to_string(nodes_of[r]);
-      log_.info("model shared among " + std::to_string(part.parts) + " ranks, " +
-                std::to_string(parallel::ranks_on_this_machine()) + " on this machine (Scotch): cells / nodes per rank " +
-                counts + "; " + std::to_string(part.interface_nodes) +
-                " nodes on interfaces; each rank assembles the stiffness of its own nodes" +
-                (contact_ ? std::string(", pairs its share of the contact points and builds the contact terms "
-                                        "of its own columns")
-                          : std::string()));
+      lay_out_shared();
     } else if (parallel::size() > 1 && !options_.auto_solver && options_.solver == SolverKind::Mumps) {
       log_.info("model whole on each of the " + std::to_string(parallel::size()) +
                 " ranks, as asked: each rank assembles the whole system; MUMPS reads rank 0's copy and "
@@ -271,15 +255,25 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   k_scale_ = std::max(elastic_.ff.nonZeros() ? elastic_.ff.coeffs().cwiseAbs().maxCoeff() : 0.0,
                       elastic_.c.nonZeros() ? elastic_.c.coeffs().cwiseAbs().maxCoeff() : 0.0);
   if (distributed_) k_scale_ = parallel::max_over_ranks(k_scale_);
+  convergence_ = std::make_unique<ConvergenceTest>(options_, layout_, k_scale_);
+  return step_through(instants);
+}
 
-  Vector u = Vector::Zero(n);
+std::vector<ResultStep> StaticSolver::step_through(const std::vector<double>& instants) {
+  Vector u = Vector::Zero(dofs_.n_dofs());
   steps_.clear();
   results_ = std::make_unique<StepResults>(dofs_, model_.mesh->n_nodes(), contact_,
                                           in_parts_ && hook_part_ ? hook_part_->mesh.n_nodes() : model_.mesh->n_nodes());
   steps_.push_back(results_->step(0, instants[0], u, true));
+  const TimeStepper stepper(options_.subdivide_levels, options_.subdivide_parts, contact_, log_);
+  const TimeStepper::Solve solve = [this](double t, Vector& v) { solve_instant(t, v); };
+  const TimeStepper::Commit commit = [this](double t, const Vector& v) {
+    ++stats_.instants;
+    steps_.push_back(results_->step(static_cast<int>(steps_.size()), t, v, false));
+  };
   for (size_t i = 1; i < instants.size(); ++i) {
     try {
-      advance(instants[i - 1], instants[i], 0, u);
+      stepper.advance(instants[i - 1], instants[i], u, solve, commit);
     } catch (SolveError& err) {
       // Say how far the run got: the converged steps stay available (converged_steps()).
       const ResultStep& last = steps_.back();
@@ -291,38 +285,6 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
     }
   }
   return steps_;
-}
-
-void StaticSolver::advance(double t0, double t1, int level, Vector& u) {
-  Vector trial = u;
-  const ContactSnapshot contact_state = contact_ ? contact_->snapshot() : ContactSnapshot{};
-  try {
-    solve_instant(t1, trial);
-  } catch (const ConvergenceError& err) {
-    // The sub-steps start from the statuses of the step, not from the diverged attempt's.
-    if (contact_) contact_->restore(contact_state);
-    if (level >= options_.subdivide_levels) {
-      if (options_.subdivide_levels == 0) throw;
-      ConvergenceError final(err.message(), err.hints());
-      final.set_failure(err.failure());
-      final.failure().subdivision_levels = level;
-      final.add_hint("step [" + sci(t0) + ", " + sci(t1) + "] still failed after " + std::to_string(level) +
-                     " subdivision level(s)");
-      throw final;
-    }
-    log_.warning("step to instant " + sci(t1) + " failed (" + err.message() + "); splitting it into " +
-                 std::to_string(options_.subdivide_parts) + " sub-steps (level " + std::to_string(level + 1) + ")");
-    double ta = t0;
-    for (int k = 1; k <= options_.subdivide_parts; ++k) {
-      const double tb = k == options_.subdivide_parts ? t1 : t0 + (t1 - t0) * k / options_.subdivide_parts;
-      advance(ta, tb, level + 1, u);
-      ta = tb;
-    }
-    return;
-  }
-  u = trial;
-  ++stats_.instants;
-  steps_.push_back(results_->step(static_cast<int>(steps_.size()), t1, u, false));
 }
 
 std::vector<DirichletValue> owners_dirichlet(const MeshPart& numbered, const NodeHalo& node_halo,
@@ -408,162 +370,37 @@ bool StaticSolver::shares_model() const {
   return (options_.solver == SolverKind::Mumps && options_.share_model) || options_.solver == SolverKind::Petsc;
 }
 
-void StaticSolver::complete_part_vector(Vector& v) const {
-  equation_halo_->add_to_owners(v.data(), 1);
-  equation_halo_->copy_to_ghosts(v.data(), 1);
-}
-
-double StaticSolver::largest_entry(const Vector& v, int n_owned) const {
-  if (!in_parts_) return inf_norm(v);
-  const double here = n_owned > 0 ? v.head(n_owned).cwiseAbs().maxCoeff() : 0.0;
-  // A NaN stays a NaN over the ranks (max would drop it): the ranks stop alike.
-  const double bad = parallel::max_over_ranks(std::isfinite(here) ? 0.0 : 1.0);
-  return bad > 0.0 ? std::numeric_limits<double>::quiet_NaN() : parallel::max_over_ranks(here);
-}
-
 Vector StaticSolver::stiffness_times(const Vector& u) const {
+  const LinearSolver* holder = k_ff_holder();
   // With K_ff in the backend, elastic_.times() gives the constrained columns' part only.
   Vector ku = elastic_.times(u);
   // In parts with K_ff in the backend, its product gives the owned rows whole: the ghosts'
   // shares of the rest go to the owners first, the owners' sums to the ghosts last.
-  if (in_parts_ && elastic_in_solver_) equation_halo_->add_to_owners(ku.data(), 1);
-  else if (in_parts_) complete_part_vector(ku);
-  else if (distributed_) parallel::sum_over_ranks(ku.data(), ku.size());
-  if (elastic_in_solver_) {
+  if (in_parts_ && holder) layout_.equation_halo().add_to_owners(ku.data(), 1);
+  else layout_.complete(ku);
+  if (holder) {
     const int nf = static_cast<int>(elastic_.equation.size());
     Vector u_free(nf), k_u_free;
     for (int j = 0; j < nf; ++j) u_free[j] = u[elastic_.equation[j]];
-    const bool done = elastic_holder_->multiply(u_free, k_u_free);
+    const bool done = holder->multiply(u_free, k_u_free);
     LUNASTER_ASSERT(done, "the backend holding K_ff gave no product");
     for (int j = 0; j < nf; ++j) ku[elastic_.equation[j]] += k_u_free[j];
-    if (in_parts_) equation_halo_->copy_to_ghosts(ku.data(), 1);
+    if (in_parts_) layout_.equation_halo().copy_to_ghosts(ku.data(), 1);
   }
   return ku;
 }
 
-SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err, double t) const {
-  // Approximate factors asked for are the likeliest cause: named in the first line, their
-  // hints said first.
-  const std::vector<Approximation> approximate = approximations();
-  std::string named;
-  for (const auto& a : approximate) named += (named.empty() ? "" : ", ") + a.what;
-  if (in_parts_) {
-    // The whole stiffness is on no rank: the failure is said as it is.
-    SolveError as_is = err;
-    as_is.add_hint("the model is in parts: no rank holds the whole stiffness to find the cause");
-    return as_is;
-  }
+SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err, double t) {
+  restore_elastic();  // K_ff itself, without this iteration's terms
+  FailureDiagnosis::Stiffness stiffness;
+  stiffness.on_no_rank = in_parts_;
   // elastic_.ff is the whole K_ff unless the model is shared or K_ff went to the backend
   // (also when the backend failed after taking it).
-  const bool whole_here = !distributed_ && !elastic_in_solver_ && (elastic_.ff.nonZeros() > 0 || elastic_.equation.empty());
-  SolveError found = [&] {
-    if (whole_here)
-      return diagnose_singular_system(model_, dofs_, cons.free_index, elastic_.ff, err, t, diagnosis_test(),
-                                      contact_ != nullptr, named);
-    SplitMatrix whole;
-    SparseMatrix k = assemble_stiffness_matrix(model_, dofs_);
-    split_matrix(k, elastic_.constrained, whole);
-    return diagnose_singular_system(model_, dofs_, cons.free_index, whole.ff, err, t, diagnosis_test(),
-                                    contact_ != nullptr, named);
-  }();
-  if (!approximate.empty()) {
-    std::vector<std::string> hints;
-    for (const auto& a : approximate) hints.push_back(a.hint);
-    hints.insert(hints.end(), found.hints().begin(), found.hints().end());
-    found.set_hints(std::move(hints));
-  }
-  if (!options_.factor.preprocessing && options_.factor.singularity.digits >= 0)
-    found.add_hint("the matrix was factorised as assembled (MUMPS without preprocessing), so its pivots were tested "
-                   "unscaled: a multiplier's pivot, small in absolute terms, counts as null; let MUMPS scale the "
-                   "matrix, or turn the pivot test off");
-  return found;
-}
-
-std::vector<StaticSolver::Approximation> StaticSolver::approximations() const {
-  std::vector<Approximation> out;
-  if (options_.solver != SolverKind::Mumps) return out;
-  if (options_.factor.filter > 0.0)
-    out.push_back({"without its smallest entries",
-                   "the matrix was factorised without its smallest entries (filter " + sci(options_.factor.filter) +
-                       "), which this system needs" +
-                       (contact_ ? ": its contact couplings are small beside the stiffness's diagonal" : "") +
-                       "; lower the filter, or keep every entry"});
-  if (options_.factor.low_rank.on)
-    out.push_back({"in block low rank", "the factors were compressed in block low rank (threshold " +
-                                            sci(std::abs(options_.factor.low_rank.threshold)) +
-                                            "), too coarsely for this system: lower the threshold, refine more, or "
-                                            "factorise in full rank"});
-  if (options_.single_precision)
-    out.push_back({"in single precision",
-                   "the factors were computed in single precision, too coarse for this system's conditioning: "
-                   "refine more, or factorise in double precision"});
-  return out;
-}
-
-SingularityTest StaticSolver::diagnosis_test() const {
-  // A failure's culprit is looked for with the run's digits, or code_aster's default 8 when
-  // the run asked for no test; the diagnosis always stops at it.
-  SingularityTest test;
-  if (options_.factor.singularity.digits >= 0) test.digits = options_.factor.singularity.digits;
-  return test;
-}
-
-SolverKind StaticSolver::backend_for(MatrixKind kind) {
-  if (options_.solver == SolverKind::Petsc) return SolverKind::Petsc;  // iterative: any kind, as asked
-  // A large 3D SPD system: a factorisation fills too much. On the 2.8e5-unknown HEXA8/HEXA20
-  // mortar benchmark CHOLMOD took 139 s and 11 GB (its best ordering, METIS on the node graph,
-  // still filled 8.8e8 entries), MUMPS 63 s and 6.6 GB, PETSc's CG with BoomerAMG 20-25 s and
-  // 1.3 GB. Below, CHOLMOD stays faster. AUTO's CG solves to a relative residual of 1e-12 (the
-  // mortar multipliers of that benchmark needed it to stay within 1e-8) in at most 500
-  // iterations, and MUMPS takes over if it fails: a choice of ours must not stop a run that a
-  // factorisation would have done. A process of an MPI run keeps MUMPS (the same values on
-  // every rank, as with CHOLMOD below this size).
-  constexpr int kLargeSpd3d = 100000;
-  if (options_.auto_solver && options_.solver == SolverKind::Cholmod && kind == MatrixKind::SymmetricPositiveDefinite &&
-      model_.dim == 3 && stats_.n_free > kLargeSpd3d) {
-    const bool iterative = parallel::size() == 1;
-    if (!backend_note_logged_)
-      log_.info("solver chosen automatically: " +
-                std::string(iterative ? "PETSc CG + BoomerAMG (relative residual 1e-12, MUMPS if it does not converge)"
-                                      : "MUMPS") +
-                " for a 3D system of " + std::to_string(stats_.n_free) +
-                " unknowns (a factorisation fills too much at this size)");
-    backend_note_logged_ = true;
-    if (!iterative) return SolverKind::Mumps;
-    options_.iterative = IterativeSettings{};
-    options_.iterative.krylov = IterativeSettings::Krylov::CG;
-    options_.iterative.preconditioner = IterativeSettings::Preconditioner::Boomer;
-    options_.iterative.relative_residual = 1e-12;
-    options_.iterative.max_iterations = 500;
-    return SolverKind::Petsc;
-  }
-  if (options_.solver != SolverKind::Cholmod || kind == MatrixKind::SymmetricPositiveDefinite) return options_.solver;
-  // Contact with multipliers gives a symmetric indefinite system: MUMPS (LDLT with
-  // pivoting) beat UMFPACK (LU) on it: SSNP121 A refined 16 times, 3.2 s vs 3.6 s and
-  // 376 MB vs 608 MB. MUMPS is an MPI library, though, and a process alone pays about 40 ms
-  // to start MPI: below about 1e4 unknowns UMFPACK is the faster whole run (SSNP121 A refined
-  // 2 times, 0.08 s against 0.11 s; 4 times, 0.19 s against 0.22 s; 8 times, 0.95 s against
-  // 0.66 s). Under mpirun MUMPS factorises across the ranks whatever the size.
-  constexpr int kSmallIndefinite = 10000;
-  const bool small = stats_.n_free < kSmallIndefinite && !parallel::launched_by_mpi();
-  // A process alone, a symmetric indefinite system: its multipliers' Schur complement on
-  // CHOLMOD and GMRES (engine/solver/saddle_solver.hpp), the backend above where that gives
-  // way. The SSNP121 3D contact benchmark (1.9e4 unknowns): 1.13e10 operations at CHOLMOD's
-  // rate against MUMPS's LDL^T of 1.01e10 at its own, the factorisation phase 0.75x; the
-  // same scene at 8.4e3 unknowns, 0.1 s against UMFPACK's 2.0 s. Not on a large 3D system,
-  // where CHOLMOD's factor fills too much (above).
-  saddle_ = kind == MatrixKind::SymmetricIndefinite && !parallel::launched_by_mpi() && parallel::size() == 1 &&
-            !distributed_ && !(model_.dim == 3 && stats_.n_free > kLargeSpd3d);
-  const std::string fallback = small ? "UMFPACK" : "MUMPS";
-  if (!backend_note_logged_)
-    log_.info(std::string("CHOLMOD cannot factorise ") +
-              (kind == MatrixKind::SymmetricIndefinite ? "an indefinite" : "a non-symmetric") +
-              (saddle_ ? " system; CHOLMOD factorises the Schur complement of its multipliers and GMRES solves it (" +
-                             fallback + " if that gives way)"
-               : small ? " system; using UMFPACK (MUMPS from 10000 unknowns)"
-                       : " system; using MUMPS"));
-  backend_note_logged_ = true;
-  return small ? SolverKind::Umfpack : SolverKind::Mumps;
+  const bool whole_here =
+      !distributed_ && !k_ff_holder() && (elastic_.ff.nonZeros() > 0 || elastic_.equation.empty());
+  if (whole_here) stiffness.k_ff = &elastic_.ff;
+  else stiffness.constrained = elastic_.constrained;
+  return FailureDiagnosis(model_, options_, contact_ != nullptr).explain(err, t, dofs_, cons.free_index, stiffness);
 }
 
 /// The system of one Newton iteration, K_ff + contact terms restricted to the free
@@ -740,7 +577,7 @@ void StaticSolver::factorize_interface_reference(SystemCache& sys) {
         log_.debug("  " + analysis), analysis_logged_ = analysis;
       if (taken) {
         interface_reference_ = sys.elastic_generation;
-        interface_state_ = SystemState{};
+        interface_state_ = LinearSolve::FactorState{};
         stats_.interface_equations = m;
         ++stats_.factorisations;
         log_.info("  elastic system factorised with the " + std::to_string(m) +
@@ -1021,456 +858,26 @@ void StaticSolver::restore_elastic() {
 }
 
 void StaticSolver::solve_instant(double t, Vector& u) {
-  const int n = dofs_.n_dofs();
   log_.info("instant " + sci(t));
-  Constraints cons = Constraints::at_instant(dofs_, loads_, t, *model_.mesh);
-  if (in_parts_) cons.take_from_owners(*equation_halo_);
-  cons.impose(u);
-  const Vector f_ext = external_forces(model_, dofs_, loads_, t, distributed_ ? &node_owner_ : nullptr,
-                                       in_parts_ ? equation_halo_.get() : nullptr);
-  stats_.n_free = std::max(stats_.n_free, in_parts_ ? static_cast<int>(free_numbers_.n_global) : cons.n_free);
+  Instant in;
+  in.t = t;
+  in.cons = Constraints::at_instant(dofs_, loads_, t, *model_.mesh);
+  if (in_parts_) in.cons.take_from_owners(layout_.equation_halo());
+  in.cons.impose(u);
+  in.f_ext = external_forces(model_, dofs_, loads_, t, distributed_ ? &node_owner_ : nullptr,
+                             in_parts_ ? &layout_.equation_halo() : nullptr);
+  stats_.n_free = std::max(stats_.n_free, in_parts_ ? static_cast<int>(free_numbers_.n_global) : in.cons.n_free);
   // The entries this rank answers for in the norms: all of them, or in parts its owned ones.
-  const int owned_eqs = in_parts_ ? owned_equations_ : n;
-  const int owned_free = in_parts_ ? free_numbers_.n_owned : cons.n_free;
+  in.owned_free = in_parts_ ? free_numbers_.n_owned : in.cons.n_free;
   if (contact_) {
     Stopwatch watch(stats_.contact_seconds);
     contact_->set_instant(t);
     contact_->begin_step(u, log_);
   }
-
-
   const int factorisations_before = stats_.factorisations;
   const int refinements_before = stats_.refinement_steps;
-  int total_newton = 0;
-  double last_converged_maxi = -1.0;  // the absolute residual the previous pass converged with
   for (int fixed_point = 0;; ++fixed_point) {
-    bool converged = false;
-    double resi_rela = 0.0, resi_maxi = 0.0;
-    log_.info("  | iter |  relative resid. |  absolute resid. |");
-    // The residual after a solve, when the previous iteration could give it (see below).
-    Vector carried_residual;
-    for (int iter = 0; iter <= options_.iter_glob_maxi; ++iter) {
-      std::vector<Triplet> k_contact;
-      Vector residual;
-      if (carried_residual.size() == n) {
-        residual.swap(carried_residual);
-        carried_residual = Vector();
-      } else {
-        Stopwatch watch(stats_.assemble_seconds);
-        residual = stiffness_times(u) - f_ext;
-      }
-      // The residual may converge from the second iteration on, and in a pass after the first
-      // (a new pairing or new statuses) already at its start: a hook that gives its residual
-      // alone gives it first, and its tangent only for an iteration that solves.
-      const bool may_converge = iter > 0 || last_converged_maxi >= 0.0;
-      bool tangent_pending = false;
-      if (contact_) {
-        Stopwatch watch(stats_.contact_seconds);
-        tangent_pending = may_converge && contact_->add_residual(u, residual);
-        if (!tangent_pending) contact_->add_to_system(u, k_contact, residual);
-      }
-      // Relative residual as code_aster's RESI_GLOB_RELA: free residual over the largest load or reaction.
-      double denom = largest_entry(f_ext, owned_eqs);
-      Vector r_free(cons.n_free);
-      double reactions = 0.0;
-      for (int eq = 0; eq < n; ++eq) {
-        const int k = cons.free_index[eq];
-        if (k >= 0) r_free[k] = residual[eq];
-        else if (eq < owned_eqs) reactions = std::max(reactions, std::abs(residual[eq]));
-      }
-      if (in_parts_) reactions = parallel::max_over_ranks(reactions);
-      denom = std::max(denom, reactions);
-      resi_maxi = largest_entry(r_free, owned_free);
-      // A load step where loads and reactions vanish (a body moving rigidly before
-      // contact closes) has no natural reference: fall back to the size of the
-      // terms that make up the internal forces, so that round-off counts as converged.
-      denom = std::max(denom, 1e-6 * k_scale_ * largest_entry(u, owned_eqs));
-      resi_rela = denom > 0.0 ? resi_maxi / denom : resi_maxi;
-      char line[96];
-      std::snprintf(line, sizeof line, "  | %4d |   %14.6e |   %14.6e |", iter, resi_rela, resi_maxi);
-      log_.info(line);
-      if (!std::isfinite(resi_maxi))
-        throw ConvergenceError("the residual became non-finite at instant " + sci(t));
-      const bool rela_ok = options_.resi_glob_rela <= 0.0 || resi_rela <= options_.resi_glob_rela;
-      const bool maxi_ok = options_.resi_glob_maxi <= 0.0 || resi_maxi <= options_.resi_glob_maxi;
-      bool contact_ok = !contact_ || contact_->newton_converged();
-      // In parts every rank pairs the whole surfaces alike; the ranks still decide together.
-      if (in_parts_ && contact_) contact_ok = parallel::max_over_ranks(contact_ok ? 0.0 : 1.0) == 0.0;
-      // A later pass needs no solve when the new pairing or statuses left the residual where
-      // the previous pass converged (at most twice it: e.g. a flat interface translated), or
-      // three orders below RESI_GLOB_RELA (an iterative solve's round-off moves a re-pairing by
-      // about its tolerance); merely within RESI_GLOB_RELA would accept the looser state a
-      // changed pairing leaves, and lose the accuracy Newton had reached.
-      const bool unchanged = iter > 0 || resi_maxi <= 2.0 * last_converged_maxi ||
-                             resi_rela <= 1e-3 * options_.resi_glob_rela;
-      if (may_converge && unchanged && rela_ok && maxi_ok && contact_ok) {
-        if (iter == 0) log_.info("  the new pairing or statuses leave the residual as it was: no solve in this pass");
-        last_converged_maxi = resi_maxi;
-        converged = true;
-        stats_.resi_glob_rela = resi_rela;
-        break;
-      }
-      if (iter == options_.iter_glob_maxi) break;
-      if (tangent_pending) {
-        Stopwatch watch(stats_.contact_seconds);
-        Vector again = Vector::Zero(n);  // the residual is in `residual` already
-        contact_->add_to_system(u, k_contact, again);
-      }
-
-      static const std::vector<int> no_equations;
-      static const std::vector<Elimination> no_eliminations;
-      const std::vector<int>& condensed = contact_ ? contact_->condensed_equations() : no_equations;
-      const std::vector<Elimination>& eliminated = contact_ ? contact_->eliminations() : no_eliminations;
-      std::vector<int> eliminated_eqs;
-      if (!eliminated.empty()) {
-        Stopwatch watch(stats_.assemble_seconds);
-        eliminated_eqs = cons.eliminate(eliminated, stiffness_columns(cons, eliminated), residual, k_contact, r_free);
-      }
-      if (distributed_) {
-        // The hook built the terms of the points that touch this rank's columns, which also
-        // reach other ranks' columns: this rank keeps its own.
-        k_contact.erase(std::remove_if(k_contact.begin(), k_contact.end(),
-                                       [this](const Triplet& tr) { return !owned_nodes_[dofs_.node_of(tr.col())]; }),
-                        k_contact.end());
-      }
-      if (interface_use_ == 0) choose_interface(cons, k_contact);
-      if (interface_use_ == 1 && !eliminated_eqs.empty())
-        interface_use_ = -1, interface_.reset(), stats_.interface_equations = 0;
-      if (interface_use_ == 1)
-        for (const Triplet& tr : k_contact) {
-          const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
-          if (i >= 0 && j >= 0 && (!on_interface_[i] || !on_interface_[j]) && std::abs(tr.value()) > interface_floor_) {
-            log_.info("  a contact term outside the surfaces' equations: each contact pass factorises the whole system");
-            interface_use_ = -1, interface_.reset(), stats_.interface_equations = 0;
-            break;
-          }
-        }
-      {
-        Stopwatch watch(stats_.assemble_seconds);
-        update_system(cons, k_contact, condensed, eliminated_eqs);
-        stats_.system_entries = system_->matrix->nonZeros();
-      }
-      // elastic_.ff is K_ff again when this iteration ends, however it ends (the next
-      // residual, a diagnosis, a subdivided step read it).
-      struct RestoreElastic {
-        StaticSolver* self;
-        ~RestoreElastic() { self->restore_elastic(); }
-      } restore_at_end{this};
-      // The system of this iteration: the contact law may condense its multipliers out
-      // (then it is SPD), and says which kind of matrix is left.
-      const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
-      // (The interface solver is CHOLMOD's factorisation of K_ff: no other backend is chosen.)
-      const SolverKind backend = interface_use_ == 1 ? SolverKind::Cholmod : backend_for(kind);
-      // With no contact point active, the bodies must be held by Dirichlet conditions (and
-      // relations) alone. Checked once, before any factorisation:
-      // - from the geometry, every backend and every rank of a shared model: a body that
-      //   some translation or rotation moves without moving a held equation (a free body under
-      //   MUMPS would otherwise be caught only when round-off left its null pivot a zero);
-      // - then, for what geometry does not see (a mechanism inside a body), by a Cholesky
-      //   factorisation of K_ff, for UMFPACK and MUMPS, which return some solution of a
-      //   singular but consistent system. CHOLMOD's own factorisation stops on such a system
-      //   (diagnosed below; a run told to go on past singular pivots is warned instead), the
-      //   interface solver's reference is that factorisation, an
-      //   iterative backend chosen because factorising does not fit skips it, and so does a
-      //   shared model, which would need the whole stiffness on one rank.
-      if (!rigid_checked_ && (!contact_ || contact_->n_active() == 0)) {
-        // Every unknown of a relation (the hook's and the eliminations'): counted as holding.
-        std::vector<int> related = contact_ ? contact_->related_equations() : std::vector<int>{};
-        // A body that only the hook's relations hold leaves K_ff singular, rightly: the
-        // mechanism check of K_ff alone is for runs whose every body the Dirichlet conditions hold.
-        const bool held_by_relations = !related.empty();
-        for (const Elimination& e : eliminated) {
-          related.push_back(e.eq);
-          for (const auto& term : e.terms) related.push_back(term.first);
-        }
-        // Going on past a singular matrix was asked for: a body held by nothing is a warning.
-        const auto report = [this](const SolveError& rigid) {
-          if (options_.factor.singularity.stop) throw rigid;
-          log_.warning("going on as asked with a singular system: " + rigid.message());
-        };
-        // (Not in parts: a part alone may look unheld.)
-        const auto unheld =
-            in_parts_ ? std::optional<SolveError>() : find_unheld_body(model_, dofs_, cons.free_index, related, t);
-        if (unheld) report(*unheld);
-        if (!unheld && !held_by_relations && interface_use_ != 1 && backend != SolverKind::Cholmod &&
-            backend != SolverKind::Petsc && !distributed_ && options_.factor.singularity.digits >= 0) {
-          Stopwatch watch(stats_.assemble_seconds);
-          restore_elastic();  // K_ff itself, without this iteration's terms
-          if (auto rigid =
-                  find_rigid_body_mode(model_, dofs_, cons.free_index, elastic_.ff, t, options_.factor.singularity))
-            report(*rigid);
-          update_system(cons, k_contact, condensed, eliminated_eqs);  // the terms again
-        }
-        rigid_checked_ = true;
-      }
-      // The contact terms are in the system's storage now: their triplets (5.5e6 of them, 88 MB,
-      // on the refined mortar case) go before the factorisation or the preconditioner is built.
-      std::vector<Triplet>().swap(k_contact);
-      const SparseMatrix& a = *system_->matrix;
-      // A x for the accuracy of a solve: this rank's columns of a, summed over the ranks; the
-      // backend's product once K_ff is in its hands.
-      // Without contact a is K_ff itself, with its own product; with contact terms it may
-      // hold condensed or eliminated rows, which are not symmetric.
-      const bool a_is_k_ff = !contact_ && &a == &elastic_.ff;
-      const MatrixProduct system_product = [&a, a_is_k_ff, this](const Vector& x) -> Vector {
-        Vector y;
-        if (in_parts_) {
-          // The backend holding K_ff gives the owned rows whole. Otherwise x's owned entries
-          // are the solve's: its ghosts take their owners' before the product, whose owned
-          // entries are complete once the ranks' shares are summed into them.
-          if (elastic_in_solver_ && elastic_holder_->multiply(x, y)) return y;
-          Vector whole_x = x;
-          free_halo_->copy_to_ghosts(whole_x.data(), 1);
-          y = a * whole_x;
-          free_halo_->add_to_owners(y.data(), 1);
-          return y;
-        }
-        if (elastic_in_solver_ && elastic_holder_->multiply(x, y)) return y;
-        y = a_is_k_ff ? elastic_.ff_times(x) : Vector(a * x);
-        if (system_->increment) y += elastic_.ff_times(x);  // a is C: the system is K_ff + C
-        if (distributed_) parallel::sum_over_ranks(y.data(), y.size());
-        return y;
-      };
-      // In parts, the residuals of a solve are measured on the owned entries over the ranks.
-      const int n_owned_free = owned_free;
-      const VectorNorm owned_norm = [n_owned_free](const Vector& v) {
-        double squares = v.head(n_owned_free).squaredNorm();
-        parallel::sum_over_ranks(&squares, 1);
-        return std::sqrt(squares);
-      };
-      // Condensed unknowns: decoupled rows (unit diagonal, zero right-hand side), set by recover().
-      for (int eq : condensed)
-        if (cons.free_index[eq] >= 0) r_free[cons.free_index[eq]] = 0.0;
-      Vector du;
-      RefinedSolve accuracy;
-      const bool via_interface = interface_use_ == 1;
-      SystemState& state = via_interface ? interface_state_ : system_->state[static_cast<int>(backend)];
-      auto& backend_solver = solvers_[static_cast<int>(backend)];
-      if (!via_interface && !backend_solver) {
-        IterativeSettings settings = options_.iterative;
-        if (options_.krylov_history) settings.history = [this](const std::string& line) { log_.info(line); };
-        if (options_.auto_solver && backend == SolverKind::Petsc)
-          backend_solver = make_iterative_with_fallback(settings, SolverKind::Mumps,
-                                                        [this](const std::string& line) { log_.info(line); });
-        else if (saddle_ && (backend == SolverKind::Mumps || backend == SolverKind::Umfpack))
-          backend_solver = make_saddle_solver(backend, [this](const std::string& line) { log_.info(line); });
-        else if (backend == SolverKind::Mumps && options_.single_precision) {
-          backend_solver = make_mumps_solver(true);
-          log_.info("  linear solver: MUMPS in single precision, each solve refined in double precision");
-        }
-        else
-          backend_solver = make_linear_solver(backend, settings);
-        backend_solver->configure(options_.factor);
-      }
-      LinearSolver* const solver = via_interface ? interface_.get() : backend_solver.get();
-      const bool iterative = solver->iterative();
-      const unsigned long long statuses = contact_ ? contact_->status_key() : 0ULL;
-      const bool same_matrix =
-          state.factorised && state.pattern == system_->pattern && state.values_key == system_->values_key;
-      bool solved = false;
-      // REAC_ITER: between two renewals the last factors of this loop solve with the current
-      // residual (a modified Newton step, no refinement against a matrix they do not factorise).
-      const bool renew = iter == 0 || (options_.reac_iter > 0 && iter % options_.reac_iter == 0);
-      if (!same_matrix && !renew && state.factorised && state.n == a.rows()) {
-        Stopwatch watch(stats_.solve_seconds);
-        du = solver->solve(-r_free);
-        solved = true;
-        log_.info("         (factorisation of iteration " + std::to_string(state.iteration) + " reused)");
-      }
-      if (!solved && !iterative && !via_interface && !same_matrix && state.factorised && state.n == a.rows() &&
-          state.statuses == statuses && state.pattern != system_->pattern) {
-        // A new pairing with the same statuses: the previous factorisation is a close
-        // preconditioner; a few Krylov iterations replace a factorisation when they converge.
-        Stopwatch watch(stats_.solve_seconds);
-        const KrylovResult k =
-            preconditioned_gmres(system_product, *solver, -r_free, du, kKrylovIterations, kKrylovTolerance);
-        if (k.converged) {
-          solved = true;
-          accuracy.raw_residual = accuracy.residual = k.residual;
-          stats_.krylov_iterations += k.iterations;
-          log_.info("  linear solve: previous factorisation as preconditioner, " + std::to_string(k.iterations) +
-                    " GMRES iteration(s), relative residual " + sci(k.residual));
-        } else {
-          log_.info("  linear solve: " + std::to_string(k.iterations) + " GMRES iteration(s) with the previous "
-                    "factorisation did not converge (relative residual " + sci(k.residual) + "); refactorising");
-        }
-      }
-      if (!solved && !same_matrix) {
-        // One set of factors alive at a time: the other backends' (e.g. CHOLMOD's of a pass
-        // without active contact) are released before this one is built.
-        for (int other = 0; other < kSolverKinds; ++other)
-          if (other != static_cast<int>(backend) && solvers_[other]) {
-            solvers_[other].reset();
-            system_->state[other] = SystemState{};
-          }
-        try {
-          Stopwatch watch(stats_.factorize_seconds);
-          state.factorised = false;
-          LUNASTER_ASSERT(!distributed_ || solver->takes_distributed(), "a shared model needs a backend that takes it");
-          if (iterative || distributed_) solver->set_layout(system_layout(cons, condensed, eliminated_eqs));
-          LUNASTER_ASSERT(!elastic_in_solver_, "K_ff was handed to a backend: it cannot be factorised again");
-          if (options_.observe_factorisation && !via_interface) options_.observe_factorisation(a, kind, elastic_.equation);
-          if (&a == &elastic_.ff && !contact_) {
-            // The system is K_ff itself: a backend that keeps its own copy (PETSc) takes it,
-            // and one copy is enough; a direct backend leaves it here.
-            elastic_in_solver_ = solver->factorize_taking(elastic_.ff, kind);
-            if (elastic_in_solver_) elastic_holder_ = solver;
-          } else {
-            solver->factorize(a, kind);
-          }
-        } catch (const SolveError& err) {
-          if (err.out_of_memory() || err.failure().what == Failure::What::IterativeSolve) throw;
-          restore_elastic();
-          throw diagnose(cons, err, t);
-        }
-        ++stats_.factorisations;
-        // A singular matrix that the run goes past, as asked: said once for each instant and
-        // pivot (the Newton iterations and contact passes of an instant refactorise it alike).
-        if (const std::string note = solver->singular_note(); !note.empty()) {
-          std::string where;
-          if (const int column = solver->singular_column(); column >= 0)
-            for (int eq = 0; eq < n && where.empty(); ++eq)
-              if (cons.free_index[eq] == column) where = " at " + describe_equation(*model_.mesh, dofs_, eq);
-          char inst[32];
-          std::snprintf(inst, sizeof inst, "%.6e", t);
-          const std::string said = "singular matrix at instant " + std::string(inst) + where;
-          if (said != singular_said_)
-            log_.warning(said + ", going on as asked: " + solver->name() + ": " + note);
-          singular_said_ = said;
-        }
-        // What an asked-for ordering and out-of-core factors came to, said once while it holds.
-        const auto say_once = [this](const std::string& line, std::string& said) {
-          if (line != said) log_.info(line);
-          said = line;
-        };
-        if (options_.factor.ordering != FactorOrdering::Auto)
-          say_once("  " + solver->name() + " ordering: " + solver->ordering_used(), ordering_logged_);
-        if (const std::string f = solver->factorisation_used(); !f.empty())
-          say_once("  " + solver->name() + " factorisation: " + f, factorisation_logged_);
-        if (const std::string analysis = solver->analysis_note(); !analysis.empty() && analysis != analysis_logged_)
-          log_.debug("  " + analysis);
-        analysis_logged_ = solver->analysis_note();
-        if (const std::string memory = solver->memory_used(); !memory.empty())
-          say_once("  " + solver->name() + " factors: " + memory, memory_logged_);
-        if (const std::string approximate = solver->approximation_note(); !approximate.empty())
-          say_once("  " + solver->name() + ": " + approximate, approximation_logged_);
-        if (via_interface)
-          log_.info("  linear solve: Schur complement of the " + std::to_string(interface_->interface().size()) +
-                    " surface equations factorised on the kept elastic factorisation");
-        state.factorised = true;
-        state.n = a.rows();
-        state.pattern = system_->pattern;
-        state.statuses = statuses;
-        state.values_key = system_->values_key;
-        state.iteration = iter;
-      } else if (same_matrix) {
-        log_.info(options_.elastic_matrix ? std::string("         (factorisation of the elastic matrix reused)")
-                  : iterative     ? std::string("         (same matrix as the last solve: preconditioner reused)")
-                                  : std::string("         (same matrix as the last factorisation: factors reused)"));
-      }
-      if (!solved && iterative) {
-        // The Krylov solver iterates to its own tolerance and fails when it does not get
-        // there: no refinement on top.
-        Stopwatch watch(stats_.solve_seconds);
-        du = solver->solve(-r_free);
-        accuracy.raw_residual = accuracy.residual =
-            relative_residual(system_product, du, -r_free, in_parts_ ? &owned_norm : nullptr);
-        stats_.krylov_iterations += solver->iterations();
-        log_.info("  linear solve: " + solver->name() + ", " + std::to_string(solver->iterations()) +
-                  " iteration(s), relative residual " + sci(accuracy.residual));
-      } else if (!solved) {
-        Stopwatch watch(stats_.solve_seconds);
-        // |A| |x| for the backward error (not with a shared model or K_ff in PETSc's hands).
-        const MatrixProduct abs_product = [&a, this](const Vector& x) -> Vector {
-          Vector y = Vector::Zero(x.size());
-          add_abs_product(a, x, y);
-          if (system_->increment) add_abs_product(elastic_.ff, x, y);
-          return y;
-        };
-        const bool whole = !distributed_ && !elastic_in_solver_;
-        // With |A| |x| at hand, every solve above round-off is judged row by row: a relative
-        // residual of 8e-11 (under the 1e-10 that asks for refinement without it) left
-        // SSNP121 E's LAGS_C 3e-8 off in a two-rank MUMPS run, its multiplier rows far from
-        // their own round-off.
-        using R = NewtonOptions::Refinement;
-        const R policy = options_.refinement;
-        // code_aster's MUMPS settings: AUTO ICNTL(10) = 4 with CNTL(2) = 1e-14 (the backward
-        // error that stops it), MINI ICNTL(10) = -2 (two steps, no test: both taken, the better
-        // iterate kept), FORCE ICNTL(10) = 10 with no backward-error stop. A step that does not
-        // lower the residual is not kept.
-        const int steps = policy == R::None ? 0 : policy == R::Two ? 2 : policy == R::Force ? 10 : 4;
-        const bool stop_when_stable = policy == R::Auto;
-        accuracy = solve_with_refinement(*solver, system_product, -r_free, du, steps,
-                                         !stop_when_stable ? 0.0 : whole ? 1e-14 : 1e-10,
-                                         whole && stop_when_stable ? &abs_product : nullptr,
-                                         options_.direct_solve_tolerance > 0.0 ? options_.direct_solve_tolerance
-                                                                               : kSolveTolerance,
-                                         in_parts_ ? &owned_norm : nullptr, policy == R::Two);
-        // A direct backend that iterates on a factorisation of another matrix (the
-        // multipliers' Schur complement) says how many iterations its last solve took.
-        if (const int its = solver->iterations(); its > 0) {
-          stats_.krylov_iterations += its;
-          log_.info("  linear solve: " + solver->name() + ", " + std::to_string(its) +
-                    " iteration(s), relative residual " + sci(accuracy.residual));
-        }
-      }
-      ++stats_.newton_iterations;
-      stats_.refinement_steps += accuracy.steps;
-      // A direct solver may return a "solution" of a singular system without flagging it
-      // (MUMPS misses null pivots that are round-off rather than exact zeros): check the
-      // solve itself, and locate the rigid-body mode when it did not solve the system.
-      const double raw_error = accuracy.raw_residual, solve_error = accuracy.residual;
-      stats_.solve_residual_raw = std::max(stats_.solve_residual_raw, raw_error);
-      stats_.solve_residual = std::max(stats_.solve_residual, solve_error);
-      const double accepted = iterative ? std::max(kSolveTolerance, 1.01 * options_.iterative.relative_residual)
-                              : options_.direct_solve_tolerance > 0.0 ? options_.direct_solve_tolerance
-                                                                      : std::numeric_limits<double>::infinity();
-      if (!(solve_error <= accepted)) {
-        restore_elastic();
-        SolveError found = diagnose(
-            cons,
-            SolveError("the linear solver returned no accurate solution (relative residual of the solve " +
-                       sci(raw_error) + ", " + sci(solve_error) + " after iterative refinement; accepted below " +
-                       sci(accepted) + ")"),
-            t);
-        throw found;
-      }
-      if (in_parts_) free_halo_->copy_to_ghosts(du.data(), 1);  // the solve gave the owned values
-      for (int eq = 0; eq < n; ++eq)
-        if (cons.free_index[eq] >= 0) u[eq] += du[cons.free_index[eq]];
-      // Without contact or relations the residual is linear in u, and neither f nor u_C move
-      // within the instant: the next residual is this one plus K du. Its free rows are the
-      // solve's own A du - b (A = K_ff, b = -r_F), its constrained rows cost K(C, F) du; the
-      // product of K with u for the next iteration is saved (a third of an elastic instant's
-      // products). Not from a residual already near round-off: A du - b would then be the
-      // round-off of a tiny correction, far below that of K u - f, and report a state more
-      // exact than the stored u can be.
-      constexpr double kCarriedAbove = 1e-8;
-      if (!contact_ && eliminated.empty() && condensed.empty() && a_is_k_ff && !distributed_ && !elastic_in_solver_ &&
-          accuracy.ax_minus_b.size() == cons.n_free && resi_rela > kCarriedAbove) {
-        carried_residual = std::move(residual);
-        for (int eq = 0; eq < n; ++eq)
-          if (cons.free_index[eq] >= 0) carried_residual[eq] = accuracy.ax_minus_b[cons.free_index[eq]];
-        elastic_.add_constrained_rows(du, carried_residual);
-      }
-      cons.recover(eliminated, du, u);
-      if (!condensed.empty()) {
-        Stopwatch watch(stats_.contact_seconds);
-        contact_->recover(u);
-      }
-      ++total_newton;
-    }
-    if (!converged) {
-      ConvergenceError err("Newton did not converge at instant " + sci(t) + " within " +
-                               std::to_string(options_.iter_glob_maxi) + " iterations",
-                           {"last residuals: relative " + sci(resi_rela) + ", absolute " + sci(resi_maxi) + " N",
-                            "loop: Newton (contact/geometry fixed-point pass " + std::to_string(fixed_point) + ")"});
-      Failure& f = err.failure();
-      f.what = Failure::What::NewtonIterations;
-      f.limit = options_.iter_glob_maxi;
-      f.residuals_known = true, f.relative = resi_rela, f.absolute = resi_maxi;
-      throw err;
-    }
+    newton_loop(in, u, fixed_point);
     if (!contact_ || !contact_->has_contact()) break;
     log_.info("contact: " + std::to_string(contact_->n_active()) + " active point(s) in this pass");
     ++stats_.contact_passes;
@@ -1480,21 +887,389 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       try {
         settled = contact_->settle(u, log_);
       } catch (ConvergenceError& err) {
-        err.add_hint("at instant " + sci(t) + ", after " + std::to_string(total_newton) +
-                     " Newton iteration(s); last residuals: relative " + sci(resi_rela) + ", absolute " +
-                     sci(resi_maxi) + " N");
-        err.failure().residuals_known = true, err.failure().relative = resi_rela, err.failure().absolute = resi_maxi;
+        err.add_hint("at instant " + sci(t) + ", after " + std::to_string(in.total_newton) +
+                     " Newton iteration(s); last residuals: relative " + sci(in.norms.relative) + ", absolute " +
+                     sci(in.norms.absolute) + " N");
+        err.failure().residuals_known = true;
+        err.failure().relative = in.norms.relative, err.failure().absolute = in.norms.absolute;
         throw;
       }
     }
-    if (in_parts_) settled = parallel::max_over_ranks(settled ? 0.0 : 1.0) == 0.0;
-    if (settled) break;
+    if (layout_.all_ranks(settled)) break;
   }
-  log_.info("  converged in " + std::to_string(total_newton) + " Newton iteration(s), " +
+  log_.info("  converged in " + std::to_string(in.total_newton) + " Newton iteration(s), " +
             std::to_string(stats_.factorisations - factorisations_before) + " factorisation(s)" +
             (stats_.refinement_steps > refinements_before
                  ? ", " + std::to_string(stats_.refinement_steps - refinements_before) + " refinement step(s)"
                  : std::string()));
+}
+
+void StaticSolver::newton_loop(Instant& in, Vector& u, int fixed_point) {
+  log_.info("  | iter |  relative resid. |  absolute resid. |");
+  in.carried_residual = Vector();
+  in.norms = ResidualNorms{};
+  for (int iter = 0; iter <= options_.iter_glob_maxi; ++iter) {
+    std::vector<Triplet> k_contact;
+    Vector residual, r_free;
+    bool tangent_pending = false;
+    if (converged_at(in, u, iter, residual, r_free, k_contact, tangent_pending)) return;
+    if (iter == options_.iter_glob_maxi) break;
+    if (tangent_pending) {
+      Stopwatch watch(stats_.contact_seconds);
+      Vector again = Vector::Zero(dofs_.n_dofs());  // the residual is in `residual` already
+      contact_->add_to_system(u, k_contact, again);
+    }
+    newton_step(in, u, iter, residual, r_free, k_contact);
+    ++in.total_newton;
+  }
+  ConvergenceError err("Newton did not converge at instant " + sci(in.t) + " within " +
+                           std::to_string(options_.iter_glob_maxi) + " iterations",
+                       {"last residuals: relative " + sci(in.norms.relative) + ", absolute " +
+                            sci(in.norms.absolute) + " N",
+                        "loop: Newton (contact/geometry fixed-point pass " + std::to_string(fixed_point) + ")"});
+  Failure& f = err.failure();
+  f.what = Failure::What::NewtonIterations;
+  f.limit = options_.iter_glob_maxi;
+  f.residuals_known = true, f.relative = in.norms.relative, f.absolute = in.norms.absolute;
+  throw err;
+}
+
+bool StaticSolver::converged_at(Instant& in, const Vector& u, int iter, Vector& residual, Vector& r_free,
+                                std::vector<Triplet>& k_contact, bool& tangent_pending) {
+  if (in.carried_residual.size() == dofs_.n_dofs()) {
+    residual.swap(in.carried_residual);
+    in.carried_residual = Vector();
+  } else {
+    Stopwatch watch(stats_.assemble_seconds);
+    residual = stiffness_times(u) - in.f_ext;
+  }
+  // The residual may converge from the second iteration on, and in a pass after the first
+  // (a new pairing or new statuses) already at its start: a hook that gives its residual
+  // alone gives it first, and its tangent only for an iteration that solves.
+  const bool may_converge = iter > 0 || in.last_converged_maxi >= 0.0;
+  if (contact_) {
+    Stopwatch watch(stats_.contact_seconds);
+    tangent_pending = may_converge && contact_->add_residual(u, residual);
+    if (!tangent_pending) contact_->add_to_system(u, k_contact, residual);
+  }
+  in.norms = convergence_->measure(in.cons, residual, in.f_ext, u, in.owned_free, r_free);
+  char line[96];
+  std::snprintf(line, sizeof line, "  | %4d |   %14.6e |   %14.6e |", iter, in.norms.relative, in.norms.absolute);
+  log_.info(line);
+  if (!std::isfinite(in.norms.absolute)) throw ConvergenceError("the residual became non-finite at instant " + sci(in.t));
+  // In parts every rank pairs the whole surfaces alike; the ranks still decide together.
+  const bool contact_ok = !contact_ || layout_.all_ranks(contact_->newton_converged());
+  if (!convergence_->converged(in.norms, iter, in.last_converged_maxi, contact_ok)) return false;
+  if (iter == 0) log_.info("  the new pairing or statuses leave the residual as it was: no solve in this pass");
+  in.last_converged_maxi = in.norms.absolute;
+  stats_.resi_glob_rela = in.norms.relative;
+  return true;
+}
+
+void StaticSolver::keep_interface_or_drop(const Constraints& cons, const std::vector<Triplet>& k_contact,
+                                          bool eliminations) {
+  if (interface_use_ == 0) choose_interface(cons, k_contact);
+  if (interface_use_ == 1 && eliminations) interface_use_ = -1, interface_.reset(), stats_.interface_equations = 0;
+  if (interface_use_ == 1)
+    for (const Triplet& tr : k_contact) {
+      const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
+      if (i >= 0 && j >= 0 && (!on_interface_[i] || !on_interface_[j]) && std::abs(tr.value()) > interface_floor_) {
+        log_.info("  a contact term outside the surfaces' equations: each contact pass factorises the whole system");
+        interface_use_ = -1, interface_.reset(), stats_.interface_equations = 0;
+        break;
+      }
+    }
+}
+
+void StaticSolver::check_bodies_held(const Instant& in, const SystemTerms& terms, SolverKind backend) {
+  // With no contact point active, the bodies must be held by Dirichlet conditions (and
+  // relations) alone. Checked once, before any factorisation:
+  // - from the geometry, every backend and every rank of a shared model: a body that
+  //   some translation or rotation moves without moving a held equation (a free body under
+  //   MUMPS would otherwise be caught only when round-off left its null pivot a zero);
+  // - then, for what geometry does not see (a mechanism inside a body), by a Cholesky
+  //   factorisation of K_ff, for UMFPACK and MUMPS, which return some solution of a
+  //   singular but consistent system. CHOLMOD's own factorisation stops on such a system
+  //   (diagnosed below; a run told to go on past singular pivots is warned instead), the
+  //   interface solver's reference is that factorisation, an
+  //   iterative backend chosen because factorising does not fit skips it, and so does a
+  //   shared model, which would need the whole stiffness on one rank.
+  if (rigid_checked_ || (contact_ && contact_->n_active() != 0)) return;
+  // Every unknown of a relation (the hook's and the eliminations'): counted as holding.
+  std::vector<int> related = contact_ ? contact_->related_equations() : std::vector<int>{};
+  // A body that only the hook's relations hold leaves K_ff singular, rightly: the
+  // mechanism check of K_ff alone is for runs whose every body the Dirichlet conditions hold.
+  const bool held_by_relations = !related.empty();
+  for (const Elimination& e : *terms.eliminated) {
+    related.push_back(e.eq);
+    for (const auto& term : e.terms) related.push_back(term.first);
+  }
+  // Going on past a singular matrix was asked for: a body held by nothing is a warning.
+  const auto report = [this](const SolveError& rigid) {
+    if (options_.factor.singularity.stop) throw rigid;
+    log_.warning("going on as asked with a singular system: " + rigid.message());
+  };
+  // (Not in parts: a part alone may look unheld.)
+  const auto unheld =
+      in_parts_ ? std::optional<SolveError>() : find_unheld_body(model_, dofs_, in.cons.free_index, related, in.t);
+  if (unheld) report(*unheld);
+  if (!unheld && !held_by_relations && interface_use_ != 1 && backend != SolverKind::Cholmod &&
+      backend != SolverKind::Petsc && !distributed_ && options_.factor.singularity.digits >= 0) {
+    Stopwatch watch(stats_.assemble_seconds);
+    restore_elastic();  // K_ff itself, without this iteration's terms
+    if (auto rigid = find_rigid_body_mode(model_, dofs_, in.cons.free_index, elastic_.ff, in.t,
+                                          options_.factor.singularity))
+      report(*rigid);
+    update_system(in.cons, *terms.contact, *terms.condensed, terms.eliminated_eqs);  // the terms again
+  }
+  rigid_checked_ = true;
+}
+
+void StaticSolver::newton_step(Instant& in, Vector& u, int iter, Vector& residual, Vector& r_free,
+                               std::vector<Triplet>& k_contact) {
+  const Constraints& cons = in.cons;
+  static const std::vector<int> no_equations;
+  static const std::vector<Elimination> no_eliminations;
+  SystemTerms terms;
+  terms.contact = &k_contact;
+  terms.condensed = contact_ ? &contact_->condensed_equations() : &no_equations;
+  terms.eliminated = contact_ ? &contact_->eliminations() : &no_eliminations;
+  if (!terms.eliminated->empty()) {
+    Stopwatch watch(stats_.assemble_seconds);
+    terms.eliminated_eqs =
+        cons.eliminate(*terms.eliminated, stiffness_columns(cons, *terms.eliminated), residual, k_contact, r_free);
+  }
+  if (distributed_) {
+    // The hook built the terms of the points that touch this rank's columns, which also
+    // reach other ranks' columns: this rank keeps its own.
+    k_contact.erase(std::remove_if(k_contact.begin(), k_contact.end(),
+                                   [this](const Triplet& tr) { return !owned_nodes_[dofs_.node_of(tr.col())]; }),
+                    k_contact.end());
+  }
+  keep_interface_or_drop(cons, k_contact, !terms.eliminated_eqs.empty());
+  {
+    Stopwatch watch(stats_.assemble_seconds);
+    update_system(cons, k_contact, *terms.condensed, terms.eliminated_eqs);
+    stats_.system_entries = system_->matrix->nonZeros();
+  }
+  // elastic_.ff is K_ff again when this iteration ends, however it ends (the next
+  // residual, a diagnosis, a subdivided step read it).
+  struct RestoreElastic {
+    StaticSolver* self;
+    ~RestoreElastic() { self->restore_elastic(); }
+  } restore_at_end{this};
+  // The system of this iteration: the contact law may condense its multipliers out
+  // (then it is SPD), and says which kind of matrix is left.
+  const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
+  // (The interface solver is CHOLMOD's factorisation of K_ff: no other backend is chosen.)
+  const SolverKind backend = interface_use_ == 1 ? SolverKind::Cholmod : choose_backend(kind);
+  check_bodies_held(in, terms, backend);
+  // The contact terms are in the system's storage now: their triplets (5.5e6 of them, 88 MB,
+  // on the refined mortar case) go before the factorisation or the preconditioner is built.
+  std::vector<Triplet>().swap(k_contact);
+  // Condensed unknowns: decoupled rows (unit diagonal, zero right-hand side), set by recover().
+  for (int eq : *terms.condensed)
+    if (cons.free_index[eq] >= 0) r_free[cons.free_index[eq]] = 0.0;
+  RefinedSolve accuracy;
+  const Vector du = solve_system(in, iter, kind, backend, terms, r_free, accuracy);
+  apply_increment(in, du, accuracy, terms, residual, u);
+}
+
+Vector StaticSolver::solve_system(const Instant& in, int iter, MatrixKind kind, SolverKind backend,
+                                  const SystemTerms& terms, const Vector& r_free, RefinedSolve& accuracy) {
+  const Constraints& cons = in.cons;
+  const SparseMatrix& a = *system_->matrix;
+  const bool via_interface = interface_use_ == 1;
+  const bool a_is_k_ff = !contact_ && &a == &elastic_.ff;
+  // In parts, the residuals of a solve are measured on the owned entries over the ranks.
+  const int n_owned_free = in.owned_free;
+  const VectorNorm owned_norm = [n_owned_free](const Vector& v) {
+    double squares = v.head(n_owned_free).squaredNorm();
+    parallel::sum_over_ranks(&squares, 1);
+    return std::sqrt(squares);
+  };
+  LinearSolve::System system;
+  system.a = &a;
+  system.kind = kind;
+  system.pattern = system_->pattern;
+  system.values_key = system_->values_key;
+  system.statuses = contact_ ? contact_->status_key() : 0ULL;
+  system.iteration = iter;
+  system.product = system_product(a, a_is_k_ff);
+  // |A| |x| for the backward error (not with a shared model or K_ff in PETSc's hands).
+  system.abs_product = [&a, this](const Vector& x) -> Vector {
+    Vector y = Vector::Zero(x.size());
+    add_abs_product(a, x, y);
+    if (system_->increment) add_abs_product(elastic_.ff, x, y);
+    return y;
+  };
+  system.norm = in_parts_ ? &owned_norm : nullptr;
+  system.on_interface = via_interface;
+  system.whole = !distributed_ && !k_ff_holder();
+  system.distributed = distributed_;
+  system.layout = [this, &cons, &terms] { return system_layout(cons, *terms.condensed, terms.eliminated_eqs); };
+  if (&a == &elastic_.ff && !contact_) system.takeable = &elastic_.ff;
+  if (options_.observe_factorisation && !via_interface)
+    system.observe = [this](const SparseMatrix& m, MatrixKind k) {
+      options_.observe_factorisation(m, k, elastic_.equation);
+    };
+  system.diagnose = [this, &in](const SolveError& err) { return diagnose(in.cons, err, in.t); };
+  const LinearSolve::Events events = [this, &in](const LinearSolve::Event& e) { say(e, in); };
+  LinearSolver& solver = via_interface ? *interface_ : linear_->backend(backend, events);
+  LinearSolve::FactorState& state = via_interface ? interface_state_ : linear_->state(backend);
+  return linear_->solve(solver, state, backend, system, -r_free, events, accuracy);
+}
+
+MatrixProduct StaticSolver::system_product(const SparseMatrix& a, bool a_is_k_ff) const {
+  // A x for the accuracy of a solve: this rank's columns of a, summed over the ranks; the
+  // backend's product once K_ff is in its hands. Without contact a is K_ff itself, with its
+  // own product; with contact terms it may hold condensed or eliminated rows, which are not
+  // symmetric.
+  return [&a, a_is_k_ff, this](const Vector& x) -> Vector {
+    Vector y;
+    const LinearSolver* holder = k_ff_holder();
+    if (in_parts_) {
+      // The backend holding K_ff gives the owned rows whole. Otherwise x's owned entries
+      // are the solve's: its ghosts take their owners' before the product, whose owned
+      // entries are complete once the ranks' shares are summed into them.
+      if (holder && holder->multiply(x, y)) return y;
+      Vector whole_x = x;
+      free_halo_->copy_to_ghosts(whole_x.data(), 1);
+      y = a * whole_x;
+      free_halo_->add_to_owners(y.data(), 1);
+      return y;
+    }
+    if (holder && holder->multiply(x, y)) return y;
+    y = a_is_k_ff ? elastic_.ff_times(x) : Vector(a * x);
+    if (system_->increment) y += elastic_.ff_times(x);  // a is C: the system is K_ff + C
+    if (distributed_) parallel::sum_over_ranks(y.data(), y.size());
+    return y;
+  };
+}
+
+void StaticSolver::apply_increment(Instant& in, Vector du, const RefinedSolve& accuracy, const SystemTerms& terms,
+                                   Vector& residual, Vector& u) {
+  const Constraints& cons = in.cons;
+  const int n = dofs_.n_dofs();
+  if (in_parts_) free_halo_->copy_to_ghosts(du.data(), 1);  // the solve gave the owned values
+  for (int eq = 0; eq < n; ++eq)
+    if (cons.free_index[eq] >= 0) u[eq] += du[cons.free_index[eq]];
+  // Without contact or relations the residual is linear in u, and neither f nor u_C move
+  // within the instant: the next residual is this one plus K du. Its free rows are the
+  // solve's own A du - b (A = K_ff, b = -r_F), its constrained rows cost K(C, F) du; the
+  // product of K with u for the next iteration is saved (a third of an elastic instant's
+  // products). Not from a residual already near round-off: A du - b would then be the
+  // round-off of a tiny correction, far below that of K u - f, and report a state more
+  // exact than the stored u can be.
+  constexpr double kCarriedAbove = 1e-8;
+  const bool a_is_k_ff = !contact_ && system_->matrix == &elastic_.ff;
+  if (!contact_ && terms.eliminated->empty() && terms.condensed->empty() && a_is_k_ff && !distributed_ &&
+      !k_ff_holder() && accuracy.ax_minus_b.size() == cons.n_free && in.norms.relative > kCarriedAbove) {
+    in.carried_residual = std::move(residual);
+    for (int eq = 0; eq < n; ++eq)
+      if (cons.free_index[eq] >= 0) in.carried_residual[eq] = accuracy.ax_minus_b[cons.free_index[eq]];
+    elastic_.add_constrained_rows(du, in.carried_residual);
+  }
+  cons.recover(*terms.eliminated, du, u);
+  if (!terms.condensed->empty()) {
+    Stopwatch watch(stats_.contact_seconds);
+    contact_->recover(u);
+  }
+}
+
+SolverKind StaticSolver::choose_backend(MatrixKind kind) {
+  const LinearSolve::Backend chosen = linear_->choose(kind, stats_.n_free, model_.dim, distributed_);
+  using Note = LinearSolve::BackendNote;
+  const std::string fallback = chosen.fallback == SolverKind::Umfpack ? "UMFPACK" : "MUMPS";
+  switch (chosen.note) {
+    case Note::None: break;
+    case Note::AutoIterative:
+    case Note::AutoMumps:
+      log_.info("solver chosen automatically: " +
+                std::string(chosen.note == Note::AutoIterative
+                                ? "PETSc CG + BoomerAMG (relative residual 1e-12, MUMPS if it does not converge)"
+                                : "MUMPS") +
+                " for a 3D system of " + std::to_string(stats_.n_free) +
+                " unknowns (a factorisation fills too much at this size)");
+      break;
+    case Note::SaddleSchur:
+    case Note::Umfpack:
+    case Note::Mumps:
+      log_.info(std::string("CHOLMOD cannot factorise ") +
+                (kind == MatrixKind::SymmetricIndefinite ? "an indefinite" : "a non-symmetric") +
+                (chosen.note == Note::SaddleSchur
+                     ? " system; CHOLMOD factorises the Schur complement of its multipliers and GMRES solves it (" +
+                           fallback + " if that gives way)"
+                 : chosen.note == Note::Umfpack ? " system; using UMFPACK (MUMPS from 10000 unknowns)"
+                                                : " system; using MUMPS"));
+      break;
+  }
+  return chosen.kind;
+}
+
+void StaticSolver::say(const LinearSolve::Event& e, const Instant& in) {
+  using W = LinearSolve::Event::What;
+  const std::string its = std::to_string(e.iterations);
+  switch (e.what) {
+    case W::SinglePrecision:
+      log_.info("  linear solver: MUMPS in single precision, each solve refined in double precision");
+      break;
+    case W::FactorsReused:
+      log_.info("         (factorisation of iteration " + std::to_string(e.iteration) + " reused)");
+      break;
+    case W::KrylovOnPrevious:
+      if (e.converged)
+        log_.info("  linear solve: previous factorisation as preconditioner, " + its +
+                  " GMRES iteration(s), relative residual " + sci(e.residual));
+      else
+        log_.info("  linear solve: " + its + " GMRES iteration(s) with the previous factorisation did not converge "
+                  "(relative residual " + sci(e.residual) + "); refactorising");
+      break;
+    case W::Factorised: say_factorisation(*e.solver, in); break;
+    case W::SameMatrix:
+      log_.info(options_.elastic_matrix ? std::string("         (factorisation of the elastic matrix reused)")
+                : e.solver->iterative() ? std::string("         (same matrix as the last solve: preconditioner reused)")
+                                        : std::string("         (same matrix as the last factorisation: factors reused)"));
+      break;
+    case W::IterativeSolved:
+    case W::DirectIterated:
+      log_.info("  linear solve: " + e.solver->name() + ", " + its + " iteration(s), relative residual " +
+                sci(e.residual));
+      break;
+  }
+}
+
+void StaticSolver::say_factorisation(const LinearSolver& solver, const Instant& in) {
+  // A singular matrix that the run goes past, as asked: said once for each instant and
+  // pivot (the Newton iterations and contact passes of an instant refactorise it alike).
+  if (const std::string note = solver.singular_note(); !note.empty()) {
+    std::string where;
+    if (const int column = solver.singular_column(); column >= 0)
+      for (int eq = 0; eq < dofs_.n_dofs() && where.empty(); ++eq)
+        if (in.cons.free_index[eq] == column) where = " at " + describe_equation(*model_.mesh, dofs_, eq);
+    const std::string said = "singular matrix at instant " + sci(in.t) + where;
+    if (said != singular_said_) log_.warning(said + ", going on as asked: " + solver.name() + ": " + note);
+    singular_said_ = said;
+  }
+  // What an asked-for ordering and out-of-core factors came to, said once while it holds.
+  const auto say_once = [this](const std::string& line, std::string& said) {
+    if (line != said) log_.info(line);
+    said = line;
+  };
+  if (options_.factor.ordering != FactorOrdering::Auto)
+    say_once("  " + solver.name() + " ordering: " + solver.ordering_used(), ordering_logged_);
+  if (const std::string f = solver.factorisation_used(); !f.empty())
+    say_once("  " + solver.name() + " factorisation: " + f, factorisation_logged_);
+  if (const std::string analysis = solver.analysis_note(); !analysis.empty() && analysis != analysis_logged_)
+    log_.debug("  " + analysis);
+  analysis_logged_ = solver.analysis_note();
+  if (const std::string memory = solver.memory_used(); !memory.empty())
+    say_once("  " + solver.name() + " factors: " + memory, memory_logged_);
+  if (const std::string approximate = solver.approximation_note(); !approximate.empty())
+    say_once("  " + solver.name() + ": " + approximate, approximation_logged_);
+  if (interface_use_ == 1)
+    log_.info("  linear solve: Schur complement of the " + std::to_string(interface_->interface().size()) +
+              " surface equations factorised on the kept elastic factorisation");
 }
 
 }  // namespace lunaster::engine

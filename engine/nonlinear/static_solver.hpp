@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,10 @@
 #include "engine/core/log.hpp"
 #include "engine/fe/fe_model.hpp"
 #include "engine/fields/fields.hpp"
+#include "engine/nonlinear/constraints.hpp"
 #include "engine/nonlinear/contact_hook.hpp"
+#include "engine/nonlinear/convergence_test.hpp"
+#include "engine/nonlinear/linear_solve.hpp"
 #include "engine/nonlinear/loads.hpp"
 #include "engine/nonlinear/newton_options.hpp"
 #include "engine/nonlinear/reduction.hpp"
@@ -29,7 +33,6 @@ namespace lunaster::engine {
 /// (nume_ordre 0 = initial state) with DEPL. Throws SolveError on divergence,
 /// naming the instant, the loop and the last residuals; steps converged before
 /// the failure are available through `converged_steps()`.
-struct Constraints;
 class StepResults;
 
 /// On a mesh in parts: the Dirichlet conditions on the nodes of `numbered` (a part with nodes
@@ -71,19 +74,64 @@ class StaticSolver {
   }
 
  private:
-  /// Advances u from instant t0 to t1, splitting the step on ConvergenceError.
-  void advance(double t0, double t1, int level, Vector& u);
+  /// Newton for one instant: what its iterations and contact passes share.
+  struct Instant {
+    double t = 0.0;
+    Constraints cons;      ///< the Dirichlet conditions at t
+    Vector f_ext;          ///< external forces at t
+    int owned_free = 0;    ///< free unknowns this rank answers for in norms
+    int total_newton = 0;  ///< Newton iterations over the contact passes
+    double last_converged_maxi = -1.0;  ///< absolute residual the previous pass converged with
+    ResidualNorms norms;   ///< the last iteration's
+    /// The residual after a solve, when the previous iteration could give it (apply_increment).
+    Vector carried_residual;
+  };
+  /// The terms of one iteration's system beyond K_ff: the contact triplets, the hook's
+  /// condensed equations and eliminations, and the equations eliminated.
+  struct SystemTerms {
+    const std::vector<Triplet>* contact = nullptr;
+    const std::vector<int>* condensed = nullptr;
+    const std::vector<Elimination>* eliminated = nullptr;
+    std::vector<int> eliminated_eqs;
+  };
+  /// The run's numbering: the DOF map (and in parts the hook's nodes and multipliers); refuses
+  /// what a mesh in parts does not do (DeckError with a typed Failure). `node_halo`: in parts,
+  /// the part's node exchanges.
+  void number_unknowns(std::optional<NodeHalo>& node_halo);
+  /// The layout of a mesh in parts (constrained: the owners' set on return) or a shared model.
+  void lay_out_parts(std::vector<int>& constrained, const NodeHalo& node_halo);
+  void lay_out_shared();
+  /// The instants in turn from u = 0, subdivided on failure (TimeStepper); the steps' results.
+  std::vector<ResultStep> step_through(const std::vector<double>& instants);
   /// Newton (+ contact loops) at instant t starting from u; throws on failure.
   void solve_instant(double t, Vector& u);
-  /// What a backend last factorised: the system pattern it was for, the statuses, the values.
-  struct SystemState {
-    bool factorised = false;
-    long pattern = -1;
-    int n = -1;
-    unsigned long long statuses = 0;
-    std::uint64_t values_key = 0;
-    int iteration = -1;  ///< Newton iteration of its loop where it was computed
-  };
+  /// One Newton loop of a contact pass; throws ConvergenceError when it does not converge.
+  void newton_loop(Instant& in, Vector& u, int fixed_point);
+  /// The residual at u and the convergence test of iteration `iter`: true when converged.
+  bool converged_at(Instant& in, const Vector& u, int iter, Vector& residual, Vector& r_free,
+                    std::vector<Triplet>& k_contact, bool& tangent_pending);
+  /// One Newton step: the system, its solve, u updated.
+  void newton_step(Instant& in, Vector& u, int iter, Vector& residual, Vector& r_free,
+                   std::vector<Triplet>& k_contact);
+  /// The interface solver kept, chosen, or given up for this iteration's terms.
+  void keep_interface_or_drop(const Constraints& cons, const std::vector<Triplet>& k_contact, bool eliminations);
+  /// With no contact point active, the check (once per run) that something holds every body.
+  void check_bodies_held(const Instant& in, const SystemTerms& terms, SolverKind backend);
+  /// The linear solve of this iteration's system (linear_), worded in the log.
+  Vector solve_system(const Instant& in, int iter, MatrixKind kind, SolverKind backend, const SystemTerms& terms,
+                      const Vector& r_free, RefinedSolve& accuracy);
+  /// A x for the system a (collective when shared or in parts).
+  MatrixProduct system_product(const SparseMatrix& a, bool a_is_k_ff) const;
+  /// u += du (and the eliminated and condensed unknowns), the next residual carried when it can be.
+  void apply_increment(Instant& in, Vector du, const RefinedSolve& accuracy, const SystemTerms& terms,
+                       Vector& residual, Vector& u);
+  /// The backend for this kind of system (linear_), its choice said once in the log.
+  SolverKind choose_backend(MatrixKind kind);
+  /// The log's words for what the linear solve did.
+  void say(const LinearSolve::Event& e, const Instant& in);
+  void say_factorisation(const LinearSolver& solver, const Instant& in);
+  /// The backend that holds K_ff (handed over, no copy kept here), or null.
+  const LinearSolver* k_ff_holder() const { return linear_ ? linear_->holder() : nullptr; }
   /// The restricted system, kept between iterations and instants (update_system).
   struct SystemCache {
     bool valid = false;
@@ -113,7 +161,6 @@ class StaticSolver {
     std::vector<int> diagonal;         ///< position of each diagonal entry in the matrix, -1 in another rank's column
     std::vector<char> owned;           ///< shared model: per free equation, whether this rank holds its column
     std::uint64_t values_key = 0;      ///< key of the system's current values (*matrix; update_system)
-    SystemState state[kSolverKinds];              ///< per backend (SolverKind)
   };
   /// The system of this iteration in system_: K_ff with the contact terms, condensed and
   /// eliminated equations. A shared model: collective, and its pattern counter and values key
@@ -137,25 +184,12 @@ class StaticSolver {
   /// out): what algebraic multigrid aggregates, with the coordinates of its rigid-body modes.
   SystemLayout system_layout(const Constraints& cons, const std::vector<int>& condensed,
                              const std::vector<int>& eliminated) const;
-  /// Backend for a system of this kind: Cholmod gives way to Mumps (said once per run).
-  SolverKind backend_for(MatrixKind kind);
   /// Whether this run shares the model among the ranks of an MPI run (see distributed_).
   bool shares_model() const;
   /// K u over the whole numbering (summed over the ranks when the model is shared).
   Vector stiffness_times(const Vector& u) const;
-  /// A solve failure explained by the elastic stiffness (rigid-body modes, a null pivot);
-  /// with a shared model the whole stiffness is assembled for it first.
-  SolveError diagnose(const Constraints& cons, const SolveError& err, double t) const;
-  /// The singularity test a diagnosis factorises with.
-  SingularityTest diagnosis_test() const;
-  /// One approximation of the factors the run asked for: how it factorised ("in single
-  /// precision"), and the hint a failure gives about it.
-  struct Approximation {
-    std::string what, hint;
-  };
-  /// The approximations of the factors the run asked for (MUMPS's filter, block low rank,
-  /// single precision); empty when the factors are exact.
-  std::vector<Approximation> approximations() const;
+  /// A solve failure explained by the elastic stiffness (FailureDiagnosis); K_ff restored first.
+  SolveError diagnose(const Constraints& cons, const SolveError& err, double t);
 
   /// The elastic stiffness K split by the Dirichlet conditions of the run (one set for every
   /// instant, only the imposed values follow the load functions): K_ff (numbered as
@@ -177,11 +211,6 @@ class StaticSolver {
   /// nodes in ghost_nodes_.
   SparseMatrix ghost_;
   std::vector<int> ghost_nodes_;
-  /// K_ff's storage was handed to the backend (an iterative one keeps its own copy): K_ff u
-  /// comes from the backend's product, elastic_.ff keeps its size only. Without contact the
-  /// system is K_ff itself and is never factorised again in the run.
-  bool elastic_in_solver_ = false;
-  const LinearSolver* elastic_holder_ = nullptr;
   /// A mesh in parts (set_part), and in_parts_ while a run is on it: distributed_ too, but the
   /// vectors are the part's (owned unknowns first, then the ghosts'); what the shared model sums
   /// over the ranks goes to the owners and back to the ghosts through equation_halo_, the norms
@@ -193,23 +222,19 @@ class StaticSolver {
   /// In parts: the part whose nodes the unknowns are on (hook_part_ when given, else part_).
   const MeshPart& numbered_part() const { return hook_part_ ? *hook_part_ : *part_; }
   bool in_parts_ = false;
-  std::unique_ptr<Halo> equation_halo_;
+  /// What differs between a run on one process, a shared model and a mesh in parts.
+  RankLayout layout_;
   std::unique_ptr<Halo> free_halo_;
   GlobalDofs free_numbers_;
   GlobalDofs unknown_numbers_;  ///< every unknown of the part, numbered across the ranks (PETSc's rows)
-  int owned_equations_ = 0;  ///< in parts: the part's owned unknowns (the first ones)
-  /// In parts: v's owned entries complete (the ranks' shares summed into them) and copied to the
-  /// ghosts. Collective.
-  void complete_part_vector(Vector& v) const;
-  /// The largest |v_i| over the entries this rank answers for: all of them, or in parts the
-  /// first n_owned, and then over the ranks. Collective in parts.
-  double largest_entry(const Vector& v, int n_owned) const;
   std::vector<int> node_owner_;
   std::vector<char> owned_nodes_;
   std::vector<int> cell_rank_;  ///< see cell_ranks()
-  /// One solver per backend for the whole run (each keeps its analysis while the pattern holds).
-  std::unique_ptr<LinearSolver> solvers_[kSolverKinds];
   std::unique_ptr<SystemCache> system_;
+  /// The linear solve of the run: backends, their factorisations, refinement (one per run).
+  std::unique_ptr<LinearSolve> linear_;
+  /// The convergence test of the run (made once the stiffness's scale is known).
+  std::unique_ptr<ConvergenceTest> convergence_;
   /// Contact passes on the elastic factorisation kept for the run (InterfaceSolver): with
   /// METHODE='AUTO', a contact hook that names its surface equations, no eliminations and a
   /// small interface, each contact pass factorises only the interface's dense Schur
@@ -222,7 +247,7 @@ class StaticSolver {
   std::string approximation_logged_;  ///< the last line of the log on the filtering and compression asked for
   std::string analysis_logged_;  ///< the last symbolic analysis said in the log (verbosity 2)
   long interface_reference_ = -1;  ///< elastic generation of the factorised reference
-  SystemState interface_state_;
+  LinearSolve::FactorState interface_state_;
   std::vector<char> on_interface_;  ///< per free equation: on the interface
   /// With an interface of the components the contact terms reach (choose_interface): terms
   /// at most this large count for nothing when it is chosen and checked (kNegligibleTerm of
@@ -240,8 +265,6 @@ class StaticSolver {
   double k_scale_ = 0.0;
   bool rigid_checked_ = false;  ///< elastic part proven free of rigid-body modes
   std::string singular_said_;   ///< the last singular matrix the run went past, as the log said it
-  bool backend_note_logged_ = false;  ///< the Cholmod -> Mumps substitution was logged in this run
-  bool saddle_ = false;  ///< indefinite systems go to the saddle-point backend (backend_for)
 
   const FeModel& model_;
   const MechanicalLoads& loads_;
