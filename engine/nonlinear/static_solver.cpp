@@ -23,6 +23,7 @@
 #include "engine/nonlinear/renumbered_hook.hpp"
 #include "engine/nonlinear/rigid_body.hpp"
 #include "engine/nonlinear/stopwatch.hpp"
+#include "engine/nonlinear/system_matrix.hpp"
 #include "engine/nonlinear/time_stepper.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 #include "engine/solver/backends.hpp"
@@ -33,55 +34,6 @@
 namespace lunaster::engine {
 
 namespace {
-
-/// FNV-1a key of a system's values: equal keys, equal matrices.
-struct ValuesKey {
-  std::uint64_t h = 1469598103934665603ULL;
-  void mix(std::uint64_t v) { h = (h ^ v) * 1099511628211ULL; }
-};
-
-/// values[pos[k]] += contact[k] for every located triplet, each value mixed into `key`;
-/// true when one was added.
-bool add_triplet_values(const std::vector<Triplet>& contact, const std::vector<int>& pos, double* values,
-                        ValuesKey& key) {
-  bool any = false;
-  for (size_t k = 0; k < contact.size(); ++k) {
-    if (pos[k] < 0) continue;
-    any = true;
-    const double v = contact[k].value();
-    values[pos[k]] += v;
-    std::uint64_t bits;
-    std::memcpy(&bits, &v, sizeof bits);
-    key.mix(bits);
-  }
-  return any;
-}
-
-/// Position of entry (i, j) in a's storage (the entry must be in the pattern).
-int position_in(const SparseMatrix& a, int i, int j) {
-  const int* outer = a.outerIndexPtr();
-  const int* inner = a.innerIndexPtr();
-  return static_cast<int>(std::lower_bound(inner + outer[j], inner + outer[j + 1], i) - inner);
-}
-
-/// Position in a of each contact triplet (free numbering), -1 for a constrained one, and with
-/// `within` (per free equation) for one whose row or column it does not flag. One binary
-/// search per triplet, most of them a cache miss: two threads share the triplets when there
-/// are many (1.3 million on the 3D CONTINUE benchmark).
-void locate_triplets(const SparseMatrix& a, const std::vector<int>& free_index, const std::vector<Triplet>& contact,
-                     std::vector<int>& pos, const std::vector<char>* within = nullptr) {
-  const size_t n = contact.size();
-  resize_on_huge_pages(pos, n);
-  auto locate = [&](size_t begin, size_t end) {
-    for (size_t k = begin; k < end; ++k) {
-      const int i = free_index[contact[k].row()], j = free_index[contact[k].col()];
-      pos[k] = i >= 0 && j >= 0 && (!within || ((*within)[i] && (*within)[j])) ? position_in(a, i, j) : -1;
-    }
-  };
-  constexpr size_t kTripletsForTwoThreads = 100000;
-  if (n < kTripletsForTwoThreads) return locate(0, n);
-  run_two_workers([&](int w, size_t&) { w == 0 ? locate(0, n / 2) : locate(n / 2, n); });
-}
 
 std::string sci(double v) {
   char buf[32];
@@ -225,7 +177,7 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   number_unknowns(node_halo);
   const int n = dofs_.n_dofs();
   stats_ = SolverStats{};
-  system_.reset();
+  matrix_.clear();
   linear_ = std::make_unique<LinearSolve>(options_, stats_, log_);
   stats_.n_dofs = n;
   distributed_ = in_parts_ || shares_model();
@@ -235,8 +187,6 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   {
     Stopwatch watch(stats_.assemble_seconds);
     std::vector<int> constrained = Constraints::held_equations(dofs_, loads_, *model_.mesh);
-    elastic_.ff = SparseMatrix();  // the previous run's matrices go before these are built
-    elastic_.c = SparseMatrix();
     layout_ = RankLayout();
     free_halo_.reset();
     if (in_parts_) {
@@ -248,12 +198,12 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
                 " ranks, as asked: each rank assembles the whole system; MUMPS reads rank 0's copy and "
                 "factorises it across the ranks");
     }
-    SparseMatrix k = assemble_stiffness_matrix(model_, dofs_, distributed_ ? &owned_nodes_ : nullptr);
-    split_matrix(k, constrained, elastic_);
-    elastic_.symmetric = !distributed_;  // a rank holds only its own nodes' columns
+    elastic_tangent_ = make_elastic_tangent(model_, dofs_, distributed_ ? &owned_nodes_ : nullptr);
+    tangent_ = given_tangent_ ? given_tangent_ : elastic_tangent_.get();
+    matrix_.assemble(*tangent_, Vector::Zero(n), constrained, distributed_);
   }
-  k_scale_ = std::max(elastic_.ff.nonZeros() ? elastic_.ff.coeffs().cwiseAbs().maxCoeff() : 0.0,
-                      elastic_.c.nonZeros() ? elastic_.c.coeffs().cwiseAbs().maxCoeff() : 0.0);
+  k_scale_ = std::max(matrix_.elastic().ff.nonZeros() ? matrix_.elastic().ff.coeffs().cwiseAbs().maxCoeff() : 0.0,
+                      matrix_.elastic().c.nonZeros() ? matrix_.elastic().c.coeffs().cwiseAbs().maxCoeff() : 0.0);
   if (distributed_) k_scale_ = parallel::max_over_ranks(k_scale_);
   convergence_ = std::make_unique<ConvergenceTest>(options_, layout_, k_scale_);
   return step_through(instants);
@@ -265,10 +215,11 @@ std::vector<ResultStep> StaticSolver::step_through(const std::vector<double>& in
   results_ = std::make_unique<StepResults>(dofs_, model_.mesh->n_nodes(), contact_,
                                           in_parts_ && hook_part_ ? hook_part_->mesh.n_nodes() : model_.mesh->n_nodes());
   steps_.push_back(results_->step(0, instants[0], u, true));
-  const TimeStepper stepper(options_.subdivide_levels, options_.subdivide_parts, contact_, log_);
+  const TimeStepper stepper(options_.subdivide_levels, options_.subdivide_parts, contact_, tangent_, log_);
   const TimeStepper::Solve solve = [this](double t, Vector& v) { solve_instant(t, v); };
   const TimeStepper::Commit commit = [this](double t, const Vector& v) {
     ++stats_.instants;
+    tangent_->commit();
     steps_.push_back(results_->step(static_cast<int>(steps_.size()), t, v, false));
   };
   for (size_t i = 1; i < instants.size(); ++i) {
@@ -370,41 +321,48 @@ bool StaticSolver::shares_model() const {
   return (options_.solver == SolverKind::Mumps && options_.share_model) || options_.solver == SolverKind::Petsc;
 }
 
+Vector StaticSolver::internal_forces(const Vector& u) const {
+  if (matrix_.constant()) return stiffness_times(u);
+  Vector f = matrix_.internal_forces(u);
+  layout_.complete(f);
+  return f;
+}
+
 Vector StaticSolver::stiffness_times(const Vector& u) const {
   const LinearSolver* holder = k_ff_holder();
-  // With K_ff in the backend, elastic_.times() gives the constrained columns' part only.
-  Vector ku = elastic_.times(u);
+  // With K_ff in the backend, matrix_.elastic().times() gives the constrained columns' part only.
+  Vector ku = matrix_.elastic().times(u);
   // In parts with K_ff in the backend, its product gives the owned rows whole: the ghosts'
   // shares of the rest go to the owners first, the owners' sums to the ghosts last.
   if (in_parts_ && holder) layout_.equation_halo().add_to_owners(ku.data(), 1);
   else layout_.complete(ku);
   if (holder) {
-    const int nf = static_cast<int>(elastic_.equation.size());
+    const int nf = static_cast<int>(matrix_.elastic().equation.size());
     Vector u_free(nf), k_u_free;
-    for (int j = 0; j < nf; ++j) u_free[j] = u[elastic_.equation[j]];
+    for (int j = 0; j < nf; ++j) u_free[j] = u[matrix_.elastic().equation[j]];
     const bool done = holder->multiply(u_free, k_u_free);
     LUNASTER_ASSERT(done, "the backend holding K_ff gave no product");
-    for (int j = 0; j < nf; ++j) ku[elastic_.equation[j]] += k_u_free[j];
+    for (int j = 0; j < nf; ++j) ku[matrix_.elastic().equation[j]] += k_u_free[j];
     if (in_parts_) layout_.equation_halo().copy_to_ghosts(ku.data(), 1);
   }
   return ku;
 }
 
 SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err, double t) {
-  restore_elastic();  // K_ff itself, without this iteration's terms
+  matrix_.restore();  // K_ff itself, without this iteration's terms
   FailureDiagnosis::Stiffness stiffness;
   stiffness.on_no_rank = in_parts_;
-  // elastic_.ff is the whole K_ff unless the model is shared or K_ff went to the backend
+  // matrix_.elastic().ff is the whole K_ff unless the model is shared or K_ff went to the backend
   // (also when the backend failed after taking it).
   const bool whole_here =
-      !distributed_ && !k_ff_holder() && (elastic_.ff.nonZeros() > 0 || elastic_.equation.empty());
-  if (whole_here) stiffness.k_ff = &elastic_.ff;
-  else stiffness.constrained = elastic_.constrained;
+      !distributed_ && !k_ff_holder() && (matrix_.elastic().ff.nonZeros() > 0 || matrix_.elastic().equation.empty());
+  if (whole_here) stiffness.k_ff = &matrix_.elastic().ff;
+  else stiffness.constrained = matrix_.elastic().constrained;
   return FailureDiagnosis(model_, options_, contact_ != nullptr).explain(err, t, dofs_, cons.free_index, stiffness);
 }
 
 /// The system of one Newton iteration, K_ff + contact terms restricted to the free
-/// equations. Without a contact hook it is elastic_.ff itself. Otherwise its pattern (K_ff's,
+/// equations. Without a contact hook it is matrix_.elastic().ff itself. Otherwise its pattern (K_ff's,
 /// contact, a diagonal on every free equation) is built once per contact pattern version,
 /// with the position of every contact triplet in it, and becomes K_ff's own; each iteration
 /// writes its terms into that one storage and restore_elastic() puts K_ff's values back.
@@ -461,8 +419,8 @@ Constraints::ColumnSource StaticSolver::stiffness_columns(const Constraints& con
     // lies on them. So are zeros (the contact positions update_system added to K_ff's
     // pattern): the fill, and with it the system's pattern, follows the relations.
     return [this, &cons](int e, Constraints::Column& column) {
-      for (SparseMatrix::InnerIterator it(elastic_.ff, cons.free_index[e]); it; ++it)
-        if (it.value() != 0.0) column.emplace_back(elastic_.equation[it.row()], it.value());
+      for (SparseMatrix::InnerIterator it(matrix_.elastic().ff, cons.free_index[e]); it; ++it)
+        if (it.value() != 0.0) column.emplace_back(matrix_.elastic().equation[it.row()], it.value());
     };
   }
   // This rank holds only its own nodes' columns: the whole columns of the eliminated
@@ -498,7 +456,9 @@ void StaticSolver::choose_interface(const Constraints& cons, const std::vector<T
   // costs m^2 doubles and m^3/3 operations per contact pass: a small interface only, against
   // a large interior (the 2D SSNP121 geometries).
   constexpr int kMaxInterface = 2500, kInteriorPerInterface = 20;
-  if (!contact_ || !options_.auto_solver || options_.solver != SolverKind::Cholmod || distributed_) return;
+  if (!contact_ || !options_.auto_solver || options_.solver != SolverKind::Cholmod || distributed_ ||
+      !matrix_.constant())
+    return;
   const std::vector<int> surface = contact_->surface_equations();
   std::vector<int> eqs;
   for (int eq : surface)
@@ -538,7 +498,7 @@ void StaticSolver::choose_interface(const Constraints& cons, const std::vector<T
   // multipliers' columns are empty and come last (their equations are numbered after every
   // displacement): each gets a zero diagonal appended, in the storage K_ff already holds
   // (split_matrix left it the constrained columns' room).
-  SparseMatrix& k = elastic_.ff;
+  SparseMatrix& k = matrix_.elastic().ff;
   const int nf = static_cast<int>(k.cols());
   int first_empty = nf;
   while (first_empty > 0 && k.outerIndexPtr()[first_empty] == k.outerIndexPtr()[first_empty - 1]) --first_empty;
@@ -566,17 +526,17 @@ void StaticSolver::choose_interface(const Constraints& cons, const std::vector<T
   interface_use_ = 1;
 }
 
-void StaticSolver::factorize_interface_reference(SystemCache& sys) {
+void StaticSolver::factorize_interface_reference() {
   double seconds = 0.0;
   {
     Stopwatch watch(seconds);
     const int m = static_cast<int>(interface_->interface().size());
     try {
-      const bool taken = interface_->factorize_reference(elastic_.ff, interface_dense_share_);
+      const bool taken = interface_->factorize_reference(matrix_.elastic().ff, interface_dense_share_);
       if (const std::string analysis = interface_->analysis_note(); !analysis.empty() && analysis != analysis_logged_)
         log_.debug("  " + analysis), analysis_logged_ = analysis;
       if (taken) {
-        interface_reference_ = sys.elastic_generation;
+        interface_reference_ = matrix_.generation();
         interface_state_ = LinearSolve::FactorState{};
         stats_.interface_equations = m;
         ++stats_.factorisations;
@@ -606,255 +566,20 @@ void StaticSolver::factorize_interface_reference(SystemCache& sys) {
 
 void StaticSolver::update_system(const Constraints& cons, const std::vector<Triplet>& contact,
                                  const std::vector<int>& condensed, const std::vector<int>& eliminated) {
-  const long pattern_before = system_ ? system_->pattern : 0;
-  update_own_system(cons, contact, condensed, eliminated);
-  if (!distributed_) return;
-  // Each rank keyed its own columns' terms: a rank with no contact point in its columns sees
-  // the same matrix when the others see a new one, and would skip a factorisation the others
-  // enter (MUMPS's and PETSc's are collective: the run would hang, as it did on three ranks).
-  // The whole system is new when any rank's part is, and its key is every rank's key.
-  SystemCache& sys = *system_;
-  const bool changed_here = sys.pattern != pattern_before;
-  sys.pattern = pattern_before + (parallel::max_over_ranks(changed_here ? 1.0 : 0.0) > 0.0 ? 1 : 0);
-  const std::vector<int> halves = {static_cast<int>(sys.values_key & 0xffffffffULL),
-                                   static_cast<int>(sys.values_key >> 32)};
-  ValuesKey key;
-  for (int half : parallel::gather_all(halves)) key.mix(static_cast<std::uint32_t>(half));
-  sys.values_key = key.h;
-}
-
-void StaticSolver::update_own_system(const Constraints& cons, const std::vector<Triplet>& contact,
-                                     const std::vector<int>& condensed, const std::vector<int>& eliminated) {
-  if (!system_) system_ = std::make_unique<SystemCache>();
-  restore_elastic();
-  SystemCache& sys = *system_;
-  const long version = contact_ ? contact_->pattern_version() : 0;
-  const bool new_constraints = !sys.valid || sys.constrained != cons.constrained;
-  if (new_constraints) {
-    sys.constrained = cons.constrained;
-    ++sys.elastic_generation;
-  }
-  LUNASTER_ASSERT(cons.constrained == elastic_.constrained, "the Dirichlet set changed within a run");
-  const int nf = cons.n_free;
-  if (new_constraints) {
-    sys.owned.clear();
-    if (distributed_) {
-      sys.owned.assign(nf, 0);
-      for (int eq = 0; eq < dofs_.n_dofs(); ++eq)
-        if (cons.free_index[eq] >= 0) sys.owned[cons.free_index[eq]] = owned_nodes_[dofs_.node_of(eq)];
-    }
-  }
-  // A shared model: this rank's columns only (the others are empty here).
-  auto mine = [&sys](int j) { return sys.owned.empty() || sys.owned[j]; };
+  const long pattern_before = matrix_.pattern();
+  matrix_.begin(cons, dofs_, distributed_ ? &owned_nodes_ : nullptr);
   if (!contact_) {  // K_ff alone: nothing to copy, nothing to add
-    if (new_constraints) ++sys.pattern, sys.valid = true;
-    sys.matrix = &elastic_.ff;
     LUNASTER_ASSERT(condensed.empty() && eliminated.empty() && contact.empty(), "no contact hook, no contact terms");
-    std::uint64_t key = 1469598103934665603ULL;
-    sys.values_key = (key ^ static_cast<std::uint64_t>(sys.elastic_generation)) * 1099511628211ULL;
-    return;
+    matrix_.fill_alone();
+  } else {
+    const long version = contact_->pattern_version();
+    if (interface_use_ == 1 && interface_reference_ != matrix_.generation()) factorize_interface_reference();
+    if (interface_use_ == 1)
+      matrix_.fill_interface(cons, contact, condensed, version, interface_->interface(), on_interface_);
+    else
+      matrix_.fill_whole(cons, contact, condensed, eliminated, version);
   }
-  if (interface_use_ == 1 && interface_reference_ != sys.elastic_generation) factorize_interface_reference(sys);
-  if (interface_use_ == 1) {
-    // The interface solver: a holds C alone, the contact terms and the condensed equations'
-    // unit diagonals (K_ff has zeros there), in a pattern built once per contact pattern.
-    // Only the terms within the interface: outside it, an interface of some components has
-    // only terms below interface_floor_ (a normal's round-off), which it leaves out.
-    if (new_constraints || !sys.increment || version != sys.contact_version || contact.size() != sys.contact_pos.size()) {
-      sys.a = SparseMatrix();
-      std::vector<Triplet> pattern;
-      pattern.reserve(contact.size() + interface_->interface().size());
-      for (const auto& tr : contact) {
-        const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
-        if (i >= 0 && j >= 0 && on_interface_[i] && on_interface_[j]) pattern.emplace_back(i, j, 0.0);
-      }
-      for (int j : interface_->interface()) pattern.emplace_back(j, j, 0.0);
-      SparseMatrix c(nf, nf);
-      c.setFromTriplets(pattern.begin(), pattern.end());
-      sys.a.swap(c);
-      locate_triplets(sys.a, cons.free_index, contact, sys.contact_pos, &on_interface_);
-      sys.diagonal.assign(nf, -1);
-      for (int j : interface_->interface()) sys.diagonal[j] = position_in(sys.a, j, j);
-      sys.contact_version = version;
-      sys.increment = true;
-      ++sys.pattern;
-      sys.valid = true;
-      sys.matrix = &sys.a;
-    }
-    std::fill(sys.a.valuePtr(), sys.a.valuePtr() + sys.a.nonZeros(), 0.0);
-    ValuesKey key;
-    key.mix(static_cast<std::uint64_t>(sys.elastic_generation));
-    double* values = sys.a.valuePtr();
-    add_triplet_values(contact, sys.contact_pos, values, key);
-    for (int eq : condensed)
-      if (cons.free_index[eq] >= 0)
-        values[sys.diagonal[cons.free_index[eq]]] = 1.0, key.mix(static_cast<std::uint64_t>(eq));
-    sys.values_key = key.h;
-    return;
-  }
-  if (sys.increment) {  // the interface solver was dropped: the whole system from now on
-    sys.increment = false;
-    sys.a = SparseMatrix();
-    sys.contact_version = -2;
-  }
-  // K_ff and the system share one storage (a second copy of K_ff was the largest array of a
-  // mortar run after the factor): K_ff's pattern grows to hold every contact position, and
-  // each iteration writes its terms into it, saving the values it overwrites for
-  // restore_elastic().
-  SparseMatrix& k = elastic_.ff;
-  if (new_constraints || version != sys.contact_version || contact.size() != sys.contact_pos.size()) {
-    const int* el_outer = k.outerIndexPtr();
-    const int* el_inner = k.innerIndexPtr();
-    const double* el_values = k.valuePtr();
-    // Pattern column by column: the rows of K_ff merged with the contact rows of the column
-    // (bucketed, sorted, unique) and the diagonal; no global sort. Positions K_ff did not
-    // have hold zeros until the next pattern.
-    std::vector<int> start(static_cast<size_t>(nf) + 2, 0), extra;
-    for (const auto& tr : contact) {
-      const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
-      if (i >= 0 && j >= 0) ++start[j + 2];
-    }
-    for (int j = 0; j < nf; ++j) start[j + 2] += mine(j);  // the diagonal
-    for (int j = 0; j <= nf; ++j) start[j + 1] += start[j];
-    resize_on_huge_pages(extra, static_cast<size_t>(start[nf + 1]));
-    for (const auto& tr : contact) {
-      const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
-      if (i >= 0 && j >= 0) extra[start[j + 1]++] = i;
-    }
-    for (int j = 0; j < nf; ++j)
-      if (mine(j)) extra[start[j + 1]++] = j;
-    std::vector<int> extra_end(nf);
-    for (int j = 0; j < nf; ++j) {
-      std::sort(extra.begin() + start[j], extra.begin() + start[j + 1]);
-      extra_end[j] = static_cast<int>(std::unique(extra.begin() + start[j], extra.begin() + start[j + 1]) - extra.begin());
-    }
-    // Union of the two sorted row lists of column j, passed to emit(row, K_ff's value or 0,
-    // whether the position is there for contact only), less the positions an earlier pairing
-    // added that this one does not use (sys.contact_only, ascending): a sliding contact does
-    // not leave its whole path in the pattern and the factor's fill. K_ff's own positions all
-    // stay, zeros included (its pattern is symmetric to the bit, its values are not).
-    // `changed` counts the positions added or dropped.
-    long changed = 0;
-    size_t cursor = 0;  // into sys.contact_only, restarted by each pass over the columns
-    auto merge_column = [&](int j, auto&& emit) {
-      const int* e0 = extra.data() + start[j];
-      const int* e1 = extra.data() + extra_end[j];
-      int p = el_outer[j];
-      const int p1 = el_outer[j + 1];
-      while (p < p1 || e0 != e1) {
-        const int r = p < p1 ? el_inner[p] : -1;
-        if (e0 == e1 || (r >= 0 && r < *e0)) {  // K_ff's only
-          const bool stale = cursor < sys.contact_only.size() && sys.contact_only[cursor] == p;
-          cursor += stale;
-          if (stale) ++changed;
-          else emit(r, el_values[p], false);
-          ++p;
-        } else if (r < 0 || *e0 < r) {  // contact's only
-          emit(*e0++, 0.0, true), ++changed;
-        } else {  // in both
-          const bool added = cursor < sys.contact_only.size() && sys.contact_only[cursor] == p;
-          cursor += added;
-          emit(r, el_values[p++], added), ++e0;
-        }
-      }
-    };
-    SparseMatrix a(nf, nf);
-    int* outer = a.outerIndexPtr();
-    outer[0] = 0;
-    for (int j = 0; j < nf; ++j) {
-      int count = 0;
-      merge_column(j, [&count](int, double, bool) { ++count; });
-      outer[j + 1] = outer[j] + count;
-    }
-    if (changed > 0) {  // else K_ff's pattern is this one already
-      a.resizeNonZeros(outer[nf]);
-      // Written once, as K_ff's arrays in assembly: on huge pages, one fault per 2 MB.
-      advise_huge_pages(a.innerIndexPtr(), sizeof(int) * static_cast<std::size_t>(outer[nf]));
-      advise_huge_pages(a.valuePtr(), sizeof(double) * static_cast<std::size_t>(outer[nf]));
-      int* inner = a.innerIndexPtr();
-      double* values = a.valuePtr();
-      std::vector<int> contact_only;
-      cursor = 0;
-      for (int j = 0; j < nf; ++j) {
-        int at = outer[j];
-        merge_column(j, [&](int row, double v, bool only) {
-          if (only) contact_only.push_back(at);
-          inner[at] = row, values[at++] = v;
-        });
-      }
-      sys.contact_only.swap(contact_only);
-      k.swap(a);  // the old K_ff goes with a; Eigen 3.4's sparse assignment would copy it
-    }
-    locate_triplets(k, cons.free_index, contact, sys.contact_pos);
-    sys.contact_unique.clear();
-    {
-      std::vector<char> seen;  // no sort of millions of 3D positions
-      resize_on_huge_pages(seen, static_cast<size_t>(k.nonZeros()));
-      reserve_on_huge_pages(sys.contact_unique, sys.contact_pos.size());
-      for (int p : sys.contact_pos)
-        if (p >= 0 && !seen[p]) seen[p] = 1, sys.contact_unique.push_back(p);
-    }
-    sys.contact_elastic.resize(sys.contact_unique.size());
-    for (size_t i = 0; i < sys.contact_unique.size(); ++i) sys.contact_elastic[i] = k.valuePtr()[sys.contact_unique[i]];
-    sys.diagonal.resize(cons.n_free);
-    for (int j = 0; j < cons.n_free; ++j) sys.diagonal[j] = mine(j) ? position_in(k, j, j) : -1;
-    sys.contact_version = version;
-    ++sys.pattern;
-    sys.valid = true;
-    sys.matrix = &k;
-  }
-  double* values = k.valuePtr();
-  std::vector<std::pair<int, double>>& saved = sys.saved;
-  auto set = [&](int p, double v) { saved.emplace_back(p, values[p]), values[p] = v; };
-  // The key of these values: the elastic part's generation, the contact values and the
-  // condensed equations (FNV-1a over their bits). Equal keys, equal matrices.
-  ValuesKey key;
-  auto mix = [&key](std::uint64_t v) { key.mix(v); };
-  mix(static_cast<std::uint64_t>(sys.elastic_generation));
-  sys.contact_written = add_triplet_values(contact, sys.contact_pos, values, key);
-  for (int eq : condensed)
-    if (cons.free_index[eq] >= 0) {
-      if (mine(cons.free_index[eq])) set(sys.diagonal[cons.free_index[eq]], 1.0);
-      mix(static_cast<std::uint64_t>(eq));
-    }
-  // Eliminated unknowns: their rows and columns (elastic values included) become a unit diagonal.
-  const int* outer = k.outerIndexPtr();
-  const int* inner = k.innerIndexPtr();
-  if (sys.owned.empty()) {
-    for (int eq : eliminated) {
-      const int j = cons.free_index[eq];
-      for (int p = outer[j]; p < outer[j + 1]; ++p) {
-        const int i = inner[p];
-        set(p, 0.0);
-        set(static_cast<int>(std::lower_bound(inner + outer[i], inner + outer[i + 1], j) - inner), 0.0);
-      }
-      set(sys.diagonal[j], 1.0);
-      mix(~static_cast<std::uint64_t>(eq));
-    }
-  } else if (!eliminated.empty()) {
-    // A shared model: column j may be another rank's, so row j is found by a pass over this
-    // rank's columns.
-    std::vector<char> gone(nf, 0);
-    for (int eq : eliminated) gone[cons.free_index[eq]] = 1, mix(~static_cast<std::uint64_t>(eq));
-    for (int j = 0; j < nf; ++j) {
-      if (!mine(j)) continue;
-      for (int p = outer[j]; p < outer[j + 1]; ++p)
-        if (gone[j] || gone[inner[p]]) set(p, 0.0);
-      if (gone[j]) set(sys.diagonal[j], 1.0);
-    }
-  }
-  sys.values_key = key.h;
-}
-
-void StaticSolver::restore_elastic() {
-  if (!system_) return;
-  SystemCache& sys = *system_;
-  double* values = elastic_.ff.valuePtr();
-  for (auto it = sys.saved.rbegin(); it != sys.saved.rend(); ++it) values[it->first] = it->second;
-  sys.saved.clear();
-  if (sys.contact_written)
-    for (size_t i = 0; i < sys.contact_unique.size(); ++i) values[sys.contact_unique[i]] = sys.contact_elastic[i];
-  sys.contact_written = false;
+  if (distributed_) matrix_.agree_over_ranks(pattern_before);
 }
 
 void StaticSolver::solve_instant(double t, Vector& u) {
@@ -941,7 +666,7 @@ bool StaticSolver::converged_at(Instant& in, const Vector& u, int iter, Vector& 
     in.carried_residual = Vector();
   } else {
     Stopwatch watch(stats_.assemble_seconds);
-    residual = stiffness_times(u) - in.f_ext;
+    residual = internal_forces(u) - in.f_ext;
   }
   // The residual may converge from the second iteration on, and in a pass after the first
   // (a new pairing or new statuses) already at its start: a hook that gives its residual
@@ -1016,8 +741,8 @@ void StaticSolver::check_bodies_held(const Instant& in, const SystemTerms& terms
   if (!unheld && !held_by_relations && interface_use_ != 1 && backend != SolverKind::Cholmod &&
       backend != SolverKind::Petsc && !distributed_ && options_.factor.singularity.digits >= 0) {
     Stopwatch watch(stats_.assemble_seconds);
-    restore_elastic();  // K_ff itself, without this iteration's terms
-    if (auto rigid = find_rigid_body_mode(model_, dofs_, in.cons.free_index, elastic_.ff, in.t,
+    matrix_.restore();  // K_ff itself, without this iteration's terms
+    if (auto rigid = find_rigid_body_mode(model_, dofs_, in.cons.free_index, matrix_.elastic().ff, in.t,
                                           options_.factor.singularity))
       report(*rigid);
     update_system(in.cons, *terms.contact, *terms.condensed, terms.eliminated_eqs);  // the terms again
@@ -1028,6 +753,10 @@ void StaticSolver::check_bodies_held(const Instant& in, const SystemTerms& terms
 void StaticSolver::newton_step(Instant& in, Vector& u, int iter, Vector& residual, Vector& r_free,
                                std::vector<Triplet>& k_contact) {
   const Constraints& cons = in.cons;
+  if (!matrix_.constant()) {
+    Stopwatch watch(stats_.assemble_seconds);
+    matrix_.refresh(u);  // a tangent that follows u: K_ff at this iterate
+  }
   static const std::vector<int> no_equations;
   static const std::vector<Elimination> no_eliminations;
   SystemTerms terms;
@@ -1050,13 +779,13 @@ void StaticSolver::newton_step(Instant& in, Vector& u, int iter, Vector& residua
   {
     Stopwatch watch(stats_.assemble_seconds);
     update_system(cons, k_contact, *terms.condensed, terms.eliminated_eqs);
-    stats_.system_entries = system_->matrix->nonZeros();
+    stats_.system_entries = matrix_.matrix().nonZeros();
   }
-  // elastic_.ff is K_ff again when this iteration ends, however it ends (the next
+  // matrix_.elastic().ff is K_ff again when this iteration ends, however it ends (the next
   // residual, a diagnosis, a subdivided step read it).
   struct RestoreElastic {
     StaticSolver* self;
-    ~RestoreElastic() { self->restore_elastic(); }
+    ~RestoreElastic() { self->matrix_.restore(); }
   } restore_at_end{this};
   // The system of this iteration: the contact law may condense its multipliers out
   // (then it is SPD), and says which kind of matrix is left.
@@ -1078,9 +807,9 @@ void StaticSolver::newton_step(Instant& in, Vector& u, int iter, Vector& residua
 Vector StaticSolver::solve_system(const Instant& in, int iter, MatrixKind kind, SolverKind backend,
                                   const SystemTerms& terms, const Vector& r_free, RefinedSolve& accuracy) {
   const Constraints& cons = in.cons;
-  const SparseMatrix& a = *system_->matrix;
+  const SparseMatrix& a = matrix_.matrix();
   const bool via_interface = interface_use_ == 1;
-  const bool a_is_k_ff = !contact_ && &a == &elastic_.ff;
+  const bool a_is_k_ff = !contact_ && &a == &matrix_.elastic().ff;
   // In parts, the residuals of a solve are measured on the owned entries over the ranks.
   const int n_owned_free = in.owned_free;
   const VectorNorm owned_norm = [n_owned_free](const Vector& v) {
@@ -1091,8 +820,8 @@ Vector StaticSolver::solve_system(const Instant& in, int iter, MatrixKind kind, 
   LinearSolve::System system;
   system.a = &a;
   system.kind = kind;
-  system.pattern = system_->pattern;
-  system.values_key = system_->values_key;
+  system.pattern = matrix_.pattern();
+  system.values_key = matrix_.values_key();
   system.statuses = contact_ ? contact_->status_key() : 0ULL;
   system.iteration = iter;
   system.product = system_product(a, a_is_k_ff);
@@ -1100,7 +829,7 @@ Vector StaticSolver::solve_system(const Instant& in, int iter, MatrixKind kind, 
   system.abs_product = [&a, this](const Vector& x) -> Vector {
     Vector y = Vector::Zero(x.size());
     add_abs_product(a, x, y);
-    if (system_->increment) add_abs_product(elastic_.ff, x, y);
+    if (matrix_.increment()) add_abs_product(matrix_.elastic().ff, x, y);
     return y;
   };
   system.norm = in_parts_ ? &owned_norm : nullptr;
@@ -1108,10 +837,10 @@ Vector StaticSolver::solve_system(const Instant& in, int iter, MatrixKind kind, 
   system.whole = !distributed_ && !k_ff_holder();
   system.distributed = distributed_;
   system.layout = [this, &cons, &terms] { return system_layout(cons, *terms.condensed, terms.eliminated_eqs); };
-  if (&a == &elastic_.ff && !contact_) system.takeable = &elastic_.ff;
+  if (&a == &matrix_.elastic().ff && !contact_ && matrix_.constant()) system.takeable = &matrix_.elastic().ff;
   if (options_.observe_factorisation && !via_interface)
     system.observe = [this](const SparseMatrix& m, MatrixKind k) {
-      options_.observe_factorisation(m, k, elastic_.equation);
+      options_.observe_factorisation(m, k, matrix_.elastic().equation);
     };
   system.diagnose = [this, &in](const SolveError& err) { return diagnose(in.cons, err, in.t); };
   const LinearSolve::Events events = [this, &in](const LinearSolve::Event& e) { say(e, in); };
@@ -1140,8 +869,8 @@ MatrixProduct StaticSolver::system_product(const SparseMatrix& a, bool a_is_k_ff
       return y;
     }
     if (holder && holder->multiply(x, y)) return y;
-    y = a_is_k_ff ? elastic_.ff_times(x) : Vector(a * x);
-    if (system_->increment) y += elastic_.ff_times(x);  // a is C: the system is K_ff + C
+    y = a_is_k_ff ? matrix_.elastic().ff_times(x) : Vector(a * x);
+    if (matrix_.increment()) y += matrix_.elastic().ff_times(x);  // a is C: the system is K_ff + C
     if (distributed_) parallel::sum_over_ranks(y.data(), y.size());
     return y;
   };
@@ -1162,13 +891,13 @@ void StaticSolver::apply_increment(Instant& in, Vector du, const RefinedSolve& a
   // round-off of a tiny correction, far below that of K u - f, and report a state more
   // exact than the stored u can be.
   constexpr double kCarriedAbove = 1e-8;
-  const bool a_is_k_ff = !contact_ && system_->matrix == &elastic_.ff;
-  if (!contact_ && terms.eliminated->empty() && terms.condensed->empty() && a_is_k_ff && !distributed_ &&
+  const bool a_is_k_ff = !contact_ && &matrix_.matrix() == &matrix_.elastic().ff;
+  if (matrix_.constant() && !contact_ && terms.eliminated->empty() && terms.condensed->empty() && a_is_k_ff && !distributed_ &&
       !k_ff_holder() && accuracy.ax_minus_b.size() == cons.n_free && in.norms.relative > kCarriedAbove) {
     in.carried_residual = std::move(residual);
     for (int eq = 0; eq < n; ++eq)
       if (cons.free_index[eq] >= 0) in.carried_residual[eq] = accuracy.ax_minus_b[cons.free_index[eq]];
-    elastic_.add_constrained_rows(du, in.carried_residual);
+    matrix_.elastic().add_constrained_rows(du, in.carried_residual);
   }
   cons.recover(*terms.eliminated, du, u);
   if (!terms.condensed->empty()) {

@@ -24,6 +24,8 @@
 #include "engine/nonlinear/newton_options.hpp"
 #include "engine/nonlinear/reduction.hpp"
 #include "engine/nonlinear/step_results.hpp"
+#include "engine/nonlinear/system_matrix.hpp"
+#include "engine/nonlinear/tangent_source.hpp"
 #include "engine/solver/interface_solver.hpp"
 #include "engine/solver/linear_solver.hpp"
 
@@ -68,6 +70,11 @@ class StaticSolver {
   /// point's and every relation's terms and keeps those of its own columns. The hook's
   /// multipliers are numbered after each rank's owned unknowns; MUMPS solves such a system,
   /// PETSc is refused there (DeckError).
+  /// The tangent (and internal forces) of the next runs: a behaviour's source, borrowed; null
+  /// (the default): the model's linear elastic stiffness. A constant one keeps today's path
+  /// (assembled once per Dirichlet set, factorisations kept); one that is not constant is
+  /// assembled again at each Newton iteration that solves.
+  void set_tangent(TangentSource* tangent) { given_tangent_ = tangent; }
   void set_part(const MeshPart* part, const MeshPart* numbered = nullptr) {
     part_ = part;
     hook_part_ = numbered;
@@ -132,47 +139,13 @@ class StaticSolver {
   void say_factorisation(const LinearSolver& solver, const Instant& in);
   /// The backend that holds K_ff (handed over, no copy kept here), or null.
   const LinearSolver* k_ff_holder() const { return linear_ ? linear_->holder() : nullptr; }
-  /// The restricted system, kept between iterations and instants (update_system).
-  struct SystemCache {
-    bool valid = false;
-    std::vector<int> constrained;      ///< Dirichlet equations the pattern was built for
-    long elastic_generation = 0;       ///< incremented when the Dirichlet set changes
-    long contact_version = -1;         ///< contact pattern version the pattern was built for
-    long pattern = 0;                  ///< incremented at each new pattern
-    /// The interface solver's contact terms C (the system is K_ff + C, increment is true).
-    SparseMatrix a;
-    /// The system: elastic_.ff (without a contact hook K_ff itself; with one, K_ff with this
-    /// iteration's contact terms written in place, see saved), or &a with the interface solver.
-    const SparseMatrix* matrix = nullptr;
-    /// a holds the contact terms alone, C (interface solver: the system is K_ff + C, and K_ff
-    /// is never copied); false: the matrix is the whole system.
-    bool increment = false;
-    /// K_ff and the system share one storage, elastic_.ff: what restore_elastic() puts back.
-    /// The values this iteration's condensed and eliminated equations overwrote (position,
-    /// value; put back in reverse order), then K_ff's values at the contact positions (each
-    /// position once, kept with the pattern: K_ff does not change within a run).
-    std::vector<std::pair<int, double>> saved;
-    std::vector<int> contact_unique;
-    /// Positions of elastic_.ff that are not K_ff's own, there for the contact terms (ascending).
-    std::vector<int> contact_only;
-    std::vector<double> contact_elastic;
-    bool contact_written = false;  ///< the contact terms are in elastic_.ff now
-    std::vector<int> contact_pos;      ///< position in the matrix of each contact triplet, -1 if constrained
-    std::vector<int> diagonal;         ///< position of each diagonal entry in the matrix, -1 in another rank's column
-    std::vector<char> owned;           ///< shared model: per free equation, whether this rank holds its column
-    std::uint64_t values_key = 0;      ///< key of the system's current values (*matrix; update_system)
-  };
-  /// The system of this iteration in system_: K_ff with the contact terms, condensed and
-  /// eliminated equations. A shared model: collective, and its pattern counter and values key
-  /// are the whole system's, the same on every rank (a rank whose own columns kept their terms
-  /// must still factorise when another's changed: MUMPS and PETSc factorise on all of them).
+  /// The system of this iteration in matrix_: K_ff with the contact terms, condensed and
+  /// eliminated equations (or the interface solver's terms). A shared model: collective, and its
+  /// pattern counter and values key are the whole system's, the same on every rank (a rank
+  /// whose own columns kept their terms must still factorise when another's changed: MUMPS and
+  /// PETSc factorise on all of them).
   void update_system(const Constraints& cons, const std::vector<Triplet>& contact, const std::vector<int>& condensed,
                      const std::vector<int>& eliminated);
-  /// update_system() on this rank's columns alone.
-  void update_own_system(const Constraints& cons, const std::vector<Triplet>& contact,
-                         const std::vector<int>& condensed, const std::vector<int>& eliminated);
-  /// elastic_.ff back to K_ff (the values update_system overwrote); nothing to do when it holds K_ff.
-  void restore_elastic();
   /// In parts: the stiffness columns of `nodes`' unknowns, whole, on every rank (each assembled
   /// by the node's owner; in this rank's numbering). Collective.
   SparseMatrix gathered_columns(const std::vector<int>& nodes) const;
@@ -186,17 +159,22 @@ class StaticSolver {
                              const std::vector<int>& eliminated) const;
   /// Whether this run shares the model among the ranks of an MPI run (see distributed_).
   bool shares_model() const;
+  /// The internal forces at u: K u for a constant tangent (stiffness_times), else the tangent
+  /// source's, completed over the ranks.
+  Vector internal_forces(const Vector& u) const;
   /// K u over the whole numbering (summed over the ranks when the model is shared).
   Vector stiffness_times(const Vector& u) const;
   /// A solve failure explained by the elastic stiffness (FailureDiagnosis); K_ff restored first.
   SolveError diagnose(const Constraints& cons, const SolveError& err, double t);
 
-  /// The elastic stiffness K split by the Dirichlet conditions of the run (one set for every
-  /// instant, only the imposed values follow the load functions): K_ff (numbered as
-  /// Constraints::free_index), the system itself when there is no contact, and the
-  /// constrained columns. Nothing else of K is kept: they give K u, the system's refill and
-  /// the eliminations' columns.
-  SplitMatrix elastic_;
+  /// The stiffness K split by the Dirichlet conditions of the run (one set for every instant,
+  /// only the imposed values follow the load functions) and each iteration's system in its
+  /// storage (system_matrix.hpp). Lives for the run.
+  SystemMatrix matrix_;
+  /// Where K comes from: the tangent given (set_tangent), or the linear elastic one of the run.
+  TangentSource* given_tangent_ = nullptr;
+  std::unique_ptr<TangentSource> elastic_tangent_;
+  TangentSource* tangent_ = nullptr;
   /// The model shared among the ranks of an MPI run (several ranks, a backend named by the
   /// deck that takes a distributed system: MUMPS unless told not to share, or PETSc). The
   /// volume cells are partitioned (Scotch); each rank assembles the complete columns of the nodes it owns
@@ -230,7 +208,6 @@ class StaticSolver {
   std::vector<int> node_owner_;
   std::vector<char> owned_nodes_;
   std::vector<int> cell_rank_;  ///< see cell_ranks()
-  std::unique_ptr<SystemCache> system_;
   /// The linear solve of the run: backends, their factorisations, refinement (one per run).
   std::unique_ptr<LinearSolve> linear_;
   /// The convergence test of the run (made once the stiffness's scale is known).
@@ -261,7 +238,7 @@ class StaticSolver {
   void choose_interface(const Constraints& cons, const std::vector<Triplet>& contact);
   /// Factorises the interface solver's reference from K_ff (once per run); on failure the
   /// interface solver is dropped and the whole system is solved from then on.
-  void factorize_interface_reference(SystemCache& sys);
+  void factorize_interface_reference();
   double k_scale_ = 0.0;
   bool rigid_checked_ = false;  ///< elastic part proven free of rigid-body modes
   std::string singular_said_;   ///< the last singular matrix the run went past, as the log said it

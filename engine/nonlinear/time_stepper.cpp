@@ -26,6 +26,7 @@ void TimeStepper::advance(double t0, double t1, int level, Vector& u, const Solv
   } catch (const ConvergenceError& err) {
     // The sub-steps start from the statuses of the step, not from the diverged attempt's.
     if (history_) history_->restore(state);
+    if (tangent_) tangent_->restore();
     if (level >= levels_) {
       if (levels_ == 0) throw;
       ConvergenceError final(err.message(), err.hints());

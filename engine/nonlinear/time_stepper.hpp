@@ -5,6 +5,7 @@
 
 #include "engine/core/log.hpp"
 #include "engine/nonlinear/contact_hook.hpp"
+#include "engine/nonlinear/tangent_source.hpp"
 #include "engine/solver/linear_solver.hpp"
 
 namespace lunaster::engine {
@@ -16,10 +17,10 @@ class TimeStepper {
   /// Called with each converged instant (sub-steps included) and its solution.
   using Commit = std::function<void(double t, const Vector& u)>;
   /// `levels`: splits at most (0: none, a failure is thrown as it is); `parts`: sub-steps per
-  /// split. `history`: the state a failed attempt leaves that the sub-steps must not start from
-  /// (may be null). `history` and `log` are borrowed.
-  TimeStepper(int levels, int parts, ContactHook* history, const Log& log)
-      : levels_(levels), parts_(parts), history_(history), log_(log) {}
+  /// split. `history` and `tangent`: the state a failed attempt leaves that the sub-steps must
+  /// not start from (either may be null). All are borrowed.
+  TimeStepper(int levels, int parts, ContactHook* history, TangentSource* tangent, const Log& log)
+      : levels_(levels), parts_(parts), history_(history), tangent_(tangent), log_(log) {}
   /// Advances u from instant t0 to t1, splitting the step on ConvergenceError.
   void advance(double t0, double t1, Vector& u, const Solve& solve, const Commit& commit) const {
     advance(t0, t1, 0, u, solve, commit);
@@ -29,6 +30,7 @@ class TimeStepper {
   void advance(double t0, double t1, int level, Vector& u, const Solve& solve, const Commit& commit) const;
   int levels_, parts_;
   ContactHook* history_;
+  TangentSource* tangent_;
   const Log& log_;
 };
 
