@@ -2,22 +2,14 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "engine/assembly/assembly.hpp"
 #include "engine/nonlinear/reduction.hpp"
 #include "engine/nonlinear/rigid_body.hpp"
+#include "engine/nonlinear/sci.hpp"
 
 namespace lunaster::engine {
-
-namespace {
-
-std::string sci(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6e", v);
-  return buf;
-}
-
-}  // namespace
 
 FailureDiagnosis::FailureDiagnosis(const FeModel& model, const NewtonOptions& options, bool with_contact)
     : model_(model), options_(options), with_contact_(with_contact) {}
@@ -74,6 +66,23 @@ std::vector<FailureDiagnosis::Approximation> FailureDiagnosis::approximations() 
                    "the factors were computed in single precision, too coarse for this system's conditioning: "
                    "refine more, or factorise in double precision"});
   return out;
+}
+
+bool FailureDiagnosis::check_held(const DofMap& dofs, const std::vector<int>& free_index, double t,
+                                  const HeldCheck& check, const std::function<const SparseMatrix&()>& k_ff_alone,
+                                  const Log& log) const {
+  // Going on past a singular matrix was asked for: a body held by nothing is a warning.
+  const auto report = [this, &log](const SolveError& rigid) {
+    if (options_.factor.singularity.stop) throw rigid;
+    log.warning("going on as asked with a singular system: " + rigid.message());
+  };
+  const auto unheld =
+      check.geometry ? find_unheld_body(model_, dofs, free_index, check.related, t) : std::optional<SolveError>();
+  if (unheld) report(*unheld);
+  if (unheld || !check.factorise) return false;
+  if (auto rigid = find_rigid_body_mode(model_, dofs, free_index, k_ff_alone(), t, options_.factor.singularity))
+    report(*rigid);
+  return true;
 }
 
 SingularityTest FailureDiagnosis::test() const {

@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "engine/nonlinear/sci.hpp"
 #include "engine/nonlinear/stopwatch.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 #include "engine/solver/backends.hpp"
@@ -29,11 +30,6 @@ constexpr double kKrylovTolerance = 1e-12;
 /// A large 3D SPD system: a factorisation fills too much (LinearSolve::choose).
 constexpr int kLargeSpd3d = 100000;
 
-std::string sci(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6e", v);
-  return buf;
-}
 
 }  // namespace
 

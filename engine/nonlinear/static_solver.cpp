@@ -1,47 +1,19 @@
 #include "engine/nonlinear/static_solver.hpp"
 
-#include <cmath>
 #include <algorithm>
-#include <array>
-#include <cstdint>
+#include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <limits>
-#include <unordered_map>
-#include <map>
-#include <memory>
 #include <optional>
 
-#include "engine/assembly/assembly.hpp"
-#include "engine/assembly/partition.hpp"
 #include "engine/core/error.hpp"
-#include "engine/core/memory.hpp"
-#include "engine/core/two_workers.hpp"
-#include "engine/nonlinear/constraints.hpp"
 #include "engine/nonlinear/failure_diagnosis.hpp"
 #include "engine/nonlinear/nodal_forces.hpp"
-#include "engine/nonlinear/renumbered_hook.hpp"
-#include "engine/nonlinear/rigid_body.hpp"
+#include "engine/nonlinear/sci.hpp"
 #include "engine/nonlinear/stopwatch.hpp"
-#include "engine/nonlinear/system_matrix.hpp"
 #include "engine/nonlinear/time_stepper.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
-#include "engine/solver/backends.hpp"
-#include "engine/solver/krylov.hpp"
-#include "engine/solver/saddle_solver.hpp"
-#include "engine/solver/singularity.hpp"
 
 namespace lunaster::engine {
-
-namespace {
-
-std::string sci(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6e", v);
-  return buf;
-}
-
-}  // namespace
 
 StaticSolver::StaticSolver(const FeModel& model, const MechanicalLoads& loads, NewtonOptions options,
                            ContactHook* contact, const Log& log)
@@ -53,122 +25,11 @@ StaticSolver::StaticSolver(const FeModel& model, const MechanicalLoads& loads, N
 
 void StaticSolver::number_unknowns(std::optional<NodeHalo>& node_halo) {
   in_parts_ = part_ != nullptr;
-  contact_ = given_contact_;
-  renumbered_contact_.reset();
-  dofs_ = DofMap(*model_.mesh, model_.volume_cells(), model_.dim);
-  if (in_parts_ && hook_part_) {
-    // The hook's nodes beyond the part (contact surfaces, relations): ghosts with their
-    // displacement unknowns.
-    LUNASTER_ASSERT(contact_ && hook_part_->n_owned_nodes == part_->n_owned_nodes &&
-                        hook_part_->mesh.n_nodes() >= part_->mesh.n_nodes(),
-                    "the hook's nodes are the part's and more, for a run with a hook");
-    dofs_.add_nodes(hook_part_->mesh.n_nodes());
-    for (int v = part_->mesh.n_nodes(); v < hook_part_->mesh.n_nodes(); ++v)
-      for (int c = 0; c < model_.dim; ++c) dofs_.add(v, c);
-  }
-  const int displacement_dofs = dofs_.n_dofs();
-  // In parts, the exchanges of the part's nodes (the owners' Dirichlet conditions for the hook,
-  // then the numbering across the ranks).
-  if (in_parts_) node_halo.emplace(numbered_part());
-  if (contact_) {
-    contact_->set_dirichlet(in_parts_ && hook_part_ ? owners_dirichlet(*hook_part_, *node_halo, loads_.dirichlet)
-                                                   : loads_.dirichlet);
-    contact_->add_dofs(dofs_);
-  }
-  if (!in_parts_) return;
-  const int n = dofs_.n_dofs();
-  // What a mesh in parts does not do yet (docs/distributed-model.md): said alike on every rank.
-  LUNASTER_ASSERT(model_.mesh == &part_->mesh && part_->parts == parallel::size(),
-                  "a run in parts takes the model of this rank's part, one part per rank");
-  LUNASTER_ASSERT(!contact_ || hook_part_, "a hook on a mesh in parts takes the part with the hook's nodes");
-  if (n != displacement_dofs) {
-    // The hook's multipliers came after every node's displacements: the owned unknowns go
-    // first (global_dofs.hpp), each class in its order, and the hook keeps its numbering.
-    if (options_.solver == SolverKind::Petsc) {
-      DeckError refused("the multipliers of contact or linear relations on a mesh in parts are solved by the "
-                        "MUMPS backend, not PETSc");
-      refused.failure().what = Failure::What::PartsMultipliers;
-      throw refused;
-    }
-    std::vector<int> new_of_old(n);
-    int next = 0;
-    for (int owned_class : {1, 0})
-      for (int eq = 0; eq < n; ++eq)
-        if (part_->owns(dofs_.node_of(eq)) == (owned_class == 1)) new_of_old[eq] = next++;
-    dofs_ = dofs_.renumbered(new_of_old);
-    renumbered_contact_ = std::make_unique<RenumberedHook>(*contact_, std::move(new_of_old));
-    contact_ = renumbered_contact_.get();
-  }
-  if (options_.auto_solver || (options_.solver != SolverKind::Mumps && options_.solver != SolverKind::Petsc)) {
-    DeckError refused("on a mesh in parts the MUMPS or PETSc backend solves, not " +
-                      std::string(options_.auto_solver ? "the automatic choice" : "a backend of one process"));
-    refused.failure().what = Failure::What::PartsBackend;
-    refused.failure().count = options_.auto_solver ? 1 : 0;
-    throw refused;
-  }
-}
-
-void StaticSolver::lay_out_parts(std::vector<int>& constrained, const NodeHalo& node_halo) {
-  const int n = dofs_.n_dofs();
-  const MeshPart& numbered = numbered_part();
-  node_owner_ = numbered.node_owner;
-  cell_rank_ = part_->cell_part;
-  owned_nodes_.assign(numbered.mesh.n_nodes(), 0);
-  std::fill(owned_nodes_.begin(), owned_nodes_.begin() + part_->n_owned_nodes, 1);
-  unknown_numbers_ = number_across_ranks(numbered, dofs_, node_halo);
-  const GlobalDofs& numbers = unknown_numbers_;
-  stats_.n_dofs = static_cast<int>(numbers.n_global);
-  layout_ = RankLayout(std::make_unique<Halo>(equation_halo(numbered, dofs_, numbers)), numbers.n_owned);
-  // The constrained set the owners decide; the free unknowns, numbered across the ranks in
-  // the order of the system's equations (free_index: ascending, the owned ones first).
-  {
-    Constraints owners = Constraints::holding(n, constrained);
-    owners.take_from_owners(layout_.equation_halo());
-    constrained = owners.constrained;
-  }
-  std::vector<char> free(n, 1);
-  for (int eq : constrained) free[eq] = 0;
-  free_numbers_ = number_across_ranks(numbered, dofs_, node_halo, &free);
-  free_halo_ = std::make_unique<Halo>(equation_halo(numbered, dofs_, free_numbers_));
-  std::string counts;
-  for (int owned : parallel::gather_all(std::vector<int>{part_->n_owned_nodes}))
-    counts += (counts.empty() ? "" : ", ") + std::to_string(owned);
-  std::string hook_said;
-  if (contact_ && contact_->has_contact())
-    hook_said += "; the contact surfaces are whole on every rank, which pairs every point and keeps the contact "
-                 "terms of its own nodes' columns";
-  if (contact_ && !contact_->related_equations().empty())
-    hook_said += "; every rank builds every linear relation (their nodes beyond its part are its ghosts) and "
-                 "keeps the terms of its own nodes' columns";
-  log_.info("mesh in parts on " + std::to_string(part_->parts) + " ranks: owned nodes per rank " + counts + ", " +
-            std::to_string(numbers.n_global) + " unknowns; each rank assembles the stiffness of its own nodes and "
-            "holds its part's vectors" + hook_said);
-}
-
-void StaticSolver::lay_out_shared() {
-  const Mesh& mesh = *model_.mesh;
-  const std::vector<int> cells = model_.volume_cells();
-  const CellPartition part = partition_cells(mesh, cells, model_.dim);
-  layout_ = RankLayout(RankLayout::Kind::Shared);
-  node_owner_ = part.node_owner;
-  cell_rank_.assign(mesh.n_cells(), -1);
-  for (size_t i = 0; i < cells.size(); ++i) cell_rank_[cells[i]] = part.cell_part[i];
-  owned_nodes_.assign(mesh.n_nodes(), 0);
-  std::vector<int> nodes_of(part.parts, 0), cells_of(part.parts, 0);
-  for (int v = 0; v < mesh.n_nodes(); ++v)
-    if (node_owner_[v] >= 0) ++nodes_of[node_owner_[v]], owned_nodes_[v] = node_owner_[v] == parallel::rank();
-  if (contact_) contact_->share_among_ranks(owned_nodes_);
-  for (int p : part.cell_part) ++cells_of[p];
-  std::string counts;
-  for (int r = 0; r < part.parts; ++r)
-    counts += (r ? ", " : "") + std::to_string(cells_of[r]) + " / " + std::to_string(nodes_of[r]);
-  log_.info("model shared among " + std::to_string(part.parts) + " ranks, " +
-            std::to_string(parallel::ranks_on_this_machine()) + " on this machine (Scotch): cells / nodes per rank " +
-            counts + "; " + std::to_string(part.interface_nodes) +
-            " nodes on interfaces; each rank assembles the stiffness of its own nodes" +
-            (contact_ ? std::string(", pairs its share of the contact points and builds the contact terms "
-                                    "of its own columns")
-                      : std::string()));
+  RunNumbering numbering =
+      engine::number_unknowns(model_, loads_, given_contact_, part_, hook_part_, options_, node_halo);
+  dofs_ = std::move(numbering.dofs);
+  contact_ = numbering.hook;
+  renumbered_contact_ = std::move(numbering.renumbered);
 }
 
 std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
@@ -181,24 +42,21 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   linear_ = std::make_unique<LinearSolve>(options_, stats_, log_);
   stats_.n_dofs = n;
   distributed_ = in_parts_ || shares_model();
-  cell_rank_.clear();
-  ghost_ = SparseMatrix();
-  ghost_nodes_.clear();
   {
     Stopwatch watch(stats_.assemble_seconds);
     std::vector<int> constrained = Constraints::held_equations(dofs_, loads_, *model_.mesh);
     layout_ = RankLayout();
-    free_halo_.reset();
     if (in_parts_) {
-      lay_out_parts(constrained, *node_halo);
+      layout_ = RankLayout::in_parts(*part_, numbered_part(), dofs_, *node_halo, constrained, contact_, log_);
+      stats_.n_dofs = static_cast<int>(layout_.unknown_numbers().n_global);
     } else if (distributed_) {
-      lay_out_shared();
+      layout_ = RankLayout::shared(model_, contact_, log_);
     } else if (parallel::size() > 1 && !options_.auto_solver && options_.solver == SolverKind::Mumps) {
       log_.info("model whole on each of the " + std::to_string(parallel::size()) +
                 " ranks, as asked: each rank assembles the whole system; MUMPS reads rank 0's copy and "
                 "factorises it across the ranks");
     }
-    elastic_tangent_ = make_elastic_tangent(model_, dofs_, distributed_ ? &owned_nodes_ : nullptr);
+    elastic_tangent_ = make_elastic_tangent(model_, dofs_, layout_.owned_nodes());
     tangent_ = given_tangent_ ? given_tangent_ : elastic_tangent_.get();
     matrix_.assemble(*tangent_, Vector::Zero(n), constrained, distributed_);
   }
@@ -238,80 +96,12 @@ std::vector<ResultStep> StaticSolver::step_through(const std::vector<double>& in
   return steps_;
 }
 
-std::vector<DirichletValue> owners_dirichlet(const MeshPart& numbered, const NodeHalo& node_halo,
-                                             const std::vector<DirichletValue>& dirichlet) {
-  // The part's loads miss the conditions of the hook's nodes beyond it (and of ghosts whose
-  // constrained faces it lacks): each node takes its owner's, who holds every one of its own.
-  // Per node and component: imposed or not, the value, the load (the last condition wins).
-  constexpr int kPer = 9;
-  std::vector<double> imposed(kPer * static_cast<size_t>(numbered.mesh.n_nodes()), 0.0);
-  for (const DirichletValue& d : dirichlet)
-    if (d.component >= 0 && d.component < 3) {
-      double* at = &imposed[kPer * static_cast<size_t>(d.node) + 3 * d.component];
-      at[0] = 1.0, at[1] = d.value, at[2] = d.load;
-    }
-  node_halo.copy_to_ghosts(imposed, kPer);
-  std::vector<DirichletValue> out;
-  for (int v = 0; v < numbered.mesh.n_nodes(); ++v)
-    for (int c = 0; c < 3; ++c) {
-      const double* at = &imposed[kPer * static_cast<size_t>(v) + 3 * c];
-      if (at[0] != 0.0) out.push_back({v, c, at[1], static_cast<int>(at[2])});
-    }
-  return out;
-}
-
 SystemLayout StaticSolver::system_layout(const Constraints& cons, const std::vector<int>& condensed,
                                          const std::vector<int>& eliminated) const {
-  const Mesh& mesh = *model_.mesh;
-  SystemLayout layout;
-  layout.dim = model_.dim;
-  for (int c : model_.volume_cells()) layout.quadratic = layout.quadratic || cell_info(mesh.cell_types[c]).order > 1;
-  layout.block.assign(cons.n_free, -1);
-  layout.component.assign(cons.n_free, 0);
-  std::vector<char> outside(cons.n_free, 0);
-  for (const std::vector<int>* rows : {&condensed, &eliminated})
-    for (int eq : *rows)
-      if (cons.free_index[eq] >= 0) outside[cons.free_index[eq]] = 1;
-  // In parts with whole contact surfaces the unknowns' nodes are the surfaces' part's.
-  const Mesh& nodes = in_parts_ ? numbered_part().mesh : mesh;
-  std::vector<int> block_of_node(nodes.n_nodes(), -1);
-  for (int eq = 0; eq < dofs_.n_dofs(); ++eq) {
-    const int k = cons.free_index[eq], c = dofs_.component_of(eq);
-    if (k < 0 || outside[k] || !is_displacement(c) || c >= layout.dim) continue;
-    const int node = dofs_.node_of(eq);
-    if (block_of_node[node] < 0) {
-      block_of_node[node] = layout.n_blocks();
-      for (int d = 0; d < layout.dim; ++d) layout.coords.push_back(nodes.node(node)[d]);
-    }
-    layout.block[k] = block_of_node[node];
-    layout.component[k] = c;
-  }
-  if (in_parts_) {
-    for (int eq = 0; eq < dofs_.n_dofs(); ++eq)
-      if (cons.free_index[eq] >= 0) layout.global.push_back(free_numbers_.global[eq]);
-    layout.first = free_numbers_.first;
-    layout.n_global = free_numbers_.n_global;
-    layout.n_owned = free_numbers_.n_owned;
-    // Node blocks for PETSc: every unknown's number (the owned nodes' dim unknowns in a row).
-    // Not with a hook's multipliers, which MUMPS alone solves in parts (run() refuses PETSc).
-    if (renumbered_contact_ == nullptr) {
-      for (int eq = 0; eq < dofs_.n_dofs(); ++eq)
-        if (cons.free_index[eq] >= 0) layout.row.push_back(unknown_numbers_.global[eq]);
-      layout.first_row = unknown_numbers_.first;
-      layout.n_rows = unknown_numbers_.n_global;
-      layout.n_owned_rows = unknown_numbers_.n_owned;
-      layout.row_coords.resize(unknown_numbers_.n_owned);
-      for (int eq = 0; eq < unknown_numbers_.n_owned; ++eq) {
-        LUNASTER_ASSERT(dofs_.component_of(eq) == eq % layout.dim, "in parts every node carries dim unknowns in order");
-        layout.row_coords[eq] = mesh.node(dofs_.node_of(eq))[dofs_.component_of(eq)];
-      }
-    }
-  } else if (distributed_) {
-    layout.owner.assign(cons.n_free, -1);
-    for (int eq = 0; eq < dofs_.n_dofs(); ++eq)
-      if (cons.free_index[eq] >= 0) layout.owner[cons.free_index[eq]] = node_owner_[dofs_.node_of(eq)];
-  }
-  return layout;
+  // In parts with whole contact surfaces the unknowns' nodes are the surfaces' part's; node
+  // blocks for PETSc not with a hook's multipliers, which MUMPS alone solves in parts.
+  return layout_.system_layout(model_, in_parts_ ? numbered_part().mesh : *model_.mesh, dofs_, cons, condensed,
+                               eliminated, renumbered_contact_ == nullptr);
 }
 
 bool StaticSolver::shares_model() const {
@@ -321,31 +111,13 @@ bool StaticSolver::shares_model() const {
   return (options_.solver == SolverKind::Mumps && options_.share_model) || options_.solver == SolverKind::Petsc;
 }
 
+Vector StaticSolver::stiffness_times(const Vector& u) const { return matrix_.times(u, layout_, k_ff_holder()); }
+
 Vector StaticSolver::internal_forces(const Vector& u) const {
   if (matrix_.constant()) return stiffness_times(u);
   Vector f = matrix_.internal_forces(u);
   layout_.complete(f);
   return f;
-}
-
-Vector StaticSolver::stiffness_times(const Vector& u) const {
-  const LinearSolver* holder = k_ff_holder();
-  // With K_ff in the backend, matrix_.elastic().times() gives the constrained columns' part only.
-  Vector ku = matrix_.elastic().times(u);
-  // In parts with K_ff in the backend, its product gives the owned rows whole: the ghosts'
-  // shares of the rest go to the owners first, the owners' sums to the ghosts last.
-  if (in_parts_ && holder) layout_.equation_halo().add_to_owners(ku.data(), 1);
-  else layout_.complete(ku);
-  if (holder) {
-    const int nf = static_cast<int>(matrix_.elastic().equation.size());
-    Vector u_free(nf), k_u_free;
-    for (int j = 0; j < nf; ++j) u_free[j] = u[matrix_.elastic().equation[j]];
-    const bool done = holder->multiply(u_free, k_u_free);
-    LUNASTER_ASSERT(done, "the backend holding K_ff gave no product");
-    for (int j = 0; j < nf; ++j) ku[matrix_.elastic().equation[j]] += k_u_free[j];
-    if (in_parts_) layout_.equation_halo().copy_to_ghosts(ku.data(), 1);
-  }
-  return ku;
 }
 
 SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err, double t) {
@@ -372,210 +144,18 @@ SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err
 /// the model. The terms of K' beyond K_RR are appended to `triplets` (as contact terms);
 /// `r_free` becomes r'. Returns the eliminated equations, whose rows and columns
 /// update_system replaces by a unit diagonal.
-SparseMatrix StaticSolver::gathered_columns(const std::vector<int>& nodes) const {
-  const int n = dofs_.n_dofs();
-  std::vector<char> mask(model_.mesh->n_nodes(), 0);
-  for (int v : nodes)
-    if (part_->owns(v)) mask[v] = 1;
-  const SparseMatrix mine = assemble_stiffness_matrix(model_, dofs_, &mask);
-  // Each column as its number across the ranks, its count, then (row's number, value) pairs
-  // (numbers below 2^53 travel exactly as doubles).
-  std::vector<double> packed;
-  for (int j = 0; j < static_cast<int>(mine.outerSize()); ++j) {
-    const Eigen::Index count = mine.outerIndexPtr()[j + 1] - mine.outerIndexPtr()[j];
-    if (count == 0) continue;
-    packed.push_back(static_cast<double>(unknown_numbers_.global[j]));
-    packed.push_back(static_cast<double>(count));
-    for (SparseMatrix::InnerIterator it(mine, j); it; ++it) {
-      packed.push_back(static_cast<double>(unknown_numbers_.global[it.row()]));
-      packed.push_back(it.value());
-    }
-  }
-  const std::vector<double> all = parallel::gather_all(packed);
-  std::unordered_map<long long, int> local;
-  local.reserve(static_cast<size_t>(n));
-  for (int eq = 0; eq < n; ++eq) local.emplace(unknown_numbers_.global[eq], eq);
-  std::vector<Triplet> t;
-  for (size_t at = 0; at < all.size();) {
-    const auto col = local.find(static_cast<long long>(all[at]));
-    const long long count = static_cast<long long>(all[at + 1]);
-    at += 2;
-    for (long long k = 0; k < count; ++k, at += 2) {
-      const auto row = local.find(static_cast<long long>(all[at]));
-      LUNASTER_ASSERT(col != local.end() && row != local.end(),
-                      "an eliminated unknown's stiffness column reaches an unknown this rank does not hold");
-      t.emplace_back(row->second, col->second, all[at + 1]);
-    }
-  }
-  SparseMatrix out(n, n);
-  out.setFromTriplets(t.begin(), t.end());
-  return out;
-}
-
-Constraints::ColumnSource StaticSolver::stiffness_columns(const Constraints& cons,
-                                                         const std::vector<Elimination>& relations) {
-  if (!distributed_) {
-    // Its constrained rows are left out: their residual is not solved for and no term of K'
-    // lies on them. So are zeros (the contact positions update_system added to K_ff's
-    // pattern): the fill, and with it the system's pattern, follows the relations.
-    return [this, &cons](int e, Constraints::Column& column) {
-      for (SparseMatrix::InnerIterator it(matrix_.elastic().ff, cons.free_index[e]); it; ++it)
-        if (it.value() != 0.0) column.emplace_back(matrix_.elastic().equation[it.row()], it.value());
-    };
-  }
-  // This rank holds only its own nodes' columns: the whole columns of the eliminated
-  // equations' nodes are computed (kept while the set of nodes holds), so that each rank gets
-  // the whole fill and keeps its own columns of it. A shared model: every rank assembles them.
-  // In parts: the owner of an eliminated unknown's node holds every cell around it, assembles
-  // the node's columns whole and every rank gets them; their rows are on every rank (the slave
-  // surfaces came with the cells around their nodes: with_whole_surfaces, layered).
-  std::vector<int> nodes;
-  for (const Elimination& e : relations) nodes.push_back(dofs_.node_of(e.eq));
-  std::sort(nodes.begin(), nodes.end());
-  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-  if (nodes != ghost_nodes_) {
-    if (in_parts_) {
-      ghost_ = gathered_columns(nodes);
-    } else {
-      std::vector<char> mask(model_.mesh->n_nodes(), 0);
-      for (int v : nodes) mask[v] = 1;
-      ghost_ = SparseMatrix();
-      ghost_ = assemble_stiffness_matrix(model_, dofs_, &mask);
-    }
-    ghost_nodes_ = std::move(nodes);
-  }
-  return [this, &cons](int e, Constraints::Column& column) {
-    for (SparseMatrix::InnerIterator it(ghost_, e); it; ++it)
-      if (cons.free_index[it.row()] >= 0) column.emplace_back(static_cast<int>(it.row()), it.value());
-  };
-}
-
-void StaticSolver::choose_interface(const Constraints& cons, const std::vector<Triplet>& contact) {
-  interface_use_ = -1;
-  // METHODE='AUTO' only: a deck that names its solver gets it. The dense Schur complement
-  // costs m^2 doubles and m^3/3 operations per contact pass: a small interface only, against
-  // a large interior (the 2D SSNP121 geometries).
-  constexpr int kMaxInterface = 2500, kInteriorPerInterface = 20;
-  if (!contact_ || !options_.auto_solver || options_.solver != SolverKind::Cholmod || distributed_ ||
-      !matrix_.constant())
-    return;
-  const std::vector<int> surface = contact_->surface_equations();
-  std::vector<int> eqs;
-  for (int eq : surface)
-    if (cons.free_index[eq] >= 0) eqs.push_back(cons.free_index[eq]);
-  interface_floor_ = 0.0;
-  interface_dense_share_ = 0.0;
-  if (eqs.size() > static_cast<std::size_t>(kMaxInterface) ||
-      static_cast<long>(eqs.size()) * kInteriorPerInterface > cons.n_free) {
-    // Too many for the whole surfaces (a 3D surface of a few hundred nodes: 4,263 equations
-    // on the CONTINUE 3D benchmark). The contact terms may reach fewer displacement
-    // components: one on an interface square to an axis (SSNP121's), whose other components
-    // then stay with the interior (1,715 equations on that benchmark): those that the
-    // pairing's normals reach, active or not (so also before any point is active), as the
-    // hook says. Terms below kNegligibleTerm of the largest count for nothing: a normal's
-    // round-off that the gaps do not already leave out (make_linear_gap drops components up
-    // to kNormalRoundOff). The dense factorisation must then cost at most kDenseShare of the
-    // reference's (factorize_interface_reference), and a term outside the interface, in this
-    // solve or a later one (a pairing that reaches another component), makes solve_instant
-    // give the interface solver up.
-    constexpr double kDenseShare = 0.5;
-    double largest = 0.0;
-    for (const Triplet& tr : contact) largest = std::max(largest, std::abs(tr.value()));
-    interface_floor_ = kNegligibleTerm * largest;
-    const std::array<bool, 3> reached = contact_->displacement_components();
-    if (!reached[0] && !reached[1] && !reached[2]) return;  // nothing paired
-    eqs.clear();
-    for (int eq : surface) {
-      const int c = dofs_.component_of(eq);
-      if (cons.free_index[eq] >= 0 && (!is_displacement(c) || reached[c])) eqs.push_back(cons.free_index[eq]);
-    }
-    if (eqs.size() > static_cast<std::size_t>(kMaxInterface)) return;
-    interface_dense_share_ = kDenseShare;
-  }
-  std::sort(eqs.begin(), eqs.end());
-  if (eqs.empty()) return;
-  // The reference is K_ff itself, which must store a diagonal on every interface equation. The
-  // multipliers' columns are empty and come last (their equations are numbered after every
-  // displacement): each gets a zero diagonal appended, in the storage K_ff already holds
-  // (split_matrix left it the constrained columns' room).
-  SparseMatrix& k = matrix_.elastic().ff;
-  const int nf = static_cast<int>(k.cols());
-  int first_empty = nf;
-  while (first_empty > 0 && k.outerIndexPtr()[first_empty] == k.outerIndexPtr()[first_empty - 1]) --first_empty;
-  for (int j : eqs) {
-    if (j >= first_empty) continue;
-    const int* rows = k.innerIndexPtr() + k.outerIndexPtr()[j];
-    const int* end = k.innerIndexPtr() + k.outerIndexPtr()[j + 1];
-    if (!std::binary_search(rows, end, j)) return;  // an interface equation without a diagonal entry
-  }
-  if (first_empty < nf) {
-    const int nnz = static_cast<int>(k.nonZeros());
-    k.resizeNonZeros(nnz + (nf - first_empty));
-    for (int j = first_empty; j < nf; ++j) {
-      k.innerIndexPtr()[nnz + (j - first_empty)] = j;
-      k.valuePtr()[nnz + (j - first_empty)] = 0.0;
-      k.outerIndexPtr()[j + 1] = nnz + (j - first_empty) + 1;
-    }
-  }
-  on_interface_.assign(cons.n_free, 0);
-  for (int j : eqs) on_interface_[j] = 1;
-  interface_ = make_interface_solver(std::move(eqs));
-  FactorSettings settings;  // the interface solver reads the singularity test alone
-  settings.singularity = options_.factor.singularity;
-  interface_->configure(settings);
-  interface_use_ = 1;
-}
-
-void StaticSolver::factorize_interface_reference() {
-  double seconds = 0.0;
-  {
-    Stopwatch watch(seconds);
-    const int m = static_cast<int>(interface_->interface().size());
-    try {
-      const bool taken = interface_->factorize_reference(matrix_.elastic().ff, interface_dense_share_);
-      if (const std::string analysis = interface_->analysis_note(); !analysis.empty() && analysis != analysis_logged_)
-        log_.debug("  " + analysis), analysis_logged_ = analysis;
-      if (taken) {
-        interface_reference_ = matrix_.generation();
-        interface_state_ = LinearSolve::FactorState{};
-        stats_.interface_equations = m;
-        ++stats_.factorisations;
-        log_.info("  elastic system factorised with the " + std::to_string(m) +
-                  " equations of the contact surfaces last: each contact pass factorises their Schur "
-                  "complement only");
-      } else {
-        interface_use_ = -1;
-        interface_.reset();
-        stats_.interface_equations = 0;
-        log_.info("  the " + std::to_string(m) +
-                  " equations of the contact surfaces are too many for a dense Schur complement against this "
-                  "elastic factorisation: each contact pass factorises the whole system");
-      }
-    } catch (const SolveError& err) {
-      if (err.out_of_memory()) throw;
-      interface_use_ = -1;
-      interface_.reset();
-      stats_.interface_equations = 0;
-      log_.info("  the elastic system alone is not positive definite (a body held by contact or linear relations "
-                "only): each contact pass factorises the whole system");
-    }
-  }
-  stats_.factorize_seconds += seconds;
-  stats_.assemble_seconds -= seconds;  // the caller times update_system as assembly
-}
-
 void StaticSolver::update_system(const Constraints& cons, const std::vector<Triplet>& contact,
                                  const std::vector<int>& condensed, const std::vector<int>& eliminated) {
   const long pattern_before = matrix_.pattern();
-  matrix_.begin(cons, dofs_, distributed_ ? &owned_nodes_ : nullptr);
+  matrix_.begin(cons, dofs_, layout_.owned_nodes());
   if (!contact_) {  // K_ff alone: nothing to copy, nothing to add
     LUNASTER_ASSERT(condensed.empty() && eliminated.empty() && contact.empty(), "no contact hook, no contact terms");
     matrix_.fill_alone();
   } else {
     const long version = contact_->pattern_version();
-    if (interface_use_ == 1 && interface_reference_ != matrix_.generation()) factorize_interface_reference();
-    if (interface_use_ == 1)
-      matrix_.fill_interface(cons, contact, condensed, version, interface_->interface(), on_interface_);
+    interface_.ensure_reference(matrix_.elastic().ff, matrix_.generation(), solve_log_.analysis_said());
+    if (interface_.active())
+      matrix_.fill_interface(cons, contact, condensed, version, interface_.equations(), interface_.on_interface());
     else
       matrix_.fill_whole(cons, contact, condensed, eliminated, version);
   }
@@ -589,11 +169,11 @@ void StaticSolver::solve_instant(double t, Vector& u) {
   in.cons = Constraints::at_instant(dofs_, loads_, t, *model_.mesh);
   if (in_parts_) in.cons.take_from_owners(layout_.equation_halo());
   in.cons.impose(u);
-  in.f_ext = external_forces(model_, dofs_, loads_, t, distributed_ ? &node_owner_ : nullptr,
+  in.f_ext = external_forces(model_, dofs_, loads_, t, distributed_ ? &layout_.node_owner() : nullptr,
                              in_parts_ ? &layout_.equation_halo() : nullptr);
-  stats_.n_free = std::max(stats_.n_free, in_parts_ ? static_cast<int>(free_numbers_.n_global) : in.cons.n_free);
+  stats_.n_free = std::max(stats_.n_free, static_cast<int>(layout_.global_free(in.cons.n_free)));
   // The entries this rank answers for in the norms: all of them, or in parts its owned ones.
-  in.owned_free = in_parts_ ? free_numbers_.n_owned : in.cons.n_free;
+  in.owned_free = layout_.owned_free(in.cons.n_free);
   if (contact_) {
     Stopwatch watch(stats_.contact_seconds);
     contact_->set_instant(t);
@@ -691,61 +271,38 @@ bool StaticSolver::converged_at(Instant& in, const Vector& u, int iter, Vector& 
   return true;
 }
 
-void StaticSolver::keep_interface_or_drop(const Constraints& cons, const std::vector<Triplet>& k_contact,
-                                          bool eliminations) {
-  if (interface_use_ == 0) choose_interface(cons, k_contact);
-  if (interface_use_ == 1 && eliminations) interface_use_ = -1, interface_.reset(), stats_.interface_equations = 0;
-  if (interface_use_ == 1)
-    for (const Triplet& tr : k_contact) {
-      const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
-      if (i >= 0 && j >= 0 && (!on_interface_[i] || !on_interface_[j]) && std::abs(tr.value()) > interface_floor_) {
-        log_.info("  a contact term outside the surfaces' equations: each contact pass factorises the whole system");
-        interface_use_ = -1, interface_.reset(), stats_.interface_equations = 0;
-        break;
-      }
-    }
-}
-
 void StaticSolver::check_bodies_held(const Instant& in, const SystemTerms& terms, SolverKind backend) {
   // With no contact point active, the bodies must be held by Dirichlet conditions (and
-  // relations) alone. Checked once, before any factorisation:
-  // - from the geometry, every backend and every rank of a shared model: a body that
-  //   some translation or rotation moves without moving a held equation (a free body under
-  //   MUMPS would otherwise be caught only when round-off left its null pivot a zero);
-  // - then, for what geometry does not see (a mechanism inside a body), by a Cholesky
-  //   factorisation of K_ff, for UMFPACK and MUMPS, which return some solution of a
-  //   singular but consistent system. CHOLMOD's own factorisation stops on such a system
-  //   (diagnosed below; a run told to go on past singular pivots is warned instead), the
-  //   interface solver's reference is that factorisation, an
-  //   iterative backend chosen because factorising does not fit skips it, and so does a
-  //   shared model, which would need the whole stiffness on one rank.
+  // relations) alone. Checked once, before any factorisation (FailureDiagnosis::check_held):
+  // from the geometry, except in parts (a part alone may look unheld); then by a Cholesky
+  // factorisation of K_ff for UMFPACK and MUMPS, which return some solution of a singular but
+  // consistent system. CHOLMOD's own factorisation stops on such a system (diagnosed; a run
+  // told to go on past singular pivots is warned instead), the interface solver's reference is
+  // that factorisation, an iterative backend chosen because factorising does not fit skips it,
+  // and so does a shared model, which would need the whole stiffness on one rank.
   if (rigid_checked_ || (contact_ && contact_->n_active() != 0)) return;
+  FailureDiagnosis::HeldCheck check;
   // Every unknown of a relation (the hook's and the eliminations'): counted as holding.
-  std::vector<int> related = contact_ ? contact_->related_equations() : std::vector<int>{};
-  // A body that only the hook's relations hold leaves K_ff singular, rightly: the
-  // mechanism check of K_ff alone is for runs whose every body the Dirichlet conditions hold.
-  const bool held_by_relations = !related.empty();
+  check.related = contact_ ? contact_->related_equations() : std::vector<int>{};
+  // A body that only the hook's relations hold leaves K_ff singular, rightly: the mechanism
+  // check of K_ff alone is for runs whose every body the Dirichlet conditions hold.
+  const bool held_by_relations = !check.related.empty();
   for (const Elimination& e : *terms.eliminated) {
-    related.push_back(e.eq);
-    for (const auto& term : e.terms) related.push_back(term.first);
+    check.related.push_back(e.eq);
+    for (const auto& term : e.terms) check.related.push_back(term.first);
   }
-  // Going on past a singular matrix was asked for: a body held by nothing is a warning.
-  const auto report = [this](const SolveError& rigid) {
-    if (options_.factor.singularity.stop) throw rigid;
-    log_.warning("going on as asked with a singular system: " + rigid.message());
-  };
-  // (Not in parts: a part alone may look unheld.)
-  const auto unheld =
-      in_parts_ ? std::optional<SolveError>() : find_unheld_body(model_, dofs_, in.cons.free_index, related, in.t);
-  if (unheld) report(*unheld);
-  if (!unheld && !held_by_relations && interface_use_ != 1 && backend != SolverKind::Cholmod &&
-      backend != SolverKind::Petsc && !distributed_ && options_.factor.singularity.digits >= 0) {
-    Stopwatch watch(stats_.assemble_seconds);
+  check.geometry = !in_parts_;
+  check.factorise = !held_by_relations && !interface_.active() && backend != SolverKind::Cholmod &&
+                    backend != SolverKind::Petsc && !distributed_ && options_.factor.singularity.digits >= 0;
+  const auto k_ff_alone = [&]() -> const SparseMatrix& {
     matrix_.restore();  // K_ff itself, without this iteration's terms
-    if (auto rigid = find_rigid_body_mode(model_, dofs_, in.cons.free_index, matrix_.elastic().ff, in.t,
-                                          options_.factor.singularity))
-      report(*rigid);
-    update_system(in.cons, *terms.contact, *terms.condensed, terms.eliminated_eqs);  // the terms again
+    return matrix_.elastic().ff;
+  };
+  {
+    Stopwatch watch(stats_.assemble_seconds);
+    const bool restored = FailureDiagnosis(model_, options_, contact_ != nullptr)
+                              .check_held(dofs_, in.cons.free_index, in.t, check, k_ff_alone, log_);
+    if (restored) update_system(in.cons, *terms.contact, *terms.condensed, terms.eliminated_eqs);  // the terms again
   }
   rigid_checked_ = true;
 }
@@ -766,16 +323,20 @@ void StaticSolver::newton_step(Instant& in, Vector& u, int iter, Vector& residua
   if (!terms.eliminated->empty()) {
     Stopwatch watch(stats_.assemble_seconds);
     terms.eliminated_eqs =
-        cons.eliminate(*terms.eliminated, stiffness_columns(cons, *terms.eliminated), residual, k_contact, r_free);
+        cons.eliminate(*terms.eliminated, matrix_.columns(cons, *terms.eliminated, layout_, model_, dofs_, part_),
+                        residual, k_contact, r_free);
   }
   if (distributed_) {
     // The hook built the terms of the points that touch this rank's columns, which also
     // reach other ranks' columns: this rank keeps its own.
     k_contact.erase(std::remove_if(k_contact.begin(), k_contact.end(),
-                                   [this](const Triplet& tr) { return !owned_nodes_[dofs_.node_of(tr.col())]; }),
+                                   [this](const Triplet& tr) { return !(*layout_.owned_nodes())[dofs_.node_of(tr.col())]; }),
                     k_contact.end());
   }
-  keep_interface_or_drop(cons, k_contact, !terms.eliminated_eqs.empty());
+  if (contact_)
+    interface_.decide(cons, k_contact, !terms.eliminated_eqs.empty(), *contact_, dofs_, matrix_.elastic().ff,
+                      options_.auto_solver && options_.solver == SolverKind::Cholmod && !distributed_ &&
+                          matrix_.constant());
   {
     Stopwatch watch(stats_.assemble_seconds);
     update_system(cons, k_contact, *terms.condensed, terms.eliminated_eqs);
@@ -791,7 +352,7 @@ void StaticSolver::newton_step(Instant& in, Vector& u, int iter, Vector& residua
   // (then it is SPD), and says which kind of matrix is left.
   const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
   // (The interface solver is CHOLMOD's factorisation of K_ff: no other backend is chosen.)
-  const SolverKind backend = interface_use_ == 1 ? SolverKind::Cholmod : choose_backend(kind);
+  const SolverKind backend = interface_.active() ? SolverKind::Cholmod : choose_backend(kind);
   check_bodies_held(in, terms, backend);
   // The contact terms are in the system's storage now: their triplets (5.5e6 of them, 88 MB,
   // on the refined mortar case) go before the factorisation or the preconditioner is built.
@@ -800,7 +361,7 @@ void StaticSolver::newton_step(Instant& in, Vector& u, int iter, Vector& residua
   for (int eq : *terms.condensed)
     if (cons.free_index[eq] >= 0) r_free[cons.free_index[eq]] = 0.0;
   RefinedSolve accuracy;
-  const Vector du = solve_system(in, iter, kind, backend, terms, r_free, accuracy);
+  Vector du = solve_system(in, iter, kind, backend, terms, r_free, accuracy);
   apply_increment(in, du, accuracy, terms, residual, u);
 }
 
@@ -808,7 +369,7 @@ Vector StaticSolver::solve_system(const Instant& in, int iter, MatrixKind kind, 
                                   const SystemTerms& terms, const Vector& r_free, RefinedSolve& accuracy) {
   const Constraints& cons = in.cons;
   const SparseMatrix& a = matrix_.matrix();
-  const bool via_interface = interface_use_ == 1;
+  const bool via_interface = interface_.active();
   const bool a_is_k_ff = !contact_ && &a == &matrix_.elastic().ff;
   // In parts, the residuals of a solve are measured on the owned entries over the ranks.
   const int n_owned_free = in.owned_free;
@@ -843,9 +404,11 @@ Vector StaticSolver::solve_system(const Instant& in, int iter, MatrixKind kind, 
       options_.observe_factorisation(m, k, matrix_.elastic().equation);
     };
   system.diagnose = [this, &in](const SolveError& err) { return diagnose(in.cons, err, in.t); };
-  const LinearSolve::Events events = [this, &in](const LinearSolve::Event& e) { say(e, in); };
-  LinearSolver& solver = via_interface ? *interface_ : linear_->backend(backend, events);
-  LinearSolve::FactorState& state = via_interface ? interface_state_ : linear_->state(backend);
+  SolveLog::Where where{in.t, model_.mesh, &dofs_, &cons.free_index,
+                        via_interface ? static_cast<int>(interface_.equations().size()) : 0};
+  const LinearSolve::Events events = [this, &where](const LinearSolve::Event& e) { solve_log_.event(e, where); };
+  LinearSolver& solver = via_interface ? interface_.solver() : linear_->backend(backend, events);
+  LinearSolve::FactorState& state = via_interface ? interface_.state() : linear_->state(backend);
   return linear_->solve(solver, state, backend, system, -r_free, events, accuracy);
 }
 
@@ -863,9 +426,9 @@ MatrixProduct StaticSolver::system_product(const SparseMatrix& a, bool a_is_k_ff
       // entries are complete once the ranks' shares are summed into them.
       if (holder && holder->multiply(x, y)) return y;
       Vector whole_x = x;
-      free_halo_->copy_to_ghosts(whole_x.data(), 1);
+      layout_.free_halo().copy_to_ghosts(whole_x.data(), 1);
       y = a * whole_x;
-      free_halo_->add_to_owners(y.data(), 1);
+      layout_.free_halo().add_to_owners(y.data(), 1);
       return y;
     }
     if (holder && holder->multiply(x, y)) return y;
@@ -876,11 +439,11 @@ MatrixProduct StaticSolver::system_product(const SparseMatrix& a, bool a_is_k_ff
   };
 }
 
-void StaticSolver::apply_increment(Instant& in, Vector du, const RefinedSolve& accuracy, const SystemTerms& terms,
+void StaticSolver::apply_increment(Instant& in, Vector& du, const RefinedSolve& accuracy, const SystemTerms& terms,
                                    Vector& residual, Vector& u) {
   const Constraints& cons = in.cons;
   const int n = dofs_.n_dofs();
-  if (in_parts_) free_halo_->copy_to_ghosts(du.data(), 1);  // the solve gave the owned values
+  if (in_parts_) layout_.free_halo().copy_to_ghosts(du.data(), 1);  // the solve gave the owned values
   for (int eq = 0; eq < n; ++eq)
     if (cons.free_index[eq] >= 0) u[eq] += du[cons.free_index[eq]];
   // Without contact or relations the residual is linear in u, and neither f nor u_C move
@@ -908,97 +471,8 @@ void StaticSolver::apply_increment(Instant& in, Vector du, const RefinedSolve& a
 
 SolverKind StaticSolver::choose_backend(MatrixKind kind) {
   const LinearSolve::Backend chosen = linear_->choose(kind, stats_.n_free, model_.dim, distributed_);
-  using Note = LinearSolve::BackendNote;
-  const std::string fallback = chosen.fallback == SolverKind::Umfpack ? "UMFPACK" : "MUMPS";
-  switch (chosen.note) {
-    case Note::None: break;
-    case Note::AutoIterative:
-    case Note::AutoMumps:
-      log_.info("solver chosen automatically: " +
-                std::string(chosen.note == Note::AutoIterative
-                                ? "PETSc CG + BoomerAMG (relative residual 1e-12, MUMPS if it does not converge)"
-                                : "MUMPS") +
-                " for a 3D system of " + std::to_string(stats_.n_free) +
-                " unknowns (a factorisation fills too much at this size)");
-      break;
-    case Note::SaddleSchur:
-    case Note::Umfpack:
-    case Note::Mumps:
-      log_.info(std::string("CHOLMOD cannot factorise ") +
-                (kind == MatrixKind::SymmetricIndefinite ? "an indefinite" : "a non-symmetric") +
-                (chosen.note == Note::SaddleSchur
-                     ? " system; CHOLMOD factorises the Schur complement of its multipliers and GMRES solves it (" +
-                           fallback + " if that gives way)"
-                 : chosen.note == Note::Umfpack ? " system; using UMFPACK (MUMPS from 10000 unknowns)"
-                                                : " system; using MUMPS"));
-      break;
-  }
+  solve_log_.backend(chosen, kind, stats_.n_free);
   return chosen.kind;
-}
-
-void StaticSolver::say(const LinearSolve::Event& e, const Instant& in) {
-  using W = LinearSolve::Event::What;
-  const std::string its = std::to_string(e.iterations);
-  switch (e.what) {
-    case W::SinglePrecision:
-      log_.info("  linear solver: MUMPS in single precision, each solve refined in double precision");
-      break;
-    case W::FactorsReused:
-      log_.info("         (factorisation of iteration " + std::to_string(e.iteration) + " reused)");
-      break;
-    case W::KrylovOnPrevious:
-      if (e.converged)
-        log_.info("  linear solve: previous factorisation as preconditioner, " + its +
-                  " GMRES iteration(s), relative residual " + sci(e.residual));
-      else
-        log_.info("  linear solve: " + its + " GMRES iteration(s) with the previous factorisation did not converge "
-                  "(relative residual " + sci(e.residual) + "); refactorising");
-      break;
-    case W::Factorised: say_factorisation(*e.solver, in); break;
-    case W::SameMatrix:
-      log_.info(options_.elastic_matrix ? std::string("         (factorisation of the elastic matrix reused)")
-                : e.solver->iterative() ? std::string("         (same matrix as the last solve: preconditioner reused)")
-                                        : std::string("         (same matrix as the last factorisation: factors reused)"));
-      break;
-    case W::IterativeSolved:
-    case W::DirectIterated:
-      log_.info("  linear solve: " + e.solver->name() + ", " + its + " iteration(s), relative residual " +
-                sci(e.residual));
-      break;
-  }
-}
-
-void StaticSolver::say_factorisation(const LinearSolver& solver, const Instant& in) {
-  // A singular matrix that the run goes past, as asked: said once for each instant and
-  // pivot (the Newton iterations and contact passes of an instant refactorise it alike).
-  if (const std::string note = solver.singular_note(); !note.empty()) {
-    std::string where;
-    if (const int column = solver.singular_column(); column >= 0)
-      for (int eq = 0; eq < dofs_.n_dofs() && where.empty(); ++eq)
-        if (in.cons.free_index[eq] == column) where = " at " + describe_equation(*model_.mesh, dofs_, eq);
-    const std::string said = "singular matrix at instant " + sci(in.t) + where;
-    if (said != singular_said_) log_.warning(said + ", going on as asked: " + solver.name() + ": " + note);
-    singular_said_ = said;
-  }
-  // What an asked-for ordering and out-of-core factors came to, said once while it holds.
-  const auto say_once = [this](const std::string& line, std::string& said) {
-    if (line != said) log_.info(line);
-    said = line;
-  };
-  if (options_.factor.ordering != FactorOrdering::Auto)
-    say_once("  " + solver.name() + " ordering: " + solver.ordering_used(), ordering_logged_);
-  if (const std::string f = solver.factorisation_used(); !f.empty())
-    say_once("  " + solver.name() + " factorisation: " + f, factorisation_logged_);
-  if (const std::string analysis = solver.analysis_note(); !analysis.empty() && analysis != analysis_logged_)
-    log_.debug("  " + analysis);
-  analysis_logged_ = solver.analysis_note();
-  if (const std::string memory = solver.memory_used(); !memory.empty())
-    say_once("  " + solver.name() + " factors: " + memory, memory_logged_);
-  if (const std::string approximate = solver.approximation_note(); !approximate.empty())
-    say_once("  " + solver.name() + ": " + approximate, approximation_logged_);
-  if (interface_use_ == 1)
-    log_.info("  linear solve: Schur complement of the " + std::to_string(interface_->interface().size()) +
-              " surface equations factorised on the kept elastic factorisation");
 }
 
 }  // namespace lunaster::engine

@@ -19,9 +19,12 @@
 #include "engine/nonlinear/constraints.hpp"
 #include "engine/nonlinear/contact_hook.hpp"
 #include "engine/nonlinear/convergence_test.hpp"
+#include "engine/nonlinear/interface_policy.hpp"
 #include "engine/nonlinear/linear_solve.hpp"
+#include "engine/nonlinear/solve_log.hpp"
 #include "engine/nonlinear/loads.hpp"
 #include "engine/nonlinear/newton_options.hpp"
+#include "engine/nonlinear/numbering.hpp"
 #include "engine/nonlinear/reduction.hpp"
 #include "engine/nonlinear/step_results.hpp"
 #include "engine/nonlinear/system_matrix.hpp"
@@ -37,13 +40,6 @@ namespace lunaster::engine {
 /// the failure are available through `converged_steps()`.
 class StepResults;
 
-/// On a mesh in parts: the Dirichlet conditions on the nodes of `numbered` (a part with nodes
-/// beyond it: a hook's, StaticSolver::set_part), each node's as its owner has them (value and
-/// load of the last condition on each component, as the driver imposes it). `dirichlet`
-/// are this rank's conditions on its part's nodes (numbered's first nodes); `node_halo` is
-/// numbered's. Collective.
-std::vector<DirichletValue> owners_dirichlet(const MeshPart& numbered, const NodeHalo& node_halo,
-                                             const std::vector<DirichletValue>& dirichlet);
 
 class StaticSolver {
  public:
@@ -56,7 +52,7 @@ class StaticSolver {
   const SolverStats& stats() const { return stats_; }
   /// With a model shared among the ranks: per mesh cell, the rank whose volume cell it is
   /// (-1 for other cells), for post-processing where the cells live; empty otherwise.
-  const std::vector<int>& cell_ranks() const { return cell_rank_; }
+  const std::vector<int>& cell_ranks() const { return layout_.cell_rank(); }
   /// Runs the next `run` on this rank's part of a mesh in parts (docs/distributed-model.md,
   /// step 3): the model and the loads are on `part->mesh`, every rank of `part` calls `run`
   /// (collective). Each rank assembles its own nodes' columns, the Dirichlet conditions of its
@@ -105,9 +101,6 @@ class StaticSolver {
   /// what a mesh in parts does not do (DeckError with a typed Failure). `node_halo`: in parts,
   /// the part's node exchanges.
   void number_unknowns(std::optional<NodeHalo>& node_halo);
-  /// The layout of a mesh in parts (constrained: the owners' set on return) or a shared model.
-  void lay_out_parts(std::vector<int>& constrained, const NodeHalo& node_halo);
-  void lay_out_shared();
   /// The instants in turn from u = 0, subdivided on failure (TimeStepper); the steps' results.
   std::vector<ResultStep> step_through(const std::vector<double>& instants);
   /// Newton (+ contact loops) at instant t starting from u; throws on failure.
@@ -120,8 +113,6 @@ class StaticSolver {
   /// One Newton step: the system, its solve, u updated.
   void newton_step(Instant& in, Vector& u, int iter, Vector& residual, Vector& r_free,
                    std::vector<Triplet>& k_contact);
-  /// The interface solver kept, chosen, or given up for this iteration's terms.
-  void keep_interface_or_drop(const Constraints& cons, const std::vector<Triplet>& k_contact, bool eliminations);
   /// With no contact point active, the check (once per run) that something holds every body.
   void check_bodies_held(const Instant& in, const SystemTerms& terms, SolverKind backend);
   /// The linear solve of this iteration's system (linear_), worded in the log.
@@ -130,13 +121,10 @@ class StaticSolver {
   /// A x for the system a (collective when shared or in parts).
   MatrixProduct system_product(const SparseMatrix& a, bool a_is_k_ff) const;
   /// u += du (and the eliminated and condensed unknowns), the next residual carried when it can be.
-  void apply_increment(Instant& in, Vector du, const RefinedSolve& accuracy, const SystemTerms& terms,
+  void apply_increment(Instant& in, Vector& du, const RefinedSolve& accuracy, const SystemTerms& terms,
                        Vector& residual, Vector& u);
   /// The backend for this kind of system (linear_), its choice said once in the log.
   SolverKind choose_backend(MatrixKind kind);
-  /// The log's words for what the linear solve did.
-  void say(const LinearSolve::Event& e, const Instant& in);
-  void say_factorisation(const LinearSolver& solver, const Instant& in);
   /// The backend that holds K_ff (handed over, no copy kept here), or null.
   const LinearSolver* k_ff_holder() const { return linear_ ? linear_->holder() : nullptr; }
   /// The system of this iteration in matrix_: K_ff with the contact terms, condensed and
@@ -146,13 +134,6 @@ class StaticSolver {
   /// PETSc factorise on all of them).
   void update_system(const Constraints& cons, const std::vector<Triplet>& contact, const std::vector<int>& condensed,
                      const std::vector<int>& eliminated);
-  /// In parts: the stiffness columns of `nodes`' unknowns, whole, on every rank (each assembled
-  /// by the node's owner; in this rank's numbering). Collective.
-  SparseMatrix gathered_columns(const std::vector<int>& nodes) const;
-  /// The columns of the stiffness at the eliminated equations, for Constraints::eliminate (valid
-  /// while cons and this iteration's relations are). Collective in parts.
-  std::function<void(int, std::vector<std::pair<int, double>>&)> stiffness_columns(
-      const Constraints& cons, const std::vector<Elimination>& relations);
   /// The node blocks of the system's equations (condensed and eliminated equations left
   /// out): what algebraic multigrid aggregates, with the coordinates of its rigid-body modes.
   SystemLayout system_layout(const Constraints& cons, const std::vector<int>& condensed,
@@ -178,23 +159,18 @@ class StaticSolver {
   /// The model shared among the ranks of an MPI run (several ranks, a backend named by the
   /// deck that takes a distributed system: MUMPS unless told not to share, or PETSc). The
   /// volume cells are partitioned (Scotch); each rank assembles the complete columns of the nodes it owns
-  /// (owned_nodes_), so elastic_ and the system hold only those, and products with them are
+  /// (RankLayout::owned_nodes), so K and the system hold only those, and products with them are
   /// summed over the ranks. The contact hook shares its pairing among the ranks and builds
   /// the terms of the points touching this rank's columns (share_among_ranks); each rank
   /// keeps the terms of its own columns. Pressures and nodal forces are computed by the rank
   /// of their node and summed. Everything else (mesh, vectors, results) is whole on every rank.
   bool distributed_ = false;
-  /// With a shared model and contact eliminations: the whole columns of K at the eliminated
-  /// equations' nodes (every rank computes them, a band along the contact surface), for the
-  /// nodes in ghost_nodes_.
-  SparseMatrix ghost_;
-  std::vector<int> ghost_nodes_;
   /// A mesh in parts (set_part), and in_parts_ while a run is on it: distributed_ too, but the
   /// vectors are the part's (owned unknowns first, then the ghosts'); what the shared model sums
   /// over the ranks goes to the owners and back to the ghosts through equation_halo_, the norms
   /// are over the owned entries and then over the ranks, and the system's equations (its free
-  /// unknowns, the same order) are numbered across the ranks by free_numbers_ and exchanged
-  /// through free_halo_.
+  /// unknowns, the same order) are numbered across the ranks by the layout's free
+  /// numbers and exchanged through its free halo.
   const MeshPart* part_ = nullptr;
   const MeshPart* hook_part_ = nullptr;  ///< part_ with the hook's nodes (set_part), or null
   /// In parts: the part whose nodes the unknowns are on (hook_part_ when given, else part_).
@@ -202,46 +178,12 @@ class StaticSolver {
   bool in_parts_ = false;
   /// What differs between a run on one process, a shared model and a mesh in parts.
   RankLayout layout_;
-  std::unique_ptr<Halo> free_halo_;
-  GlobalDofs free_numbers_;
-  GlobalDofs unknown_numbers_;  ///< every unknown of the part, numbered across the ranks (PETSc's rows)
-  std::vector<int> node_owner_;
-  std::vector<char> owned_nodes_;
-  std::vector<int> cell_rank_;  ///< see cell_ranks()
   /// The linear solve of the run: backends, their factorisations, refinement (one per run).
   std::unique_ptr<LinearSolve> linear_;
   /// The convergence test of the run (made once the stiffness's scale is known).
   std::unique_ptr<ConvergenceTest> convergence_;
-  /// Contact passes on the elastic factorisation kept for the run (InterfaceSolver): with
-  /// METHODE='AUTO', a contact hook that names its surface equations, no eliminations and a
-  /// small interface, each contact pass factorises only the interface's dense Schur
-  /// complement. interface_use_: 0 not decided yet, 1 used, -1 not (decided at the first solve).
-  std::unique_ptr<InterfaceSolver> interface_;
-  int interface_use_ = 0;
-  std::string ordering_logged_;  ///< the last ordering line of the log (an ordering asked for)
-  std::string factorisation_logged_;  ///< the last factorisation line of the log (one asked for)
-  std::string memory_logged_;    ///< the last line of the log on where the factors are
-  std::string approximation_logged_;  ///< the last line of the log on the filtering and compression asked for
-  std::string analysis_logged_;  ///< the last symbolic analysis said in the log (verbosity 2)
-  long interface_reference_ = -1;  ///< elastic generation of the factorised reference
-  LinearSolve::FactorState interface_state_;
-  std::vector<char> on_interface_;  ///< per free equation: on the interface
-  /// With an interface of the components the contact terms reach (choose_interface): terms
-  /// at most this large count for nothing when it is chosen and checked (kNegligibleTerm of
-  /// the largest term of the first contact solve), and the share of the reference's
-  /// factorisation its dense one may cost. Both 0 with the whole surfaces.
-  double interface_floor_ = 0.0;
-  double interface_dense_share_ = 0.0;
-  static constexpr double kNegligibleTerm = 1e-12;
-  /// Decides interface_use_ for this run (first contact solve), from the contact terms of
-  /// that solve (`contact`).
-  void choose_interface(const Constraints& cons, const std::vector<Triplet>& contact);
-  /// Factorises the interface solver's reference from K_ff (once per run); on failure the
-  /// interface solver is dropped and the whole system is solved from then on.
-  void factorize_interface_reference();
   double k_scale_ = 0.0;
   bool rigid_checked_ = false;  ///< elastic part proven free of rigid-body modes
-  std::string singular_said_;   ///< the last singular matrix the run went past, as the log said it
 
   const FeModel& model_;
   const MechanicalLoads& loads_;
@@ -255,6 +197,11 @@ class StaticSolver {
   std::vector<ResultStep> steps_;
   std::unique_ptr<StepResults> results_;  ///< the fields of each step, for the run
   SolverStats stats_;
+  // (After the members they borrow, which are initialised first.)
+  /// Contact passes on the elastic factorisation kept for the run (the interface policy).
+  InterfacePolicy interface_{options_, stats_, log_};
+  /// The log's words for what the linear solve did.
+  SolveLog solve_log_{log_, options_};
 };
 
 }  // namespace lunaster::engine

@@ -6,6 +6,7 @@
 #include "engine/core/error.hpp"
 #include "engine/core/memory.hpp"
 #include "engine/core/two_workers.hpp"
+#include "engine/assembly/assembly.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 
 namespace lunaster::engine {
@@ -65,6 +66,8 @@ void locate_triplets(const SparseMatrix& a, const std::vector<int>& free_index, 
 
 void SystemMatrix::clear() {
   cache_ = Cache{};
+  ghost_ = SparseMatrix();
+  ghost_nodes_.clear();
   elastic_.ff = SparseMatrix();  // the previous run's matrices go before new ones are built
   elastic_.c = SparseMatrix();
 }
@@ -90,6 +93,7 @@ bool SystemMatrix::refresh(const Vector& u) {
   ++cache_.elastic_generation;
   cache_.contact_version = -3;
   cache_.contact_only.clear();
+  ghost_nodes_.clear();  // the columns at the eliminated equations' nodes, K's of before
   return true;
 }
 
@@ -97,6 +101,64 @@ Vector SystemMatrix::internal_forces(const Vector& u) const {
   Vector f;
   tangent_->assemble(u, nullptr, &f);
   return f;
+}
+
+Vector SystemMatrix::times(const Vector& u, const RankLayout& layout, const LinearSolver* holder) const {
+  // With K_ff in the backend, elastic_.times() gives the constrained columns' part only.
+  Vector ku = elastic_.times(u);
+  // In parts with K_ff in the backend, its product gives the owned rows whole: the ghosts'
+  // shares of the rest go to the owners first, the owners' sums to the ghosts last.
+  if (layout.in_parts() && holder) layout.equation_halo().add_to_owners(ku.data(), 1);
+  else layout.complete(ku);
+  if (holder) {
+    const int nf = static_cast<int>(elastic_.equation.size());
+    Vector u_free(nf), k_u_free;
+    for (int j = 0; j < nf; ++j) u_free[j] = u[elastic_.equation[j]];
+    const bool done = holder->multiply(u_free, k_u_free);
+    LUNASTER_ASSERT(done, "the backend holding K_ff gave no product");
+    for (int j = 0; j < nf; ++j) ku[elastic_.equation[j]] += k_u_free[j];
+    if (layout.in_parts()) layout.equation_halo().copy_to_ghosts(ku.data(), 1);
+  }
+  return ku;
+}
+
+Constraints::ColumnSource SystemMatrix::columns(const Constraints& cons, const std::vector<Elimination>& relations,
+                                               const RankLayout& layout, const FeModel& model, const DofMap& dofs,
+                                               const MeshPart* part) {
+  if (layout.kind() == RankLayout::Kind::Whole) {
+    // Its constrained rows are left out: their residual is not solved for and no term of K'
+    // lies on them. So are zeros (the contact positions update_system added to K_ff's
+    // pattern): the fill, and with it the system's pattern, follows the relations.
+    return [this, &cons](int e, Constraints::Column& column) {
+      for (SparseMatrix::InnerIterator it(elastic_.ff, cons.free_index[e]); it; ++it)
+        if (it.value() != 0.0) column.emplace_back(elastic_.equation[it.row()], it.value());
+    };
+  }
+  // This rank holds only its own nodes' columns: the whole columns of the eliminated
+  // equations' nodes are computed (kept while the set of nodes holds), so that each rank gets
+  // the whole fill and keeps its own columns of it. A shared model: every rank assembles them.
+  // In parts: the owner of an eliminated unknown's node holds every cell around it, assembles
+  // the node's columns whole and every rank gets them; their rows are on every rank (the slave
+  // surfaces came with the cells around their nodes: with_whole_surfaces, layered).
+  std::vector<int> nodes;
+  for (const Elimination& e : relations) nodes.push_back(dofs.node_of(e.eq));
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  if (nodes != ghost_nodes_) {
+    if (layout.in_parts()) {
+      ghost_ = layout.gathered_columns(model, dofs, *part, nodes);
+    } else {
+      std::vector<char> mask(model.mesh->n_nodes(), 0);
+      for (int v : nodes) mask[v] = 1;
+      ghost_ = SparseMatrix();
+      ghost_ = assemble_stiffness_matrix(model, dofs, &mask);
+    }
+    ghost_nodes_ = std::move(nodes);
+  }
+  return [this, &cons](int e, Constraints::Column& column) {
+    for (SparseMatrix::InnerIterator it(ghost_, e); it; ++it)
+      if (cons.free_index[it.row()] >= 0) column.emplace_back(static_cast<int>(it.row()), it.value());
+  };
 }
 
 void SystemMatrix::begin(const Constraints& cons, const DofMap& dofs, const std::vector<char>* owned_nodes) {

@@ -10,6 +10,7 @@
 
 #include "engine/assembly/dof_map.hpp"
 #include "engine/nonlinear/constraints.hpp"
+#include "engine/nonlinear/rank_layout.hpp"
 #include "engine/nonlinear/reduction.hpp"
 #include "engine/nonlinear/tangent_source.hpp"
 #include "engine/solver/linear_solver.hpp"
@@ -36,6 +37,18 @@ class SystemMatrix {
   /// updates (or after restore) ff is K_ff itself.
   SplitMatrix& elastic() { return elastic_; }
   const SplitMatrix& elastic() const { return elastic_; }
+
+  /// K u over the whole numbering, made whole over the ranks as `layout` lays the run out;
+  /// `holder`: the backend K_ff was handed to (its product gives K_ff's part), or null.
+  /// Collective unless the run is whole.
+  Vector times(const Vector& u, const RankLayout& layout, const LinearSolver* holder) const;
+  /// The columns of K at the eliminated equations, for Constraints::eliminate (valid while cons
+  /// is): from K_ff when this rank holds it whole, else the whole columns of the eliminated
+  /// equations' nodes, assembled here (shared model) or gathered from their owners (in parts,
+  /// `part`), kept while the set of nodes holds. Collective unless the run is whole.
+  Constraints::ColumnSource columns(const Constraints& cons, const std::vector<Elimination>& relations,
+                                    const RankLayout& layout, const FeModel& model, const DofMap& dofs,
+                                    const MeshPart* part);
 
   /// Starts an iteration's system: K_ff restored, the Dirichlet set taken (a new one: a new
   /// generation of K_ff), per free equation whether this rank holds its column (`owned_nodes`
@@ -110,6 +123,10 @@ class SystemMatrix {
   bool distributed_ = false;
   SplitMatrix elastic_;
   Cache cache_;
+  /// With eliminations on a shared model or in parts: the whole columns of K at the eliminated
+  /// equations' nodes (ghost_nodes_), kept while that set of nodes holds.
+  SparseMatrix ghost_;
+  std::vector<int> ghost_nodes_;
 };
 
 }  // namespace lunaster::engine

@@ -4,18 +4,9 @@
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "engine/nonlinear/sci.hpp"
 
 namespace lunaster::engine {
-
-namespace {
-
-std::string sci(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6e", v);
-  return buf;
-}
-
-}  // namespace
 
 void TimeStepper::advance(double t0, double t1, int level, Vector& u, const Solve& solve,
                           const Commit& commit) const {
