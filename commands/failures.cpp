@@ -126,6 +126,16 @@ void say_in_keywords(Error& err) {
       }
       break;
     }
+    case Failure::What::PartsBackend:
+      message = "on a mesh in parts MUMPS or PETSc solves (SOLVEUR=_F{METHODE='MUMPS'} or 'PETSC'), not " +
+                std::string(f.count == 1 ? "METHODE='AUTO'" : "a solver of one process");
+      break;
+    case Failure::What::PartsMultipliers:
+      message = "contact or linear relations with multipliers (LAGS_C, LAGR_DX..) on a mesh in parts are solved by "
+                "MUMPS, not PETSc";
+      hints = {"SOLVEUR=_F{ METHODE = 'MUMPS' }, or no multipliers: contact by the discrete formulation's "
+               "PENALISATION or by mortar (DEFI_CONT), linear relations with SOLVEUR ELIM_LAGR = 'OUI'"};
+      break;
     case Failure::What::NotAMedFile:
       for (auto& h : hints)
         if (h.rfind("this reader reads MED files", 0) == 0) h = "LIRE_MAILLAGE reads MED files; use FORMAT='GMSH' for .msh";

@@ -36,6 +36,8 @@ struct Failure {
     NotAMedFile,          ///< a mesh file that is not MED
     IterativeSolve,       ///< an iterative linear solver that did not converge or cannot precondition this system
     NotInParts,           ///< a linear solver's option that a mesh in parts cannot take
+    PartsBackend,         ///< a run in parts with a backend that does not solve in parts (`count` 1: the automatic choice)
+    PartsMultipliers,     ///< a run in parts with multipliers and a backend that does not solve such a system
   };
   What what = What::Unspecified;
   int limit = 0;

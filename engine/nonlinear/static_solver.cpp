@@ -1,165 +1,19 @@
 #include "engine/nonlinear/static_solver.hpp"
 
-#include <chrono>
-#include <cmath>
 #include <algorithm>
-#include <array>
-#include <cstdint>
+#include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <limits>
-#include <unordered_map>
-#include <map>
-#include <memory>
 #include <optional>
 
-#include "engine/assembly/assembly.hpp"
-#include "engine/assembly/equation_name.hpp"
-#include "engine/assembly/partition.hpp"
 #include "engine/core/error.hpp"
-#include "engine/core/memory.hpp"
-#include "engine/core/two_workers.hpp"
+#include "engine/nonlinear/failure_diagnosis.hpp"
 #include "engine/nonlinear/nodal_forces.hpp"
-#include "engine/nonlinear/renumbered_hook.hpp"
-#include "engine/nonlinear/rigid_body.hpp"
+#include "engine/nonlinear/sci.hpp"
+#include "engine/nonlinear/stopwatch.hpp"
+#include "engine/nonlinear/time_stepper.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
-#include "engine/solver/backends.hpp"
-#include "engine/solver/krylov.hpp"
-#include "engine/solver/saddle_solver.hpp"
 
 namespace lunaster::engine {
-
-/// Dirichlet conditions at one instant, applied by elimination.
-struct Constraints {
-  std::vector<int> free_index;   ///< per equation: index in the reduced system, -1 if constrained
-  std::vector<int> constrained;  ///< constrained equations
-  std::vector<double> values;    ///< imposed value per constrained equation
-  int n_free = 0;
-};
-
-namespace {
-
-/// Adds the wall time of its scope to a SolverStats counter.
-class Stopwatch {
- public:
-  explicit Stopwatch(double& seconds) : seconds_(seconds), t0_(std::chrono::steady_clock::now()) {}
-  ~Stopwatch() { seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count(); }
-  Stopwatch(const Stopwatch&) = delete;
-  Stopwatch& operator=(const Stopwatch&) = delete;
-
- private:
-  double& seconds_;
-  std::chrono::steady_clock::time_point t0_;
-};
-
-double inf_norm(const Vector& v) { return v.size() ? v.cwiseAbs().maxCoeff() : 0.0; }
-
-/// FNV-1a key of a system's values: equal keys, equal matrices.
-struct ValuesKey {
-  std::uint64_t h = 1469598103934665603ULL;
-  void mix(std::uint64_t v) { h = (h ^ v) * 1099511628211ULL; }
-};
-
-/// values[pos[k]] += contact[k] for every located triplet, each value mixed into `key`;
-/// true when one was added.
-bool add_triplet_values(const std::vector<Triplet>& contact, const std::vector<int>& pos, double* values,
-                        ValuesKey& key) {
-  bool any = false;
-  for (size_t k = 0; k < contact.size(); ++k) {
-    if (pos[k] < 0) continue;
-    any = true;
-    const double v = contact[k].value();
-    values[pos[k]] += v;
-    std::uint64_t bits;
-    std::memcpy(&bits, &v, sizeof bits);
-    key.mix(bits);
-  }
-  return any;
-}
-
-/// Position of entry (i, j) in a's storage (the entry must be in the pattern).
-int position_in(const SparseMatrix& a, int i, int j) {
-  const int* outer = a.outerIndexPtr();
-  const int* inner = a.innerIndexPtr();
-  return static_cast<int>(std::lower_bound(inner + outer[j], inner + outer[j + 1], i) - inner);
-}
-
-/// Position in a of each contact triplet (free numbering), -1 for a constrained one, and with
-/// `within` (per free equation) for one whose row or column it does not flag. One binary
-/// search per triplet, most of them a cache miss: two threads share the triplets when there
-/// are many (1.3 million on the 3D CONTINUE benchmark).
-void locate_triplets(const SparseMatrix& a, const std::vector<int>& free_index, const std::vector<Triplet>& contact,
-                     std::vector<int>& pos, const std::vector<char>* within = nullptr) {
-  const size_t n = contact.size();
-  resize_on_huge_pages(pos, n);
-  auto locate = [&](size_t begin, size_t end) {
-    for (size_t k = begin; k < end; ++k) {
-      const int i = free_index[contact[k].row()], j = free_index[contact[k].col()];
-      pos[k] = i >= 0 && j >= 0 && (!within || ((*within)[i] && (*within)[j])) ? position_in(a, i, j) : -1;
-    }
-  };
-  constexpr size_t kTripletsForTwoThreads = 100000;
-  if (n < kTripletsForTwoThreads) return locate(0, n);
-  run_two_workers([&](int w, size_t&) { w == 0 ? locate(0, n / 2) : locate(n / 2, n); });
-}
-
-std::string sci(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6e", v);
-  return buf;
-}
-
-/// A linear solve is accepted when |K du + r| / |r| is below this (after iterative
-/// refinement): far above round-off for a well-posed system, far below what a singular
-/// one leaves (a rigid-body mode, a contact block without rank). Newton corrects the
-/// remaining inaccuracy at its next iteration. A direct solve's own tolerance
-/// (NewtonOptions::direct_solve_tolerance) replaces it when given.
-constexpr double kSolveTolerance = 1e-6;
-
-/// GMRES with the previous factorisation as preconditioner (a new pairing, same statuses):
-/// at most this many iterations, to this relative residual, before refactorising.
-constexpr int kKrylovIterations = 30;
-constexpr double kKrylovTolerance = 1e-12;
-
-
-Constraints build_constraints(const DofMap& dofs, const MechanicalLoads& loads, double t, const Mesh& mesh) {
-  Constraints c;
-  c.free_index.assign(dofs.n_dofs(), 0);
-  std::map<int, double> imposed;
-  for (const auto& d : loads.dirichlet) {
-    const int eq = dofs.dof(d.node, d.component);
-    if (eq < 0)
-      throw DeckError("imposed " + std::string(component_name(d.component)) + " on node " + mesh.node_names[d.node] +
-                      ", which carries no such unknown in the model");
-    imposed[eq] = d.value * loads.multipliers.at(d.load)(t);
-  }
-  for (const auto& [eq, value] : imposed) {
-    c.free_index[eq] = -1;
-    c.constrained.push_back(eq);
-    c.values.push_back(value);
-  }
-  for (int eq = 0; eq < dofs.n_dofs(); ++eq)
-    if (c.free_index[eq] == 0) c.free_index[eq] = c.n_free++;
-  return c;
-}
-
-/// The equations the Dirichlet conditions constrain: the same set at every instant (only
-/// the imposed values follow the load functions). Sorted.
-std::vector<int> constrained_equations(const DofMap& dofs, const MechanicalLoads& loads, const Mesh& mesh) {
-  std::vector<int> eqs;
-  for (const auto& d : loads.dirichlet) {
-    const int eq = dofs.dof(d.node, d.component);
-    if (eq < 0)
-      throw DeckError("imposed " + std::string(component_name(d.component)) + " on node " + mesh.node_names[d.node] +
-                      ", which carries no such unknown in the model");
-    eqs.push_back(eq);
-  }
-  std::sort(eqs.begin(), eqs.end());
-  eqs.erase(std::unique(eqs.begin(), eqs.end()), eqs.end());
-  return eqs;
-}
-
-}  // namespace
 
 StaticSolver::StaticSolver(const FeModel& model, const MechanicalLoads& loads, NewtonOptions options,
                            ContactHook* contact, const Log& log)
@@ -169,179 +23,66 @@ StaticSolver::StaticSolver(const FeModel& model, const MechanicalLoads& loads, N
   LUNASTER_ASSERT(!(options_.elastic_matrix && contact_), "the elastic matrix is not for runs with contact");
 }
 
-NodalField StaticSolver::make_depl(const Vector& u) const {
-  std::vector<std::string> cmps = {"DX", "DY"};
-  std::vector<int> ids = {DX, DY};
-  if (model_.dim == 3) { cmps.push_back("DZ"); ids.push_back(DZ); }
-  bool has_lagrange = false;
-  for (int eq = 0; eq < dofs_.n_dofs() && !has_lagrange; ++eq) has_lagrange = dofs_.component_of(eq) == LAGS_C;
-  if (has_lagrange) { cmps.push_back("LAGS_C"); ids.push_back(LAGS_C); }
-  const Mesh& mesh = *model_.mesh;
-  NodalField depl(cmps, mesh.n_nodes());
-  for (int node = 0; node < mesh.n_nodes(); ++node)
-    for (size_t c = 0; c < ids.size(); ++c) {
-      const int eq = dofs_.dof(node, ids[c]);
-      if (eq >= 0) depl.set(node, static_cast<int>(c), u[eq]);
-    }
-  return depl;
+void StaticSolver::number_unknowns(std::optional<NodeHalo>& node_halo) {
+  in_parts_ = part_ != nullptr;
+  RunNumbering numbering =
+      engine::number_unknowns(model_, loads_, given_contact_, part_, hook_part_, options_, node_halo);
+  dofs_ = std::move(numbering.dofs);
+  contact_ = numbering.hook;
+  renumbered_contact_ = std::move(numbering.renumbered);
 }
 
 std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   LUNASTER_ASSERT(!instants.empty(), "no instants");
-  in_parts_ = part_ != nullptr;
-  contact_ = given_contact_;
-  renumbered_contact_.reset();
-  dofs_ = DofMap(*model_.mesh, model_.volume_cells(), model_.dim);
-  if (in_parts_ && hook_part_) {
-    // The hook's nodes beyond the part (contact surfaces, relations): ghosts with their
-    // displacement unknowns.
-    LUNASTER_ASSERT(contact_ && hook_part_->n_owned_nodes == part_->n_owned_nodes &&
-                        hook_part_->mesh.n_nodes() >= part_->mesh.n_nodes(),
-                    "the hook's nodes are the part's and more, for a run with a hook");
-    dofs_.add_nodes(hook_part_->mesh.n_nodes());
-    for (int v = part_->mesh.n_nodes(); v < hook_part_->mesh.n_nodes(); ++v)
-      for (int c = 0; c < model_.dim; ++c) dofs_.add(v, c);
-  }
-  const int displacement_dofs = dofs_.n_dofs();
-  // In parts, the exchanges of the part's nodes (the owners' Dirichlet conditions for the hook,
-  // then the numbering across the ranks).
   std::optional<NodeHalo> node_halo;
-  if (in_parts_) node_halo.emplace(numbered_part());
-  if (contact_) {
-    contact_->set_dirichlet(in_parts_ && hook_part_ ? owners_dirichlet(*hook_part_, *node_halo, loads_.dirichlet)
-                                                   : loads_.dirichlet);
-    contact_->add_dofs(dofs_);
-  }
+  number_unknowns(node_halo);
   const int n = dofs_.n_dofs();
   stats_ = SolverStats{};
-  backend_note_logged_ = false;
-  system_.reset();
-  for (auto& s : solvers_) s.reset();
+  matrix_.clear();
+  linear_ = std::make_unique<LinearSolve>(options_, stats_, log_);
   stats_.n_dofs = n;
-  if (in_parts_) {
-    // What a mesh in parts does not do yet (docs/distributed-model.md): said alike on every rank.
-    LUNASTER_ASSERT(model_.mesh == &part_->mesh && part_->parts == parallel::size(),
-                    "a run in parts takes the model of this rank's part, one part per rank");
-    LUNASTER_ASSERT(!contact_ || hook_part_, "a hook on a mesh in parts takes the part with the hook's nodes");
-    if (n != displacement_dofs) {
-      // The hook's multipliers came after every node's displacements: the owned unknowns go
-      // first (global_dofs.hpp), each class in its order, and the hook keeps its numbering.
-      if (options_.solver == SolverKind::Petsc)
-        throw DeckError("contact or linear relations with multipliers (LAGS_C, LAGR_DX..) on a mesh in parts are "
-                        "solved by MUMPS, not PETSc",
-                        {"SOLVEUR=_F{ METHODE = 'MUMPS' }, or no multipliers: contact by the discrete formulation's "
-                         "PENALISATION or by mortar (DEFI_CONT), linear relations with SOLVEUR ELIM_LAGR = 'OUI'"});
-      std::vector<int> new_of_old(n);
-      int next = 0;
-      for (int owned_class : {1, 0})
-        for (int eq = 0; eq < n; ++eq)
-          if (part_->owns(dofs_.node_of(eq)) == (owned_class == 1)) new_of_old[eq] = next++;
-      dofs_ = dofs_.renumbered(new_of_old);
-      renumbered_contact_ = std::make_unique<RenumberedHook>(*contact_, std::move(new_of_old));
-      contact_ = renumbered_contact_.get();
-    }
-    if (options_.auto_solver || (options_.solver != SolverKind::Mumps && options_.solver != SolverKind::Petsc))
-      throw DeckError("on a mesh in parts MUMPS or PETSc solves (SOLVEUR=_F{METHODE='MUMPS'} or 'PETSC'), not " +
-                      std::string(options_.auto_solver ? "METHODE='AUTO'" : "a solver of one process"));
-  }
   distributed_ = in_parts_ || shares_model();
-  cell_rank_.clear();
-  ghost_ = SparseMatrix();
-  ghost_nodes_.clear();
-  elastic_in_solver_ = false;
-  elastic_holder_ = nullptr;
   {
     Stopwatch watch(stats_.assemble_seconds);
-    std::vector<int> constrained = constrained_equations(dofs_, loads_, *model_.mesh);
-    elastic_.ff = SparseMatrix();  // the previous run's matrices go before these are built
-    elastic_.c = SparseMatrix();
-    equation_halo_.reset();
-    free_halo_.reset();
+    std::vector<int> constrained = Constraints::held_equations(dofs_, loads_, *model_.mesh);
+    layout_ = RankLayout();
     if (in_parts_) {
-      const MeshPart& numbered = numbered_part();
-      node_owner_ = numbered.node_owner;
-      cell_rank_ = part_->cell_part;
-      owned_nodes_.assign(numbered.mesh.n_nodes(), 0);
-      std::fill(owned_nodes_.begin(), owned_nodes_.begin() + part_->n_owned_nodes, 1);
-      unknown_numbers_ = number_across_ranks(numbered, dofs_, *node_halo);
-      const GlobalDofs& numbers = unknown_numbers_;
-      owned_equations_ = numbers.n_owned;
-      stats_.n_dofs = static_cast<int>(numbers.n_global);
-      equation_halo_ = std::make_unique<Halo>(equation_halo(numbered, dofs_, numbers));
-      // The constrained set the owners decide; the free unknowns, numbered across the ranks in
-      // the order of the system's equations (free_index: ascending, the owned ones first).
-      {
-        Constraints owners;
-        owners.free_index.assign(n, 0);
-        for (int eq : constrained) owners.free_index[eq] = -1, owners.constrained.push_back(eq);
-        owners.values.assign(constrained.size(), 0.0);
-        take_owners_constraints(owners);
-        constrained = owners.constrained;
-      }
-      std::vector<char> free(n, 1);
-      for (int eq : constrained) free[eq] = 0;
-      free_numbers_ = number_across_ranks(numbered, dofs_, *node_halo, &free);
-      free_halo_ = std::make_unique<Halo>(equation_halo(numbered, dofs_, free_numbers_));
-      std::string counts;
-      for (int owned : parallel::gather_all(std::vector<int>{part_->n_owned_nodes}))
-        counts += (counts.empty() ? "" : ", ") + std::to_string(owned);
-      std::string hook_said;
-      if (contact_ && contact_->has_contact())
-        hook_said += "; the contact surfaces are whole on every rank, which pairs every point and keeps the contact "
-                     "terms of its own nodes' columns";
-      if (contact_ && !contact_->related_equations().empty())
-        hook_said += "; every rank builds every linear relation (their nodes beyond its part are its ghosts) and "
-                     "keeps the terms of its own nodes' columns";
-      log_.info("mesh in parts on " + std::to_string(part_->parts) + " ranks: owned nodes per rank " + counts + ", " +
-                std::to_string(numbers.n_global) + " unknowns; each rank assembles the stiffness of its own nodes and "
-                "holds its part's vectors" + hook_said);
+      layout_ = RankLayout::in_parts(*part_, numbered_part(), dofs_, *node_halo, constrained, contact_, log_);
+      stats_.n_dofs = static_cast<int>(layout_.unknown_numbers().n_global);
     } else if (distributed_) {
-      const Mesh& mesh = *model_.mesh;
-      const std::vector<int> cells = model_.volume_cells();
-      const CellPartition part = partition_cells(mesh, cells, model_.dim);
-      node_owner_ = part.node_owner;
-      cell_rank_.assign(mesh.n_cells(), -1);
-      for (size_t i = 0; i < cells.size(); ++i) cell_rank_[cells[i]] = part.cell_part[i];
-      owned_nodes_.assign(mesh.n_nodes(), 0);
-      std::vector<int> nodes_of(part.parts, 0), cells_of(part.parts, 0);
-      for (int v = 0; v < mesh.n_nodes(); ++v)
-        if (node_owner_[v] >= 0) ++nodes_of[node_owner_[v]], owned_nodes_[v] = node_owner_[v] == parallel::rank();
-      if (contact_) contact_->share_among_ranks(owned_nodes_);
-      for (int p : part.cell_part) ++cells_of[p];
-      std::string counts;
-      for (int r = 0; r < part.parts; ++r)
-        counts += (r ? ", " : "") + std::to_string(cells_of[r]) + " / " + std::to_string(nodes_of[r]);
-      log_.info("model shared among " + std::to_string(part.parts) + " ranks, " +
-                std::to_string(parallel::ranks_on_this_machine()) + " on this machine (Scotch): cells / nodes per rank " +
-                counts + "; " + std::to_string(part.interface_nodes) +
-                " nodes on interfaces; each rank assembles the stiffness of its own nodes" +
-                (contact_ ? std::string(", pairs its share of the contact points and builds the contact terms "
-                                        "of its own columns")
-                          : std::string()));
+      layout_ = RankLayout::shared(model_, contact_, log_);
     } else if (parallel::size() > 1 && !options_.auto_solver && options_.solver == SolverKind::Mumps) {
       log_.info("model whole on each of the " + std::to_string(parallel::size()) +
                 " ranks, as asked: each rank assembles the whole system; MUMPS reads rank 0's copy and "
                 "factorises it across the ranks");
     }
-    SparseMatrix k = assemble_stiffness_matrix(model_, dofs_, distributed_ ? &owned_nodes_ : nullptr);
-    split_matrix(k, constrained, elastic_);
-    elastic_.symmetric = !distributed_;  // a rank holds only its own nodes' columns
+    elastic_tangent_ = make_elastic_tangent(model_, dofs_, layout_.owned_nodes());
+    tangent_ = given_tangent_ ? given_tangent_ : elastic_tangent_.get();
+    matrix_.assemble(*tangent_, Vector::Zero(n), constrained, distributed_);
   }
-  k_scale_ = std::max(elastic_.ff.nonZeros() ? elastic_.ff.coeffs().cwiseAbs().maxCoeff() : 0.0,
-                      elastic_.c.nonZeros() ? elastic_.c.coeffs().cwiseAbs().maxCoeff() : 0.0);
+  k_scale_ = std::max(matrix_.elastic().ff.nonZeros() ? matrix_.elastic().ff.coeffs().cwiseAbs().maxCoeff() : 0.0,
+                      matrix_.elastic().c.nonZeros() ? matrix_.elastic().c.coeffs().cwiseAbs().maxCoeff() : 0.0);
   if (distributed_) k_scale_ = parallel::max_over_ranks(k_scale_);
+  convergence_ = std::make_unique<ConvergenceTest>(options_, layout_, k_scale_);
+  return step_through(instants);
+}
 
-  Vector u = Vector::Zero(n);
+std::vector<ResultStep> StaticSolver::step_through(const std::vector<double>& instants) {
+  Vector u = Vector::Zero(dofs_.n_dofs());
   steps_.clear();
-  ResultStep initial;
-  initial.nume_ordre = 0;
-  initial.inst = instants[0];
-  initial.nodal["DEPL"] = make_depl(u);
-  if (contact_) write_contact_fields(nullptr, initial);
-  steps_.push_back(std::move(initial));
+  results_ = std::make_unique<StepResults>(dofs_, model_.mesh->n_nodes(), contact_,
+                                          in_parts_ && hook_part_ ? hook_part_->mesh.n_nodes() : model_.mesh->n_nodes());
+  steps_.push_back(results_->step(0, instants[0], u, true));
+  const TimeStepper stepper(options_.subdivide_levels, options_.subdivide_parts, contact_, tangent_, log_);
+  const TimeStepper::Solve solve = [this](double t, Vector& v) { solve_instant(t, v); };
+  const TimeStepper::Commit commit = [this](double t, const Vector& v) {
+    ++stats_.instants;
+    tangent_->commit();
+    steps_.push_back(results_->step(static_cast<int>(steps_.size()), t, v, false));
+  };
   for (size_t i = 1; i < instants.size(); ++i) {
     try {
-      advance(instants[i - 1], instants[i], 0, u);
+      stepper.advance(instants[i - 1], instants[i], u, solve, commit);
     } catch (SolveError& err) {
       // Say how far the run got: the converged steps stay available (converged_steps()).
       const ResultStep& last = steps_.back();
@@ -355,134 +96,12 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   return steps_;
 }
 
-void StaticSolver::advance(double t0, double t1, int level, Vector& u) {
-  Vector trial = u;
-  const ContactSnapshot contact_state = contact_ ? contact_->snapshot() : ContactSnapshot{};
-  try {
-    solve_instant(t1, trial);
-  } catch (const ConvergenceError& err) {
-    // The sub-steps start from the statuses of the step, not from the diverged attempt's.
-    if (contact_) contact_->restore(contact_state);
-    if (level >= options_.subdivide_levels) {
-      if (options_.subdivide_levels == 0) throw;
-      ConvergenceError final(err.message(), err.hints());
-      final.set_failure(err.failure());
-      final.failure().subdivision_levels = level;
-      final.add_hint("step [" + sci(t0) + ", " + sci(t1) + "] still failed after " + std::to_string(level) +
-                     " subdivision level(s)");
-      throw final;
-    }
-    log_.warning("step to instant " + sci(t1) + " failed (" + err.message() + "); splitting it into " +
-                 std::to_string(options_.subdivide_parts) + " sub-steps (level " + std::to_string(level + 1) + ")");
-    double ta = t0;
-    for (int k = 1; k <= options_.subdivide_parts; ++k) {
-      const double tb = k == options_.subdivide_parts ? t1 : t0 + (t1 - t0) * k / options_.subdivide_parts;
-      advance(ta, tb, level + 1, u);
-      ta = tb;
-    }
-    return;
-  }
-  u = trial;
-  ++stats_.instants;
-  ResultStep result;
-  result.nume_ordre = static_cast<int>(steps_.size());
-  result.inst = t1;
-  result.nodal["DEPL"] = make_depl(u);
-  if (contact_) write_contact_fields(&u, result);
-  steps_.push_back(std::move(result));
-}
-
-std::vector<DirichletValue> owners_dirichlet(const MeshPart& numbered, const NodeHalo& node_halo,
-                                             const std::vector<DirichletValue>& dirichlet) {
-  // The part's loads miss the conditions of the hook's nodes beyond it (and of ghosts whose
-  // constrained faces it lacks): each node takes its owner's, who holds every one of its own.
-  // Per node and component: imposed or not, the value, the load (the last condition wins).
-  constexpr int kPer = 9;
-  std::vector<double> imposed(kPer * static_cast<size_t>(numbered.mesh.n_nodes()), 0.0);
-  for (const DirichletValue& d : dirichlet)
-    if (d.component >= 0 && d.component < 3) {
-      double* at = &imposed[kPer * static_cast<size_t>(d.node) + 3 * d.component];
-      at[0] = 1.0, at[1] = d.value, at[2] = d.load;
-    }
-  node_halo.copy_to_ghosts(imposed, kPer);
-  std::vector<DirichletValue> out;
-  for (int v = 0; v < numbered.mesh.n_nodes(); ++v)
-    for (int c = 0; c < 3; ++c) {
-      const double* at = &imposed[kPer * static_cast<size_t>(v) + 3 * c];
-      if (at[0] != 0.0) out.push_back({v, c, at[1], static_cast<int>(at[2])});
-    }
-  return out;
-}
-
-void StaticSolver::write_contact_fields(const Vector* u, ResultStep& step) const {
-  // In parts the hook's nodes are the whole surfaces' part's: its fields are written on those
-  // and kept on the part's nodes (the ones beyond are other ranks' and theirs to give).
-  const int part_nodes = model_.mesh->n_nodes();
-  const int hook_nodes = in_parts_ && hook_part_ ? hook_part_->mesh.n_nodes() : part_nodes;
-  auto resize = [](NodalField& f, int nodes) {
-    f.values.resize(static_cast<size_t>(nodes) * f.components.size(), 0.0);
-    f.defined.resize(static_cast<size_t>(nodes) * f.components.size(), 0);
-    f.n_nodes = nodes;
-  };
-  if (hook_nodes != part_nodes) resize(step.nodal.at("DEPL"), hook_nodes);
-  if (u) contact_->write_fields(*u, step);
-  else contact_->write_initial_fields(step);
-  if (hook_nodes != part_nodes)
-    for (auto& [name, field] : step.nodal) resize(field, part_nodes);
-}
-
 SystemLayout StaticSolver::system_layout(const Constraints& cons, const std::vector<int>& condensed,
                                          const std::vector<int>& eliminated) const {
-  const Mesh& mesh = *model_.mesh;
-  SystemLayout layout;
-  layout.dim = model_.dim;
-  for (int c : model_.volume_cells()) layout.quadratic = layout.quadratic || cell_info(mesh.cell_types[c]).order > 1;
-  layout.block.assign(cons.n_free, -1);
-  layout.component.assign(cons.n_free, 0);
-  std::vector<char> outside(cons.n_free, 0);
-  for (const std::vector<int>* rows : {&condensed, &eliminated})
-    for (int eq : *rows)
-      if (cons.free_index[eq] >= 0) outside[cons.free_index[eq]] = 1;
-  // In parts with whole contact surfaces the unknowns' nodes are the surfaces' part's.
-  const Mesh& nodes = in_parts_ ? numbered_part().mesh : mesh;
-  std::vector<int> block_of_node(nodes.n_nodes(), -1);
-  for (int eq = 0; eq < dofs_.n_dofs(); ++eq) {
-    const int k = cons.free_index[eq], c = dofs_.component_of(eq);
-    if (k < 0 || outside[k] || !is_displacement(c) || c >= layout.dim) continue;
-    const int node = dofs_.node_of(eq);
-    if (block_of_node[node] < 0) {
-      block_of_node[node] = layout.n_blocks();
-      for (int d = 0; d < layout.dim; ++d) layout.coords.push_back(nodes.node(node)[d]);
-    }
-    layout.block[k] = block_of_node[node];
-    layout.component[k] = c;
-  }
-  if (in_parts_) {
-    for (int eq = 0; eq < dofs_.n_dofs(); ++eq)
-      if (cons.free_index[eq] >= 0) layout.global.push_back(free_numbers_.global[eq]);
-    layout.first = free_numbers_.first;
-    layout.n_global = free_numbers_.n_global;
-    layout.n_owned = free_numbers_.n_owned;
-    // Node blocks for PETSc: every unknown's number (the owned nodes' dim unknowns in a row).
-    // Not with a hook's multipliers, which MUMPS alone solves in parts (run() refuses PETSc).
-    if (renumbered_contact_ == nullptr) {
-      for (int eq = 0; eq < dofs_.n_dofs(); ++eq)
-        if (cons.free_index[eq] >= 0) layout.row.push_back(unknown_numbers_.global[eq]);
-      layout.first_row = unknown_numbers_.first;
-      layout.n_rows = unknown_numbers_.n_global;
-      layout.n_owned_rows = unknown_numbers_.n_owned;
-      layout.row_coords.resize(unknown_numbers_.n_owned);
-      for (int eq = 0; eq < unknown_numbers_.n_owned; ++eq) {
-        LUNASTER_ASSERT(dofs_.component_of(eq) == eq % layout.dim, "in parts every node carries dim unknowns in order");
-        layout.row_coords[eq] = mesh.node(dofs_.node_of(eq))[dofs_.component_of(eq)];
-      }
-    }
-  } else if (distributed_) {
-    layout.owner.assign(cons.n_free, -1);
-    for (int eq = 0; eq < dofs_.n_dofs(); ++eq)
-      if (cons.free_index[eq] >= 0) layout.owner[cons.free_index[eq]] = node_owner_[dofs_.node_of(eq)];
-  }
-  return layout;
+  // In parts with whole contact surfaces the unknowns' nodes are the surfaces' part's; node
+  // blocks for PETSc not with a hook's multipliers, which MUMPS alone solves in parts.
+  return layout_.system_layout(model_, in_parts_ ? numbered_part().mesh : *model_.mesh, dofs_, cons, condensed,
+                               eliminated, renumbered_contact_ == nullptr);
 }
 
 bool StaticSolver::shares_model() const {
@@ -492,187 +111,30 @@ bool StaticSolver::shares_model() const {
   return (options_.solver == SolverKind::Mumps && options_.share_model) || options_.solver == SolverKind::Petsc;
 }
 
-void StaticSolver::take_owners_constraints(Constraints& c) const {
-  const int n = static_cast<int>(c.free_index.size());
-  // Per unknown: constrained or not, and its value, from its owner.
-  std::vector<double> said(2 * static_cast<size_t>(n), 0.0);
-  for (size_t i = 0; i < c.constrained.size(); ++i) {
-    said[2 * c.constrained[i]] = 1.0;
-    said[2 * c.constrained[i] + 1] = c.values[i];
-  }
-  equation_halo_->copy_to_ghosts(said, 2);
-  c.constrained.clear(), c.values.clear();
-  c.n_free = 0;
-  for (int eq = 0; eq < n; ++eq)
-    if (said[2 * eq] != 0.0) {
-      c.free_index[eq] = -1;
-      c.constrained.push_back(eq);
-      c.values.push_back(said[2 * eq + 1]);
-    } else {
-      c.free_index[eq] = c.n_free++;
-    }
+Vector StaticSolver::stiffness_times(const Vector& u) const { return matrix_.times(u, layout_, k_ff_holder()); }
+
+Vector StaticSolver::internal_forces(const Vector& u) const {
+  if (matrix_.constant()) return stiffness_times(u);
+  Vector f = matrix_.internal_forces(u);
+  layout_.complete(f);
+  return f;
 }
 
-void StaticSolver::complete_part_vector(Vector& v) const {
-  equation_halo_->add_to_owners(v.data(), 1);
-  equation_halo_->copy_to_ghosts(v.data(), 1);
-}
-
-double StaticSolver::largest_entry(const Vector& v, int n_owned) const {
-  if (!in_parts_) return inf_norm(v);
-  const double here = n_owned > 0 ? v.head(n_owned).cwiseAbs().maxCoeff() : 0.0;
-  // A NaN stays a NaN over the ranks (max would drop it): the ranks stop alike.
-  const double bad = parallel::max_over_ranks(std::isfinite(here) ? 0.0 : 1.0);
-  return bad > 0.0 ? std::numeric_limits<double>::quiet_NaN() : parallel::max_over_ranks(here);
-}
-
-Vector StaticSolver::stiffness_times(const Vector& u) const {
-  // With K_ff in the backend, elastic_.times() gives the constrained columns' part only.
-  Vector ku = elastic_.times(u);
-  // In parts with K_ff in the backend, its product gives the owned rows whole: the ghosts'
-  // shares of the rest go to the owners first, the owners' sums to the ghosts last.
-  if (in_parts_ && elastic_in_solver_) equation_halo_->add_to_owners(ku.data(), 1);
-  else if (in_parts_) complete_part_vector(ku);
-  else if (distributed_) parallel::sum_over_ranks(ku.data(), ku.size());
-  if (elastic_in_solver_) {
-    const int nf = static_cast<int>(elastic_.equation.size());
-    Vector u_free(nf), k_u_free;
-    for (int j = 0; j < nf; ++j) u_free[j] = u[elastic_.equation[j]];
-    const bool done = elastic_holder_->multiply(u_free, k_u_free);
-    LUNASTER_ASSERT(done, "the backend holding K_ff gave no product");
-    for (int j = 0; j < nf; ++j) ku[elastic_.equation[j]] += k_u_free[j];
-    if (in_parts_) equation_halo_->copy_to_ghosts(ku.data(), 1);
-  }
-  return ku;
-}
-
-SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err, double t) const {
-  // Approximate factors asked for are the likeliest cause: named in the first line, their
-  // hints said first.
-  const std::vector<Approximation> approximate = approximations();
-  std::string named;
-  for (const auto& a : approximate) named += (named.empty() ? "" : ", ") + a.what;
-  if (in_parts_) {
-    // The whole stiffness is on no rank: the failure is said as it is.
-    SolveError as_is = err;
-    as_is.add_hint("the model is in parts: no rank holds the whole stiffness to find the cause");
-    return as_is;
-  }
-  // elastic_.ff is the whole K_ff unless the model is shared or K_ff went to the backend
+SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err, double t) {
+  matrix_.restore();  // K_ff itself, without this iteration's terms
+  FailureDiagnosis::Stiffness stiffness;
+  stiffness.on_no_rank = in_parts_;
+  // matrix_.elastic().ff is the whole K_ff unless the model is shared or K_ff went to the backend
   // (also when the backend failed after taking it).
-  const bool whole_here = !distributed_ && !elastic_in_solver_ && (elastic_.ff.nonZeros() > 0 || elastic_.equation.empty());
-  SolveError found = [&] {
-    if (whole_here)
-      return diagnose_singular_system(model_, dofs_, cons.free_index, elastic_.ff, err, t, diagnosis_test(),
-                                      contact_ != nullptr, named);
-    SplitMatrix whole;
-    SparseMatrix k = assemble_stiffness_matrix(model_, dofs_);
-    split_matrix(k, elastic_.constrained, whole);
-    return diagnose_singular_system(model_, dofs_, cons.free_index, whole.ff, err, t, diagnosis_test(),
-                                    contact_ != nullptr, named);
-  }();
-  if (!approximate.empty()) {
-    std::vector<std::string> hints;
-    for (const auto& a : approximate) hints.push_back(a.hint);
-    hints.insert(hints.end(), found.hints().begin(), found.hints().end());
-    found.set_hints(std::move(hints));
-  }
-  if (!options_.factor.preprocessing && options_.factor.singularity.digits >= 0)
-    found.add_hint("the matrix was factorised as assembled (MUMPS without preprocessing), so its pivots were tested "
-                   "unscaled: a multiplier's pivot, small in absolute terms, counts as null; let MUMPS scale the "
-                   "matrix, or turn the pivot test off");
-  return found;
-}
-
-std::vector<StaticSolver::Approximation> StaticSolver::approximations() const {
-  std::vector<Approximation> out;
-  if (options_.solver != SolverKind::Mumps) return out;
-  if (options_.factor.filter > 0.0)
-    out.push_back({"without its smallest entries",
-                   "the matrix was factorised without its smallest entries (filter " + sci(options_.factor.filter) +
-                       "), which this system needs" +
-                       (contact_ ? ": its contact couplings are small beside the stiffness's diagonal" : "") +
-                       "; lower the filter, or keep every entry"});
-  if (options_.factor.low_rank.on)
-    out.push_back({"in block low rank", "the factors were compressed in block low rank (threshold " +
-                                            sci(std::abs(options_.factor.low_rank.threshold)) +
-                                            "), too coarsely for this system: lower the threshold, refine more, or "
-                                            "factorise in full rank"});
-  if (options_.single_precision)
-    out.push_back({"in single precision",
-                   "the factors were computed in single precision, too coarse for this system's conditioning: "
-                   "refine more, or factorise in double precision"});
-  return out;
-}
-
-SingularityTest StaticSolver::diagnosis_test() const {
-  // A failure's culprit is looked for with the run's digits, or code_aster's default 8 when
-  // the run asked for no test; the diagnosis always stops at it.
-  SingularityTest test;
-  if (options_.factor.singularity.digits >= 0) test.digits = options_.factor.singularity.digits;
-  return test;
-}
-
-SolverKind StaticSolver::backend_for(MatrixKind kind) {
-  if (options_.solver == SolverKind::Petsc) return SolverKind::Petsc;  // iterative: any kind, as asked
-  // A large 3D SPD system: a factorisation fills too much. On the 2.8e5-unknown HEXA8/HEXA20
-  // mortar benchmark CHOLMOD took 139 s and 11 GB (its best ordering, METIS on the node graph,
-  // still filled 8.8e8 entries), MUMPS 63 s and 6.6 GB, PETSc's CG with BoomerAMG 20-25 s and
-  // 1.3 GB. Below, CHOLMOD stays faster. AUTO's CG solves to a relative residual of 1e-12 (the
-  // mortar multipliers of that benchmark needed it to stay within 1e-8) in at most 500
-  // iterations, and MUMPS takes over if it fails: a choice of ours must not stop a run that a
-  // factorisation would have done. A process of an MPI run keeps MUMPS (the same values on
-  // every rank, as with CHOLMOD below this size).
-  constexpr int kLargeSpd3d = 100000;
-  if (options_.auto_solver && options_.solver == SolverKind::Cholmod && kind == MatrixKind::SymmetricPositiveDefinite &&
-      model_.dim == 3 && stats_.n_free > kLargeSpd3d) {
-    const bool iterative = parallel::size() == 1;
-    if (!backend_note_logged_)
-      log_.info("solver chosen automatically: " +
-                std::string(iterative ? "PETSc CG + BoomerAMG (relative residual 1e-12, MUMPS if it does not converge)"
-                                      : "MUMPS") +
-                " for a 3D system of " + std::to_string(stats_.n_free) +
-                " unknowns (a factorisation fills too much at this size)");
-    backend_note_logged_ = true;
-    if (!iterative) return SolverKind::Mumps;
-    options_.iterative = IterativeSettings{};
-    options_.iterative.krylov = IterativeSettings::Krylov::CG;
-    options_.iterative.preconditioner = IterativeSettings::Preconditioner::Boomer;
-    options_.iterative.relative_residual = 1e-12;
-    options_.iterative.max_iterations = 500;
-    return SolverKind::Petsc;
-  }
-  if (options_.solver != SolverKind::Cholmod || kind == MatrixKind::SymmetricPositiveDefinite) return options_.solver;
-  // Contact with multipliers gives a symmetric indefinite system: MUMPS (LDLT with
-  // pivoting) beat UMFPACK (LU) on it: SSNP121 A refined 16 times, 3.2 s vs 3.6 s and
-  // 376 MB vs 608 MB. MUMPS is an MPI library, though, and a process alone pays about 40 ms
-  // to start MPI: below about 1e4 unknowns UMFPACK is the faster whole run (SSNP121 A refined
-  // 2 times, 0.08 s against 0.11 s; 4 times, 0.19 s against 0.22 s; 8 times, 0.95 s against
-  // 0.66 s). Under mpirun MUMPS factorises across the ranks whatever the size.
-  constexpr int kSmallIndefinite = 10000;
-  const bool small = stats_.n_free < kSmallIndefinite && !parallel::launched_by_mpi();
-  // A process alone, a symmetric indefinite system: its multipliers' Schur complement on
-  // CHOLMOD and GMRES (engine/solver/saddle_solver.hpp), the backend above where that gives
-  // way. The SSNP121 3D contact benchmark (1.9e4 unknowns): 1.13e10 operations at CHOLMOD's
-  // rate against MUMPS's LDL^T of 1.01e10 at its own, the factorisation phase 0.75x; the
-  // same scene at 8.4e3 unknowns, 0.1 s against UMFPACK's 2.0 s. Not on a large 3D system,
-  // where CHOLMOD's factor fills too much (above).
-  saddle_ = kind == MatrixKind::SymmetricIndefinite && !parallel::launched_by_mpi() && parallel::size() == 1 &&
-            !distributed_ && !(model_.dim == 3 && stats_.n_free > kLargeSpd3d);
-  const std::string fallback = small ? "UMFPACK" : "MUMPS";
-  if (!backend_note_logged_)
-    log_.info(std::string("CHOLMOD cannot factorise ") +
-              (kind == MatrixKind::SymmetricIndefinite ? "an indefinite" : "a non-symmetric") +
-              (saddle_ ? " system; CHOLMOD factorises the Schur complement of its multipliers and GMRES solves it (" +
-                             fallback + " if that gives way)"
-               : small ? " system; using UMFPACK (MUMPS from 10000 unknowns)"
-                       : " system; using MUMPS"));
-  backend_note_logged_ = true;
-  return small ? SolverKind::Umfpack : SolverKind::Mumps;
+  const bool whole_here =
+      !distributed_ && !k_ff_holder() && (matrix_.elastic().ff.nonZeros() > 0 || matrix_.elastic().equation.empty());
+  if (whole_here) stiffness.k_ff = &matrix_.elastic().ff;
+  else stiffness.constrained = matrix_.elastic().constrained;
+  return FailureDiagnosis(model_, options_, contact_ != nullptr).explain(err, t, dofs_, cons.free_index, stiffness);
 }
 
 /// The system of one Newton iteration, K_ff + contact terms restricted to the free
-/// equations. Without a contact hook it is elastic_.ff itself. Otherwise its pattern (K_ff's,
+/// equations. Without a contact hook it is matrix_.elastic().ff itself. Otherwise its pattern (K_ff's,
 /// contact, a diagonal on every free equation) is built once per contact pattern version,
 /// with the position of every contact triplet in it, and becomes K_ff's own; each iteration
 /// writes its terms into that one storage and restore_elastic() puts K_ff's values back.
@@ -682,982 +144,45 @@ SolverKind StaticSolver::backend_for(MatrixKind kind) {
 /// the model. The terms of K' beyond K_RR are appended to `triplets` (as contact terms);
 /// `r_free` becomes r'. Returns the eliminated equations, whose rows and columns
 /// update_system replaces by a unit diagonal.
-SparseMatrix StaticSolver::gathered_columns(const std::vector<int>& nodes) const {
-  const int n = dofs_.n_dofs();
-  std::vector<char> mask(model_.mesh->n_nodes(), 0);
-  for (int v : nodes)
-    if (part_->owns(v)) mask[v] = 1;
-  const SparseMatrix mine = assemble_stiffness_matrix(model_, dofs_, &mask);
-  // Each column as its number across the ranks, its count, then (row's number, value) pairs
-  // (numbers below 2^53 travel exactly as doubles).
-  std::vector<double> packed;
-  for (int j = 0; j < static_cast<int>(mine.outerSize()); ++j) {
-    const Eigen::Index count = mine.outerIndexPtr()[j + 1] - mine.outerIndexPtr()[j];
-    if (count == 0) continue;
-    packed.push_back(static_cast<double>(unknown_numbers_.global[j]));
-    packed.push_back(static_cast<double>(count));
-    for (SparseMatrix::InnerIterator it(mine, j); it; ++it) {
-      packed.push_back(static_cast<double>(unknown_numbers_.global[it.row()]));
-      packed.push_back(it.value());
-    }
-  }
-  const std::vector<double> all = parallel::gather_all(packed);
-  std::unordered_map<long long, int> local;
-  local.reserve(static_cast<size_t>(n));
-  for (int eq = 0; eq < n; ++eq) local.emplace(unknown_numbers_.global[eq], eq);
-  std::vector<Triplet> t;
-  for (size_t at = 0; at < all.size();) {
-    const auto col = local.find(static_cast<long long>(all[at]));
-    const long long count = static_cast<long long>(all[at + 1]);
-    at += 2;
-    for (long long k = 0; k < count; ++k, at += 2) {
-      const auto row = local.find(static_cast<long long>(all[at]));
-      LUNASTER_ASSERT(col != local.end() && row != local.end(),
-                      "an eliminated unknown's stiffness column reaches an unknown this rank does not hold");
-      t.emplace_back(row->second, col->second, all[at + 1]);
-    }
-  }
-  SparseMatrix out(n, n);
-  out.setFromTriplets(t.begin(), t.end());
-  return out;
-}
-
-std::vector<int> StaticSolver::eliminate(const Constraints& cons, const std::vector<Elimination>& relations,
-                                         const Vector& residual, std::vector<Triplet>& triplets, Vector& r_free) {
-  const int n = dofs_.n_dofs();
-  std::vector<int> index_of(n, -1);
-  std::vector<int> eqs;
-  eqs.reserve(relations.size());
-  for (size_t i = 0; i < relations.size(); ++i) {
-    const int eq = relations[i].eq;
-    LUNASTER_ASSERT(eq >= 0 && eq < n && cons.free_index[eq] >= 0 && index_of[eq] < 0,
-                    "an eliminated unknown must be free and eliminated once");
-    index_of[eq] = static_cast<int>(i);
-    eqs.push_back(eq);
-  }
-  // Columns of K at the eliminated equations: elastic part and contact triplets.
-  std::vector<std::vector<std::pair<int, double>>> column(relations.size());
-  if (in_parts_) {
-    // The owner of an eliminated unknown's node holds every cell around it: it assembles the
-    // node's columns whole and every rank gets them (kept while the set of nodes holds). Their
-    // rows are on every rank: the slave surfaces came with the cells around their nodes
-    // (with_whole_surfaces, layered).
-    std::vector<int> nodes;
-    for (int eq : eqs) nodes.push_back(dofs_.node_of(eq));
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    if (nodes != ghost_nodes_) ghost_ = gathered_columns(nodes), ghost_nodes_ = std::move(nodes);
-    for (size_t i = 0; i < relations.size(); ++i)
-      for (SparseMatrix::InnerIterator it(ghost_, relations[i].eq); it; ++it)
-        if (cons.free_index[it.row()] >= 0) column[i].emplace_back(static_cast<int>(it.row()), it.value());
-  } else if (distributed_) {
-    // This rank holds only its own nodes' columns: every rank computes the whole columns of
-    // the eliminated equations' nodes (kept while the set of nodes holds), so that each one
-    // gets the whole fill and keeps its own columns of it.
-    std::vector<int> nodes;
-    for (int eq : eqs) nodes.push_back(dofs_.node_of(eq));
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    if (nodes != ghost_nodes_) {
-      std::vector<char> mask(model_.mesh->n_nodes(), 0);
-      for (int v : nodes) mask[v] = 1;
-      ghost_ = SparseMatrix();
-      ghost_ = assemble_stiffness_matrix(model_, dofs_, &mask);
-      ghost_nodes_ = std::move(nodes);
-    }
-    for (size_t i = 0; i < relations.size(); ++i)
-      for (SparseMatrix::InnerIterator it(ghost_, relations[i].eq); it; ++it)
-        if (cons.free_index[it.row()] >= 0) column[i].emplace_back(static_cast<int>(it.row()), it.value());
-  } else {
-    for (size_t i = 0; i < relations.size(); ++i) {
-      const int e = relations[i].eq;
-      // Its constrained rows are left out: their residual is not solved for and no term
-      // of K' lies on them. So are zeros (the contact positions update_system added to
-      // K_ff's pattern): the fill, and with it the system's pattern, follows the relations.
-      for (SparseMatrix::InnerIterator it(elastic_.ff, cons.free_index[e]); it; ++it)
-        if (it.value() != 0.0) column[i].emplace_back(elastic_.equation[it.row()], it.value());
-    }
-  }
-  for (const auto& tr : triplets)
-    if (index_of[tr.col()] >= 0) column[index_of[tr.col()]].emplace_back(tr.row(), tr.value());
-  // r + K b over the whole numbering.
-  Vector rb = residual;
-  for (size_t i = 0; i < relations.size(); ++i)
-    if (relations[i].value != 0.0)
-      for (const auto& [row, v] : column[i]) rb[row] += v * relations[i].value;
-  for (int eq = 0; eq < n; ++eq) {
-    const int k = cons.free_index[eq];
-    if (k >= 0) r_free[k] = index_of[eq] >= 0 ? 0.0 : rb[eq];
-  }
-  for (size_t i = 0; i < relations.size(); ++i)
-    for (const auto& [k, a] : relations[i].terms)
-      if (cons.free_index[k] >= 0) r_free[cons.free_index[k]] += a * rb[relations[i].eq];
-  // The fill as sparse products, which sum the contributions of neighbouring relations
-  // (one triplet per product term would be tens of millions in 3D): with KE the columns of K
-  // at E (rows over the whole numbering) and A the relations' coefficients,
-  // P = KE A holds K_RE A in its R rows and K_EE A in its E rows; then K' - K_RR =
-  // P_R + P_R^T + A^T P_E.
-  const int m = static_cast<int>(relations.size());
-  std::vector<Triplet> t;
-  for (int i = 0; i < m; ++i)
-    for (const auto& [row, v] : column[i])
-      if (cons.free_index[row] >= 0) t.emplace_back(row, i, v);
-  SparseMatrix ke(n, m);
-  ke.setFromTriplets(t.begin(), t.end());
-  t.clear();
-  for (int i = 0; i < m; ++i)
-    for (const auto& [k, a] : relations[i].terms)
-      if (cons.free_index[k] >= 0) t.emplace_back(i, k, a);
-  SparseMatrix a(m, n);
-  a.setFromTriplets(t.begin(), t.end());
-  std::vector<Triplet>().swap(t);
-  const SparseMatrix p = ke * a;  // n x n, column-major
-  // P_E as an m x n matrix (its rows at the eliminated equations), then A^T P_E.
-  std::vector<Triplet> pe;
-  for (int k = 0; k < p.outerSize(); ++k)
-    for (SparseMatrix::InnerIterator it(p, k); it; ++it)
-      if (index_of[it.row()] >= 0) pe.emplace_back(index_of[it.row()], k, it.value());
-  SparseMatrix pe_m(m, n);
-  pe_m.setFromTriplets(pe.begin(), pe.end());
-  const SparseMatrix s = SparseMatrix(a.transpose()) * pe_m;
-  // The fill goes into triplets in one allocation (millions of terms in 3D: growing the
-  // vector by doubling copied it onto fresh pages several times over).
-  const std::size_t fill = 2 * (static_cast<std::size_t>(p.nonZeros()) - pe.size()) + static_cast<std::size_t>(s.nonZeros());
-  reserve_on_huge_pages(triplets, triplets.size() + fill);
-  for (int k = 0; k < p.outerSize(); ++k)
-    for (SparseMatrix::InnerIterator it(p, k); it; ++it) {
-      const int row = static_cast<int>(it.row());
-      if (index_of[row] >= 0) continue;
-      triplets.emplace_back(row, k, it.value());
-      triplets.emplace_back(k, row, it.value());
-    }
-  for (int k = 0; k < s.outerSize(); ++k)
-    for (SparseMatrix::InnerIterator it(s, k); it; ++it) triplets.emplace_back(static_cast<int>(it.row()), k, it.value());
-  return eqs;
-}
-
-void StaticSolver::choose_interface(const Constraints& cons, const std::vector<Triplet>& contact) {
-  interface_use_ = -1;
-  // METHODE='AUTO' only: a deck that names its solver gets it. The dense Schur complement
-  // costs m^2 doubles and m^3/3 operations per contact pass: a small interface only, against
-  // a large interior (the 2D SSNP121 geometries).
-  constexpr int kMaxInterface = 2500, kInteriorPerInterface = 20;
-  if (!contact_ || !options_.auto_solver || options_.solver != SolverKind::Cholmod || distributed_) return;
-  const std::vector<int> surface = contact_->surface_equations();
-  std::vector<int> eqs;
-  for (int eq : surface)
-    if (cons.free_index[eq] >= 0) eqs.push_back(cons.free_index[eq]);
-  interface_floor_ = 0.0;
-  interface_dense_share_ = 0.0;
-  if (eqs.size() > static_cast<std::size_t>(kMaxInterface) ||
-      static_cast<long>(eqs.size()) * kInteriorPerInterface > cons.n_free) {
-    // Too many for the whole surfaces (a 3D surface of a few hundred nodes: 4,263 equations
-    // on the CONTINUE 3D benchmark). The contact terms may reach fewer displacement
-    // components: one on an interface square to an axis (SSNP121's), whose other components
-    // then stay with the interior (1,715 equations on that benchmark): those that the
-    // pairing's normals reach, active or not (so also before any point is active), as the
-    // hook says. Terms below kNegligibleTerm of the largest count for nothing: a normal's
-    // round-off that the gaps do not already leave out (make_linear_gap drops components up
-    // to kNormalRoundOff). The dense factorisation must then cost at most kDenseShare of the
-    // reference's (factorize_interface_reference), and a term outside the interface, in this
-    // solve or a later one (a pairing that reaches another component), makes solve_instant
-    // give the interface solver up.
-    constexpr double kDenseShare = 0.5;
-    double largest = 0.0;
-    for (const Triplet& tr : contact) largest = std::max(largest, std::abs(tr.value()));
-    interface_floor_ = kNegligibleTerm * largest;
-    const std::array<bool, 3> reached = contact_->displacement_components();
-    if (!reached[0] && !reached[1] && !reached[2]) return;  // nothing paired
-    eqs.clear();
-    for (int eq : surface) {
-      const int c = dofs_.component_of(eq);
-      if (cons.free_index[eq] >= 0 && (!is_displacement(c) || reached[c])) eqs.push_back(cons.free_index[eq]);
-    }
-    if (eqs.size() > static_cast<std::size_t>(kMaxInterface)) return;
-    interface_dense_share_ = kDenseShare;
-  }
-  std::sort(eqs.begin(), eqs.end());
-  if (eqs.empty()) return;
-  // The reference is K_ff itself, which must store a diagonal on every interface equation. The
-  // multipliers' columns are empty and come last (their equations are numbered after every
-  // displacement): each gets a zero diagonal appended, in the storage K_ff already holds
-  // (split_matrix left it the constrained columns' room).
-  SparseMatrix& k = elastic_.ff;
-  const int nf = static_cast<int>(k.cols());
-  int first_empty = nf;
-  while (first_empty > 0 && k.outerIndexPtr()[first_empty] == k.outerIndexPtr()[first_empty - 1]) --first_empty;
-  for (int j : eqs) {
-    if (j >= first_empty) continue;
-    const int* rows = k.innerIndexPtr() + k.outerIndexPtr()[j];
-    const int* end = k.innerIndexPtr() + k.outerIndexPtr()[j + 1];
-    if (!std::binary_search(rows, end, j)) return;  // an interface equation without a diagonal entry
-  }
-  if (first_empty < nf) {
-    const int nnz = static_cast<int>(k.nonZeros());
-    k.resizeNonZeros(nnz + (nf - first_empty));
-    for (int j = first_empty; j < nf; ++j) {
-      k.innerIndexPtr()[nnz + (j - first_empty)] = j;
-      k.valuePtr()[nnz + (j - first_empty)] = 0.0;
-      k.outerIndexPtr()[j + 1] = nnz + (j - first_empty) + 1;
-    }
-  }
-  on_interface_.assign(cons.n_free, 0);
-  for (int j : eqs) on_interface_[j] = 1;
-  interface_ = make_interface_solver(std::move(eqs));
-  FactorSettings settings;  // the interface solver reads the singularity test alone
-  settings.singularity = options_.factor.singularity;
-  interface_->configure(settings);
-  interface_use_ = 1;
-}
-
-void StaticSolver::factorize_interface_reference(SystemCache& sys) {
-  double seconds = 0.0;
-  {
-    Stopwatch watch(seconds);
-    const int m = static_cast<int>(interface_->interface().size());
-    try {
-      const bool taken = interface_->factorize_reference(elastic_.ff, interface_dense_share_);
-      if (const std::string analysis = interface_->analysis_note(); !analysis.empty() && analysis != analysis_logged_)
-        log_.debug("  " + analysis), analysis_logged_ = analysis;
-      if (taken) {
-        interface_reference_ = sys.elastic_generation;
-        interface_state_ = SystemState{};
-        stats_.interface_equations = m;
-        ++stats_.factorisations;
-        log_.info("  elastic system factorised with the " + std::to_string(m) +
-                  " equations of the contact surfaces last: each contact pass factorises their Schur "
-                  "complement only");
-      } else {
-        interface_use_ = -1;
-        interface_.reset();
-        stats_.interface_equations = 0;
-        log_.info("  the " + std::to_string(m) +
-                  " equations of the contact surfaces are too many for a dense Schur complement against this "
-                  "elastic factorisation: each contact pass factorises the whole system");
-      }
-    } catch (const SolveError& err) {
-      if (err.out_of_memory()) throw;
-      interface_use_ = -1;
-      interface_.reset();
-      stats_.interface_equations = 0;
-      log_.info("  the elastic system alone is not positive definite (a body held by contact or linear relations "
-                "only): each contact pass factorises the whole system");
-    }
-  }
-  stats_.factorize_seconds += seconds;
-  stats_.assemble_seconds -= seconds;  // the caller times update_system as assembly
-}
-
 void StaticSolver::update_system(const Constraints& cons, const std::vector<Triplet>& contact,
                                  const std::vector<int>& condensed, const std::vector<int>& eliminated) {
-  const long pattern_before = system_ ? system_->pattern : 0;
-  update_own_system(cons, contact, condensed, eliminated);
-  if (!distributed_) return;
-  // Each rank keyed its own columns' terms: a rank with no contact point in its columns sees
-  // the same matrix when the others see a new one, and would skip a factorisation the others
-  // enter (MUMPS's and PETSc's are collective: the run would hang, as it did on three ranks).
-  // The whole system is new when any rank's part is, and its key is every rank's key.
-  SystemCache& sys = *system_;
-  const bool changed_here = sys.pattern != pattern_before;
-  sys.pattern = pattern_before + (parallel::max_over_ranks(changed_here ? 1.0 : 0.0) > 0.0 ? 1 : 0);
-  const std::vector<int> halves = {static_cast<int>(sys.values_key & 0xffffffffULL),
-                                   static_cast<int>(sys.values_key >> 32)};
-  ValuesKey key;
-  for (int half : parallel::gather_all(halves)) key.mix(static_cast<std::uint32_t>(half));
-  sys.values_key = key.h;
-}
-
-void StaticSolver::update_own_system(const Constraints& cons, const std::vector<Triplet>& contact,
-                                     const std::vector<int>& condensed, const std::vector<int>& eliminated) {
-  if (!system_) system_ = std::make_unique<SystemCache>();
-  restore_elastic();
-  SystemCache& sys = *system_;
-  const long version = contact_ ? contact_->pattern_version() : 0;
-  const bool new_constraints = !sys.valid || sys.constrained != cons.constrained;
-  if (new_constraints) {
-    sys.constrained = cons.constrained;
-    ++sys.elastic_generation;
-  }
-  LUNASTER_ASSERT(cons.constrained == elastic_.constrained, "the Dirichlet set changed within a run");
-  const int nf = cons.n_free;
-  if (new_constraints) {
-    sys.owned.clear();
-    if (distributed_) {
-      sys.owned.assign(nf, 0);
-      for (int eq = 0; eq < dofs_.n_dofs(); ++eq)
-        if (cons.free_index[eq] >= 0) sys.owned[cons.free_index[eq]] = owned_nodes_[dofs_.node_of(eq)];
-    }
-  }
-  // A shared model: this rank's columns only (the others are empty here).
-  auto mine = [&sys](int j) { return sys.owned.empty() || sys.owned[j]; };
+  const long pattern_before = matrix_.pattern();
+  matrix_.begin(cons, dofs_, layout_.owned_nodes());
   if (!contact_) {  // K_ff alone: nothing to copy, nothing to add
-    if (new_constraints) ++sys.pattern, sys.valid = true;
-    sys.matrix = &elastic_.ff;
     LUNASTER_ASSERT(condensed.empty() && eliminated.empty() && contact.empty(), "no contact hook, no contact terms");
-    std::uint64_t key = 1469598103934665603ULL;
-    sys.values_key = (key ^ static_cast<std::uint64_t>(sys.elastic_generation)) * 1099511628211ULL;
-    return;
+    matrix_.fill_alone();
+  } else {
+    const long version = contact_->pattern_version();
+    interface_.ensure_reference(matrix_.elastic().ff, matrix_.generation(), solve_log_.analysis_said());
+    if (interface_.active())
+      matrix_.fill_interface(cons, contact, condensed, version, interface_.equations(), interface_.on_interface());
+    else
+      matrix_.fill_whole(cons, contact, condensed, eliminated, version);
   }
-  if (interface_use_ == 1 && interface_reference_ != sys.elastic_generation) factorize_interface_reference(sys);
-  if (interface_use_ == 1) {
-    // The interface solver: a holds C alone, the contact terms and the condensed equations'
-    // unit diagonals (K_ff has zeros there), in a pattern built once per contact pattern.
-    // Only the terms within the interface: outside it, an interface of some components has
-    // only terms below interface_floor_ (a normal's round-off), which it leaves out.
-    if (new_constraints || !sys.increment || version != sys.contact_version || contact.size() != sys.contact_pos.size()) {
-      sys.a = SparseMatrix();
-      std::vector<Triplet> pattern;
-      pattern.reserve(contact.size() + interface_->interface().size());
-      for (const auto& tr : contact) {
-        const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
-        if (i >= 0 && j >= 0 && on_interface_[i] && on_interface_[j]) pattern.emplace_back(i, j, 0.0);
-      }
-      for (int j : interface_->interface()) pattern.emplace_back(j, j, 0.0);
-      SparseMatrix c(nf, nf);
-      c.setFromTriplets(pattern.begin(), pattern.end());
-      sys.a.swap(c);
-      locate_triplets(sys.a, cons.free_index, contact, sys.contact_pos, &on_interface_);
-      sys.diagonal.assign(nf, -1);
-      for (int j : interface_->interface()) sys.diagonal[j] = position_in(sys.a, j, j);
-      sys.contact_version = version;
-      sys.increment = true;
-      ++sys.pattern;
-      sys.valid = true;
-      sys.matrix = &sys.a;
-    }
-    std::fill(sys.a.valuePtr(), sys.a.valuePtr() + sys.a.nonZeros(), 0.0);
-    ValuesKey key;
-    key.mix(static_cast<std::uint64_t>(sys.elastic_generation));
-    double* values = sys.a.valuePtr();
-    add_triplet_values(contact, sys.contact_pos, values, key);
-    for (int eq : condensed)
-      if (cons.free_index[eq] >= 0)
-        values[sys.diagonal[cons.free_index[eq]]] = 1.0, key.mix(static_cast<std::uint64_t>(eq));
-    sys.values_key = key.h;
-    return;
-  }
-  if (sys.increment) {  // the interface solver was dropped: the whole system from now on
-    sys.increment = false;
-    sys.a = SparseMatrix();
-    sys.contact_version = -2;
-  }
-  // K_ff and the system share one storage (a second copy of K_ff was the largest array of a
-  // mortar run after the factor): K_ff's pattern grows to hold every contact position, and
-  // each iteration writes its terms into it, saving the values it overwrites for
-  // restore_elastic().
-  SparseMatrix& k = elastic_.ff;
-  if (new_constraints || version != sys.contact_version || contact.size() != sys.contact_pos.size()) {
-    const int* el_outer = k.outerIndexPtr();
-    const int* el_inner = k.innerIndexPtr();
-    const double* el_values = k.valuePtr();
-    // Pattern column by column: the rows of K_ff merged with the contact rows of the column
-    // (bucketed, sorted, unique) and the diagonal; no global sort. Positions K_ff did not
-    // have hold zeros until the next pattern.
-    std::vector<int> start(static_cast<size_t>(nf) + 2, 0), extra;
-    for (const auto& tr : contact) {
-      const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
-      if (i >= 0 && j >= 0) ++start[j + 2];
-    }
-    for (int j = 0; j < nf; ++j) start[j + 2] += mine(j);  // the diagonal
-    for (int j = 0; j <= nf; ++j) start[j + 1] += start[j];
-    resize_on_huge_pages(extra, static_cast<size_t>(start[nf + 1]));
-    for (const auto& tr : contact) {
-      const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
-      if (i >= 0 && j >= 0) extra[start[j + 1]++] = i;
-    }
-    for (int j = 0; j < nf; ++j)
-      if (mine(j)) extra[start[j + 1]++] = j;
-    std::vector<int> extra_end(nf);
-    for (int j = 0; j < nf; ++j) {
-      std::sort(extra.begin() + start[j], extra.begin() + start[j + 1]);
-      extra_end[j] = static_cast<int>(std::unique(extra.begin() + start[j], extra.begin() + start[j + 1]) - extra.begin());
-    }
-    // Union of the two sorted row lists of column j, passed to emit(row, K_ff's value or 0,
-    // whether the position is there for contact only), less the positions an earlier pairing
-    // added that this one does not use (sys.contact_only, ascending): a sliding contact does
-    // not leave its whole path in the pattern and the factor's fill. K_ff's own positions all
-    // stay, zeros included (its pattern is symmetric to the bit, its values are not).
-    // `changed` counts the positions added or dropped.
-    long changed = 0;
-    size_t cursor = 0;  // into sys.contact_only, restarted by each pass over the columns
-    auto merge_column = [&](int j, auto&& emit) {
-      const int* e0 = extra.data() + start[j];
-      const int* e1 = extra.data() + extra_end[j];
-      int p = el_outer[j];
-      const int p1 = el_outer[j + 1];
-      while (p < p1 || e0 != e1) {
-        const int r = p < p1 ? el_inner[p] : -1;
-        if (e0 == e1 || (r >= 0 && r < *e0)) {  // K_ff's only
-          const bool stale = cursor < sys.contact_only.size() && sys.contact_only[cursor] == p;
-          cursor += stale;
-          if (stale) ++changed;
-          else emit(r, el_values[p], false);
-          ++p;
-        } else if (r < 0 || *e0 < r) {  // contact's only
-          emit(*e0++, 0.0, true), ++changed;
-        } else {  // in both
-          const bool added = cursor < sys.contact_only.size() && sys.contact_only[cursor] == p;
-          cursor += added;
-          emit(r, el_values[p++], added), ++e0;
-        }
-      }
-    };
-    SparseMatrix a(nf, nf);
-    int* outer = a.outerIndexPtr();
-    outer[0] = 0;
-    for (int j = 0; j < nf; ++j) {
-      int count = 0;
-      merge_column(j, [&count](int, double, bool) { ++count; });
-      outer[j + 1] = outer[j] + count;
-    }
-    if (changed > 0) {  // else K_ff's pattern is this one already
-      a.resizeNonZeros(outer[nf]);
-      // Written once, as K_ff's arrays in assembly: on huge pages, one fault per 2 MB.
-      advise_huge_pages(a.innerIndexPtr(), sizeof(int) * static_cast<std::size_t>(outer[nf]));
-      advise_huge_pages(a.valuePtr(), sizeof(double) * static_cast<std::size_t>(outer[nf]));
-      int* inner = a.innerIndexPtr();
-      double* values = a.valuePtr();
-      std::vector<int> contact_only;
-      cursor = 0;
-      for (int j = 0; j < nf; ++j) {
-        int at = outer[j];
-        merge_column(j, [&](int row, double v, bool only) {
-          if (only) contact_only.push_back(at);
-          inner[at] = row, values[at++] = v;
-        });
-      }
-      sys.contact_only.swap(contact_only);
-      k.swap(a);  // the old K_ff goes with a; Eigen 3.4's sparse assignment would copy it
-    }
-    locate_triplets(k, cons.free_index, contact, sys.contact_pos);
-    sys.contact_unique.clear();
-    {
-      std::vector<char> seen;  // no sort of millions of 3D positions
-      resize_on_huge_pages(seen, static_cast<size_t>(k.nonZeros()));
-      reserve_on_huge_pages(sys.contact_unique, sys.contact_pos.size());
-      for (int p : sys.contact_pos)
-        if (p >= 0 && !seen[p]) seen[p] = 1, sys.contact_unique.push_back(p);
-    }
-    sys.contact_elastic.resize(sys.contact_unique.size());
-    for (size_t i = 0; i < sys.contact_unique.size(); ++i) sys.contact_elastic[i] = k.valuePtr()[sys.contact_unique[i]];
-    sys.diagonal.resize(cons.n_free);
-    for (int j = 0; j < cons.n_free; ++j) sys.diagonal[j] = mine(j) ? position_in(k, j, j) : -1;
-    sys.contact_version = version;
-    ++sys.pattern;
-    sys.valid = true;
-    sys.matrix = &k;
-  }
-  double* values = k.valuePtr();
-  std::vector<std::pair<int, double>>& saved = sys.saved;
-  auto set = [&](int p, double v) { saved.emplace_back(p, values[p]), values[p] = v; };
-  // The key of these values: the elastic part's generation, the contact values and the
-  // condensed equations (FNV-1a over their bits). Equal keys, equal matrices.
-  ValuesKey key;
-  auto mix = [&key](std::uint64_t v) { key.mix(v); };
-  mix(static_cast<std::uint64_t>(sys.elastic_generation));
-  sys.contact_written = add_triplet_values(contact, sys.contact_pos, values, key);
-  for (int eq : condensed)
-    if (cons.free_index[eq] >= 0) {
-      if (mine(cons.free_index[eq])) set(sys.diagonal[cons.free_index[eq]], 1.0);
-      mix(static_cast<std::uint64_t>(eq));
-    }
-  // Eliminated unknowns: their rows and columns (elastic values included) become a unit diagonal.
-  const int* outer = k.outerIndexPtr();
-  const int* inner = k.innerIndexPtr();
-  if (sys.owned.empty()) {
-    for (int eq : eliminated) {
-      const int j = cons.free_index[eq];
-      for (int p = outer[j]; p < outer[j + 1]; ++p) {
-        const int i = inner[p];
-        set(p, 0.0);
-        set(static_cast<int>(std::lower_bound(inner + outer[i], inner + outer[i + 1], j) - inner), 0.0);
-      }
-      set(sys.diagonal[j], 1.0);
-      mix(~static_cast<std::uint64_t>(eq));
-    }
-  } else if (!eliminated.empty()) {
-    // A shared model: column j may be another rank's, so row j is found by a pass over this
-    // rank's columns.
-    std::vector<char> gone(nf, 0);
-    for (int eq : eliminated) gone[cons.free_index[eq]] = 1, mix(~static_cast<std::uint64_t>(eq));
-    for (int j = 0; j < nf; ++j) {
-      if (!mine(j)) continue;
-      for (int p = outer[j]; p < outer[j + 1]; ++p)
-        if (gone[j] || gone[inner[p]]) set(p, 0.0);
-      if (gone[j]) set(sys.diagonal[j], 1.0);
-    }
-  }
-  sys.values_key = key.h;
-}
-
-void StaticSolver::restore_elastic() {
-  if (!system_) return;
-  SystemCache& sys = *system_;
-  double* values = elastic_.ff.valuePtr();
-  for (auto it = sys.saved.rbegin(); it != sys.saved.rend(); ++it) values[it->first] = it->second;
-  sys.saved.clear();
-  if (sys.contact_written)
-    for (size_t i = 0; i < sys.contact_unique.size(); ++i) values[sys.contact_unique[i]] = sys.contact_elastic[i];
-  sys.contact_written = false;
+  if (distributed_) matrix_.agree_over_ranks(pattern_before);
 }
 
 void StaticSolver::solve_instant(double t, Vector& u) {
-  const int n = dofs_.n_dofs();
   log_.info("instant " + sci(t));
-  Constraints cons = build_constraints(dofs_, loads_, t, *model_.mesh);
-  if (in_parts_) take_owners_constraints(cons);
-  for (size_t i = 0; i < cons.constrained.size(); ++i) u[cons.constrained[i]] = cons.values[i];
-  const Vector f_ext = external_forces(model_, dofs_, loads_, t, distributed_ ? &node_owner_ : nullptr,
-                                       in_parts_ ? equation_halo_.get() : nullptr);
-  stats_.n_free = std::max(stats_.n_free, in_parts_ ? static_cast<int>(free_numbers_.n_global) : cons.n_free);
+  Instant in;
+  in.t = t;
+  in.cons = Constraints::at_instant(dofs_, loads_, t, *model_.mesh);
+  if (in_parts_) in.cons.take_from_owners(layout_.equation_halo());
+  in.cons.impose(u);
+  in.f_ext = external_forces(model_, dofs_, loads_, t, distributed_ ? &layout_.node_owner() : nullptr,
+                             in_parts_ ? &layout_.equation_halo() : nullptr);
+  stats_.n_free = std::max(stats_.n_free, static_cast<int>(layout_.global_free(in.cons.n_free)));
   // The entries this rank answers for in the norms: all of them, or in parts its owned ones.
-  const int owned_eqs = in_parts_ ? owned_equations_ : n;
-  const int owned_free = in_parts_ ? free_numbers_.n_owned : cons.n_free;
+  in.owned_free = layout_.owned_free(in.cons.n_free);
   if (contact_) {
     Stopwatch watch(stats_.contact_seconds);
     contact_->set_instant(t);
     contact_->begin_step(u, log_);
   }
-
-
   const int factorisations_before = stats_.factorisations;
   const int refinements_before = stats_.refinement_steps;
-  int total_newton = 0;
-  double last_converged_maxi = -1.0;  // the absolute residual the previous pass converged with
   for (int fixed_point = 0;; ++fixed_point) {
-    bool converged = false;
-    double resi_rela = 0.0, resi_maxi = 0.0;
-    log_.info("  | iter |  relative resid. |  absolute resid. |");
-    // The residual after a solve, when the previous iteration could give it (see below).
-    Vector carried_residual;
-    for (int iter = 0; iter <= options_.iter_glob_maxi; ++iter) {
-      std::vector<Triplet> k_contact;
-      Vector residual;
-      if (carried_residual.size() == n) {
-        residual.swap(carried_residual);
-        carried_residual = Vector();
-      } else {
-        Stopwatch watch(stats_.assemble_seconds);
-        residual = stiffness_times(u) - f_ext;
-      }
-      // The residual may converge from the second iteration on, and in a pass after the first
-      // (a new pairing or new statuses) already at its start: a hook that gives its residual
-      // alone gives it first, and its tangent only for an iteration that solves.
-      const bool may_converge = iter > 0 || last_converged_maxi >= 0.0;
-      bool tangent_pending = false;
-      if (contact_) {
-        Stopwatch watch(stats_.contact_seconds);
-        tangent_pending = may_converge && contact_->add_residual(u, residual);
-        if (!tangent_pending) contact_->add_to_system(u, k_contact, residual);
-      }
-      // Relative residual as code_aster's RESI_GLOB_RELA: free residual over the largest load or reaction.
-      double denom = largest_entry(f_ext, owned_eqs);
-      Vector r_free(cons.n_free);
-      double reactions = 0.0;
-      for (int eq = 0; eq < n; ++eq) {
-        const int k = cons.free_index[eq];
-        if (k >= 0) r_free[k] = residual[eq];
-        else if (eq < owned_eqs) reactions = std::max(reactions, std::abs(residual[eq]));
-      }
-      if (in_parts_) reactions = parallel::max_over_ranks(reactions);
-      denom = std::max(denom, reactions);
-      resi_maxi = largest_entry(r_free, owned_free);
-      // A load step where loads and reactions vanish (a body moving rigidly before
-      // contact closes) has no natural reference: fall back to the size of the
-      // terms that make up the internal forces, so that round-off counts as converged.
-      denom = std::max(denom, 1e-6 * k_scale_ * largest_entry(u, owned_eqs));
-      resi_rela = denom > 0.0 ? resi_maxi / denom : resi_maxi;
-      char line[96];
-      std::snprintf(line, sizeof line, "  | %4d |   %14.6e |   %14.6e |", iter, resi_rela, resi_maxi);
-      log_.info(line);
-      if (!std::isfinite(resi_maxi))
-        throw ConvergenceError("the residual became non-finite at instant " + sci(t));
-      const bool rela_ok = options_.resi_glob_rela <= 0.0 || resi_rela <= options_.resi_glob_rela;
-      const bool maxi_ok = options_.resi_glob_maxi <= 0.0 || resi_maxi <= options_.resi_glob_maxi;
-      bool contact_ok = !contact_ || contact_->newton_converged();
-      // In parts every rank pairs the whole surfaces alike; the ranks still decide together.
-      if (in_parts_ && contact_) contact_ok = parallel::max_over_ranks(contact_ok ? 0.0 : 1.0) == 0.0;
-      // A later pass needs no solve when the new pairing or statuses left the residual where
-      // the previous pass converged (at most twice it: e.g. a flat interface translated), or
-      // three orders below RESI_GLOB_RELA (an iterative solve's round-off moves a re-pairing by
-      // about its tolerance); merely within RESI_GLOB_RELA would accept the looser state a
-      // changed pairing leaves, and lose the accuracy Newton had reached.
-      const bool unchanged = iter > 0 || resi_maxi <= 2.0 * last_converged_maxi ||
-                             resi_rela <= 1e-3 * options_.resi_glob_rela;
-      if (may_converge && unchanged && rela_ok && maxi_ok && contact_ok) {
-        if (iter == 0) log_.info("  the new pairing or statuses leave the residual as it was: no solve in this pass");
-        last_converged_maxi = resi_maxi;
-        converged = true;
-        stats_.resi_glob_rela = resi_rela;
-        break;
-      }
-      if (iter == options_.iter_glob_maxi) break;
-      if (tangent_pending) {
-        Stopwatch watch(stats_.contact_seconds);
-        Vector again = Vector::Zero(n);  // the residual is in `residual` already
-        contact_->add_to_system(u, k_contact, again);
-      }
-
-      static const std::vector<int> no_equations;
-      static const std::vector<Elimination> no_eliminations;
-      const std::vector<int>& condensed = contact_ ? contact_->condensed_equations() : no_equations;
-      const std::vector<Elimination>& eliminated = contact_ ? contact_->eliminations() : no_eliminations;
-      std::vector<int> eliminated_eqs;
-      if (!eliminated.empty()) {
-        Stopwatch watch(stats_.assemble_seconds);
-        eliminated_eqs = eliminate(cons, eliminated, residual, k_contact, r_free);
-      }
-      if (distributed_) {
-        // The hook built the terms of the points that touch this rank's columns, which also
-        // reach other ranks' columns: this rank keeps its own.
-        k_contact.erase(std::remove_if(k_contact.begin(), k_contact.end(),
-                                       [this](const Triplet& tr) { return !owned_nodes_[dofs_.node_of(tr.col())]; }),
-                        k_contact.end());
-      }
-      if (interface_use_ == 0) choose_interface(cons, k_contact);
-      if (interface_use_ == 1 && !eliminated_eqs.empty())
-        interface_use_ = -1, interface_.reset(), stats_.interface_equations = 0;
-      if (interface_use_ == 1)
-        for (const Triplet& tr : k_contact) {
-          const int i = cons.free_index[tr.row()], j = cons.free_index[tr.col()];
-          if (i >= 0 && j >= 0 && (!on_interface_[i] || !on_interface_[j]) && std::abs(tr.value()) > interface_floor_) {
-            log_.info("  a contact term outside the surfaces' equations: each contact pass factorises the whole system");
-            interface_use_ = -1, interface_.reset(), stats_.interface_equations = 0;
-            break;
-          }
-        }
-      {
-        Stopwatch watch(stats_.assemble_seconds);
-        update_system(cons, k_contact, condensed, eliminated_eqs);
-        stats_.system_entries = system_->matrix->nonZeros();
-      }
-      // elastic_.ff is K_ff again when this iteration ends, however it ends (the next
-      // residual, a diagnosis, a subdivided step read it).
-      struct RestoreElastic {
-        StaticSolver* self;
-        ~RestoreElastic() { self->restore_elastic(); }
-      } restore_at_end{this};
-      // The system of this iteration: the contact law may condense its multipliers out
-      // (then it is SPD), and says which kind of matrix is left.
-      const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
-      // (The interface solver is CHOLMOD's factorisation of K_ff: no other backend is chosen.)
-      const SolverKind backend = interface_use_ == 1 ? SolverKind::Cholmod : backend_for(kind);
-      // With no contact point active, the bodies must be held by Dirichlet conditions (and
-      // relations) alone. Checked once, before any factorisation:
-      // - from the geometry, every backend and every rank of a shared model: a body that
-      //   some translation or rotation moves without moving a held equation (a free body under
-      //   MUMPS would otherwise be caught only when round-off left its null pivot a zero);
-      // - then, for what geometry does not see (a mechanism inside a body), by a Cholesky
-      //   factorisation of K_ff, for UMFPACK and MUMPS, which return some solution of a
-      //   singular but consistent system. CHOLMOD's own factorisation stops on such a system
-      //   (diagnosed below; a run told to go on past singular pivots is warned instead), the
-      //   interface solver's reference is that factorisation, an
-      //   iterative backend chosen because factorising does not fit skips it, and so does a
-      //   shared model, which would need the whole stiffness on one rank.
-      if (!rigid_checked_ && (!contact_ || contact_->n_active() == 0)) {
-        // Every unknown of a relation (the hook's and the eliminations'): counted as holding.
-        std::vector<int> related = contact_ ? contact_->related_equations() : std::vector<int>{};
-        // A body that only the hook's relations hold leaves K_ff singular, rightly: the
-        // mechanism check of K_ff alone is for runs whose every body the Dirichlet conditions hold.
-        const bool held_by_relations = !related.empty();
-        for (const Elimination& e : eliminated) {
-          related.push_back(e.eq);
-          for (const auto& term : e.terms) related.push_back(term.first);
-        }
-        // Going on past a singular matrix was asked for: a body held by nothing is a warning.
-        const auto report = [this](const SolveError& rigid) {
-          if (options_.factor.singularity.stop) throw rigid;
-          log_.warning("going on as asked with a singular system: " + rigid.message());
-        };
-        // (Not in parts: a part alone may look unheld.)
-        const auto unheld =
-            in_parts_ ? std::optional<SolveError>() : find_unheld_body(model_, dofs_, cons.free_index, related, t);
-        if (unheld) report(*unheld);
-        if (!unheld && !held_by_relations && interface_use_ != 1 && backend != SolverKind::Cholmod &&
-            backend != SolverKind::Petsc && !distributed_ && options_.factor.singularity.digits >= 0) {
-          Stopwatch watch(stats_.assemble_seconds);
-          restore_elastic();  // K_ff itself, without this iteration's terms
-          if (auto rigid =
-                  find_rigid_body_mode(model_, dofs_, cons.free_index, elastic_.ff, t, options_.factor.singularity))
-            report(*rigid);
-          update_system(cons, k_contact, condensed, eliminated_eqs);  // the terms again
-        }
-        rigid_checked_ = true;
-      }
-      // The contact terms are in the system's storage now: their triplets (5.5e6 of them, 88 MB,
-      // on the refined mortar case) go before the factorisation or the preconditioner is built.
-      std::vector<Triplet>().swap(k_contact);
-      const SparseMatrix& a = *system_->matrix;
-      // A x for the accuracy of a solve: this rank's columns of a, summed over the ranks; the
-      // backend's product once K_ff is in its hands.
-      // Without contact a is K_ff itself, with its own product; with contact terms it may
-      // hold condensed or eliminated rows, which are not symmetric.
-      const bool a_is_k_ff = !contact_ && &a == &elastic_.ff;
-      const MatrixProduct system_product = [&a, a_is_k_ff, this](const Vector& x) -> Vector {
-        Vector y;
-        if (in_parts_) {
-          // The backend holding K_ff gives the owned rows whole. Otherwise x's owned entries
-          // are the solve's: its ghosts take their owners' before the product, whose owned
-          // entries are complete once the ranks' shares are summed into them.
-          if (elastic_in_solver_ && elastic_holder_->multiply(x, y)) return y;
-          Vector whole_x = x;
-          free_halo_->copy_to_ghosts(whole_x.data(), 1);
-          y = a * whole_x;
-          free_halo_->add_to_owners(y.data(), 1);
-          return y;
-        }
-        if (elastic_in_solver_ && elastic_holder_->multiply(x, y)) return y;
-        y = a_is_k_ff ? elastic_.ff_times(x) : Vector(a * x);
-        if (system_->increment) y += elastic_.ff_times(x);  // a is C: the system is K_ff + C
-        if (distributed_) parallel::sum_over_ranks(y.data(), y.size());
-        return y;
-      };
-      // In parts, the residuals of a solve are measured on the owned entries over the ranks.
-      const int n_owned_free = owned_free;
-      const VectorNorm owned_norm = [n_owned_free](const Vector& v) {
-        double squares = v.head(n_owned_free).squaredNorm();
-        parallel::sum_over_ranks(&squares, 1);
-        return std::sqrt(squares);
-      };
-      // Condensed unknowns: decoupled rows (unit diagonal, zero right-hand side), set by recover().
-      for (int eq : condensed)
-        if (cons.free_index[eq] >= 0) r_free[cons.free_index[eq]] = 0.0;
-      Vector du;
-      RefinedSolve accuracy;
-      const bool via_interface = interface_use_ == 1;
-      SystemState& state = via_interface ? interface_state_ : system_->state[static_cast<int>(backend)];
-      auto& backend_solver = solvers_[static_cast<int>(backend)];
-      if (!via_interface && !backend_solver) {
-        IterativeSettings settings = options_.iterative;
-        if (options_.krylov_history) settings.history = [this](const std::string& line) { log_.info(line); };
-        if (options_.auto_solver && backend == SolverKind::Petsc)
-          backend_solver = make_iterative_with_fallback(settings, SolverKind::Mumps,
-                                                        [this](const std::string& line) { log_.info(line); });
-        else if (saddle_ && (backend == SolverKind::Mumps || backend == SolverKind::Umfpack))
-          backend_solver = make_saddle_solver(backend, [this](const std::string& line) { log_.info(line); });
-        else if (backend == SolverKind::Mumps && options_.single_precision) {
-          backend_solver = make_mumps_solver(true);
-          log_.info("  linear solver: MUMPS in single precision, each solve refined in double precision");
-        }
-        else
-          backend_solver = make_linear_solver(backend, settings);
-        backend_solver->configure(options_.factor);
-      }
-      LinearSolver* const solver = via_interface ? interface_.get() : backend_solver.get();
-      const bool iterative = solver->iterative();
-      const unsigned long long statuses = contact_ ? contact_->status_key() : 0ULL;
-      const bool same_matrix =
-          state.factorised && state.pattern == system_->pattern && state.values_key == system_->values_key;
-      bool solved = false;
-      // REAC_ITER: between two renewals the last factors of this loop solve with the current
-      // residual (a modified Newton step, no refinement against a matrix they do not factorise).
-      const bool renew = iter == 0 || (options_.reac_iter > 0 && iter % options_.reac_iter == 0);
-      if (!same_matrix && !renew && state.factorised && state.n == a.rows()) {
-        Stopwatch watch(stats_.solve_seconds);
-        du = solver->solve(-r_free);
-        solved = true;
-        log_.info("         (factorisation of iteration " + std::to_string(state.iteration) + " reused)");
-      }
-      if (!solved && !iterative && !via_interface && !same_matrix && state.factorised && state.n == a.rows() &&
-          state.statuses == statuses && state.pattern != system_->pattern) {
-        // A new pairing with the same statuses: the previous factorisation is a close
-        // preconditioner; a few Krylov iterations replace a factorisation when they converge.
-        Stopwatch watch(stats_.solve_seconds);
-        const KrylovResult k =
-            preconditioned_gmres(system_product, *solver, -r_free, du, kKrylovIterations, kKrylovTolerance);
-        if (k.converged) {
-          solved = true;
-          accuracy.raw_residual = accuracy.residual = k.residual;
-          stats_.krylov_iterations += k.iterations;
-          log_.info("  linear solve: previous factorisation as preconditioner, " + std::to_string(k.iterations) +
-                    " GMRES iteration(s), relative residual " + sci(k.residual));
-        } else {
-          log_.info("  linear solve: " + std::to_string(k.iterations) + " GMRES iteration(s) with the previous "
-                    "factorisation did not converge (relative residual " + sci(k.residual) + "); refactorising");
-        }
-      }
-      if (!solved && !same_matrix) {
-        // One set of factors alive at a time: the other backends' (e.g. CHOLMOD's of a pass
-        // without active contact) are released before this one is built.
-        for (int other = 0; other < kSolverKinds; ++other)
-          if (other != static_cast<int>(backend) && solvers_[other]) {
-            solvers_[other].reset();
-            system_->state[other] = SystemState{};
-          }
-        try {
-          Stopwatch watch(stats_.factorize_seconds);
-          state.factorised = false;
-          LUNASTER_ASSERT(!distributed_ || solver->takes_distributed(), "a shared model needs a backend that takes it");
-          if (iterative || distributed_) solver->set_layout(system_layout(cons, condensed, eliminated_eqs));
-          LUNASTER_ASSERT(!elastic_in_solver_, "K_ff was handed to a backend: it cannot be factorised again");
-          if (options_.observe_factorisation && !via_interface) options_.observe_factorisation(a, kind, elastic_.equation);
-          if (&a == &elastic_.ff && !contact_) {
-            // The system is K_ff itself: a backend that keeps its own copy (PETSc) takes it,
-            // and one copy is enough; a direct backend leaves it here.
-            elastic_in_solver_ = solver->factorize_taking(elastic_.ff, kind);
-            if (elastic_in_solver_) elastic_holder_ = solver;
-          } else {
-            solver->factorize(a, kind);
-          }
-        } catch (const SolveError& err) {
-          if (err.out_of_memory() || err.failure().what == Failure::What::IterativeSolve) throw;
-          restore_elastic();
-          throw diagnose(cons, err, t);
-        }
-        ++stats_.factorisations;
-        // A singular matrix that the run goes past, as asked: said once for each instant and
-        // pivot (the Newton iterations and contact passes of an instant refactorise it alike).
-        if (const std::string note = solver->singular_note(); !note.empty()) {
-          std::string where;
-          if (const int column = solver->singular_column(); column >= 0)
-            for (int eq = 0; eq < n && where.empty(); ++eq)
-              if (cons.free_index[eq] == column) where = " at " + describe_equation(*model_.mesh, dofs_, eq);
-          char inst[32];
-          std::snprintf(inst, sizeof inst, "%.6e", t);
-          const std::string said = "singular matrix at instant " + std::string(inst) + where;
-          if (said != singular_said_)
-            log_.warning(said + ", going on as asked: " + solver->name() + ": " + note);
-          singular_said_ = said;
-        }
-        // What an asked-for ordering and out-of-core factors came to, said once while it holds.
-        const auto say_once = [this](const std::string& line, std::string& said) {
-          if (line != said) log_.info(line);
-          said = line;
-        };
-        if (options_.factor.ordering != FactorOrdering::Auto)
-          say_once("  " + solver->name() + " ordering: " + solver->ordering_used(), ordering_logged_);
-        if (const std::string f = solver->factorisation_used(); !f.empty())
-          say_once("  " + solver->name() + " factorisation: " + f, factorisation_logged_);
-        if (const std::string analysis = solver->analysis_note(); !analysis.empty() && analysis != analysis_logged_)
-          log_.debug("  " + analysis);
-        analysis_logged_ = solver->analysis_note();
-        if (const std::string memory = solver->memory_used(); !memory.empty())
-          say_once("  " + solver->name() + " factors: " + memory, memory_logged_);
-        if (const std::string approximate = solver->approximation_note(); !approximate.empty())
-          say_once("  " + solver->name() + ": " + approximate, approximation_logged_);
-        if (via_interface)
-          log_.info("  linear solve: Schur complement of the " + std::to_string(interface_->interface().size()) +
-                    " surface equations factorised on the kept elastic factorisation");
-        state.factorised = true;
-        state.n = a.rows();
-        state.pattern = system_->pattern;
-        state.statuses = statuses;
-        state.values_key = system_->values_key;
-        state.iteration = iter;
-      } else if (same_matrix) {
-        log_.info(options_.elastic_matrix ? std::string("         (factorisation of the elastic matrix reused)")
-                  : iterative     ? std::string("         (same matrix as the last solve: preconditioner reused)")
-                                  : std::string("         (same matrix as the last factorisation: factors reused)"));
-      }
-      if (!solved && iterative) {
-        // The Krylov solver iterates to its own tolerance and fails when it does not get
-        // there: no refinement on top.
-        Stopwatch watch(stats_.solve_seconds);
-        du = solver->solve(-r_free);
-        accuracy.raw_residual = accuracy.residual =
-            relative_residual(system_product, du, -r_free, in_parts_ ? &owned_norm : nullptr);
-        stats_.krylov_iterations += solver->iterations();
-        log_.info("  linear solve: " + solver->name() + ", " + std::to_string(solver->iterations()) +
-                  " iteration(s), relative residual " + sci(accuracy.residual));
-      } else if (!solved) {
-        Stopwatch watch(stats_.solve_seconds);
-        // |A| |x| for the backward error (not with a shared model or K_ff in PETSc's hands).
-        const MatrixProduct abs_product = [&a, this](const Vector& x) -> Vector {
-          Vector y = Vector::Zero(x.size());
-          add_abs_product(a, x, y);
-          if (system_->increment) add_abs_product(elastic_.ff, x, y);
-          return y;
-        };
-        const bool whole = !distributed_ && !elastic_in_solver_;
-        // With |A| |x| at hand, every solve above round-off is judged row by row: a relative
-        // residual of 8e-11 (under the 1e-10 that asks for refinement without it) left
-        // SSNP121 E's LAGS_C 3e-8 off in a two-rank MUMPS run, its multiplier rows far from
-        // their own round-off.
-        using R = NewtonOptions::Refinement;
-        const R policy = options_.refinement;
-        // code_aster's MUMPS settings: AUTO ICNTL(10) = 4 with CNTL(2) = 1e-14 (the backward
-        // error that stops it), MINI ICNTL(10) = -2 (two steps, no test: both taken, the better
-        // iterate kept), FORCE ICNTL(10) = 10 with no backward-error stop. A step that does not
-        // lower the residual is not kept.
-        const int steps = policy == R::None ? 0 : policy == R::Two ? 2 : policy == R::Force ? 10 : 4;
-        const bool stop_when_stable = policy == R::Auto;
-        accuracy = solve_with_refinement(*solver, system_product, -r_free, du, steps,
-                                         !stop_when_stable ? 0.0 : whole ? 1e-14 : 1e-10,
-                                         whole && stop_when_stable ? &abs_product : nullptr,
-                                         options_.direct_solve_tolerance > 0.0 ? options_.direct_solve_tolerance
-                                                                               : kSolveTolerance,
-                                         in_parts_ ? &owned_norm : nullptr, policy == R::Two);
-        // A direct backend that iterates on a factorisation of another matrix (the
-        // multipliers' Schur complement) says how many iterations its last solve took.
-        if (const int its = solver->iterations(); its > 0) {
-          stats_.krylov_iterations += its;
-          log_.info("  linear solve: " + solver->name() + ", " + std::to_string(its) +
-                    " iteration(s), relative residual " + sci(accuracy.residual));
-        }
-      }
-      ++stats_.newton_iterations;
-      stats_.refinement_steps += accuracy.steps;
-      // A direct solver may return a "solution" of a singular system without flagging it
-      // (MUMPS misses null pivots that are round-off rather than exact zeros): check the
-      // solve itself, and locate the rigid-body mode when it did not solve the system.
-      const double raw_error = accuracy.raw_residual, solve_error = accuracy.residual;
-      stats_.solve_residual_raw = std::max(stats_.solve_residual_raw, raw_error);
-      stats_.solve_residual = std::max(stats_.solve_residual, solve_error);
-      const double accepted = iterative ? std::max(kSolveTolerance, 1.01 * options_.iterative.relative_residual)
-                              : options_.direct_solve_tolerance > 0.0 ? options_.direct_solve_tolerance
-                                                                      : std::numeric_limits<double>::infinity();
-      if (!(solve_error <= accepted)) {
-        restore_elastic();
-        SolveError found = diagnose(
-            cons,
-            SolveError("the linear solver returned no accurate solution (relative residual of the solve " +
-                       sci(raw_error) + ", " + sci(solve_error) + " after iterative refinement; accepted below " +
-                       sci(accepted) + ")"),
-            t);
-        throw found;
-      }
-      if (in_parts_) free_halo_->copy_to_ghosts(du.data(), 1);  // the solve gave the owned values
-      for (int eq = 0; eq < n; ++eq)
-        if (cons.free_index[eq] >= 0) u[eq] += du[cons.free_index[eq]];
-      // Without contact or relations the residual is linear in u, and neither f nor u_C move
-      // within the instant: the next residual is this one plus K du. Its free rows are the
-      // solve's own A du - b (A = K_ff, b = -r_F), its constrained rows cost K(C, F) du; the
-      // product of K with u for the next iteration is saved (a third of an elastic instant's
-      // products). Not from a residual already near round-off: A du - b would then be the
-      // round-off of a tiny correction, far below that of K u - f, and report a state more
-      // exact than the stored u can be.
-      constexpr double kCarriedAbove = 1e-8;
-      if (!contact_ && eliminated.empty() && condensed.empty() && a_is_k_ff && !distributed_ && !elastic_in_solver_ &&
-          accuracy.ax_minus_b.size() == cons.n_free && resi_rela > kCarriedAbove) {
-        carried_residual = std::move(residual);
-        for (int eq = 0; eq < n; ++eq)
-          if (cons.free_index[eq] >= 0) carried_residual[eq] = accuracy.ax_minus_b[cons.free_index[eq]];
-        elastic_.add_constrained_rows(du, carried_residual);
-      }
-      for (const Elimination& e : eliminated) {
-        // du_e = b_e + sum a_k du_k (its own entry of du is the zero of its unit row).
-        double d = e.value;
-        for (const auto& [k, a] : e.terms)
-          if (cons.free_index[k] >= 0) d += a * du[cons.free_index[k]];
-        u[e.eq] += d;
-      }
-      if (!condensed.empty()) {
-        Stopwatch watch(stats_.contact_seconds);
-        contact_->recover(u);
-      }
-      ++total_newton;
-    }
-    if (!converged) {
-      ConvergenceError err("Newton did not converge at instant " + sci(t) + " within " +
-                               std::to_string(options_.iter_glob_maxi) + " iterations",
-                           {"last residuals: relative " + sci(resi_rela) + ", absolute " + sci(resi_maxi) + " N",
-                            "loop: Newton (contact/geometry fixed-point pass " + std::to_string(fixed_point) + ")"});
-      Failure& f = err.failure();
-      f.what = Failure::What::NewtonIterations;
-      f.limit = options_.iter_glob_maxi;
-      f.residuals_known = true, f.relative = resi_rela, f.absolute = resi_maxi;
-      throw err;
-    }
+    newton_loop(in, u, fixed_point);
     if (!contact_ || !contact_->has_contact()) break;
     log_.info("contact: " + std::to_string(contact_->n_active()) + " active point(s) in this pass");
     ++stats_.contact_passes;
@@ -1667,21 +192,287 @@ void StaticSolver::solve_instant(double t, Vector& u) {
       try {
         settled = contact_->settle(u, log_);
       } catch (ConvergenceError& err) {
-        err.add_hint("at instant " + sci(t) + ", after " + std::to_string(total_newton) +
-                     " Newton iteration(s); last residuals: relative " + sci(resi_rela) + ", absolute " +
-                     sci(resi_maxi) + " N");
-        err.failure().residuals_known = true, err.failure().relative = resi_rela, err.failure().absolute = resi_maxi;
+        err.add_hint("at instant " + sci(t) + ", after " + std::to_string(in.total_newton) +
+                     " Newton iteration(s); last residuals: relative " + sci(in.norms.relative) + ", absolute " +
+                     sci(in.norms.absolute) + " N");
+        err.failure().residuals_known = true;
+        err.failure().relative = in.norms.relative, err.failure().absolute = in.norms.absolute;
         throw;
       }
     }
-    if (in_parts_) settled = parallel::max_over_ranks(settled ? 0.0 : 1.0) == 0.0;
-    if (settled) break;
+    if (layout_.all_ranks(settled)) break;
   }
-  log_.info("  converged in " + std::to_string(total_newton) + " Newton iteration(s), " +
+  log_.info("  converged in " + std::to_string(in.total_newton) + " Newton iteration(s), " +
             std::to_string(stats_.factorisations - factorisations_before) + " factorisation(s)" +
             (stats_.refinement_steps > refinements_before
                  ? ", " + std::to_string(stats_.refinement_steps - refinements_before) + " refinement step(s)"
                  : std::string()));
+}
+
+void StaticSolver::newton_loop(Instant& in, Vector& u, int fixed_point) {
+  log_.info("  | iter |  relative resid. |  absolute resid. |");
+  in.carried_residual = Vector();
+  in.norms = ResidualNorms{};
+  for (int iter = 0; iter <= options_.iter_glob_maxi; ++iter) {
+    std::vector<Triplet> k_contact;
+    Vector residual, r_free;
+    bool tangent_pending = false;
+    if (converged_at(in, u, iter, residual, r_free, k_contact, tangent_pending)) return;
+    if (iter == options_.iter_glob_maxi) break;
+    if (tangent_pending) {
+      Stopwatch watch(stats_.contact_seconds);
+      Vector again = Vector::Zero(dofs_.n_dofs());  // the residual is in `residual` already
+      contact_->add_to_system(u, k_contact, again);
+    }
+    newton_step(in, u, iter, residual, r_free, k_contact);
+    ++in.total_newton;
+  }
+  ConvergenceError err("Newton did not converge at instant " + sci(in.t) + " within " +
+                           std::to_string(options_.iter_glob_maxi) + " iterations",
+                       {"last residuals: relative " + sci(in.norms.relative) + ", absolute " +
+                            sci(in.norms.absolute) + " N",
+                        "loop: Newton (contact/geometry fixed-point pass " + std::to_string(fixed_point) + ")"});
+  Failure& f = err.failure();
+  f.what = Failure::What::NewtonIterations;
+  f.limit = options_.iter_glob_maxi;
+  f.residuals_known = true, f.relative = in.norms.relative, f.absolute = in.norms.absolute;
+  throw err;
+}
+
+bool StaticSolver::converged_at(Instant& in, const Vector& u, int iter, Vector& residual, Vector& r_free,
+                                std::vector<Triplet>& k_contact, bool& tangent_pending) {
+  if (in.carried_residual.size() == dofs_.n_dofs()) {
+    residual.swap(in.carried_residual);
+    in.carried_residual = Vector();
+  } else {
+    Stopwatch watch(stats_.assemble_seconds);
+    residual = internal_forces(u) - in.f_ext;
+  }
+  // The residual may converge from the second iteration on, and in a pass after the first
+  // (a new pairing or new statuses) already at its start: a hook that gives its residual
+  // alone gives it first, and its tangent only for an iteration that solves.
+  const bool may_converge = iter > 0 || in.last_converged_maxi >= 0.0;
+  if (contact_) {
+    Stopwatch watch(stats_.contact_seconds);
+    tangent_pending = may_converge && contact_->add_residual(u, residual);
+    if (!tangent_pending) contact_->add_to_system(u, k_contact, residual);
+  }
+  in.norms = convergence_->measure(in.cons, residual, in.f_ext, u, in.owned_free, r_free);
+  char line[96];
+  std::snprintf(line, sizeof line, "  | %4d |   %14.6e |   %14.6e |", iter, in.norms.relative, in.norms.absolute);
+  log_.info(line);
+  if (!std::isfinite(in.norms.absolute)) throw ConvergenceError("the residual became non-finite at instant " + sci(in.t));
+  // In parts every rank pairs the whole surfaces alike; the ranks still decide together.
+  const bool contact_ok = !contact_ || layout_.all_ranks(contact_->newton_converged());
+  if (!convergence_->converged(in.norms, iter, in.last_converged_maxi, contact_ok)) return false;
+  if (iter == 0) log_.info("  the new pairing or statuses leave the residual as it was: no solve in this pass");
+  in.last_converged_maxi = in.norms.absolute;
+  stats_.resi_glob_rela = in.norms.relative;
+  return true;
+}
+
+void StaticSolver::check_bodies_held(const Instant& in, const SystemTerms& terms, SolverKind backend) {
+  // With no contact point active, the bodies must be held by Dirichlet conditions (and
+  // relations) alone. Checked once, before any factorisation (FailureDiagnosis::check_held):
+  // from the geometry, except in parts (a part alone may look unheld); then by a Cholesky
+  // factorisation of K_ff for UMFPACK and MUMPS, which return some solution of a singular but
+  // consistent system. CHOLMOD's own factorisation stops on such a system (diagnosed; a run
+  // told to go on past singular pivots is warned instead), the interface solver's reference is
+  // that factorisation, an iterative backend chosen because factorising does not fit skips it,
+  // and so does a shared model, which would need the whole stiffness on one rank.
+  if (rigid_checked_ || (contact_ && contact_->n_active() != 0)) return;
+  FailureDiagnosis::HeldCheck check;
+  // Every unknown of a relation (the hook's and the eliminations'): counted as holding.
+  check.related = contact_ ? contact_->related_equations() : std::vector<int>{};
+  // A body that only the hook's relations hold leaves K_ff singular, rightly: the mechanism
+  // check of K_ff alone is for runs whose every body the Dirichlet conditions hold.
+  const bool held_by_relations = !check.related.empty();
+  for (const Elimination& e : *terms.eliminated) {
+    check.related.push_back(e.eq);
+    for (const auto& term : e.terms) check.related.push_back(term.first);
+  }
+  check.geometry = !in_parts_;
+  check.factorise = !held_by_relations && !interface_.active() && backend != SolverKind::Cholmod &&
+                    backend != SolverKind::Petsc && !distributed_ && options_.factor.singularity.digits >= 0;
+  const auto k_ff_alone = [&]() -> const SparseMatrix& {
+    matrix_.restore();  // K_ff itself, without this iteration's terms
+    return matrix_.elastic().ff;
+  };
+  {
+    Stopwatch watch(stats_.assemble_seconds);
+    const bool restored = FailureDiagnosis(model_, options_, contact_ != nullptr)
+                              .check_held(dofs_, in.cons.free_index, in.t, check, k_ff_alone, log_);
+    if (restored) update_system(in.cons, *terms.contact, *terms.condensed, terms.eliminated_eqs);  // the terms again
+  }
+  rigid_checked_ = true;
+}
+
+void StaticSolver::newton_step(Instant& in, Vector& u, int iter, Vector& residual, Vector& r_free,
+                               std::vector<Triplet>& k_contact) {
+  const Constraints& cons = in.cons;
+  if (!matrix_.constant()) {
+    Stopwatch watch(stats_.assemble_seconds);
+    matrix_.refresh(u);  // a tangent that follows u: K_ff at this iterate
+  }
+  static const std::vector<int> no_equations;
+  static const std::vector<Elimination> no_eliminations;
+  SystemTerms terms;
+  terms.contact = &k_contact;
+  terms.condensed = contact_ ? &contact_->condensed_equations() : &no_equations;
+  terms.eliminated = contact_ ? &contact_->eliminations() : &no_eliminations;
+  if (!terms.eliminated->empty()) {
+    Stopwatch watch(stats_.assemble_seconds);
+    terms.eliminated_eqs =
+        cons.eliminate(*terms.eliminated, matrix_.columns(cons, *terms.eliminated, layout_, model_, dofs_, part_),
+                        residual, k_contact, r_free);
+  }
+  if (distributed_) {
+    // The hook built the terms of the points that touch this rank's columns, which also
+    // reach other ranks' columns: this rank keeps its own.
+    k_contact.erase(std::remove_if(k_contact.begin(), k_contact.end(),
+                                   [this](const Triplet& tr) { return !(*layout_.owned_nodes())[dofs_.node_of(tr.col())]; }),
+                    k_contact.end());
+  }
+  if (contact_)
+    interface_.decide(cons, k_contact, !terms.eliminated_eqs.empty(), *contact_, dofs_, matrix_.elastic().ff,
+                      options_.auto_solver && options_.solver == SolverKind::Cholmod && !distributed_ &&
+                          matrix_.constant());
+  {
+    Stopwatch watch(stats_.assemble_seconds);
+    update_system(cons, k_contact, *terms.condensed, terms.eliminated_eqs);
+    stats_.system_entries = matrix_.matrix().nonZeros();
+  }
+  // matrix_.elastic().ff is K_ff again when this iteration ends, however it ends (the next
+  // residual, a diagnosis, a subdivided step read it).
+  struct RestoreElastic {
+    StaticSolver* self;
+    ~RestoreElastic() { self->matrix_.restore(); }
+  } restore_at_end{this};
+  // The system of this iteration: the contact law may condense its multipliers out
+  // (then it is SPD), and says which kind of matrix is left.
+  const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
+  // (The interface solver is CHOLMOD's factorisation of K_ff: no other backend is chosen.)
+  const SolverKind backend = interface_.active() ? SolverKind::Cholmod : choose_backend(kind);
+  check_bodies_held(in, terms, backend);
+  // The contact terms are in the system's storage now: their triplets (5.5e6 of them, 88 MB,
+  // on the refined mortar case) go before the factorisation or the preconditioner is built.
+  std::vector<Triplet>().swap(k_contact);
+  // Condensed unknowns: decoupled rows (unit diagonal, zero right-hand side), set by recover().
+  for (int eq : *terms.condensed)
+    if (cons.free_index[eq] >= 0) r_free[cons.free_index[eq]] = 0.0;
+  RefinedSolve accuracy;
+  Vector du = solve_system(in, iter, kind, backend, terms, r_free, accuracy);
+  apply_increment(in, du, accuracy, terms, residual, u);
+}
+
+Vector StaticSolver::solve_system(const Instant& in, int iter, MatrixKind kind, SolverKind backend,
+                                  const SystemTerms& terms, const Vector& r_free, RefinedSolve& accuracy) {
+  const Constraints& cons = in.cons;
+  const SparseMatrix& a = matrix_.matrix();
+  const bool via_interface = interface_.active();
+  const bool a_is_k_ff = !contact_ && &a == &matrix_.elastic().ff;
+  // In parts, the residuals of a solve are measured on the owned entries over the ranks.
+  const int n_owned_free = in.owned_free;
+  const VectorNorm owned_norm = [n_owned_free](const Vector& v) {
+    double squares = v.head(n_owned_free).squaredNorm();
+    parallel::sum_over_ranks(&squares, 1);
+    return std::sqrt(squares);
+  };
+  LinearSolve::System system;
+  system.a = &a;
+  system.kind = kind;
+  system.pattern = matrix_.pattern();
+  system.values_key = matrix_.values_key();
+  system.statuses = contact_ ? contact_->status_key() : 0ULL;
+  system.iteration = iter;
+  system.product = system_product(a, a_is_k_ff);
+  // |A| |x| for the backward error (not with a shared model or K_ff in PETSc's hands).
+  system.abs_product = [&a, this](const Vector& x) -> Vector {
+    Vector y = Vector::Zero(x.size());
+    add_abs_product(a, x, y);
+    if (matrix_.increment()) add_abs_product(matrix_.elastic().ff, x, y);
+    return y;
+  };
+  system.norm = in_parts_ ? &owned_norm : nullptr;
+  system.on_interface = via_interface;
+  system.whole = !distributed_ && !k_ff_holder();
+  system.distributed = distributed_;
+  system.layout = [this, &cons, &terms] { return system_layout(cons, *terms.condensed, terms.eliminated_eqs); };
+  if (&a == &matrix_.elastic().ff && !contact_ && matrix_.constant()) system.takeable = &matrix_.elastic().ff;
+  if (options_.observe_factorisation && !via_interface)
+    system.observe = [this](const SparseMatrix& m, MatrixKind k) {
+      options_.observe_factorisation(m, k, matrix_.elastic().equation);
+    };
+  system.diagnose = [this, &in](const SolveError& err) { return diagnose(in.cons, err, in.t); };
+  SolveLog::Where where{in.t, model_.mesh, &dofs_, &cons.free_index,
+                        via_interface ? static_cast<int>(interface_.equations().size()) : 0};
+  const LinearSolve::Events events = [this, &where](const LinearSolve::Event& e) { solve_log_.event(e, where); };
+  LinearSolver& solver = via_interface ? interface_.solver() : linear_->backend(backend, events);
+  LinearSolve::FactorState& state = via_interface ? interface_.state() : linear_->state(backend);
+  return linear_->solve(solver, state, backend, system, -r_free, events, accuracy);
+}
+
+MatrixProduct StaticSolver::system_product(const SparseMatrix& a, bool a_is_k_ff) const {
+  // A x for the accuracy of a solve: this rank's columns of a, summed over the ranks; the
+  // backend's product once K_ff is in its hands. Without contact a is K_ff itself, with its
+  // own product; with contact terms it may hold condensed or eliminated rows, which are not
+  // symmetric.
+  return [&a, a_is_k_ff, this](const Vector& x) -> Vector {
+    Vector y;
+    const LinearSolver* holder = k_ff_holder();
+    if (in_parts_) {
+      // The backend holding K_ff gives the owned rows whole. Otherwise x's owned entries
+      // are the solve's: its ghosts take their owners' before the product, whose owned
+      // entries are complete once the ranks' shares are summed into them.
+      if (holder && holder->multiply(x, y)) return y;
+      Vector whole_x = x;
+      layout_.free_halo().copy_to_ghosts(whole_x.data(), 1);
+      y = a * whole_x;
+      layout_.free_halo().add_to_owners(y.data(), 1);
+      return y;
+    }
+    if (holder && holder->multiply(x, y)) return y;
+    y = a_is_k_ff ? matrix_.elastic().ff_times(x) : Vector(a * x);
+    if (matrix_.increment()) y += matrix_.elastic().ff_times(x);  // a is C: the system is K_ff + C
+    if (distributed_) parallel::sum_over_ranks(y.data(), y.size());
+    return y;
+  };
+}
+
+void StaticSolver::apply_increment(Instant& in, Vector& du, const RefinedSolve& accuracy, const SystemTerms& terms,
+                                   Vector& residual, Vector& u) {
+  const Constraints& cons = in.cons;
+  const int n = dofs_.n_dofs();
+  if (in_parts_) layout_.free_halo().copy_to_ghosts(du.data(), 1);  // the solve gave the owned values
+  for (int eq = 0; eq < n; ++eq)
+    if (cons.free_index[eq] >= 0) u[eq] += du[cons.free_index[eq]];
+  // Without contact or relations the residual is linear in u, and neither f nor u_C move
+  // within the instant: the next residual is this one plus K du. Its free rows are the
+  // solve's own A du - b (A = K_ff, b = -r_F), its constrained rows cost K(C, F) du; the
+  // product of K with u for the next iteration is saved (a third of an elastic instant's
+  // products). Not from a residual already near round-off: A du - b would then be the
+  // round-off of a tiny correction, far below that of K u - f, and report a state more
+  // exact than the stored u can be.
+  constexpr double kCarriedAbove = 1e-8;
+  const bool a_is_k_ff = !contact_ && &matrix_.matrix() == &matrix_.elastic().ff;
+  if (matrix_.constant() && !contact_ && terms.eliminated->empty() && terms.condensed->empty() && a_is_k_ff && !distributed_ &&
+      !k_ff_holder() && accuracy.ax_minus_b.size() == cons.n_free && in.norms.relative > kCarriedAbove) {
+    in.carried_residual = std::move(residual);
+    for (int eq = 0; eq < n; ++eq)
+      if (cons.free_index[eq] >= 0) in.carried_residual[eq] = accuracy.ax_minus_b[cons.free_index[eq]];
+    matrix_.elastic().add_constrained_rows(du, in.carried_residual);
+  }
+  cons.recover(*terms.eliminated, du, u);
+  if (!terms.condensed->empty()) {
+    Stopwatch watch(stats_.contact_seconds);
+    contact_->recover(u);
+  }
+}
+
+SolverKind StaticSolver::choose_backend(MatrixKind kind) {
+  const LinearSolve::Backend chosen = linear_->choose(kind, stats_.n_free, model_.dim, distributed_);
+  solve_log_.backend(chosen, kind, stats_.n_free);
+  return chosen.kind;
 }
 
 }  // namespace lunaster::engine

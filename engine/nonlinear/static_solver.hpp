@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,107 +17,29 @@
 #include "engine/core/log.hpp"
 #include "engine/fe/fe_model.hpp"
 #include "engine/fields/fields.hpp"
+#include "engine/nonlinear/constraints.hpp"
+#include "engine/nonlinear/convergence_test.hpp"
+#include "engine/nonlinear/interface_policy.hpp"
+#include "engine/nonlinear/linear_solve.hpp"
+#include "engine/nonlinear/solve_log.hpp"
 #include "engine/nonlinear/loads.hpp"
+#include "engine/nonlinear/newton_options.hpp"
+#include "engine/nonlinear/numbering.hpp"
 #include "engine/nonlinear/reduction.hpp"
+#include "engine/nonlinear/step_results.hpp"
+#include "engine/nonlinear/system_matrix.hpp"
+#include "engine/nonlinear/tangent_source.hpp"
 #include "engine/solver/interface_solver.hpp"
 #include "engine/solver/linear_solver.hpp"
 
 namespace lunaster::engine {
 
-struct NewtonOptions {
-  double resi_glob_rela = 1e-6;  ///< relative residual |r| / |f_ext + reactions|; <= 0: unused
-  double resi_glob_maxi = -1.0;  ///< absolute residual (N); <= 0: unused
-  int iter_glob_maxi = 10;
-  SolverKind solver = SolverKind::Cholmod;  ///< Cholmod gives way to Mumps for systems that are not SPD (logged once)
-  /// The deck left the choice to lunaster (METHODE='AUTO'): large 3D SPD systems also go to
-  /// Mumps, whose nested-dissection orderings fill less there (logged once).
-  bool auto_solver = false;
-  /// Matrix policy (code_aster's NEWTON keywords). reac_iter: the factors may be renewed at
-  /// Newton iteration k of a Newton loop (one per instant and per contact pass) when k == 0
-  /// or k % reac_iter == 0; 0 = at k == 0 only. Between two, the last factors solve with the
-  /// current residual (a modified Newton). Convergence is always judged on the true residual.
-  /// Whatever the policy, a matrix equal to the one last factorised is not factorised again.
-  int reac_iter = 1;
-  /// The elastic stiffness alone (no contact terms) instead of the tangent. With linear
-  /// elasticity, the only behaviour, it is the tangent: factorised once per run either way.
-  /// Not for runs with contact (the multiplier equations would be empty).
-  bool elastic_matrix = false;
-  /// Under mpirun, whether a deck that names MUMPS shares the model among the ranks
-  /// (SOLVEUR MATR_DISTRIBUEE='OUI', the default) or gives every rank the whole system ('NON').
-  /// PETSc always shares it.
-  bool share_model = true;
-  /// SolverKind::Petsc: the Krylov method, preconditioner and tolerance.
-  IterativeSettings iterative;
-  /// How the direct backends analyse and factorise (SOLVEUR RENUM, NPREC, STOP_SINGULIER and,
-  /// for MUMPS, GESTION_MEMOIRE, PCENT_PIVOT, PRETRAITEMENTS, ACCELERATION, LOW_RANK_SEUIL,
-  /// TYPE_RESOL). Its singularity test also says whether a body that no condition holds stops
-  /// the run: not stopping lets it through with a warning, the factorisation then choosing
-  /// its position.
-  FactorSettings factor;
-  /// The relative residual |A du - b| / |b| a direct solve must reach after iterative
-  /// refinement (code_aster's SOLVEUR RESI_RELA of MUMPS); <= 0: not checked, Newton's
-  /// residual alone judges. Iterative backends keep their own tolerance.
-  double direct_solve_tolerance = 1e-6;
-  /// Iterative refinement of the direct solves (code_aster's SOLVEUR POSTTRAITEMENTS of MUMPS).
-  /// Auto: up to 4 steps, until the solve is backward stable row by row (or no step gains);
-  /// None: none; Two: two steps, backward stable or not; Force: up to 10 steps, backward stable
-  /// or not. A step is kept only while it lowers the residual.
-  enum class Refinement { Auto, None, Two, Force } refinement = Refinement::Auto;
-  /// MUMPS factorises in single precision (code_aster's SOLVEUR MIXER_PRECISION = 'OUI'): half
-  /// the factor memory; the refinement of each solve, in double precision, makes up the rest.
-  bool single_precision = false;
-  /// Print each Krylov iteration's residual in the log (code_aster's INFO=2).
-  bool krylov_history = false;
-  int subdivide_levels = 0;  ///< on a Newton failure, split the step this many times at most
-  int subdivide_parts = 4;   ///< sub-steps per split
-  /// Called with each matrix handed to a sparse factorisation, its kind, and per column the
-  /// equation it stands for (what tests read: the symmetry of a condensed contact system).
-  /// Not called for the interface solver's dense Schur complements; with a shared model, a
-  /// holds this rank's columns. Empty: nothing called.
-  std::function<void(const SparseMatrix& a, MatrixKind kind, const std::vector<int>& equation)> observe_factorisation;
-};
-
-/// What one run cost, measured by the solver itself (wall seconds, counts).
-/// Read through `StaticSolver::stats()`; IMPR_MESURE writes it as a CSV row.
-struct SolverStats {
-  int n_dofs = 0;             ///< unknowns, contact multipliers included
-  int n_free = 0;             ///< unknowns left after eliminating Dirichlet conditions (largest over instants)
-  int instants = 0;           ///< converged instants (sub-steps included)
-  int newton_iterations = 0;  ///< linear solves, over all instants and contact passes
-  int contact_passes = 0;     ///< contact status/geometry fixed-point passes (calls to settle)
-  double assemble_seconds = 0.0;   ///< elastic stiffness, residuals, reduced matrices
-  double contact_seconds = 0.0;    ///< contact hook: pairing, statuses, contact terms
-  double factorize_seconds = 0.0;  ///< sparse factorisations
-  double solve_seconds = 0.0;      ///< forward/back substitutions
-  /// Accuracy of the linear solves: largest relative residual |K du + r| / |r| of one
-  /// solve, straight from the factorisation and after iterative refinement. The first
-  /// grows with the condition number (a stiff penalty, a large COEF_CONT): it shows where
-  /// the linear solver starts to lose accuracy, before any run fails.
-  double solve_residual_raw = 0.0;
-  double solve_residual = 0.0;
-  int refinement_steps = 0;        ///< extra solves spent on iterative refinement
-  int factorisations = 0;          ///< numeric factorisations (a solve may reuse the last one)
-  /// Equations of the contact surfaces when the contact passes were solved on the elastic
-  /// factorisation kept for the run (their Schur complement factorised per pass); 0: not.
-  int interface_equations = 0;
-  int krylov_iterations = 0;       ///< Krylov iterations: on a previous factorisation, of an iterative solver, or on the multipliers' Schur complement
-  long system_entries = 0;         ///< stored entries of the last system matrix (this rank's columns)
-  double resi_glob_rela = 0.0;     ///< RESI_GLOB_RELA reached at the last converged Newton iteration
-};
-
 /// Runs the instants in turn from u = 0; returns one ResultStep per instant
 /// (nume_ordre 0 = initial state) with DEPL. Throws SolveError on divergence,
 /// naming the instant, the loop and the last residuals; steps converged before
 /// the failure are available through `converged_steps()`.
-struct Constraints;
+class StepResults;
 
-/// On a mesh in parts: the Dirichlet conditions on the nodes of `numbered` (a part with nodes
-/// beyond it: a hook's, StaticSolver::set_part), each node's as its owner has them (value and
-/// load of the last condition on each component, as the driver imposes it). `dirichlet`
-/// are this rank's conditions on its part's nodes (numbered's first nodes); `node_halo` is
-/// numbered's. Collective.
-std::vector<DirichletValue> owners_dirichlet(const MeshPart& numbered, const NodeHalo& node_halo,
-                                             const std::vector<DirichletValue>& dirichlet);
 
 class StaticSolver {
  public:
@@ -129,7 +52,7 @@ class StaticSolver {
   const SolverStats& stats() const { return stats_; }
   /// With a model shared among the ranks: per mesh cell, the rank whose volume cell it is
   /// (-1 for other cells), for post-processing where the cells live; empty otherwise.
-  const std::vector<int>& cell_ranks() const { return cell_rank_; }
+  const std::vector<int>& cell_ranks() const { return layout_.cell_rank(); }
   /// Runs the next `run` on this rank's part of a mesh in parts (docs/distributed-model.md,
   /// step 3): the model and the loads are on `part->mesh`, every rank of `part` calls `run`
   /// (collective). Each rank assembles its own nodes' columns, the Dirichlet conditions of its
@@ -143,187 +66,124 @@ class StaticSolver {
   /// point's and every relation's terms and keeps those of its own columns. The hook's
   /// multipliers are numbered after each rank's owned unknowns; MUMPS solves such a system,
   /// PETSc is refused there (DeckError).
+  /// The tangent (and internal forces) of the next runs: a behaviour's source, borrowed; null
+  /// (the default): the model's linear elastic stiffness. A constant one keeps today's path
+  /// (assembled once per Dirichlet set, factorisations kept); one that is not constant is
+  /// assembled again at each Newton iteration that solves.
+  void set_tangent(TangentSource* tangent) { given_tangent_ = tangent; }
   void set_part(const MeshPart* part, const MeshPart* numbered = nullptr) {
     part_ = part;
     hook_part_ = numbered;
   }
 
  private:
-  /// Advances u from instant t0 to t1, splitting the step on ConvergenceError.
-  void advance(double t0, double t1, int level, Vector& u);
+  /// Newton for one instant: what its iterations and contact passes share.
+  struct Instant {
+    double t = 0.0;
+    Constraints cons;      ///< the Dirichlet conditions at t
+    Vector f_ext;          ///< external forces at t
+    int owned_free = 0;    ///< free unknowns this rank answers for in norms
+    int total_newton = 0;  ///< Newton iterations over the contact passes
+    double last_converged_maxi = -1.0;  ///< absolute residual the previous pass converged with
+    ResidualNorms norms;   ///< the last iteration's
+    /// The residual after a solve, when the previous iteration could give it (apply_increment).
+    Vector carried_residual;
+  };
+  /// The terms of one iteration's system beyond K_ff: the contact triplets, the hook's
+  /// condensed equations and eliminations, and the equations eliminated.
+  struct SystemTerms {
+    const std::vector<Triplet>* contact = nullptr;
+    const std::vector<int>* condensed = nullptr;
+    const std::vector<Elimination>* eliminated = nullptr;
+    std::vector<int> eliminated_eqs;
+  };
+  /// The run's numbering: the DOF map (and in parts the hook's nodes and multipliers); refuses
+  /// what a mesh in parts does not do (DeckError with a typed Failure). `node_halo`: in parts,
+  /// the part's node exchanges.
+  void number_unknowns(std::optional<NodeHalo>& node_halo);
+  /// The instants in turn from u = 0, subdivided on failure (TimeStepper); the steps' results.
+  std::vector<ResultStep> step_through(const std::vector<double>& instants);
   /// Newton (+ contact loops) at instant t starting from u; throws on failure.
   void solve_instant(double t, Vector& u);
-  NodalField make_depl(const Vector& u) const;
-  /// What a backend last factorised: the system pattern it was for, the statuses, the values.
-  struct SystemState {
-    bool factorised = false;
-    long pattern = -1;
-    int n = -1;
-    unsigned long long statuses = 0;
-    std::uint64_t values_key = 0;
-    int iteration = -1;  ///< Newton iteration of its loop where it was computed
-  };
-  /// The restricted system, kept between iterations and instants (update_system).
-  struct SystemCache {
-    bool valid = false;
-    std::vector<int> constrained;      ///< Dirichlet equations the pattern was built for
-    long elastic_generation = 0;       ///< incremented when the Dirichlet set changes
-    long contact_version = -1;         ///< contact pattern version the pattern was built for
-    long pattern = 0;                  ///< incremented at each new pattern
-    /// The interface solver's contact terms C (the system is K_ff + C, increment is true).
-    SparseMatrix a;
-    /// The system: elastic_.ff (without a contact hook K_ff itself; with one, K_ff with this
-    /// iteration's contact terms written in place, see saved), or &a with the interface solver.
-    const SparseMatrix* matrix = nullptr;
-    /// a holds the contact terms alone, C (interface solver: the system is K_ff + C, and K_ff
-    /// is never copied); false: the matrix is the whole system.
-    bool increment = false;
-    /// K_ff and the system share one storage, elastic_.ff: what restore_elastic() puts back.
-    /// The values this iteration's condensed and eliminated equations overwrote (position,
-    /// value; put back in reverse order), then K_ff's values at the contact positions (each
-    /// position once, kept with the pattern: K_ff does not change within a run).
-    std::vector<std::pair<int, double>> saved;
-    std::vector<int> contact_unique;
-    /// Positions of elastic_.ff that are not K_ff's own, there for the contact terms (ascending).
-    std::vector<int> contact_only;
-    std::vector<double> contact_elastic;
-    bool contact_written = false;  ///< the contact terms are in elastic_.ff now
-    std::vector<int> contact_pos;      ///< position in the matrix of each contact triplet, -1 if constrained
-    std::vector<int> diagonal;         ///< position of each diagonal entry in the matrix, -1 in another rank's column
-    std::vector<char> owned;           ///< shared model: per free equation, whether this rank holds its column
-    std::uint64_t values_key = 0;      ///< key of the system's current values (*matrix; update_system)
-    SystemState state[kSolverKinds];              ///< per backend (SolverKind)
-  };
-  /// The system of this iteration in system_: K_ff with the contact terms, condensed and
-  /// eliminated equations. A shared model: collective, and its pattern counter and values key
-  /// are the whole system's, the same on every rank (a rank whose own columns kept their terms
-  /// must still factorise when another's changed: MUMPS and PETSc factorise on all of them).
+  /// One Newton loop of a contact pass; throws ConvergenceError when it does not converge.
+  void newton_loop(Instant& in, Vector& u, int fixed_point);
+  /// The residual at u and the convergence test of iteration `iter`: true when converged.
+  bool converged_at(Instant& in, const Vector& u, int iter, Vector& residual, Vector& r_free,
+                    std::vector<Triplet>& k_contact, bool& tangent_pending);
+  /// One Newton step: the system, its solve, u updated.
+  void newton_step(Instant& in, Vector& u, int iter, Vector& residual, Vector& r_free,
+                   std::vector<Triplet>& k_contact);
+  /// With no contact point active, the check (once per run) that something holds every body.
+  void check_bodies_held(const Instant& in, const SystemTerms& terms, SolverKind backend);
+  /// The linear solve of this iteration's system (linear_), worded in the log.
+  Vector solve_system(const Instant& in, int iter, MatrixKind kind, SolverKind backend, const SystemTerms& terms,
+                      const Vector& r_free, RefinedSolve& accuracy);
+  /// A x for the system a (collective when shared or in parts).
+  MatrixProduct system_product(const SparseMatrix& a, bool a_is_k_ff) const;
+  /// u += du (and the eliminated and condensed unknowns), the next residual carried when it can be.
+  void apply_increment(Instant& in, Vector& du, const RefinedSolve& accuracy, const SystemTerms& terms,
+                       Vector& residual, Vector& u);
+  /// The backend for this kind of system (linear_), its choice said once in the log.
+  SolverKind choose_backend(MatrixKind kind);
+  /// The backend that holds K_ff (handed over, no copy kept here), or null.
+  const LinearSolver* k_ff_holder() const { return linear_ ? linear_->holder() : nullptr; }
+  /// The system of this iteration in matrix_: K_ff with the contact terms, condensed and
+  /// eliminated equations (or the interface solver's terms). A shared model: collective, and its
+  /// pattern counter and values key are the whole system's, the same on every rank (a rank
+  /// whose own columns kept their terms must still factorise when another's changed: MUMPS and
+  /// PETSc factorise on all of them).
   void update_system(const Constraints& cons, const std::vector<Triplet>& contact, const std::vector<int>& condensed,
                      const std::vector<int>& eliminated);
-  /// update_system() on this rank's columns alone.
-  void update_own_system(const Constraints& cons, const std::vector<Triplet>& contact,
-                         const std::vector<int>& condensed, const std::vector<int>& eliminated);
-  /// elastic_.ff back to K_ff (the values update_system overwrote); nothing to do when it holds K_ff.
-  void restore_elastic();
-  /// In parts: the stiffness columns of `nodes`' unknowns, whole, on every rank (each assembled
-  /// by the node's owner; in this rank's numbering). Collective.
-  SparseMatrix gathered_columns(const std::vector<int>& nodes) const;
-  std::vector<int> eliminate(const Constraints& cons, const std::vector<Elimination>& relations, const Vector& residual,
-                             std::vector<Triplet>& triplets, Vector& r_free);
   /// The node blocks of the system's equations (condensed and eliminated equations left
   /// out): what algebraic multigrid aggregates, with the coordinates of its rigid-body modes.
   SystemLayout system_layout(const Constraints& cons, const std::vector<int>& condensed,
                              const std::vector<int>& eliminated) const;
-  /// Backend for a system of this kind: Cholmod gives way to Mumps (said once per run).
-  SolverKind backend_for(MatrixKind kind);
   /// Whether this run shares the model among the ranks of an MPI run (see distributed_).
   bool shares_model() const;
+  /// The internal forces at u: K u for a constant tangent (stiffness_times), else the tangent
+  /// source's, completed over the ranks.
+  Vector internal_forces(const Vector& u) const;
   /// K u over the whole numbering (summed over the ranks when the model is shared).
   Vector stiffness_times(const Vector& u) const;
-  /// A solve failure explained by the elastic stiffness (rigid-body modes, a null pivot);
-  /// with a shared model the whole stiffness is assembled for it first.
-  SolveError diagnose(const Constraints& cons, const SolveError& err, double t) const;
-  /// The singularity test a diagnosis factorises with.
-  SingularityTest diagnosis_test() const;
-  /// One approximation of the factors the run asked for: how it factorised ("in single
-  /// precision"), and the hint a failure gives about it.
-  struct Approximation {
-    std::string what, hint;
-  };
-  /// The approximations of the factors the run asked for (MUMPS's filter, block low rank,
-  /// single precision); empty when the factors are exact.
-  std::vector<Approximation> approximations() const;
+  /// A solve failure explained by the elastic stiffness (FailureDiagnosis); K_ff restored first.
+  SolveError diagnose(const Constraints& cons, const SolveError& err, double t);
 
-  /// The elastic stiffness K split by the Dirichlet conditions of the run (one set for every
-  /// instant, only the imposed values follow the load functions): K_ff (numbered as
-  /// Constraints::free_index), the system itself when there is no contact, and the
-  /// constrained columns. Nothing else of K is kept: they give K u, the system's refill and
-  /// the eliminations' columns.
-  SplitMatrix elastic_;
+  /// The stiffness K split by the Dirichlet conditions of the run (one set for every instant,
+  /// only the imposed values follow the load functions) and each iteration's system in its
+  /// storage (system_matrix.hpp). Lives for the run.
+  SystemMatrix matrix_;
+  /// Where K comes from: the tangent given (set_tangent), or the linear elastic one of the run.
+  TangentSource* given_tangent_ = nullptr;
+  std::unique_ptr<TangentSource> elastic_tangent_;
+  TangentSource* tangent_ = nullptr;
   /// The model shared among the ranks of an MPI run (several ranks, a backend named by the
   /// deck that takes a distributed system: MUMPS unless told not to share, or PETSc). The
   /// volume cells are partitioned (Scotch); each rank assembles the complete columns of the nodes it owns
-  /// (owned_nodes_), so elastic_ and the system hold only those, and products with them are
+  /// (RankLayout::owned_nodes), so K and the system hold only those, and products with them are
   /// summed over the ranks. The contact hook shares its pairing among the ranks and builds
   /// the terms of the points touching this rank's columns (share_among_ranks); each rank
   /// keeps the terms of its own columns. Pressures and nodal forces are computed by the rank
   /// of their node and summed. Everything else (mesh, vectors, results) is whole on every rank.
   bool distributed_ = false;
-  /// With a shared model and contact eliminations: the whole columns of K at the eliminated
-  /// equations' nodes (every rank computes them, a band along the contact surface), for the
-  /// nodes in ghost_nodes_.
-  SparseMatrix ghost_;
-  std::vector<int> ghost_nodes_;
-  /// K_ff's storage was handed to the backend (an iterative one keeps its own copy): K_ff u
-  /// comes from the backend's product, elastic_.ff keeps its size only. Without contact the
-  /// system is K_ff itself and is never factorised again in the run.
-  bool elastic_in_solver_ = false;
-  const LinearSolver* elastic_holder_ = nullptr;
   /// A mesh in parts (set_part), and in_parts_ while a run is on it: distributed_ too, but the
   /// vectors are the part's (owned unknowns first, then the ghosts'); what the shared model sums
   /// over the ranks goes to the owners and back to the ghosts through equation_halo_, the norms
   /// are over the owned entries and then over the ranks, and the system's equations (its free
-  /// unknowns, the same order) are numbered across the ranks by free_numbers_ and exchanged
-  /// through free_halo_.
+  /// unknowns, the same order) are numbered across the ranks by the layout's free
+  /// numbers and exchanged through its free halo.
   const MeshPart* part_ = nullptr;
   const MeshPart* hook_part_ = nullptr;  ///< part_ with the hook's nodes (set_part), or null
   /// In parts: the part whose nodes the unknowns are on (hook_part_ when given, else part_).
   const MeshPart& numbered_part() const { return hook_part_ ? *hook_part_ : *part_; }
-  /// The hook's fields of a step (u null: its initial ones), on the model's nodes.
-  void write_contact_fields(const Vector* u, ResultStep& step) const;
   bool in_parts_ = false;
-  std::unique_ptr<Halo> equation_halo_;
-  std::unique_ptr<Halo> free_halo_;
-  GlobalDofs free_numbers_;
-  GlobalDofs unknown_numbers_;  ///< every unknown of the part, numbered across the ranks (PETSc's rows)
-  int owned_equations_ = 0;  ///< in parts: the part's owned unknowns (the first ones)
-  /// In parts: the owners' Dirichlet conditions given to their ghosts (the part may miss a
-  /// ghost's constrained face), `c` rebuilt from them. Collective.
-  void take_owners_constraints(Constraints& c) const;
-  /// In parts: v's owned entries complete (the ranks' shares summed into them) and copied to the
-  /// ghosts. Collective.
-  void complete_part_vector(Vector& v) const;
-  /// The largest |v_i| over the entries this rank answers for: all of them, or in parts the
-  /// first n_owned, and then over the ranks. Collective in parts.
-  double largest_entry(const Vector& v, int n_owned) const;
-  std::vector<int> node_owner_;
-  std::vector<char> owned_nodes_;
-  std::vector<int> cell_rank_;  ///< see cell_ranks()
-  /// One solver per backend for the whole run (each keeps its analysis while the pattern holds).
-  std::unique_ptr<LinearSolver> solvers_[kSolverKinds];
-  std::unique_ptr<SystemCache> system_;
-  /// Contact passes on the elastic factorisation kept for the run (InterfaceSolver): with
-  /// METHODE='AUTO', a contact hook that names its surface equations, no eliminations and a
-  /// small interface, each contact pass factorises only the interface's dense Schur
-  /// complement. interface_use_: 0 not decided yet, 1 used, -1 not (decided at the first solve).
-  std::unique_ptr<InterfaceSolver> interface_;
-  int interface_use_ = 0;
-  std::string ordering_logged_;  ///< the last ordering line of the log (an ordering asked for)
-  std::string factorisation_logged_;  ///< the last factorisation line of the log (one asked for)
-  std::string memory_logged_;    ///< the last line of the log on where the factors are
-  std::string approximation_logged_;  ///< the last line of the log on the filtering and compression asked for
-  std::string analysis_logged_;  ///< the last symbolic analysis said in the log (verbosity 2)
-  long interface_reference_ = -1;  ///< elastic generation of the factorised reference
-  SystemState interface_state_;
-  std::vector<char> on_interface_;  ///< per free equation: on the interface
-  /// With an interface of the components the contact terms reach (choose_interface): terms
-  /// at most this large count for nothing when it is chosen and checked (kNegligibleTerm of
-  /// the largest term of the first contact solve), and the share of the reference's
-  /// factorisation its dense one may cost. Both 0 with the whole surfaces.
-  double interface_floor_ = 0.0;
-  double interface_dense_share_ = 0.0;
-  static constexpr double kNegligibleTerm = 1e-12;
-  /// Decides interface_use_ for this run (first contact solve), from the contact terms of
-  /// that solve (`contact`).
-  void choose_interface(const Constraints& cons, const std::vector<Triplet>& contact);
-  /// Factorises the interface solver's reference from K_ff (once per run); on failure the
-  /// interface solver is dropped and the whole system is solved from then on.
-  void factorize_interface_reference(SystemCache& sys);
+  /// What differs between a run on one process, a shared model and a mesh in parts.
+  RankLayout layout_;
+  /// The linear solve of the run: backends, their factorisations, refinement (one per run).
+  std::unique_ptr<LinearSolve> linear_;
+  /// The convergence test of the run (made once the stiffness's scale is known).
+  std::unique_ptr<ConvergenceTest> convergence_;
   double k_scale_ = 0.0;
   bool rigid_checked_ = false;  ///< elastic part proven free of rigid-body modes
-  std::string singular_said_;   ///< the last singular matrix the run went past, as the log said it
-  bool backend_note_logged_ = false;  ///< the Cholmod -> Mumps substitution was logged in this run
-  bool saddle_ = false;  ///< indefinite systems go to the saddle-point backend (backend_for)
 
   const FeModel& model_;
   const MechanicalLoads& loads_;
@@ -335,7 +195,13 @@ class StaticSolver {
   const Log& log_;
   DofMap dofs_;
   std::vector<ResultStep> steps_;
+  std::unique_ptr<StepResults> results_;  ///< the fields of each step, for the run
   SolverStats stats_;
+  // (After the members they borrow, which are initialised first.)
+  /// Contact passes on the elastic factorisation kept for the run (the interface policy).
+  InterfacePolicy interface_{options_, stats_, log_};
+  /// The log's words for what the linear solve did.
+  SolveLog solve_log_{log_, options_};
 };
 
 }  // namespace lunaster::engine

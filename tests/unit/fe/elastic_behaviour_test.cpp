@@ -10,7 +10,7 @@
 #include "engine/assembly/assembly.hpp"
 #include "engine/assembly/element_kernels.hpp"
 #include "engine/assembly/tangent.hpp"
-#include "engine/fe/stress.hpp"
+#include "engine/assembly/stress.hpp"
 #include "engine/material/cell_behaviours.hpp"
 #include "engine/material/elasticity.hpp"
 #include "fe_test_util.hpp"
