@@ -3,6 +3,7 @@
 /// the start of the current step (committed) and at its end (trial). A Newton iteration writes
 /// the trial slot; commit() makes it the start of the next step when the step converged,
 /// restore() brings the trial slot back to the step's start when the step is subdivided.
+#include <cstddef>
 #include <vector>
 
 namespace lunaster::engine {
@@ -41,13 +42,13 @@ class MaterialStates {
 
  private:
   static int slot(Slot s) { return static_cast<int>(s); }
-  size_t tensor_at(int cell, int q) const { return (static_cast<size_t>(point_offset_[cell]) + q) * tensor_size_; }
+  std::size_t tensor_at(int cell, int q) const { return (static_cast<std::size_t>(point_offset_[cell]) + q) * tensor_size_; }
   double* variables_at(Slot s, int cell, int q);
 
   int tensor_size_ = 0;
   std::vector<int> point_offset_{0};      ///< n_cells + 1, in points
   std::vector<int> n_variables_;          ///< per cell
-  std::vector<size_t> variable_offset_{0};  ///< n_cells + 1, in values
+  std::vector<std::size_t> variable_offset_{0};  ///< n_cells + 1, in values
   std::vector<double> strain_[2], stress_[2], variables_[2];
 };
 

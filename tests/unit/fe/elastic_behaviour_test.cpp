@@ -21,14 +21,14 @@ namespace {
 using test::BlockBuilder;
 using test::type_name;
 
-const ElasticMaterial kMat{2.0e11, 0.3, 7800.0};
+const ElasticMaterial kBehaviourMat{2.0e11, 0.3, 7800.0};
 
 template <int DIM>
 Eigen::Matrix<double, DIM == 2 ? 3 : 6, DIM == 2 ? 3 : 6> hooke(Modelisation m) {
   if constexpr (DIM == 2) {
-    return elasticity_2d(kMat, m);
+    return elasticity_2d(kBehaviourMat, m);
   } else {
-    return elasticity_3d(kMat);
+    return elasticity_3d(kBehaviourMat);
   }
 }
 
@@ -50,7 +50,7 @@ SparseMatrix formula_stiffness(const FeModel& model, const DofMap& dofs) {
           if (axis) {
             Eigen::Matrix<double, 4, ND> b;
             const double w = kernels::axis_point<NN>(re, q, x, mesh, cell, sign, g, b);
-            ke += w * b.transpose() * elasticity_axis(kMat) * b;
+            ke += w * b.transpose() * elasticity_axis(kBehaviourMat) * b;
             continue;
           }
         }
@@ -100,7 +100,7 @@ std::string label(const Case& c) {
 }
 
 TEST(ElasticBehaviour, IsLinearWithoutInternalVariables) {
-  const Elasticity elasticity(kMat);
+  const Elasticity elasticity(kBehaviourMat);
   EXPECT_TRUE(elasticity.is_linear());
   EXPECT_EQ(elasticity.n_variables(), 0);
 }
@@ -112,7 +112,7 @@ TEST(ElasticBehaviour, StiffnessForceAndStressesAreTheFormulas) {
     const int dim = block.dim();
     // x in [0.5, 1.5]: an axisymmetric cell needs r > 0 at its points.
     for (size_t v = 0; v < block.mesh().coords.size(); v += 3) block.mesh().coords[v] += 0.5;
-    const FeModel model = test::make_model(block.mesh(), dim, c.hypothesis, kMat);
+    const FeModel model = test::make_model(block.mesh(), dim, c.hypothesis, kBehaviourMat);
     const DofMap dofs(block.mesh(), model.volume_cells(), dim);
     const CellBehaviours behaviours(model);
     const SparseMatrix ref = formula_stiffness(model, dofs);
@@ -173,7 +173,7 @@ TEST(ElasticBehaviour, StiffnessForceAndStressesAreTheFormulas) {
 TEST(ElasticBehaviour, ACellWithoutMaterialIsNamed) {
   BlockBuilder block(CellType::Quad4, 2, 0.0);
   block.fill();
-  FeModel model = test::make_model(block.mesh(), 2, Modelisation::PlaneStrain, kMat);
+  FeModel model = test::make_model(block.mesh(), 2, Modelisation::PlaneStrain, kBehaviourMat);
   model.material[2] = -1;
   const DofMap dofs(block.mesh(), model.volume_cells(), 2);
   try {
