@@ -1,6 +1,6 @@
 // Linear elasticity through the behaviour interface against the element formula it replaced,
 // K_e = sum_q B^T D B |det J| w_q with D the Hooke matrix of the cell's hypothesis, written here
-// from the kernel pieces (B, Jacobian, Hooke matrices): the stiffness of both assembly paths
+// from the reference element's tables and the Hooke matrices: the stiffness of both assembly paths
 // (the linear column split and the element loop over states) to 1e-14 of the matrix's scale,
 // the internal force K u and the stresses, for every volume type and every 2D hypothesis.
 #include <gtest/gtest.h>
@@ -8,9 +8,10 @@
 #include <random>
 
 #include "engine/assembly/assembly.hpp"
-#include "engine/assembly/element_kernels.hpp"
-#include "engine/assembly/tangent.hpp"
 #include "engine/assembly/stress.hpp"
+#include "engine/assembly/tangent.hpp"
+#include "engine/core/error.hpp"
+#include "engine/fe/reference_element.hpp"
 #include "engine/material/cell_behaviours.hpp"
 #include "engine/material/elasticity.hpp"
 #include "fe_test_util.hpp"
@@ -23,46 +24,64 @@ using test::type_name;
 
 const ElasticMaterial kBehaviourMat{2.0e11, 0.3, 7800.0};
 
-template <int DIM>
-Eigen::Matrix<double, DIM == 2 ? 3 : 6, DIM == 2 ? 3 : 6> hooke(Modelisation m) {
-  if constexpr (DIM == 2) {
-    return elasticity_2d(kBehaviourMat, m);
-  } else {
-    return elasticity_3d(kBehaviourMat);
-  }
-}
-
-/// The formula: sum_q B^T D B w_q per cell, scattered as triplets.
+/// The formula: sum_q B^T D B w_q per cell, scattered as triplets. Written with dynamic sizes
+/// from the reference element's tables (x, J = x^T dN, g = dN J^-1, B from g), so that it
+/// shares no code with the kernels it checks (and costs no fixed-size instantiations).
 SparseMatrix formula_stiffness(const FeModel& model, const DofMap& dofs) {
   std::vector<Triplet> t;
+  const Mesh& mesh = *model.mesh;
   for (int cell : model.volume_cells()) {
-    kernels::dispatch_volume(model.mesh->cell_types[cell], [&](auto nn, auto dim) {
-      constexpr int NN = decltype(nn)::value, DIM = decltype(dim)::value, ND = NN * DIM;
-      const Mesh& mesh = *model.mesh;
-      const ReferenceElement& re = reference_element(mesh.cell_types[cell]);
-      const auto x = kernels::cell_coordinates<NN, DIM>(mesh, cell);
-      Eigen::Matrix<double, ND, ND> ke = Eigen::Matrix<double, ND, ND>::Zero();
-      Eigen::Matrix<double, NN, DIM> g;
-      double sign = 0.0;
-      const bool axis = model.modelisation[cell] == Modelisation::Axisymmetric;
-      for (int q = 0; q < re.n_qp; ++q) {
-        if constexpr (DIM == 2) {
-          if (axis) {
-            Eigen::Matrix<double, 4, ND> b;
-            const double w = kernels::axis_point<NN>(re, q, x, mesh, cell, sign, g, b);
-            ke += w * b.transpose() * elasticity_axis(kBehaviourMat) * b;
-            continue;
-          }
+    const ReferenceElement& re = reference_element(mesh.cell_types[cell]);
+    const int nn = re.n_nodes, dim = re.dim, nd = nn * dim;
+    const int* nodes = mesh.cell(cell);
+    Eigen::MatrixXd x(nn, dim);
+    for (int a = 0; a < nn; ++a)
+      for (int k = 0; k < dim; ++k) x(a, k) = mesh.coords[3 * static_cast<size_t>(nodes[a]) + k];
+    const bool axis = model.modelisation[cell] == Modelisation::Axisymmetric;
+    Eigen::MatrixXd d;
+    if (dim == 3)
+      d = elasticity_3d(kBehaviourMat);
+    else if (axis)
+      d = elasticity_axis(kBehaviourMat);
+    else
+      d = elasticity_2d(kBehaviourMat, model.modelisation[cell]);
+    Eigen::MatrixXd ke = Eigen::MatrixXd::Zero(nd, nd);
+    for (int q = 0; q < re.n_qp; ++q) {
+      Eigen::MatrixXd dref(nn, dim);
+      for (int a = 0; a < nn; ++a)
+        for (int k = 0; k < dim; ++k) dref(a, k) = re.dn[(static_cast<size_t>(q) * nn + a) * dim + k];
+      const Eigen::MatrixXd jac = x.transpose() * dref;
+      const Eigen::MatrixXd g = dref * jac.inverse();
+      const double* n = &re.n[static_cast<size_t>(q) * nn];
+      double r = 0.0;  // AXIS: the radius of the point, the hoop strain u_r / r and the measure r dA
+      for (int a = 0; a < nn; ++a) r += n[a] * x(a, 0);
+      const double w = std::abs(jac.determinant()) * re.weight[q] * (axis ? r : 1.0);
+      Eigen::MatrixXd b = Eigen::MatrixXd::Zero(d.rows(), nd);
+      for (int a = 0; a < nn; ++a) {
+        const int c = dim * a;
+        b(0, c) = g(a, 0);
+        b(1, c + 1) = g(a, 1);
+        if (dim == 3) {
+          b(2, c + 2) = g(a, 2);
+          b(3, c) = g(a, 1);
+          b(3, c + 1) = g(a, 0);
+          b(4, c) = g(a, 2);
+          b(4, c + 2) = g(a, 0);
+          b(5, c + 1) = g(a, 2);
+          b(5, c + 2) = g(a, 1);
+        } else if (axis) {  // rows rr, zz, tt, rz
+          b(2, c) = n[a] / r;
+          b(3, c) = g(a, 1);
+          b(3, c + 1) = g(a, 0);
+        } else {
+          b(2, c) = g(a, 1);
+          b(2, c + 1) = g(a, 0);
         }
-        Eigen::Matrix<double, kernels::kVoigt<DIM>, ND> b;
-        const double det = kernels::physical_gradients<NN, DIM>(re, q, x, g);
-        kernels::strain_matrix<NN, DIM>(g, b);
-        ke += std::abs(det) * re.weight[q] * b.transpose() * hooke<DIM>(model.modelisation[cell]) * b;
       }
-      const int* nodes = mesh.cell(cell);
-      for (int i = 0; i < ND; ++i)
-        for (int j = 0; j < ND; ++j) t.emplace_back(dofs.dof(nodes[i / DIM], i % DIM), dofs.dof(nodes[j / DIM], j % DIM), ke(i, j));
-    });
+      ke.noalias() += w * b.transpose() * d * b;
+    }
+    for (int i = 0; i < nd; ++i)
+      for (int j = 0; j < nd; ++j) t.emplace_back(dofs.dof(nodes[i / dim], i % dim), dofs.dof(nodes[j / dim], j % dim), ke(i, j));
   }
   SparseMatrix k(dofs.n_dofs(), dofs.n_dofs());
   k.setFromTriplets(t.begin(), t.end());
