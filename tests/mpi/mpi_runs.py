@@ -67,7 +67,7 @@ sys.path.insert(0, str(HERE))
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import compare_checks  # noqa: E402
 sys.path.insert(0, str(HERE.parent / "budget"))
-from run_budget_tests import SANITIZED  # noqa: E402
+from run_budget_tests import LOOP_LIMIT, SANITIZED  # noqa: E402
 
 failures = []
 ENV = dict(os.environ)
@@ -837,6 +837,17 @@ def expectations(deck):
 
 def errors(exe, source, scratch):
     scratch.mkdir(parents=True)
+    # A launcher that does not end by itself past the time limit: verify asks it to (SIGTERM;
+    # a real mpirun then ends its ranks) and reports TIMEOUT. The stand-in only waits (6 s): it
+    # runs beside the rest of this test and is checked at the end.
+    fake = scratch / "fake-launcher"
+    fake.mkdir()
+    (fake / "mpirun").write_text("#!/bin/bash\ntrap 'echo \"launcher: SIGTERM\"; kill $child; exit 143' TERM\n"
+                                 "sleep 60 & child=$!\nwait\n")
+    (fake / "mpirun").chmod(0o755)
+    env = dict(ENV, PATH=f"{fake}:{ENV.get('PATH', '')}")
+    launcher = WAITERS.submit(run, [exe, "verify", source / "testcases" / "patch_2d.lua", "--np", "2", "--time-limit",
+                                    "1", "--out", "f"], scratch, env=env)
     errors_dir = source / "testcases" / "errors"
     for folder, deck, want in ((errors_dir, "misspelt_keyword.lua", 2), (errors_dir, "singular_free_body_mumps.lua", 3),
                                (errors_dir, "singular_free_direction_mumps.lua", 3)):
@@ -875,30 +886,21 @@ def errors(exe, source, scratch):
     check(code == 2 and "--np expects a positive number" in out + err, f"verify --np 0 is refused (exit {code})")
 
     # Budgets under verify --np 2: the ranks stop themselves, mpirun passes their status on. A
-    # limit of 10 s, not the loop's own 1 s: verify ends a run still going 5 s past its limit,
-    # counted from mpirun's start, and the start of mpirun and its ranks on a loaded machine (a
-    # sanitizer build) must not decide whether the ranks get to stop themselves.
+    # limit of LOOP_LIMIT s (4, 10 in a sanitizer build), not the loop's own 1 s: verify ends a run
+    # still going 5 s past its limit, counted from mpirun's start, and the start of mpirun and its
+    # ranks on a loaded machine must not decide whether the ranks get to stop themselves.
     report = scratch / "budgets.json"
     code, out, err, seconds = run([exe, "verify", HERE.parent / "budget" / "loop_forever.lua",
                                    HERE.parent / "budget" / "grow_forever.lua", "--np", "2", "-j", "2", "--out", "b",
-                                   "--time-limit", "10", "--json", report], scratch)
+                                   "--time-limit", str(LOOP_LIMIT), "--json", report], scratch)
     statuses = {Path(d["deck"]).name: d for d in json.loads(report.read_text())["decks"]}
     check(code == 1 and statuses["loop_forever.lua"]["status"] == "TIMEOUT"
           and statuses["grow_forever.lua"]["status"] == "OUT_OF_MEMORY",
           f"verify --np 2: TIMEOUT and OUT_OF_MEMORY as serially (exit {code}, {seconds:.1f} s)")
-    check(statuses["loop_forever.lua"]["output"].count("loop_forever.lua:7: time limit of 10 s exceeded") == 1,
+    check(statuses["loop_forever.lua"]["output"].count(f"loop_forever.lua:7: time limit of {LOOP_LIMIT} s exceeded") == 1,
           "verify --np 2: the deck line of the time limit, once")
 
-    # A launcher that does not end by itself past the time limit: verify asks it to (SIGTERM;
-    # a real mpirun then ends its ranks) and reports TIMEOUT. The stand-in only waits.
-    fake = scratch / "fake-launcher"
-    fake.mkdir()
-    (fake / "mpirun").write_text("#!/bin/bash\ntrap 'echo \"launcher: SIGTERM\"; kill $child; exit 143' TERM\n"
-                                 "sleep 60 & child=$!\nwait\n")
-    (fake / "mpirun").chmod(0o755)
-    env = dict(ENV, PATH=f"{fake}:{ENV.get('PATH', '')}")
-    code, out, err, seconds = run([exe, "verify", source / "testcases" / "patch_2d.lua", "--np", "2", "--time-limit",
-                                   "1", "--out", "f"], scratch, env=env)
+    code, out, err, seconds = launcher.result()
     check(code == 1 and "launcher: SIGTERM" in out and re.search(r"patch_2d\.lua +TIMEOUT", out) is not None
           and 5.5 < seconds, f"verify --np: a launcher still running 5 s past the limit gets SIGTERM ({seconds:.1f} s)")
 
