@@ -187,46 +187,16 @@ void MortarSegments::share_overlaps(std::vector<double>& d, std::vector<std::vec
 }
 
 
-MortarPairingRows MortarSegments::pair(const DofMap& dofs, const Vector& u, bool shared) const {
-  const std::vector<double> xyz = current_coordinates(mesh_, dofs, dim_, u);
-  MortarPairingRows out;
-  std::vector<MortarRow>& rows = out.rows;
-  auto& masters = out.masters;
-  int& n_whole_cell = out.n_whole_cell;
-  std::unordered_map<int, int> mid_index;
-  for (size_t i = 0; i < mid_edges_.size(); ++i) mid_index[mid_edges_[i][0]] = static_cast<int>(i);
-  std::vector<OverlapPoint> pts;
-  std::vector<int> owner;
-  std::vector<OverlapPoint> whole;
-  for (size_t z = 0; z < slave_cells_.size(); ++z) {
-    const std::vector<OrientedCell>& slaves = slave_cells_[z];
-    const std::vector<OrientedCell>& mcells = master_cells_[z];
-    // Per slave node of the zone: D_j, sum of normals, M_jl.
-    std::unordered_map<int, int> local;
-    std::vector<int> nodes;
-    std::vector<double> d, d_full, normal;
-    std::vector<std::vector<std::pair<int, double>>> m;
-    auto index = [&](int node) {
-      auto [it, fresh] = local.try_emplace(node, static_cast<int>(nodes.size()));
-      if (fresh) {
-        nodes.push_back(node);
-        d.push_back(0.0);
-        d_full.push_back(0.0);
-        normal.insert(normal.end(), {0.0, 0.0, 0.0});
-        m.emplace_back();
-      }
-      return it->second;
-    };
-    auto coords = [&](const OrientedCell& oc, double* x) {
-      for (int a = 0; a < oc.n; ++a)
-        for (int k = 0; k < 3; ++k) x[3 * a + k] = xyz[3 * static_cast<size_t>(oc.nodes[a]) + k];
-    };
-    // Master bounding boxes on a uniform grid.
-    const size_t nm = mcells.size();
-    std::vector<double> box(6 * nm);
+namespace detail {
+
+/// The master cells of a zone on a uniform grid of their largest bounding box: the candidates a
+/// slave cell's box can overlap.
+class MasterGrid {
+ public:
+  MasterGrid(const std::vector<OrientedCell>& mcells, const std::vector<double>& xyz) : box_(6 * mcells.size()) {
     double size = 0.0;
-    for (size_t i = 0; i < nm; ++i) {
-      double* b = &box[6 * i];
+    for (size_t i = 0; i < mcells.size(); ++i) {
+      double* b = &box_[6 * i];
       b[0] = b[1] = b[2] = 1e300;
       b[3] = b[4] = b[5] = -1e300;
       for (int a = 0; a < mcells[i].n; ++a)
@@ -236,22 +206,256 @@ MortarPairingRows MortarSegments::pair(const DofMap& dofs, const Vector& u, bool
         }
       size = std::max({size, b[3] - b[0], b[4] - b[1], b[5] - b[2]});
     }
-    const double cell = size > 0.0 ? size : 1.0;
-    auto key = [cell](double x, double y, double zz) {
-      const long long i = static_cast<long long>(std::floor(x / cell)), j = static_cast<long long>(std::floor(y / cell)),
-                      k = static_cast<long long>(std::floor(zz / cell));
-      return (i * 73856093LL) ^ (j * 19349663LL) ^ (k * 83492791LL);
-    };
-    std::unordered_map<long long, std::vector<int>> grid;
-    for (size_t i = 0; i < nm; ++i) {
-      const double* b = &box[6 * i];
-      for (double x = std::floor(b[0] / cell); x <= std::floor(b[3] / cell); x += 1.0)
-        for (double y = std::floor(b[1] / cell); y <= std::floor(b[4] / cell); y += 1.0)
-          for (double w = std::floor(b[2] / cell); w <= std::floor(b[5] / cell); w += 1.0)
-            grid[key((x + 0.5) * cell, (y + 0.5) * cell, (w + 0.5) * cell)].push_back(static_cast<int>(i));
+    cell_ = size > 0.0 ? size : 1.0;
+    for (size_t i = 0; i < mcells.size(); ++i)
+      for_cells_of(&box_[6 * i], [&](long long key) { grid_[key].push_back(static_cast<int>(i)); });
+    stamp_.assign(mcells.size(), -1);
+  }
+
+  /// Calls `visit(master)` once for each master cell whose box meets `b` (xmin, ymin, zmin,
+  /// xmax, ymax, zmax); `query` numbers the call (a slave cell's index).
+  template <class Visit>
+  void overlapping(const double* b, int query, Visit visit) {
+    for_cells_of(b, [&](long long key) {
+      auto it = grid_.find(key);
+      if (it == grid_.end()) return;
+      for (int mi : it->second) {
+        if (stamp_[mi] == query) continue;
+        stamp_[mi] = query;
+        const double* mb = &box_[6 * mi];
+        if (mb[0] > b[3] || mb[3] < b[0] || mb[1] > b[4] || mb[4] < b[1] || mb[2] > b[5] || mb[5] < b[2]) continue;
+        visit(mi);
+      }
+    });
+  }
+
+ private:
+  long long key(double x, double y, double z) const {
+    const long long i = static_cast<long long>(std::floor(x / cell_)), j = static_cast<long long>(std::floor(y / cell_)),
+                    k = static_cast<long long>(std::floor(z / cell_));
+    return (i * 73856093LL) ^ (j * 19349663LL) ^ (k * 83492791LL);
+  }
+  template <class F>
+  void for_cells_of(const double* b, F f) const {
+    for (double x = std::floor(b[0] / cell_); x <= std::floor(b[3] / cell_); x += 1.0)
+      for (double y = std::floor(b[1] / cell_); y <= std::floor(b[4] / cell_); y += 1.0)
+        for (double w = std::floor(b[2] / cell_); w <= std::floor(b[5] / cell_); w += 1.0)
+          f(key((x + 0.5) * cell_, (y + 0.5) * cell_, (w + 0.5) * cell_));
+  }
+
+  std::vector<double> box_;
+  double cell_ = 1.0;
+  std::unordered_map<long long, std::vector<int>> grid_;
+  std::vector<int> stamp_;
+};
+
+/// Per slave node of a zone, numbered in the slave cells' order: D_j, the integral of N~_j over
+/// the whole cells, the sum of the cells' normals, M_jl.
+struct ZoneIntegrals {
+  std::unordered_map<int, int> local;
+  std::vector<int> nodes;
+  std::vector<double> d, d_full, normal;
+  std::vector<std::vector<std::pair<int, double>>> m;
+
+  int index(int node) {
+    auto [it, fresh] = local.try_emplace(node, static_cast<int>(nodes.size()));
+    if (fresh) {
+      nodes.push_back(node);
+      d.push_back(0.0);
+      d_full.push_back(0.0);
+      normal.insert(normal.end(), {0.0, 0.0, 0.0});
+      m.emplace_back();
     }
-    std::vector<int> stamp(nm, -1);
-    double sx[3 * kMaxSurfaceNodes], mx[3 * kMaxSurfaceNodes];
+    return it->second;
+  }
+};
+
+/// Reused buffers of one pairing: a slave cell's overlap points and their master cells, and the
+/// whole slave cell's points.
+struct OverlapScratch {
+  std::vector<OverlapPoint> pts, whole;
+  std::vector<int> owner;
+};
+
+}  // namespace detail
+
+namespace {
+
+using detail::MasterGrid;
+using detail::OverlapScratch;
+using detail::ZoneIntegrals;
+
+void cell_coordinates(const OrientedCell& oc, const std::vector<double>& xyz, double* x) {
+  for (int a = 0; a < oc.n; ++a)
+    for (int k = 0; k < 3; ++k) x[3 * a + k] = xyz[3 * static_cast<size_t>(oc.nodes[a]) + k];
+}
+
+/// The whole slave cell as integration points (the measure r dl on an AXIS model) into `whole`:
+/// the integral of each N~_j over it (a node whose covered share is under half of it gets no
+/// row), the dual basis of a partly covered cell that cannot carry its own; and the cell's
+/// normal at each of its nodes.
+void whole_slave_cell(const OrientedCell& sc, const double* sx, bool axisymmetric, ZoneIntegrals& zi,
+                      std::vector<OverlapPoint>& whole) {
+  whole.clear();
+  for (const auto& q : contact_integration_rule(sc.type, IntegrationScheme::Gauss, 4)) {
+    OverlapPoint op;
+    op.xi_s[0] = q.xi[0], op.xi_s[1] = q.xi[1];
+    const SurfacePoint sp = surface_point(sc.type, sx, q.xi);
+    op.w = q.weight * sp.jacobian * (axisymmetric ? std::max(sp.x[0], 0.0) : 1.0);
+    double nt[kMaxSurfaceNodes];
+    slave_shape(sc.type, q.xi, nt);
+    for (int a = 0; a < sc.n; ++a) zi.d_full[zi.index(sc.nodes[a])] += op.w * nt[a];
+    whole.push_back(op);
+  }
+  for (int a = 0; a < sc.n; ++a) {
+    double xi[2];
+    surface_reference_node(sc.type, a, xi);
+    const SurfacePoint sp = surface_point(sc.type, sx, xi);
+    const int j = zi.index(sc.nodes[a]);
+    for (int k = 0; k < 3; ++k) zi.normal[3 * j + k] += sp.n[k];
+  }
+}
+
+/// Adds the overlap points' D_j and M_jl of one slave cell to `zi`: Phi_j from the dual basis
+/// `a_dual`, the master shape functions at each point's master coordinates.
+void add_overlaps(const OrientedCell& sc, const std::vector<OrientedCell>& mcells, const std::vector<OverlapPoint>& pts,
+                  const std::vector<int>& owner, const double* a_dual, ZoneIntegrals& zi) {
+  int js[kMaxSurfaceNodes];
+  for (int a = 0; a < sc.n; ++a) js[a] = zi.index(sc.nodes[a]);
+  double ns[kMaxSurfaceNodes], phi[kMaxSurfaceNodes], nmast[kMaxSurfaceNodes];
+  for (size_t p = 0; p < pts.size(); ++p) {
+    const OverlapPoint& q = pts[p];
+    slave_shape(sc.type, q.xi_s, ns);
+    for (int a = 0; a < sc.n; ++a) {
+      phi[a] = 0.0;
+      for (int c = 0; c < sc.n; ++c) phi[a] += a_dual[a * sc.n + c] * ns[c];
+      zi.d[js[a]] += q.w * phi[a];  // = the integral of N~_j where Phi is biorthogonal on the overlap
+    }
+    const OrientedCell& mc = mcells[owner[p]];
+    surface_shape(mc.type, q.xi_m, nmast, nullptr, nullptr);
+    for (int a = 0; a < sc.n; ++a) {
+      auto& mj = zi.m[js[a]];
+      for (int l = 0; l < mc.n; ++l) {
+        const double v = q.w * phi[a] * nmast[l];
+        auto it = std::find_if(mj.begin(), mj.end(), [&](const auto& e) { return e.first == mc.nodes[l]; });
+        if (it == mj.end()) mj.emplace_back(mc.nodes[l], v);
+        else it->second += v;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+bool MortarSegments::integrate_slave_cell(size_t z, size_t s, const std::vector<double>& xyz, MasterGrid& grid,
+                                          ZoneIntegrals& zi, OverlapScratch& scratch) const {
+  const OrientedCell& sc = slave_cells_[z][s];
+  const std::vector<OrientedCell>& mcells = master_cells_[z];
+  double sx[3 * kMaxSurfaceNodes], mx[3 * kMaxSurfaceNodes];
+  cell_coordinates(sc, xyz, sx);
+  // The search box: the slave cell's, grown by half its size.
+  double b[6] = {1e300, 1e300, 1e300, -1e300, -1e300, -1e300};
+  for (int a = 0; a < sc.n; ++a)
+    for (int k = 0; k < 3; ++k) b[k] = std::min(b[k], sx[3 * a + k]), b[3 + k] = std::max(b[3 + k], sx[3 * a + k]);
+  const double reach = 0.5 * std::max({b[3] - b[0], b[4] - b[1], b[5] - b[2]});
+  for (int k = 0; k < 3; ++k) b[k] -= reach, b[3 + k] += reach;
+  std::vector<OverlapPoint>& pts = scratch.pts;
+  std::vector<int>& owner = scratch.owner;
+  pts.clear();
+  owner.clear();
+  grid.overlapping(b, static_cast<int>(s), [&](int mi) {
+    const OrientedCell& mc = mcells[mi];
+    cell_coordinates(mc, xyz, mx);
+    const size_t before = pts.size();
+    const int degree = std::max(2 * shape_degree(sc.type), shape_degree(sc.type) + shape_degree(mc.type));
+    overlap_points(sc.type, sx, mc.type, mx, degree, pts);
+    if (axisymmetric_)  // AXIS: the measure r dl per radian, r at the slave point
+      for (size_t k = before; k < pts.size(); ++k) pts[k].w *= axis_radius(sc.type, sx, pts[k].xi_s);
+    owner.insert(owner.end(), pts.size() - before, mi);
+  });
+  if (pts.empty()) return false;
+  double a_dual[kMaxSurfaceNodes * kMaxSurfaceNodes];
+  bool whole_cell = false;
+  if (!dual_coefficients(sc.type, pts, a_dual)) {
+    // A partly covered cell whose covered part cannot carry a dual basis (a QUAD8 or SEG3
+    // corner function with a negative integral there): the dual basis of the whole cell.
+    // D_j below is then the integral of Phi_j over the covered part (not biorthogonal
+    // there), which keeps a rigid translation gap-free; such cells only occur where the
+    // master surface ends.
+    if (!dual_coefficients(sc.type, scratch.whole, a_dual)) return false;
+    whole_cell = true;
+  }
+  add_overlaps(sc, mcells, pts, owner, a_dual, zi);
+  return whole_cell;
+}
+
+void MortarSegments::zone_rows(size_t z, ZoneIntegrals& zi, const DofMap& dofs,
+                               const std::unordered_map<int, int>& mid_index, MortarPairingRows& out) const {
+  // Rows of the zone, vertices before mid-edge nodes (their relations name the vertices').
+  const std::vector<int>& nodes = zi.nodes;
+  const std::vector<double>& d = zi.d;
+  const double d_min = 1e-10 * std::pow(h_[z], dim_ - 1);
+  std::vector<int> order(nodes.size());
+  for (size_t j = 0; j < nodes.size(); ++j) order[j] = static_cast<int>(j);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return (mid_index.count(nodes[a]) != 0) < (mid_index.count(nodes[b]) != 0);
+  });
+  const double dist = zones_[z].dist_mait + zones_[z].dist_escl;
+  for (int j : order) {
+    if (!(d[j] > d_min)) continue;
+    // A slave node whose cells face the master surface on less than half of its share lies
+    // past the master's edge: its weighted gap, an average over the little that is covered
+    // (with the whole cell's dual basis where the covered part cannot carry one), says
+    // nothing of its own position, and such a row could hold the bodies apart or together
+    // far from any real contact. It is left out, like a node that projects nowhere.
+    if (d[j] < 0.5 * zi.d_full[j]) continue;
+    MortarRow row;
+    row.zone = static_cast<int>(z);
+    row.node = nodes[j];
+    row.d = d[j];
+    double len = 0.0;
+    for (int k = 0; k < 3; ++k) len += zi.normal[3 * j + k] * zi.normal[3 * j + k];
+    len = std::sqrt(len);
+    for (int k = 0; k < 3; ++k) row.normal[k] = len > 0.0 ? zi.normal[3 * j + k] / len : 0.0;
+    // g~_j = n . (sum_l M_jl x_l - D_j x~_j), node by node.
+    std::vector<std::pair<int, double>> terms = zi.m[j];
+    auto mid = mid_index.find(nodes[j]);
+    if (mid == mid_index.end()) {
+      terms.emplace_back(nodes[j], -d[j]);
+    } else {
+      const double s = 1.0 - 2.0 * kQuadraticAlpha;
+      terms.emplace_back(nodes[j], -d[j] / s);
+      terms.emplace_back(mid_edges_[mid->second][1], kQuadraticAlpha * d[j] / s);
+      terms.emplace_back(mid_edges_[mid->second][2], kQuadraticAlpha * d[j] / s);
+    }
+    // A normal component at round-off level is no coupling (kNormalRoundOff).
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(row.normal[k]) <= kNormalRoundOff) row.normal[k] = 0.0;
+    row.g0 = -dist * d[j];
+    for (const auto& [node, c] : terms) {
+      for (int k = 0; k < dim_; ++k) {
+        row.g0 += c * row.normal[k] * mesh_.coords[3 * static_cast<size_t>(node) + k];
+        const int eq = dofs.dof(node, k);
+        if (eq < 0 || row.normal[k] == 0.0) continue;
+        row.eq.push_back(eq);
+        row.coef.push_back(c * row.normal[k]);
+      }
+    }
+    out.rows.push_back(std::move(row));
+    out.masters.push_back(std::move(zi.m[j]));
+  }
+}
+
+MortarPairingRows MortarSegments::pair(const DofMap& dofs, const Vector& u, bool shared) const {
+  const std::vector<double> xyz = current_coordinates(mesh_, dofs, dim_, u);
+  MortarPairingRows out;
+  std::unordered_map<int, int> mid_index;
+  for (size_t i = 0; i < mid_edges_.size(); ++i) mid_index[mid_edges_[i][0]] = static_cast<int>(i);
+  OverlapScratch scratch;
+  for (size_t z = 0; z < slave_cells_.size(); ++z) {
+    const std::vector<OrientedCell>& slaves = slave_cells_[z];
+    MasterGrid grid(master_cells_[z], xyz);
+    ZoneIntegrals zi;
     // A shared model: each rank integrates the overlaps of one consecutive block of the slave
     // cells (the costly part: search, clipping, dual basis) and the ranks then share D and M;
     // the nodes are numbered first, in the cells' order, so that every rank numbers them alike.
@@ -259,152 +463,21 @@ MortarPairingRows MortarSegments::pair(const DofMap& dofs, const Vector& u, bool
     const size_t me = shared ? static_cast<size_t>(parallel::rank()) : 0;
     const size_t first_mine = me * n_slaves / parts, end_mine = (me + 1) * n_slaves / parts;
     for (const OrientedCell& sc : slaves)
-      for (int a = 0; a < sc.n; ++a) index(sc.nodes[a]);
-    const int whole_before = n_whole_cell;
+      for (int a = 0; a < sc.n; ++a) zi.index(sc.nodes[a]);
+    const int whole_before = out.n_whole_cell;
+    double sx[3 * kMaxSurfaceNodes];
     for (size_t s = 0; s < slaves.size(); ++s) {
-      const OrientedCell& sc = slaves[s];
-      coords(sc, sx);
-      // The whole slave cell as integration points (the measure r dl on an AXIS model): the
-      // integral of each N~_j over it (a node whose covered share is under half of it gets no
-      // row, below), and the dual basis of a partly covered cell that cannot carry its own.
-      whole.clear();
-      for (const auto& q : contact_integration_rule(sc.type, IntegrationScheme::Gauss, 4)) {
-        OverlapPoint op;
-        op.xi_s[0] = q.xi[0], op.xi_s[1] = q.xi[1];
-        const SurfacePoint sp = surface_point(sc.type, sx, q.xi);
-        op.w = q.weight * sp.jacobian * (axisymmetric_ ? std::max(sp.x[0], 0.0) : 1.0);
-        double nt[kMaxSurfaceNodes];
-        slave_shape(sc.type, q.xi, nt);
-        for (int a = 0; a < sc.n; ++a) d_full[index(sc.nodes[a])] += op.w * nt[a];
-        whole.push_back(op);
-      }
-      // Nodal normals: the cell's normal at each of its nodes.
-      for (int a = 0; a < sc.n; ++a) {
-        double xi[2];
-        surface_reference_node(sc.type, a, xi);
-        const SurfacePoint sp = surface_point(sc.type, sx, xi);
-        const int j = index(sc.nodes[a]);
-        for (int k = 0; k < 3; ++k) normal[3 * j + k] += sp.n[k];
-      }
+      cell_coordinates(slaves[s], xyz, sx);
+      whole_slave_cell(slaves[s], sx, axisymmetric_, zi, scratch.whole);
       if (s < first_mine || s >= end_mine) continue;  // another rank's overlaps
-      double b[6] = {1e300, 1e300, 1e300, -1e300, -1e300, -1e300};
-      for (int a = 0; a < sc.n; ++a)
-        for (int k = 0; k < 3; ++k) b[k] = std::min(b[k], sx[3 * a + k]), b[3 + k] = std::max(b[3 + k], sx[3 * a + k]);
-      const double reach = 0.5 * std::max({b[3] - b[0], b[4] - b[1], b[5] - b[2]});
-      for (int k = 0; k < 3; ++k) b[k] -= reach, b[3 + k] += reach;
-      pts.clear();
-      owner.clear();
-      for (double x = std::floor(b[0] / cell); x <= std::floor(b[3] / cell); x += 1.0)
-        for (double y = std::floor(b[1] / cell); y <= std::floor(b[4] / cell); y += 1.0)
-          for (double w = std::floor(b[2] / cell); w <= std::floor(b[5] / cell); w += 1.0) {
-            auto it = grid.find(key((x + 0.5) * cell, (y + 0.5) * cell, (w + 0.5) * cell));
-            if (it == grid.end()) continue;
-            for (int mi : it->second) {
-              if (stamp[mi] == static_cast<int>(s)) continue;
-              stamp[mi] = static_cast<int>(s);
-              const double* mb = &box[6 * mi];
-              if (mb[0] > b[3] || mb[3] < b[0] || mb[1] > b[4] || mb[4] < b[1] || mb[2] > b[5] || mb[5] < b[2]) continue;
-              const OrientedCell& mc = mcells[mi];
-              coords(mc, mx);
-              const size_t before = pts.size();
-              const int degree = std::max(2 * shape_degree(sc.type), shape_degree(sc.type) + shape_degree(mc.type));
-              overlap_points(sc.type, sx, mc.type, mx, degree, pts);
-              if (axisymmetric_)  // AXIS: the measure r dl per radian, r at the slave point
-                for (size_t k = before; k < pts.size(); ++k) pts[k].w *= axis_radius(sc.type, sx, pts[k].xi_s);
-              owner.insert(owner.end(), pts.size() - before, mi);
-            }
-          }
-      if (pts.empty()) continue;
-      double a_dual[kMaxSurfaceNodes * kMaxSurfaceNodes];
-      if (!dual_coefficients(sc.type, pts, a_dual)) {
-        // A partly covered cell whose covered part cannot carry a dual basis (a QUAD8 or SEG3
-        // corner function with a negative integral there): the dual basis of the whole cell.
-        // D_j below is then the integral of Phi_j over the covered part (not biorthogonal
-        // there), which keeps a rigid translation gap-free; such cells only occur where the
-        // master surface ends.
-        if (!dual_coefficients(sc.type, whole, a_dual)) continue;
-        ++n_whole_cell;
-      }
-      int js[kMaxSurfaceNodes];
-      for (int a = 0; a < sc.n; ++a) js[a] = index(sc.nodes[a]);
-      double ns[kMaxSurfaceNodes], phi[kMaxSurfaceNodes], nmast[kMaxSurfaceNodes];
-      for (size_t p = 0; p < pts.size(); ++p) {
-        const OverlapPoint& q = pts[p];
-        slave_shape(sc.type, q.xi_s, ns);
-        for (int a = 0; a < sc.n; ++a) {
-          phi[a] = 0.0;
-          for (int c = 0; c < sc.n; ++c) phi[a] += a_dual[a * sc.n + c] * ns[c];
-          d[js[a]] += q.w * phi[a];  // = the integral of N~_j where Phi is biorthogonal on the overlap
-        }
-        const OrientedCell& mc = mcells[owner[p]];
-        surface_shape(mc.type, q.xi_m, nmast, nullptr, nullptr);
-        for (int a = 0; a < sc.n; ++a) {
-          auto& mj = m[js[a]];
-          for (int l = 0; l < mc.n; ++l) {
-            const double v = q.w * phi[a] * nmast[l];
-            auto it = std::find_if(mj.begin(), mj.end(), [&](const auto& e) { return e.first == mc.nodes[l]; });
-            if (it == mj.end()) mj.emplace_back(mc.nodes[l], v);
-            else it->second += v;
-          }
-        }
-      }
+      if (integrate_slave_cell(z, s, xyz, grid, zi, scratch)) ++out.n_whole_cell;
     }
     if (shared) {
-      int zone_whole = n_whole_cell - whole_before;
-      share_overlaps(d, m, zone_whole);
-      n_whole_cell = whole_before + zone_whole;
+      int zone_whole = out.n_whole_cell - whole_before;
+      share_overlaps(zi.d, zi.m, zone_whole);
+      out.n_whole_cell = whole_before + zone_whole;
     }
-    // Rows of the zone, vertices before mid-edge nodes (their relations name the vertices').
-    const double d_min = 1e-10 * std::pow(h_[z], dim_ - 1);
-    std::vector<int> order(nodes.size());
-    for (size_t j = 0; j < nodes.size(); ++j) order[j] = static_cast<int>(j);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-      return (mid_index.count(nodes[a]) != 0) < (mid_index.count(nodes[b]) != 0);
-    });
-    const double dist = zones_[z].dist_mait + zones_[z].dist_escl;
-    for (int j : order) {
-      if (!(d[j] > d_min)) continue;
-      // A slave node whose cells face the master surface on less than half of its share lies
-      // past the master's edge: its weighted gap, an average over the little that is covered
-      // (with the whole cell's dual basis where the covered part cannot carry one), says
-      // nothing of its own position, and such a row could hold the bodies apart or together
-      // far from any real contact. It is left out, like a node that projects nowhere.
-      if (d[j] < 0.5 * d_full[j]) continue;
-      MortarRow row;
-      row.zone = static_cast<int>(z);
-      row.node = nodes[j];
-      row.d = d[j];
-      double len = 0.0;
-      for (int k = 0; k < 3; ++k) len += normal[3 * j + k] * normal[3 * j + k];
-      len = std::sqrt(len);
-      for (int k = 0; k < 3; ++k) row.normal[k] = len > 0.0 ? normal[3 * j + k] / len : 0.0;
-      // g~_j = n . (sum_l M_jl x_l - D_j x~_j), node by node.
-      std::vector<std::pair<int, double>> terms = m[j];
-      auto mid = mid_index.find(nodes[j]);
-      if (mid == mid_index.end()) {
-        terms.emplace_back(nodes[j], -d[j]);
-      } else {
-        const double s = 1.0 - 2.0 * kQuadraticAlpha;
-        terms.emplace_back(nodes[j], -d[j] / s);
-        terms.emplace_back(mid_edges_[mid->second][1], kQuadraticAlpha * d[j] / s);
-        terms.emplace_back(mid_edges_[mid->second][2], kQuadraticAlpha * d[j] / s);
-      }
-      // A normal component at round-off level is no coupling (kNormalRoundOff).
-      for (int k = 0; k < 3; ++k)
-        if (std::abs(row.normal[k]) <= kNormalRoundOff) row.normal[k] = 0.0;
-      row.g0 = -dist * d[j];
-      for (const auto& [node, c] : terms) {
-        for (int k = 0; k < dim_; ++k) {
-          row.g0 += c * row.normal[k] * mesh_.coords[3 * static_cast<size_t>(node) + k];
-          const int eq = dofs.dof(node, k);
-          if (eq < 0 || row.normal[k] == 0.0) continue;
-          row.eq.push_back(eq);
-          row.coef.push_back(c * row.normal[k]);
-        }
-      }
-      rows.push_back(std::move(row));
-      masters.push_back(std::move(m[j]));
-    }
+    zone_rows(z, zi, dofs, mid_index, out);
   }
   return out;
 }

@@ -23,6 +23,7 @@
 /// (per radian, as the AXIS elements), and LAGS_C stays a pressure.
 #include <array>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -68,6 +69,12 @@ struct MortarPairingRows {
   int n_whole_cell = 0;  ///< partly covered slave cells given the dual basis of the whole cell
 };
 
+namespace detail {
+class MasterGrid;
+struct ZoneIntegrals;
+struct OverlapScratch;
+}  // namespace detail
+
 /// "contact zone 2 (slave 'AB', master 'EF')".
 std::string zone_label(const ContactZone& zone, int z);
 
@@ -103,6 +110,13 @@ class MortarSegments {
   /// own slave cells, made whole on every rank (collective).
   static void share_overlaps(std::vector<double>& d, std::vector<std::vector<std::pair<int, double>>>& m,
                              int& n_whole_cell);
+  /// The overlaps of slave cell `s` of zone `z` with the master cells (search, clipping, dual
+  /// basis) added to `zi`. Returns true when the cell took the dual basis of the whole cell.
+  bool integrate_slave_cell(size_t z, size_t s, const std::vector<double>& xyz, detail::MasterGrid& grid,
+                            detail::ZoneIntegrals& zi, detail::OverlapScratch& scratch) const;
+  /// The rows of zone `z` from its integrals, appended to `out`.
+  void zone_rows(size_t z, detail::ZoneIntegrals& zi, const DofMap& dofs, const std::unordered_map<int, int>& mid_index,
+                 MortarPairingRows& out) const;
 
   const Mesh& mesh_;
   const int dim_;
