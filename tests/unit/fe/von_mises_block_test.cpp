@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <ostream>
 #include <vector>
 
 #include "engine/assembly/tangent.hpp"
@@ -32,6 +33,9 @@ struct BlockCase {
   Law law;
   int axis;  ///< the stretched direction (the axial y in an axisymmetric model)
 };
+
+/// GoogleTest prints a case by its name.
+void PrintTo(const BlockCase& c, std::ostream* os) { *os << c.what; }
 
 struct Block {
   const BlockCase& c;

@@ -1,14 +1,16 @@
 // von Mises plasticity with isotropic hardening (engine/material/von_mises.hpp), linear and from a
-// traction curve, at the point and on a block of cells, each value against a closed form:
+// traction curve, at the point (the block of cells: von_mises_block_test.cpp), each value against
+// a closed form:
 // - the uniaxial stress path (3D, axisymmetric, plane stress) integrated in increments is the
 //   uniaxial curve: sigma = SY + E_T (eps - SY / E), p = (sigma - SY) / H for the linear law
 //   (code_aster's SSNP159 PETIT: 1570 and 0.28215 at eps = 0.29), the curve itself for the
 //   piecewise law (in uniaxial stress eps = sigma / E + p and p_i = eps_i - sigma_i / E, so the
 //   path is the curve's broken line);
+// - tension and shear along a radial stress path (code_aster's SSNP15A at t = 1), stress-driven by
+//   Newton on the law's tangent: p = (q - SY) / H and the strains of the flow rule;
 // - the consistent tangent is the central difference of the stress update;
 // - unloading keeps p and has Young's slope, and reverse yielding starts at -R(p);
-// - a block of HEXA8 or QUAD4 cells stretched by an imposed displacement, solved by Newton on
-//   assembly's Tangent: the uniform uniaxial state above, and Newton's quadratic rate.
+// - the hardening data are refused as the law needs (E_T < E, a curve that does not soften).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -148,6 +150,63 @@ TEST(VonMises, UnloadingKeepsPAndHasYoungsSlopeThenReverseYieldIsAtMinusR) {
       expect_uniaxial(point, reverse, top.p + dp, "reverse yield");
       EXPECT_EQ(point.vari[1], 1.0);
     }
+}
+
+/// Drives `point` to the stress `target` by Newton on the strain with the law's tangent, and
+/// commits; returns the relative residuals |sigma - target| / scale of the iterations.
+std::vector<double> drive_to_stress(const Behaviour& law, Point& point, const TensorVector& target, double scale) {
+  TensorVector strain = point.strain;
+  std::vector<double> residuals;
+  for (int it = 0; it < 30; ++it) {
+    const PointOutput out = point.step(law, strain, false);
+    const TensorVector r = out.stress - target;
+    residuals.push_back(r.norm() / scale);
+    if (residuals.back() < 1e-13) {
+      point.step(law, strain);
+      return residuals;
+    }
+    strain -= Eigen::MatrixXd(out.tangent).lu().solve(Eigen::VectorXd(r));
+  }
+  ADD_FAILURE() << "no convergence to the stress asked";
+  return residuals;
+}
+
+TEST(VonMises, RadialTensionShearIsSsnp15sClosedForm) {
+  // code_aster's SSNP15A at t = 1 (E = 195000, NU = 0.3, E_T = 1930, SY = 181): tension 151.2 and
+  // shear 93.1 applied radially (here in 10 stress increments, the first yield inside the 9th).
+  // On a radial path the flow direction is fixed, so the backward Euler return is exact: p =
+  // (q - SY) / H with q = sqrt(s^2 + 3 t^2), eps_xx = s / E + p s / q, eps_yy = eps_zz = -NU s / E -
+  // p s / (2 q), eps_xy = t / (2 G) + 1.5 p t / q (SSNP15's 0.0205473, 0.0148297, 0.0136014).
+  // Then unloaded to zero stress: elastic (one Newton iteration), p kept, the strain is the
+  // plastic strain p s / q, 3 p t / q (engineering shear).
+  const double e = 195000.0, nu = 0.3, et = 1930.0, sy = 181.0, sxx = 151.2, sxy = 93.1;
+  const double h = plastic_modulus(e, et), g = e / (2.0 * (1.0 + nu));
+  const VonMises law(ElasticMaterial{e, nu, 0.0}, IsotropicHardening::linear(sy, h));
+  const double q = std::sqrt(sxx * sxx + 3.0 * sxy * sxy), p = (q - sy) / h;
+  const double exx = sxx / e + p * sxx / q, eyy = -nu * sxx / e - 0.5 * p * sxx / q;
+  const double exy = sxy / (2.0 * g) + 1.5 * p * sxy / q;
+  test::expect_close(p, 0.0205473, 5e-6, 0.0, "SSNP15A p");  // the printed digits
+  test::expect_close(exx, 0.0148297, 5e-6, 0.0, "SSNP15A EPXX");
+  test::expect_close(exy, 0.0136014, 5e-6, 0.0, "SSNP15A EPXY");
+  Point point(Modelisation::Solid3D);
+  TensorVector target = TensorVector::Zero(6);
+  for (int k = 1; k <= 10; ++k) {
+    target(0) = sxx * k / 10.0;
+    target(3) = sxy * k / 10.0;
+    drive_to_stress(law, point, target, sy);
+  }
+  EXPECT_EQ(point.vari[1], 1.0);
+  test::expect_close(point.vari[0], p, 1e-10, 0.0, "p");
+  const double expected[6] = {exx, eyy, eyy, 2.0 * exy, 0.0, 0.0};
+  for (int i = 0; i < 6; ++i)
+    test::expect_close(point.strain(i), expected[i], 1e-10, 1e-14, "strain " + std::to_string(i));
+  const std::vector<double> unload = drive_to_stress(law, point, TensorVector::Zero(6), sy);
+  EXPECT_EQ(unload.size(), 2u) << "an elastic unloading is one linear solve";
+  EXPECT_EQ(point.vari[1], 0.0);
+  test::expect_close(point.vari[0], p, 1e-10, 0.0, "p after unloading");
+  const double plastic[6] = {p * sxx / q, -0.5 * p * sxx / q, -0.5 * p * sxx / q, 3.0 * p * sxy / q, 0.0, 0.0};
+  for (int i = 0; i < 6; ++i)
+    test::expect_close(point.strain(i), plastic[i], 1e-10, 1e-14, "plastic strain " + std::to_string(i));
 }
 
 /// Central differences of the stress at the end of one step from `point`, per strain component.
