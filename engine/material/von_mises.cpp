@@ -35,8 +35,8 @@ Mat6 isotropic_tangent(double bulk, double shear, double theta, double theta_bar
 
 }  // namespace
 
-VonMises::VonMises(const ElasticMaterial& elastic, IsotropicHardening hardening)
-    : elastic_(elastic), hardening_(std::move(hardening)) {
+VonMises::VonMises(const ElasticMaterial& elastic, IsotropicHardening hardening, PlaneStressIteration local)
+    : elastic_(elastic), hardening_(std::move(hardening)), local_(local) {
   if (!is_admissible(elastic)) throw InternalError("von Mises plasticity: material needs E > 0 and -1 < nu < 0.5");
   shear_ = elastic.young / (2.0 * (1.0 + elastic.poisson));
   bulk_ = elastic.young / (3.0 * (1.0 - 2.0 * elastic.poisson));
@@ -100,12 +100,12 @@ bool VonMises::update_plane_stress(const TensorVector& stress_start, const Eigen
   const double lambda = bulk_ - 2.0 * shear_ / 3.0;
   double dz = -(start(2) + lambda * (increment(0) + increment(1))) / (lambda + 2.0 * shear_);  // elastic guess
   double low = -std::numeric_limits<double>::infinity(), high = std::numeric_limits<double>::infinity();
-  for (int it = 0; it < 100; ++it) {
+  for (int it = 0; it < local_.max_iterations; ++it) {
     increment(2) = dz;
     if (!update_3d(start, increment, p_start, true, out)) return false;
     const double szz = out.stress(2);
     const double scale = std::max(hardening_.radius(out.p), out.stress.cwiseAbs().maxCoeff());
-    if (std::abs(szz) <= 1e-12 * scale) return true;
+    if (std::abs(szz) <= local_.tolerance * scale) return true;
     (szz < 0.0 ? low : high) = dz;
     double next = dz - szz / out.tangent(2, 2);
     if (!(next > low && next < high)) next = 0.5 * (low + high);

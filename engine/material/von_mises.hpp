@@ -15,6 +15,14 @@
 
 namespace lunaster::engine {
 
+/// The plane stress iteration of a von Mises law on the zz strain: converged when |sigma_zz| <=
+/// tolerance times the stress scale (the larger of R(p) and the largest stress component), failed
+/// (the step is to be subdivided) after max_iterations.
+struct PlaneStressIteration {
+  double tolerance = 1e-12;
+  int max_iterations = 100;
+};
+
 /// von Mises plasticity, isotropic hardening R(p), isotropic elasticity (E, nu). Internal
 /// variables: the cumulated plastic strain p, then the step's plastic indicator (1 when the step
 /// yielded, 0 when it stayed elastic), as code_aster's EPSPEQ and INDIPLAS. Every hypothesis: 3D,
@@ -24,7 +32,7 @@ namespace lunaster::engine {
 class VonMises final : public Behaviour {
  public:
   /// `elastic`: E > 0, -1 < nu < 0.5 (InternalError otherwise); its density is not used.
-  VonMises(const ElasticMaterial& elastic, IsotropicHardening hardening);
+  VonMises(const ElasticMaterial& elastic, IsotropicHardening hardening, PlaneStressIteration local = {});
   bool is_linear() const override { return false; }
   const std::vector<std::string>& variable_names() const override;
   /// Failed when the return has no solution (past a curve's excluded end) or when the plane
@@ -53,6 +61,7 @@ class VonMises final : public Behaviour {
 
   ElasticMaterial elastic_;
   IsotropicHardening hardening_;
+  PlaneStressIteration local_;
   double shear_ = 0.0, bulk_ = 0.0;  ///< mu, K (Pa)
   Eigen::Matrix<double, 6, 6> elastic_tangent_;
 };

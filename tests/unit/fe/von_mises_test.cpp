@@ -308,4 +308,27 @@ TEST(VonMises, HardeningDataAreCheckedAsTheLawNeedsThem) {
   test::expect_close(curve.hardening.radius(p_last), 1150.0, 1e-14, 0.0, "last point");
 }
 
+TEST(VonMises, APlaneStressIterationThatDoesNotConvergeFailsTheStep) {
+  // The elastic guess of the zz strain is exact in an elastic step: one evaluation suffices. A
+  // plastic step needs Newton iterations: allowed one evaluation, it fails (a step to subdivide);
+  // by default it converges.
+  const VonMises one(ElasticMaterial{kE, kNu, 0.0}, IsotropicHardening::linear(kSy, kH), PlaneStressIteration{1e-12, 1});
+  const auto usual = make_law(Law::Linear);
+  auto integrate = [](const VonMises& law, double eps) {
+    PointInput in;
+    in.hypothesis = Modelisation::PlaneStress;
+    in.strain_start = in.stress_start = TensorVector::Zero(4);
+    in.strain_end = uniaxial_strain(Modelisation::PlaneStress, eps, -kNu * eps);
+    const double start[2] = {0.0, 0.0};
+    double end[2];
+    in.variables_start = start;
+    PointOutput out;
+    out.variables_end = end;
+    return law.integrate(in, out);
+  };
+  EXPECT_EQ(integrate(one, 0.5 * kSy / kE), IntegrationStatus::Ok);
+  EXPECT_EQ(integrate(one, 3.0 * kSy / kE), IntegrationStatus::Failed);
+  EXPECT_EQ(integrate(*usual, 3.0 * kSy / kE), IntegrationStatus::Ok);
+}
+
 }  // namespace lunaster::engine::von_mises_test::point
