@@ -11,7 +11,7 @@ const CommandSpec& defi_fonction_spec() {
   };
   static const CommandSpec spec = make_command(
       "DEFI_FONCTION", "fonction", "Define a piecewise linear function of one parameter",
-      {text("NOM_PARA", "Name of the parameter").into_values({"INST", "X", "Y", "Z"}).required(),
+      {text("NOM_PARA", "Name of the parameter").into_values({"INST", "X", "Y", "Z", "EPSI"}).required(),
        real("VALE", "Pairs x1, f(x1), x2, f(x2), ... with increasing x").count(2, -1).required(),
        prolongation("PROL_GAUCHE", "left"), prolongation("PROL_DROITE", "right"),
        text("INTERPOL", "Interpolation (only linear)").into_values({"LIN"}).count(1, 2).def("LIN"),

@@ -21,6 +21,7 @@ ConceptPtr affe_materiau(const Args& args, Session&) {
     if (!mat->has_elas)
       throw occ.error("MATER", "a material with ELAS", "'" + mat->user_name + "' without ELAS");
     cm->materials.push_back(mat->elas);
+    cm->maters.push_back(mat);
     const int index = static_cast<int>(cm->materials.size()) - 1;
     for (int c : select_cells(occ, *ma->mesh)) cm->material[c] = index;
   }

@@ -2,6 +2,7 @@
 /// The concepts (typed results) commands return. Each wraps engine data.
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "engine/contact/contact_definition.hpp"
 #include "engine/fe/fe_model.hpp"
 #include "engine/fields/fields.hpp"
+#include "engine/material/isotropic_hardening.hpp"
 #include "engine/mesh/mesh.hpp"
 #include "engine/nonlinear/loads.hpp"
 #include "engine/nonlinear/static_solver.hpp"
@@ -53,6 +55,10 @@ struct Modele : Concept {
 struct Mater : Concept {
   engine::ElasticMaterial elas;
   bool has_elas = false;
+  /// ECRO_LINE: R(p) = SY + H p with H = E D_SIGM_EPSI / (E - D_SIGM_EPSI), E of ELAS.
+  std::optional<engine::IsotropicHardening> ecro_line;
+  /// TRACTION: the curve's E (first point) and R(p); NU comes from ELAS.
+  std::optional<engine::TractionCurve> traction;
   std::string type_name() const override { return "mater"; }
 };
 
@@ -61,6 +67,7 @@ struct ChamMater : Concept {
   std::shared_ptr<Maillage> maillage;
   std::vector<int> material;                      ///< per cell, index into materials, -1 none
   std::vector<engine::ElasticMaterial> materials;
+  std::vector<std::shared_ptr<const Mater>> maters;  ///< per index of materials: its DEFI_MATERIAU
   std::string type_name() const override { return "cham_mater"; }
   bool in_parts() const override { return maillage && maillage->in_parts(); }
 };

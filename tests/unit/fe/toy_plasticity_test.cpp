@@ -20,7 +20,6 @@
 #include <filesystem>
 #include <tuple>
 
-#include <Eigen/SparseLU>
 #include <med.h>
 
 #include "engine/assembly/assembly.hpp"
@@ -30,6 +29,7 @@
 #include "engine/material/behaviour.hpp"
 #include "engine/material/cell_behaviours.hpp"
 #include "fe_test_util.hpp"
+#include "newton_test_util.hpp"
 
 namespace lunaster::engine {
 namespace {
@@ -111,50 +111,18 @@ struct Bar {
     std::vector<char> fixed(dofs->n_dofs(), 0);
     for (int j = 0; j <= kCells; ++j) fixed[dofs->dof(block.vertex(0, j), DX)] = 1;
     fixed[dofs->dof(block.vertex(0, 0), DY)] = 1;
-    for (int i = 0; i < dofs->n_dofs(); ++i)
-      if (!fixed[i]) free.push_back(i);
+    free = test::free_equations(fixed);
     unit_load = Vector::Zero(dofs->n_dofs());
     for (int j = 0; j < kCells; ++j)
       for (int end : {j, j + 1}) unit_load(dofs->dof(block.vertex(kCells, end), DX)) += 0.5 / kCells;
   }
 };
 
-struct NewtonLog {
-  std::vector<double> residuals;  ///< |f_ext - f_int| on the free equations / |f_ext|, per iteration
-  bool converged = false;
-};
-
 /// Newton on one load step: u from the step's start to equilibrium with traction t.
-NewtonLog newton_step(const Bar& bar, Tangent& tangent, double t, Vector& u) {
-  NewtonLog log;
+test::NewtonLog newton_step(const Bar& bar, Tangent& tangent, double t, Vector& u) {
+  std::printf("  t = %g\n", t);
   const Vector f_ext = t * bar.unit_load;
-  const int nf = static_cast<int>(bar.free.size());
-  for (int it = 0; it < 20; ++it) {
-    SparseMatrix k;
-    Vector f_int;
-    if (!tangent.assemble(u, &k, &f_int)) return log;
-    Vector r(nf);
-    for (int i = 0; i < nf; ++i) r(i) = f_ext(bar.free[i]) - f_int(bar.free[i]);
-    log.residuals.push_back(r.norm() / f_ext.norm());
-    std::printf("  t = %g, iteration %d: relative residual %.3e\n", t, it, log.residuals.back());
-    if (log.residuals.back() < 1e-12) {
-      log.converged = true;
-      return log;
-    }
-    std::vector<int> index(bar.dofs->n_dofs(), -1);
-    for (int i = 0; i < nf; ++i) index[bar.free[i]] = i;
-    std::vector<Triplet> entries;
-    for (int c = 0; c < k.outerSize(); ++c)
-      for (SparseMatrix::InnerIterator e(k, c); e; ++e)
-        if (index[e.row()] >= 0 && index[c] >= 0) entries.emplace_back(index[e.row()], index[c], e.value());
-    SparseMatrix kff(nf, nf);
-    kff.setFromTriplets(entries.begin(), entries.end());
-    Eigen::SparseLU<SparseMatrix> lu(kff);
-    EXPECT_EQ(lu.info(), Eigen::Success);
-    const Vector du = lu.solve(r);
-    for (int i = 0; i < nf; ++i) u(bar.free[i]) += du(i);
-  }
-  return log;
+  return test::newton_step(tangent, bar.free, f_ext, f_ext.norm(), u);
 }
 
 void expect_exact(const Bar& bar, const Tangent& tangent, const Vector& u, double t) {
@@ -178,7 +146,7 @@ TEST(ToyPlasticity, NewtonOnTheTangentConvergesQuadraticallyToTheExactSolution) 
   EXPECT_FALSE(tangent.constant());
   Vector u = Vector::Zero(bar.dofs->n_dofs());
   for (double t : {150.0, 250.0, 290.0}) {  // elastic, then twice plastic
-    const NewtonLog log = newton_step(bar, tangent, t, u);
+    const test::NewtonLog log = newton_step(bar, tangent, t, u);
     ASSERT_TRUE(log.converged) << "t = " << t;
     expect_exact(bar, tangent, u, t);
     tangent.commit();
@@ -218,7 +186,7 @@ TEST(ToyPlasticity, ARestoredStepReproducesItsNumbers) {
   Vector u_a = Vector::Zero(bar.dofs->n_dofs()), u_b = u_a;
   ASSERT_TRUE(newton_step(bar, run_a, 250.0, u_a).converged);
   run_a.commit();
-  const NewtonLog log_a = newton_step(bar, run_a, 290.0, u_a);
+  const test::NewtonLog log_a = newton_step(bar, run_a, 290.0, u_a);
   ASSERT_TRUE(log_a.converged);
 
   ASSERT_TRUE(newton_step(bar, run_b, 250.0, u_b).converged);
@@ -230,7 +198,7 @@ TEST(ToyPlasticity, ARestoredStepReproducesItsNumbers) {
   test::expect_close(run_b.states().variables(MaterialStates::Slot::End, 0, 0)[0], exact_p(250.0), 1e-10, 0.0,
                      "EPSPEQ after restore");
   u_b = u_start;
-  const NewtonLog log_b = newton_step(bar, run_b, 290.0, u_b);
+  const test::NewtonLog log_b = newton_step(bar, run_b, 290.0, u_b);
   ASSERT_TRUE(log_b.converged);
   EXPECT_EQ(log_a.residuals, log_b.residuals);
   EXPECT_EQ((u_a - u_b).lpNorm<Eigen::Infinity>(), 0.0);
