@@ -18,7 +18,7 @@ const std::vector<CommandSpec>& all_commands() {
       debut_spec(),          fin_spec(),           lire_maillage_spec(),  defi_group_spec(),
       modi_maillage_spec(),  affe_modele_spec(),   defi_materiau_spec(),  affe_materiau_spec(),
       affe_char_meca_spec(), defi_contact_spec(),  defi_cont_spec(),  defi_list_reel_spec(), defi_list_inst_spec(),
-      defi_fonction_spec(),  defi_constante_spec(), formule_spec(), stat_non_line_spec(),  meca_non_line_spec(), calc_champ_spec(),     test_resu_spec(),
+      defi_fonction_spec(),  defi_constante_spec(), formule_spec(), stat_non_line_spec(),  meca_non_line_spec(), calc_champ_spec(),     crea_champ_spec(),     test_resu_spec(),
       impr_resu_spec(),      impr_mesure_spec(),   post_releve_t_spec(),  test_table_spec(),  impr_table_spec(),
   };
   return commands;

@@ -54,6 +54,12 @@ const CommandSpec& defi_contact_spec() {
           .into_values({"DISCRETE", "CONTINUE"})
           .def("DISCRETE"),
       text("FROTTEMENT", "Friction (only frictionless contact is supported)").into_values({"SANS"}).def("SANS"),
+      text("LISSAGE",
+           "Smoothing of the master normals: NON takes each master cell's own normal at the projection of a "
+           "slave point, as lunaster does. OUI (normals averaged at the master nodes and interpolated) is "
+           "refused: lunaster does not smooth them")
+          .into_values({"OUI", "NON"})
+          .def("NON"),
   };
   for (auto& kw : common::contact_loop_keywords()) keywords.push_back(kw);
   keywords.push_back(common::info());

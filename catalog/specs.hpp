@@ -24,6 +24,7 @@ const CommandSpec& formule_spec();
 const CommandSpec& stat_non_line_spec();
 const CommandSpec& meca_non_line_spec();
 const CommandSpec& calc_champ_spec();
+const CommandSpec& crea_champ_spec();
 const CommandSpec& test_resu_spec();
 const CommandSpec& impr_resu_spec();
 const CommandSpec& impr_mesure_spec();

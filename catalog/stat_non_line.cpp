@@ -53,14 +53,19 @@ std::vector<Keyword> keywords(bool meca_non_line) {
       factor("INCREMENT",
              {concept_kw("LIST_INST", {"listr8", "list_inst"}, "Time steps").required(),
               real("INST_INIT", "First time computed (default: first of the list)"),
-              real("INST_FIN", "Last time computed (default: last of the list)")},
+              real("INST_FIN", "Last time computed (default: last of the list)"),
+              integer("NUME_INST_FIN",
+                      "Last time computed, by its index in LIST_INST (the list's first time is 0): the "
+                      "computation stops there, as with INST_FIN at that time")
+                  .range(1, std::nullopt)},
              "Time stepping")
-          .required(),
+          .required()
+          .with_rules({at_most_one({"INST_FIN", "NUME_INST_FIN"})}),
       factor("NEWTON",
              {text("MATRICE",
                    "Matrix of Newton's corrections: the tangent, or the elastic matrix factorised once for the whole "
-                   "run (runs without contact only: code_aster keeps the contact terms in the matrix, so with "
-                   "contact it would be the tangent)")
+                   "run. With contact, code_aster keeps the contact terms in the matrix: ELASTIQUE is then the elastic "
+                   "stiffness plus the contact terms, with linear elasticity the tangent (the log says so)")
                   .into_values({"TANGENTE", "ELASTIQUE"})
                   .def("TANGENTE"),
               integer("REAC_ITER",
@@ -69,13 +74,27 @@ std::vector<Keyword> keywords(bool meca_non_line) {
                       "matrix). In between the last factors are reused with the current residual (modified Newton: "
                       "fewer factorisations, more iterations; convergence is judged on the true residual)")
                   .def(1LL)
+                  .range(0, std::nullopt),
+              integer("REAC_INCR",
+                      "Form the matrix anew at the first Newton iteration of every N-th increment (code_aster's "
+                      "default 1: every increment, which is what lunaster's driver does; the log says so when "
+                      "given). 0 (never at the start of an increment) and N > 1, which keep the previous "
+                      "increment's factors, are refused: the driver forms the matrix at each increment's first "
+                      "iteration")
                   .range(0, std::nullopt)},
              "Newton's method")
           .by_default(),
       factor("CONVERGENCE",
              {real("RESI_GLOB_RELA", "Largest free residual over the largest load or reaction; 1e-6 unless only RESI_GLOB_MAXI is given").above(0.0),
               real("RESI_GLOB_MAXI", "Largest residual component (N)").above(0.0),
-              integer("ITER_GLOB_MAXI", "Maximum Newton iterations per step").def(10LL).range(1, std::nullopt)},
+              integer("ITER_GLOB_MAXI", "Maximum Newton iterations per step").def(10LL).range(1, std::nullopt),
+              text("ARRET",
+                   "OUI: a step whose Newton iterations do not converge (and cannot be split, DEFI_LIST_INST) "
+                   "stops the run, its converged steps saved. NON (code_aster goes on with the step's last "
+                   "iterate as if converged) is refused: a result that does not satisfy equilibrium would "
+                   "pass for one")
+                  .into_values({"OUI", "NON"})
+                  .def("OUI")},
              "Convergence criteria (both residual criteria must hold when both are given)")
           .by_default(),
       factor("SOLVEUR",

@@ -23,14 +23,45 @@ Keyword resu() {
                              at_most_one({"NOEUD", "GROUP_NO", "GROUP_MA"}), present_present({"GROUP_MA", "TYPE_TEST"}),
                              present_absent({"NOEUD", "TYPE_TEST"})};
   for (auto& rule : common::test_reference_rules()) rules.push_back(rule);
-  return factor("RESU", children, "One check of a result component").required().occurs(1, -1).with_rules(rules);
+  return factor("RESU", children, "One check of a result component").occurs(0, -1).with_rules(rules);
+}
+
+/// CHAM_NO / CHAM_ELEM: one check of a field made by CREA_CHAMP.
+Keyword field(bool at_nodes) {
+  std::vector<Keyword> children = {
+      concept_kw("CHAM_GD", {"cham_gd"}, at_nodes ? "Field at nodes (CREA_CHAMP, TYPE_CHAM NOEU_*)"
+                                                  : "Field per cell (CREA_CHAMP, TYPE_CHAM ELNO_* or ELGA_*)")
+          .required(),
+      text("NOM_CMP", "Component, e.g. DY, SIYY").required(),
+      text("TYPE_TEST", "Reduce the component over the field instead of one point")
+          .into_values({"MIN", "MAX", "SOMM", "SOMM_ABS"})};
+  std::vector<Rule> rules;
+  if (at_nodes) {
+    children.push_back(text("NOEUD", "Node tested"));
+    children.push_back(text("GROUP_NO", "One-node group tested, or the nodes reduced by TYPE_TEST"));
+    rules = {at_least_one({"NOEUD", "GROUP_NO", "TYPE_TEST"}), at_most_one({"NOEUD", "GROUP_NO"}),
+             present_absent({"NOEUD", "TYPE_TEST"})};
+  } else {
+    children.push_back(text("MAILLE", "Cell tested"));
+    children.push_back(text("NOEUD", "Node of MAILLE tested (ELNO field; an ELGA field is tested by TYPE_TEST)"));
+    rules = {exactly_one({"MAILLE", "TYPE_TEST"}), present_present({"MAILLE", "NOEUD"}),
+             present_absent({"TYPE_TEST", "NOEUD"})};
+  }
+  for (auto& kw : common::test_reference_keywords()) children.push_back(kw);
+  for (auto& rule : common::test_reference_rules()) rules.push_back(rule);
+  return factor(at_nodes ? "CHAM_NO" : "CHAM_ELEM", children,
+                at_nodes ? "One check of a component of a field at nodes"
+                         : "One check of a component of a field per cell")
+      .occurs(0, -1)
+      .with_rules(rules);
 }
 
 }  // namespace
 
 const CommandSpec& test_resu_spec() {
   static const CommandSpec spec =
-      make_command("TEST_RESU", "", "Check computed values against references; prints one OK/NOOK line per check", {resu()});
+      make_command("TEST_RESU", "", "Check computed values against references; prints one OK/NOOK line per check",
+                   {resu(), field(true), field(false)}, {at_least_one({"RESU", "CHAM_NO", "CHAM_ELEM"})});
   return spec;
 }
 

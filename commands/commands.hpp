@@ -37,6 +37,7 @@ ConceptPtr formule(const Args& args, Session& session);
 ConceptPtr stat_non_line(const Args& args, Session& session);
 ConceptPtr meca_non_line(const Args& args, Session& session);
 ConceptPtr calc_champ(const Args& args, Session& session);
+ConceptPtr crea_champ(const Args& args, Session& session);
 ConceptPtr test_resu(const Args& args, Session& session);
 ConceptPtr impr_resu(const Args& args, Session& session);
 ConceptPtr impr_mesure(const Args& args, Session& session);

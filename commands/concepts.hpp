@@ -153,6 +153,17 @@ struct EvolNoli : Concept {
 
 namespace lunaster::cmd {
 
+/// CREA_CHAMP: one field on a mesh, a copy of a result's field at one time step.
+struct ChamGd : Concept {
+  std::shared_ptr<Maillage> maillage;
+  std::string type_cham;    ///< code_aster's field type: "NOEU_DEPL_R", "ELNO_SIEF_R", "ELGA_SIEF_R" ...
+  std::string nom_cham;     ///< the result's field it was taken from
+  engine::NodalField nodal; ///< a NOEU_* field
+  engine::ElgaField cells;  ///< an ELNO_* field (no point layouts) or an ELGA_* field
+  bool at_nodes() const { return type_cham.rfind("NOEU_", 0) == 0; }
+  std::string type_name() const override { return "cham_gd"; }
+};
+
 /// DEFI_LIST_INST: instants plus what to do when a step fails.
 struct ListInst : Concept {
   std::vector<double> instants;

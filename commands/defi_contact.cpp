@@ -11,6 +11,10 @@ ConceptPtr defi_contact(const Args& args, Session& session) {
   const Modele& mo = *result->modele;
   auto& def = result->contact;
   const bool continuous = args.text("FORMULATION") == "CONTINUE";
+  if (args.text("LISSAGE") != "NON")
+    throw args.error("LISSAGE", "'NON' (each master cell's own normal)", "'" + args.text("LISSAGE") + "'",
+                     {"lunaster does not smooth the master normals at the nodes; on a plane master surface they "
+                      "are the same normal, and LISSAGE = 'NON' (or no LISSAGE) computes the same contact"});
   read_contact_loops(args, def);
   for (const auto& zone : args.factors("ZONE")) {
     const std::string algo = zone.has("ALGO_CONT") ? zone.text("ALGO_CONT") : (continuous ? "STANDARD" : "CONTRAINTE");

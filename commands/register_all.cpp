@@ -24,6 +24,7 @@ const std::vector<CommandEntry>& all_handlers() {
       {"STAT_NON_LINE", stat_non_line},
       {"MECA_NON_LINE", meca_non_line},
       {"CALC_CHAMP", calc_champ},
+      {"CREA_CHAMP", crea_champ},
       {"TEST_RESU", test_resu},
       {"IMPR_RESU", impr_resu},
       {"IMPR_MESURE", impr_mesure},

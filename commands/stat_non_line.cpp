@@ -46,7 +46,15 @@ std::vector<double> instants(const Args& inc, engine::NewtonOptions& options) {
     throw inc.error("LIST_INST", "a listr8 or list_inst", list ? list->type_name() : "nothing");
   }
   const double t0 = inc.has("INST_INIT") ? inc.real("INST_INIT") : all.front();
-  const double t1 = inc.has("INST_FIN") ? inc.real("INST_FIN") : all.back();
+  double t1 = inc.has("INST_FIN") ? inc.real("INST_FIN") : all.back();
+  if (inc.has("NUME_INST_FIN")) {  // an index in the list as given, its first time 0 (code_aster's numbering)
+    const long long last = inc.integer("NUME_INST_FIN");
+    if (last >= static_cast<long long>(all.size()))
+      throw inc.error("NUME_INST_FIN", "an index of LIST_INST, 1 to " + std::to_string(all.size() - 1) +
+                                           " (its first time is index 0)",
+                      std::to_string(last));
+    t1 = all[static_cast<size_t>(last)];
+  }
   std::vector<double> out;
   if (t0 < all.front() - 1e-12) out.push_back(t0);
   for (double t : all)
@@ -176,16 +184,32 @@ void read_direct_solver(const Args& solveur, engine::NewtonOptions& options,
 }
 
 /// NEWTON: which matrix Newton factorises, and how often (engine's matrix policy).
-void read_newton(const Args& newton, bool has_contact, engine::NewtonOptions& options) {
+void read_newton(const Args& newton, bool has_contact, engine::NewtonOptions& options,
+                 const std::function<void(const std::string&)>& say) {
   options.reac_iter = static_cast<int>(newton.integer("REAC_ITER"));
+  // REAC_INCR: the driver forms the matrix at the first iteration of every increment (and
+  // factorises it unless it equals the last one factorised), which is code_aster's REAC_INCR = 1.
+  if (newton.has("REAC_INCR")) {
+    const long long every = newton.integer("REAC_INCR");
+    if (every != 1)
+      throw newton.error("REAC_INCR", "1 (the matrix formed anew at the first iteration of every increment, as "
+                                      "lunaster's driver does)",
+                         std::to_string(every),
+                         {every == 0 ? "0 keeps the matrix of the previous increment, which lunaster does not offer: "
+                                       "remove REAC_INCR or give 1"
+                                     : "keeping the matrix for several increments is not offered: remove REAC_INCR or "
+                                       "give 1"});
+    say("  NEWTON REAC_INCR = 1: the matrix is formed anew at the first iteration of every increment");
+  }
   options.elastic_matrix = newton.text("MATRICE") == "ELASTIQUE";
-  // code_aster keeps the contact terms in the matrix whatever MATRICE says, and with an elastic
-  // material that matrix is the tangent: 'ELASTIQUE' would change nothing. Without the contact
-  // terms the multiplier equations are empty (Lagrange) or the penalty stiffness is missing.
-  if (options.elastic_matrix && has_contact)
-    throw newton.error("MATRICE", "'TANGENTE' with contact (the contact terms belong in the matrix; without contact "
-                                  "'ELASTIQUE' factorises the elastic matrix once for the whole run)",
-                       "'ELASTIQUE'");
+  // code_aster keeps the contact terms in the matrix whatever MATRICE says (without them the
+  // multiplier equations are empty, or the penalty stiffness is missing), and with an elastic
+  // material the elastic stiffness plus the contact terms is the tangent: that matrix it is.
+  if (options.elastic_matrix && has_contact) {
+    options.elastic_matrix = false;
+    say("  NEWTON MATRICE = 'ELASTIQUE' with contact: the matrix is the elastic stiffness plus the contact terms, "
+        "as code_aster's (with linear elasticity, the tangent)");
+  }
 }
 
 }  // namespace
@@ -327,6 +351,11 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
                            : conv.has("RESI_GLOB_MAXI") ? -1.0
                                                         : 1e-6;
   options.iter_glob_maxi = static_cast<int>(conv.integer("ITER_GLOB_MAXI"));
+  if (conv.text("ARRET") != "OUI")
+    throw conv.error("ARRET", "'OUI' (a step that does not converge stops the run)", "'" + conv.text("ARRET") + "'",
+                     {"ARRET = 'NON' would go on from a step's last iterate as if it had converged, a state out of "
+                      "equilibrium passed to the next steps and the results: lunaster does not offer it (raise "
+                      "ITER_GLOB_MAXI, or let DEFI_LIST_INST split the step)"});
   options.solver = solver_kind(args.factor("SOLVEUR").text("METHODE"));
   options.auto_solver = args.factor("SOLVEUR").text("METHODE") == "AUTO";
   if (options.solver == engine::SolverKind::Petsc) read_petsc(args.factor("SOLVEUR"), options.iterative);
@@ -354,7 +383,8 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     session.log().info("  SOLVEUR METHODE = 'AUTO' on a mesh in parts: MUMPS, the matrix given in parts");
   }
   options.krylov_history = args.integer("INFO") >= 2;
-  read_newton(args.factor("NEWTON"), contact != nullptr, options);
+  read_newton(args.factor("NEWTON"), contact != nullptr, options,
+              [&session](const std::string& line) { session.log().info(line); });
   const std::vector<double> times = instants(args.factor("INCREMENT"), options);
 
   const Args solveur = args.factor("SOLVEUR");

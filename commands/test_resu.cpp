@@ -110,25 +110,18 @@ Probe probe_in_parts(const Args& occ, const engine::MeshPart& part, const engine
   return p;
 }
 
-Probe probe_value(const Args& occ, const EvolNoli& resu, const engine::ResultStep& step) {
-  const engine::Mesh& mesh = *resu.modele->maillage->mesh;
-  const std::string cham = occ.text("NOM_CHAM");
+/// The column of NOM_CMP in a field's components; DeckError naming them otherwise.
+int component_column(const Args& occ, const std::vector<std::string>& components, const std::string& cham) {
   const std::string cmp_name = occ.text("NOM_CMP");
-  auto nit = step.nodal.find(cham);
-  if (nit == step.nodal.end()) {
-    std::string have;
-    for (const auto& [name, field] : step.nodal) have += (have.empty() ? "" : ", ") + name;
-    throw occ.error("NOM_CHAM", "a field stored at this step (" + have + ")", "'" + cham + "'",
-                    {"stresses need CALC_CHAMP (CONTRAINTE='SIGM_NOEU') first"});
-  }
-  const engine::NodalField& f = nit->second;
-  const int cmp = f.component_index(cmp_name);
-  if (cmp < 0) {
-    std::string have;
-    for (const auto& c : f.components) have += (have.empty() ? "" : ", ") + c;
-    throw occ.error("NOM_CMP", "a component of " + cham + " (" + have + ")", "'" + cmp_name + "'");
-  }
-  if (resu.modele->maillage->part) return probe_in_parts(occ, *resu.modele->maillage->part, f, cmp);
+  const auto it = std::find(components.begin(), components.end(), cmp_name);
+  if (it != components.end()) return static_cast<int>(it - components.begin());
+  std::string have;
+  for (const auto& c : components) have += (have.empty() ? "" : ", ") + c;
+  throw occ.error("NOM_CMP", "a component of " + cham + " (" + have + ")", "'" + cmp_name + "'");
+}
+
+/// One component of a nodal field of a mesh read whole: at one node, or reduced by TYPE_TEST.
+Probe nodal_probe(const Args& occ, const engine::Mesh& mesh, const engine::NodalField& f, int cmp) {
   Probe p;
   if (occ.has("TYPE_TEST")) {
     std::vector<int> nodes;
@@ -149,6 +142,72 @@ Probe probe_value(const Args& occ, const EvolNoli& resu, const engine::ResultSte
   return p;
 }
 
+/// TEST_RESU CHAM_ELEM: one component of a field per cell, at the node NOEUD of the cell MAILLE
+/// (ELNO), or reduced by TYPE_TEST over every value.
+Probe cell_probe(const Args& occ, const ChamGd& field, const engine::Mesh& mesh) {
+  const engine::ElgaField& f = field.cells;
+  const int cmp = component_column(occ, f.components, field.nom_cham);
+  Probe p;
+  if (occ.has("TYPE_TEST")) {
+    std::vector<double> values;
+    for (size_t row = 0; row * f.components.size() < f.values.size(); ++row)
+      values.push_back(f.values[row * f.components.size() + cmp]);
+    if (values.empty()) throw occ.error("CHAM_GD", "a field with values", "an empty " + field.type_cham + " field");
+    p.value = reduce(occ.text("TYPE_TEST"), values);
+    p.where = occ.text("TYPE_TEST");
+    return p;
+  }
+  const std::string cell_name = occ.text("MAILLE");
+  const auto cell = std::find(mesh.cell_names.begin(), mesh.cell_names.end(), cell_name);
+  if (cell == mesh.cell_names.end()) throw occ.error("MAILLE", "a cell of the field's mesh", "'" + cell_name + "'");
+  const int c = static_cast<int>(cell - mesh.cell_names.begin());
+  if (c >= f.n_cells() || f.n_rows(c) == 0)
+    throw occ.error("MAILLE", "a cell carrying " + field.nom_cham, "'" + cell_name + "', which carries none");
+  if (field.type_cham.rfind("ELNO_", 0) != 0)
+    throw occ.error("MAILLE", "an ELNO field at a cell's node (an " + field.type_cham + " field is tested by TYPE_TEST)",
+                    "'" + cell_name + "'");
+  int row = -1;
+  const std::string node_name = occ.text("NOEUD");
+  for (int a = 0; a < mesh.cell_n_nodes(c); ++a)
+    if (mesh.node_names[mesh.cell(c)[a]] == node_name) row = a;
+  if (row < 0) throw occ.error("NOEUD", "a node of cell " + cell_name, "'" + node_name + "'");
+  p.where = cell_name + " " + node_name;
+  p.value = f.value(c, row, cmp);
+  return p;
+}
+
+Probe probe_value(const Args& occ, const EvolNoli& resu, const engine::ResultStep& step) {
+  const engine::Mesh& mesh = *resu.modele->maillage->mesh;
+  const std::string cham = occ.text("NOM_CHAM");
+  const std::string cmp_name = occ.text("NOM_CMP");
+  auto nit = step.nodal.find(cham);
+  if (nit == step.nodal.end()) {
+    std::string have;
+    for (const auto& [name, field] : step.nodal) have += (have.empty() ? "" : ", ") + name;
+    throw occ.error("NOM_CHAM", "a field stored at this step (" + have + ")", "'" + cham + "'",
+                    {"stresses need CALC_CHAMP (CONTRAINTE='SIGM_NOEU') first"});
+  }
+  const engine::NodalField& f = nit->second;
+  const int cmp = f.component_index(cmp_name);
+  if (cmp < 0) {
+    std::string have;
+    for (const auto& c : f.components) have += (have.empty() ? "" : ", ") + c;
+    throw occ.error("NOM_CMP", "a component of " + cham + " (" + have + ")", "'" + cmp_name + "'");
+  }
+  if (resu.modele->maillage->part) return probe_in_parts(occ, *resu.modele->maillage->part, f, cmp);
+  return nodal_probe(occ, mesh, f, cmp);
+}
+
+/// The field of a CHAM_NO or CHAM_ELEM occurrence, of the kind it tests.
+std::shared_ptr<ChamGd> tested_field(const Args& occ, bool at_nodes) {
+  auto field = occ.concept_as<ChamGd>("CHAM_GD");
+  if (field->at_nodes() != at_nodes)
+    throw occ.error("CHAM_GD", at_nodes ? "a field at nodes (NOEU_*)" : "a field per cell (ELNO_*, ELGA_*)",
+                    "'" + field->user_name + "', a field of type " + field->type_cham,
+                    {at_nodes ? "test it under CHAM_ELEM" : "test it under CHAM_NO"});
+  return field;
+}
+
 }  // namespace
 
 ConceptPtr test_resu(const Args& args, Session& session) {
@@ -157,6 +216,21 @@ ConceptPtr test_resu(const Args& args, Session& session) {
     const engine::ResultStep& step = find_step(occ, *resu);
     const Probe p = probe_value(occ, *resu, step);
     std::string what = occ.text("NOM_CHAM") + "  " + p.where + "  " + occ.text("NOM_CMP");
+    if (occ.has("LEGENDE")) what += "  [" + occ.text("LEGENDE") + "]";
+    report_checks(occ, session, p.value, what);
+  }
+  for (const auto& occ : args.factors("CHAM_NO")) {
+    const auto field = tested_field(occ, true);
+    const int cmp = component_column(occ, field->nodal.components, field->nom_cham);
+    const Probe p = nodal_probe(occ, *field->maillage->mesh, field->nodal, cmp);
+    std::string what = field->nom_cham + "  " + p.where + "  " + occ.text("NOM_CMP");
+    if (occ.has("LEGENDE")) what += "  [" + occ.text("LEGENDE") + "]";
+    report_checks(occ, session, p.value, what);
+  }
+  for (const auto& occ : args.factors("CHAM_ELEM")) {
+    const auto field = tested_field(occ, false);
+    const Probe p = cell_probe(occ, *field, *field->maillage->mesh);
+    std::string what = field->nom_cham + "  " + p.where + "  " + occ.text("NOM_CMP");
     if (occ.has("LEGENDE")) what += "  [" + occ.text("LEGENDE") + "]";
     report_checks(occ, session, p.value, what);
   }

@@ -27,6 +27,8 @@ const char* kUsage =
     "      SSNP121 2D: PLAQUE1 = [-1,1]x[0,1] (upper), PLAQUE2 = [-1,1]x[-1,0]; TYPE quad4|quad8|tria3|tria6;\n"
     "      --top: a third block PLAQUE3 = [-1,1]x[1,2] (edges IJ JK KL LI, nodes I J K L P), meshed apart\n"
     "      --x-range: [X0,X1] instead of [-1,1] (axisymmetric sections: x = r)\n"
+    "      --gibi-node-names: nodes named in the order code_aster's GIBI script of SSNP121 creates its\n"
+    "      points (corners, then the edges' inner points), as in code_aster's mesh of the case\n"
     "  lunaster-meshgen --v1 TYPE:NXxNYxNZ --v2 TYPE:NXxNYxNZ [--v3 TYPE:NXxNYxNZ] [--refine K] [--glued]\n"
     "                   [--name MESH] -o FILE.med\n"
     "      SSNP121 3D: V1 = [0,1]^3, V2 = [0,1]^2x[1,2]; TYPE hexa8|hexa20|penta6|penta15|tetra4|tetra10;\n"
@@ -65,6 +67,7 @@ const char* kUsage =
 struct Options {
   std::map<std::string, std::string> values;
   bool glued = false;
+  bool gibi_names = false;
   bool test_result = false;
 };
 
@@ -74,6 +77,8 @@ Options parse(int argc, char** argv) {
     const std::string a = argv[i];
     if (a == "--glued") {
       o.glued = true;
+    } else if (a == "--gibi-node-names") {
+      o.gibi_names = true;
     } else if (a == "--test-result") {
       o.test_result = true;
     } else if (a == "--distort" && (i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0)) {
@@ -255,6 +260,7 @@ int run(int argc, char** argv) {
       opt.x0 = r[0], opt.x1 = r[1];
     }
     mesh = tools::make_ssnp121_2d(opt);
+    if (o.gibi_names) tools::name_nodes_as_gibi_script(mesh);
   } else if (!get("--v1").empty() || !get("--v2").empty()) {
     tools::Ssnp121Options3d opt;
     opt.v1 = refined(get("--v1").empty() ? "hexa20:4" : get("--v1"), 3, refine);

@@ -1,6 +1,7 @@
 #include "tools/ssnp121_mesh.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -329,6 +330,62 @@ Mesh make_ssnp121_2d(const Ssnp121Options2d& o) {
            {"E", x0, 0}, {"F", x1, 0}, {"G", x1, -1}, {"H", x0, -1}})
     b.add_node_group(name, low, {x, y, 0});
   return b.finish();
+}
+
+void name_nodes_as_gibi_script(Mesh& mesh) {
+  // Which block each node is in (nodes on the interface are not shared: one per block).
+  std::vector<int> block(mesh.n_nodes(), -1);
+  const char* plates[2] = {"PLAQUE1", "PLAQUE2"};
+  for (int b = 0; b < 2; ++b) {
+    const auto group = mesh.cell_groups.find(plates[b]);
+    if (group == mesh.cell_groups.end()) throw DeckError(std::string("meshgen: no cell group ") + plates[b]);
+    for (int c : group->second)
+      for (int a = 0; a < mesh.cell_n_nodes(c); ++a) {
+        const int n = mesh.cell(c)[a];
+        if (block[n] >= 0 && block[n] != b) throw DeckError("meshgen: the blocks share nodes (--glued): no GIBI names");
+        block[n] = b;
+      }
+  }
+  double lo = 1e300, hi = -1e300;
+  for (int n = 0; n < mesh.n_nodes(); ++n) lo = std::min(lo, mesh.coords[3 * n]), hi = std::max(hi, mesh.coords[3 * n]);
+  const double tol = 1e-9 * (hi - lo);
+  // The corners and the lines of the script, block by block: {x, y} of the first and second point.
+  struct Line { double x0, y0, x1, y1; };
+  const std::array<std::array<double, 2>, 4> corners[2] = {{{{lo, 0}, {hi, 0}, {hi, 1}, {lo, 1}}},
+                                                           {{{lo, 0}, {hi, 0}, {hi, -1}, {lo, -1}}}};
+  std::vector<long> rank(mesh.n_nodes(), -1);  // sort key: where the script creates the node
+  auto at = [&](int n, double x, double y) {
+    return std::abs(mesh.coords[3 * n] - x) <= tol && std::abs(mesh.coords[3 * n + 1] - y) <= tol;
+  };
+  for (int b = 0; b < 2; ++b)
+    for (int k = 0; k < 4; ++k)
+      for (int n = 0; n < mesh.n_nodes(); ++n)
+        if (block[n] == b && at(n, corners[b][k][0], corners[b][k][1])) rank[n] = 4 * b + k;
+  for (int b = 0; b < 2; ++b)
+    for (int k = 0; k < 4; ++k) {
+      const auto& p = corners[b][k];
+      const auto& q = corners[b][(k + 1) % 4];
+      const double len = std::hypot(q[0] - p[0], q[1] - p[1]);
+      for (int n = 0; n < mesh.n_nodes(); ++n) {
+        if (block[n] != b || rank[n] >= 0) continue;
+        const double dx = mesh.coords[3 * n] - p[0], dy = mesh.coords[3 * n + 1] - p[1];
+        const double along = (dx * (q[0] - p[0]) + dy * (q[1] - p[1])) / len;
+        const double off = std::abs(dx * (q[1] - p[1]) - dy * (q[0] - p[0])) / len;
+        if (off <= tol && along > tol && along < len - tol)
+          rank[n] = 8 + (4L * b + k) * 10000000L + std::lround(along / len * 1e6);
+      }
+    }
+  const long inner = 8 + 8L * 10000000L;
+  for (int n = 0; n < mesh.n_nodes(); ++n)
+    if (rank[n] < 0) {
+      // Row by row from the interface (|y| up), then by x.
+      const double y = std::abs(mesh.coords[3 * n + 1]), x = mesh.coords[3 * n] - lo;
+      rank[n] = inner + block[n] * 1000000000000L + std::lround(y * 1e4) * 1000000L + std::lround(x * 1e4);
+    }
+  std::vector<int> order(mesh.n_nodes());
+  for (int n = 0; n < mesh.n_nodes(); ++n) order[n] = n;
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return rank[a] < rank[b]; });
+  for (size_t k = 0; k < order.size(); ++k) mesh.node_names[order[k]] = "N" + std::to_string(k + 1);
 }
 
 Mesh make_ring_sleeve(const RingOptions& o) {

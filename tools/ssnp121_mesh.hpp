@@ -30,6 +30,15 @@ struct Ssnp121Options2d {
   double x0 = -1.0, x1 = 1.0;
 };
 
+/// Renames the nodes of a 2D SSNP121 mesh (two blocks, no top block) in the order in which
+/// code_aster's GIBI script of the case creates its points: the corners a, b, c, d of PLAQUE1
+/// and e, f, g, h of PLAQUE2 (N1..N8), then the inner points of the lines ab, bc, cd, da, ef,
+/// fg, gh, he, each from its first point to its second, then the remaining nodes of PLAQUE1 and
+/// of PLAQUE2, row by row from the interface. So the first 8 + the lines' names are those of
+/// code_aster's mesh (its test decks name node N14, the middle of AB, with 12 cells on AB); the
+/// inner nodes' names are lunaster's. DeckError for a mesh without PLAQUE1 and PLAQUE2.
+void name_nodes_as_gibi_script(engine::Mesh& mesh);
+
 /// SSNP121 3D: V1 = [0,1]^3 (lower), V2 = [0,1]^2 x [1,2] (upper).
 struct Ssnp121Options3d {
   BlockCells v1{engine::CellType::Hexa20, {4, 4, 4}};

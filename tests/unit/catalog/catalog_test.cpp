@@ -15,7 +15,7 @@ namespace {
 
 const std::set<std::string> kConceptTypes = {"maillage", "modele",   "mater",    "cham_mater", "char_meca", "char_contact",
                                              "listr8",   "list_inst", "fonction", "formule",    "function",
-                                             "evol_noli", "table"};
+                                             "evol_noli", "table",    "cham_gd"};
 
 bool scalar_matches(const Scalar& s, ValueType type) {
   switch (type) {

@@ -6,6 +6,8 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -293,6 +295,37 @@ TEST(FailedSolve, EarlierFilesIntactAndConvergedStepsSaved) {
   ASSERT_EQ(saved.size(), 2u);
   EXPECT_NEAR(saved[1], before[1], 1e-12);
   EXPECT_TRUE(strays(out, "").size() == 3u) << "expected log.txt, before.rmed and the saved steps only";
+}
+
+TEST(ImprResu, NomCmpAndModeleRestrictTheTable) {
+  // A model of one cell: FORMAT='RESULTAT' prints its nodes only, and of DEPL only DY (NOM_CMP).
+  Harness h("impr_resu_restricted");
+  auto resu = make_result(h);
+  const engine::Mesh& mesh = *resu->modele->maillage->mesh;
+  int cell = 0;
+  while (engine::cell_info(mesh.cell_types[cell]).dim != 2) ++cell;
+  resu->modele->modelisation.assign(mesh.n_cells(), engine::Modelisation::None);
+  resu->modele->modelisation[cell] = engine::Modelisation::PlaneStrain;
+  KwNode node = simple({{"FORMAT", std::string("RESULTAT")}, {"FICHIER", std::string("m.resu")},
+                        {"MODELE", ConceptPtr(resu->modele)}});
+  node.factors["RESU"] = {simple({{"RESULTAT", resu}, {"NOM_CMP", std::string("DY")}, {"NUME_ORDRE", 2LL}})};
+  h.run("IMPR_RESU", node);
+  const std::string text = slurp(h.session.output_dir / "m.resu");
+  EXPECT_NE(text.find("CHAMP DEPL  NUME_ORDRE 2"), std::string::npos) << text;
+  EXPECT_EQ(text.find("NUME_ORDRE 1"), std::string::npos) << text;
+  EXPECT_NE(text.find("NOEUD                 DY\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find("DX"), std::string::npos) << text;
+  // One row per node of the cell, with the value make_result gave it (2e-3 n at step 2).
+  std::istringstream rows(text.substr(text.find("DY\n") + 3));
+  std::vector<std::string> printed;
+  for (std::string line; std::getline(rows, line) && !line.empty();) printed.push_back(line);
+  ASSERT_EQ(static_cast<int>(printed.size()), mesh.cell_n_nodes(cell)) << text;
+  for (int a = 0; a < mesh.cell_n_nodes(cell); ++a) {
+    const int n = mesh.cell(cell)[a];
+    char expected[64];
+    std::snprintf(expected, sizeof expected, "%-8s %15.8e", mesh.node_names[n].c_str(), 2e-3 * n);
+    EXPECT_NE(std::find(printed.begin(), printed.end(), std::string(expected)), printed.end()) << expected << "\n" << text;
+  }
 }
 
 }  // namespace

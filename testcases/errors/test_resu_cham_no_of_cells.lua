@@ -1,0 +1,17 @@
+-- Must-fail deck: TEST_RESU CHAM_NO given a field per cell (CREA_CHAMP TYPE_CHAM ELNO_SIEF_R): it is
+-- tested under CHAM_ELEM.
+-- EXPECT_ERROR: test_resu_cham_no_of_cells\.lua:16: TEST_RESU: CHAM_NO\[1\]\.CHAM_GD: expected a field at nodes \(NOEU_\*\), got 'S', a field of type ELNO_SIEF_R
+-- EXPECT_STATUS: 2
+DEBUT()
+MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = '../ssnp121a.med' }
+MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN' } }
+MAT = DEFI_MATERIAU{ ELAS = _F{ E = 2.0e6, NU = 0.0 } }
+CHMAT = AFFE_MATERIAU{ MAILLAGE = MA, AFFE = _F{ GROUP_MA = { 'PLAQUE1', 'PLAQUE2' }, MATER = MAT } }
+CHA1 = AFFE_CHAR_MECA{ MODELE = MO, DDL_IMPO = { _F{ GROUP_NO = 'CD', DX = 0.0, DY = -0.1 },
+                                               _F{ GROUP_NO = { 'GH', 'AB' }, DX = 0.0, DY = 0.0 } } }
+L = DEFI_LIST_REEL{ DEBUT = 0.0, INTERVALLE = _F{ JUSQU_A = 1.5, NOMBRE = 3 } }
+RESU = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CHMAT, EXCIT = _F{ CHARGE = CHA1 }, INCREMENT = _F{ LIST_INST = L, NUME_INST_FIN = 1 } }
+RESU = CALC_CHAMP{ reuse = RESU, RESULTAT = RESU, CONTRAINTE = 'SIGM_ELNO' }
+S = CREA_CHAMP{ OPERATION = 'EXTR', TYPE_CHAM = 'ELNO_SIEF_R', NOM_CHAM = 'SIGM_ELNO', RESULTAT = RESU, NUME_ORDRE = 1 }
+TEST_RESU{ CHAM_NO = _F{ CHAM_GD = S, NOM_CMP = 'SIYY', TYPE_TEST = 'MIN', VALE_CALC = -5.0e4 } }
+FIN()
