@@ -34,6 +34,7 @@ class BehaviourTangent final : public TangentSource {
   bool assemble(const Vector& u, SparseMatrix* k, Vector* f_int) override { return tangent_.assemble(u, k, f_int); }
   void commit() override { tangent_.commit(); }
   void restore() override { tangent_.restore(); }
+  const MaterialStates* states() const override { return &tangent_.states(); }
 
  private:
   Tangent tangent_;

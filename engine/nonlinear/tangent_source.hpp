@@ -8,6 +8,7 @@
 #include "engine/core/error.hpp"
 #include "engine/fe/fe_model.hpp"
 #include "engine/material/cell_behaviours.hpp"
+#include "engine/material/material_states.hpp"
 #include "engine/nonlinear/rank_layout.hpp"
 #include "engine/solver/linear_solver.hpp"
 
@@ -29,6 +30,9 @@ class TangentSource {
   virtual void commit() {}
   /// Back to the state at the start of the step (a failed step is split).
   virtual void restore() {}
+  /// The history of the integration points (stresses, internal variables) for the results, or
+  /// null when the tangent keeps none (linear elasticity). Valid while the source lives.
+  virtual const MaterialStates* states() const { return nullptr; }
 };
 
 /// The linear elastic stiffness of a model: constant, K assembled from the cells' materials.
