@@ -1,10 +1,13 @@
 #pragma once
 // Reading back an ELGA field of QUAD4 cells from a MED file with the MED library, for the tests
 // that write the points' history (VARI_ELGA, SIEF_ELGA) through the result's MED writer.
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include <med.h>
+
+#include "engine/io/med_writer.hpp"
 
 namespace lunaster::engine::test {
 
@@ -38,6 +41,17 @@ inline Quad4Elga read_quad4_elga(const std::string& path, const std::string& fie
   }
   MEDfileClose(fid);
   return out;
+}
+
+/// Writes `steps` as result RESU on `mesh` (named BAR) into the build's scratch folder
+/// `folder`, as the result's writer does for IMPR_RESU; returns the file's path.
+inline std::string write_bar_result(Mesh& mesh, const std::vector<ResultStep>& steps, const std::string& folder) {
+  mesh.name = "BAR";
+  const std::string dir = std::string(LUNASTER_BINARY_DIR) + "/test-scratch/" + folder;
+  std::filesystem::create_directories(dir);
+  const std::string path = dir + "/bar.med";
+  write_med(path, mesh, {{"RESU", &steps}});
+  return path;
 }
 
 }  // namespace lunaster::engine::test

@@ -204,12 +204,7 @@ TEST(ToyPlasticity, InternalVariablesReachTheResultFileAsVariElga) {
   steps[0].elga["SIEF_ELGA"] = stresses_at_points(bar.model, tangent.states());
   EXPECT_EQ(steps[0].elga["VARI_ELGA"].components, (std::vector<std::string>{"V1", "V2"}));
   EXPECT_EQ(bar.behaviours->of(0).variable_names(), (std::vector<std::string>{"EPSPEQ", "EPSPXX"}));
-  Mesh& mesh = bar.block.mesh();
-  mesh.name = "BAR";
-  const std::string dir = std::string(LUNASTER_BINARY_DIR) + "/test-scratch/vari_elga";
-  std::filesystem::create_directories(dir);
-  const std::string path = dir + "/bar.med";
-  write_med(path, mesh, {{"RESU", &steps}});
+  const std::string path = test::write_bar_result(bar.block.mesh(), steps, "vari_elga");
 
   const int n_cells = static_cast<int>(bar.model.volume_cells().size());
   for (const auto& [field, column, expected] :

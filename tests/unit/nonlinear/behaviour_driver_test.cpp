@@ -11,7 +11,6 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
@@ -20,7 +19,6 @@
 #include <vector>
 
 #include "engine/core/log.hpp"
-#include "engine/io/med_writer.hpp"
 #include "engine/material/cell_behaviours.hpp"
 #include "engine/nonlinear/static_solver.hpp"
 #include "tests/unit/fe/fe_test_util.hpp"
@@ -243,12 +241,7 @@ TEST(BehaviourDriver, EachStoredInstantsStatesReachTheResultFile) {
   DrivenBar bar([&](double t) { return traction.at(t); }, std::make_shared<HardeningBar>());
   std::vector<ResultStep> steps = solve(bar, {0.0, 1.0, 2.0, 3.0}, tight()).steps;
   ASSERT_EQ(steps.size(), 4u);
-  Mesh& mesh = bar.block.mesh();
-  mesh.name = "BAR";
-  const std::string dir = std::string(LUNASTER_BINARY_DIR) + "/test-scratch/behaviour_driver";
-  std::filesystem::create_directories(dir);
-  const std::string path = dir + "/bar.med";
-  write_med(path, mesh, {{"RESU", &steps}});
+  const std::string path = test::write_bar_result(bar.block.mesh(), steps, "behaviour_driver");
   for (const ResultStep& step : steps) {
     const double t = traction.at(step.inst);
     SCOPED_TRACE("t = " + std::to_string(t));
