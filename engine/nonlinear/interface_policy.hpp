@@ -27,7 +27,8 @@ class InterfacePolicy {
   /// Decided at the first contact solve, from its terms (`allowed`: the run lets it be used at
   /// all: the automatic choice of CHOLMOD, a constant tangent, the model whole on this
   /// process); given up when relations are eliminated (`eliminations`), when a term reaches
-  /// an equation outside the interface, or when the hook's tangent is unsymmetric. `k_ff` gets the zero diagonals the interface needs.
+  /// an equation outside the interface, or when the hook's tangent is unsymmetric. `k_ff` gets
+  /// the zero diagonals the interface needs.
   void decide(const Constraints& cons, const std::vector<Triplet>& contact, bool eliminations,
               const ContactHook& hook, const DofMap& dofs, SparseMatrix& k_ff, bool allowed);
   /// Factorises the reference from K_ff when it is not of this `generation` (once per run); on

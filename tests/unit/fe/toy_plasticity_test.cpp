@@ -1,9 +1,10 @@
 // A nonlinear behaviour added through the behaviour interface alone, solved by a Newton loop
 // that sees only the Tangent (internal force, tangent, commit, restore) and a sparse LU.
 //
-// The law (hardening_bar.hpp, which the driver's test in tests/unit/nonlinear shares): the xx component follows a 1D plasticity with the nonlinear isotropic
-// hardening R(p) = sy + Q (1 - exp(-b p)), return mapping solved by a local Newton, consistent
-// tangent E R'/(E + R'); yy and xy are linear (E, E/2: no Poisson coupling), zz carries no stress.
+// The law (hardening_bar.hpp, shared with the driver's test in tests/unit/nonlinear): the xx
+// component follows a 1D plasticity with the nonlinear isotropic hardening
+// R(p) = sy + Q (1 - exp(-b p)), return mapping solved by a local Newton, consistent tangent
+// E R'/(E + R'); yy and xy are linear (E, E/2: no Poisson coupling), zz carries no stress.
 // Internal variables EPSPEQ (p) and EPSPXX (the plastic xx strain).
 //
 // The problem: the unit square (distorted interior nodes, QUAD4, plane strain), u_x = 0 on x = 0,
