@@ -116,6 +116,7 @@ void StaticSolver::choose_tangent() {
   elastic_tangent_ = make_elastic_tangent(model_, dofs_, layout_.owned_nodes());
   behaviour_tangent_ = given_tangent_ || !behaviours_ ? nullptr
                                                       : make_behaviour_tangent(*behaviours_, dofs_, layout_.kind());
+  LUNASTER_ASSERT(!behaviour_tangent_ || &behaviours_->model() == &model_, "the behaviours of another model");
   tangent_ = given_tangent_ ? given_tangent_ : behaviour_tangent_ ? behaviour_tangent_.get() : elastic_tangent_.get();
 }
 
