@@ -136,6 +136,20 @@ void say_in_keywords(Error& err) {
       hints = {"SOLVEUR=_F{ METHODE = 'MUMPS' }, or no multipliers: contact by the discrete formulation's "
                "PENALISATION or by mortar (DEFI_CONT), linear relations with SOLVEUR ELIM_LAGR = 'OUI'"};
       break;
+    case Failure::What::BehaviourIntegration:
+      for (auto& h : hints)
+        if (h.rfind("no admissible state at the step's end", 0) == 0)
+          h = "no admissible state at the step's end: smaller load increments (DEFI_LIST_INST), or let the step be "
+              "subdivided (ECHEC SUBD_NIVEAU, SUBD_PAS)";
+      break;
+    case Failure::What::SharedBehaviour:
+      message = "a nonlinear behaviour (COMPORTEMENT) is integrated on a model whole on each rank, not " +
+                std::string(f.count == 1 ? "on a mesh in parts (LIRE_MAILLAGE PARTITIONNEUR)"
+                                         : "on a model shared among the ranks (SOLVEUR MATR_DISTRIBUEE='OUI' or "
+                                           "METHODE='PETSC')");
+      hints = {f.count == 1 ? "read the mesh whole (LIRE_MAILLAGE without PARTITIONNEUR)"
+                            : "SOLVEUR=_F{ METHODE = 'MUMPS', MATR_DISTRIBUEE = 'NON' }, or run on one process"};
+      break;
     case Failure::What::NotAMedFile:
       for (auto& h : hints)
         if (h.rfind("this reader reads MED files", 0) == 0) h = "LIRE_MAILLAGE reads MED files; use FORMAT='GMSH' for .msh";

@@ -38,6 +38,8 @@ struct Failure {
     NotInParts,           ///< a linear solver's option that a mesh in parts cannot take
     PartsBackend,         ///< a run in parts with a backend that does not solve in parts (`count` 1: the automatic choice)
     PartsMultipliers,     ///< a run in parts with multipliers and a backend that does not solve such a system
+    BehaviourIntegration, ///< a behaviour found no admissible state at a point (the step is to be subdivided)
+    SharedBehaviour,      ///< a nonlinear behaviour on a model shared among the ranks or in parts
   };
   What what = What::Unspecified;
   int limit = 0;

@@ -10,6 +10,13 @@ namespace lunaster::engine {
 
 void InterfacePolicy::decide(const Constraints& cons, const std::vector<Triplet>& contact, bool eliminations,
                              const ContactHook& hook, const DofMap& dofs, SparseMatrix& k_ff, bool allowed) {
+  // The interface solver factorises a symmetric Schur complement (LAPACK dsytrf): an
+  // unsymmetric contact tangent (a frictional law in slip) is solved whole, by an LU backend.
+  if (use_ != -1 && hook.matrix_kind() == MatrixKind::General) {
+    if (use_ == 1) log_.info("  an unsymmetric contact tangent: the whole system is factorised from now on");
+    drop();
+    return;
+  }
   if (use_ == 0) choose(cons, contact, hook, dofs, k_ff, allowed);
   if (use_ == 1 && eliminations) drop();
   if (use_ == 1)

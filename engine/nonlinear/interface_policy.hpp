@@ -26,8 +26,9 @@ class InterfacePolicy {
   bool active() const { return use_ == 1; }
   /// Decided at the first contact solve, from its terms (`allowed`: the run lets it be used at
   /// all: the automatic choice of CHOLMOD, a constant tangent, the model whole on this
-  /// process); given up when relations are eliminated (`eliminations`) or when a term reaches
-  /// an equation outside the interface. `k_ff` gets the zero diagonals the interface needs.
+  /// process); given up when relations are eliminated (`eliminations`), when a term reaches
+  /// an equation outside the interface, or when the hook's tangent is unsymmetric. `k_ff` gets
+  /// the zero diagonals the interface needs.
   void decide(const Constraints& cons, const std::vector<Triplet>& contact, bool eliminations,
               const ContactHook& hook, const DofMap& dofs, SparseMatrix& k_ff, bool allowed);
   /// Factorises the reference from K_ff when it is not of this `generation` (once per run); on

@@ -56,9 +56,9 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
                 " ranks, as asked: each rank assembles the whole system; MUMPS reads rank 0's copy and "
                 "factorises it across the ranks");
     }
-    elastic_tangent_ = make_elastic_tangent(model_, dofs_, layout_.owned_nodes());
-    tangent_ = given_tangent_ ? given_tangent_ : elastic_tangent_.get();
-    matrix_.assemble(*tangent_, Vector::Zero(n), constrained, distributed_);
+    choose_tangent();
+    const bool assembled = matrix_.assemble(*tangent_, Vector::Zero(n), constrained, distributed_);
+    LUNASTER_ASSERT(assembled, "a behaviour's integration failed at rest");
   }
   k_scale_ = std::max(matrix_.elastic().ff.nonZeros() ? matrix_.elastic().ff.coeffs().cwiseAbs().maxCoeff() : 0.0,
                       matrix_.elastic().c.nonZeros() ? matrix_.elastic().c.coeffs().cwiseAbs().maxCoeff() : 0.0);
@@ -72,6 +72,7 @@ std::vector<ResultStep> StaticSolver::step_through(const std::vector<double>& in
   steps_.clear();
   results_ = std::make_unique<StepResults>(dofs_, model_.mesh->n_nodes(), contact_,
                                           in_parts_ && hook_part_ ? hook_part_->mesh.n_nodes() : model_.mesh->n_nodes());
+  if (tangent_->states()) results_->set_points(&model_, tangent_->states());
   steps_.push_back(results_->step(0, instants[0], u, true));
   const TimeStepper stepper(options_.subdivide_levels, options_.subdivide_parts, contact_, tangent_, log_);
   const TimeStepper::Solve solve = [this](double t, Vector& v) { solve_instant(t, v); };
@@ -111,16 +112,28 @@ bool StaticSolver::shares_model() const {
   return (options_.solver == SolverKind::Mumps && options_.share_model) || options_.solver == SolverKind::Petsc;
 }
 
+void StaticSolver::choose_tangent() {
+  elastic_tangent_ = make_elastic_tangent(model_, dofs_, layout_.owned_nodes());
+  behaviour_tangent_ = given_tangent_ || !behaviours_ ? nullptr
+                                                      : make_behaviour_tangent(*behaviours_, dofs_, layout_.kind());
+  LUNASTER_ASSERT(!behaviour_tangent_ || &behaviours_->model() == &model_, "the behaviours of another model");
+  tangent_ = given_tangent_ ? given_tangent_ : behaviour_tangent_ ? behaviour_tangent_.get() : elastic_tangent_.get();
+}
+
 Vector StaticSolver::stiffness_times(const Vector& u) const { return matrix_.times(u, layout_, k_ff_holder()); }
 
-Vector StaticSolver::internal_forces(const Vector& u) const {
+Vector StaticSolver::internal_forces(const Vector& u, double t) const {
   if (matrix_.constant()) return stiffness_times(u);
-  Vector f = matrix_.internal_forces(u);
+  Vector f;
+  if (!matrix_.internal_forces(u, f)) throw integration_failure(t);
   layout_.complete(f);
   return f;
 }
 
 SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err, double t) {
+  // The elastic stiffness explains a failure; a tangent that follows u may just have lost its
+  // stiffness at this iterate: a failed iteration, the step subdivided (TimeStepper).
+  if (!matrix_.constant()) throw tangent_solve_failure(err, t);
   matrix_.restore();  // K_ff itself, without this iteration's terms
   FailureDiagnosis::Stiffness stiffness;
   stiffness.on_no_rank = in_parts_;
@@ -246,7 +259,7 @@ bool StaticSolver::converged_at(Instant& in, const Vector& u, int iter, Vector& 
     in.carried_residual = Vector();
   } else {
     Stopwatch watch(stats_.assemble_seconds);
-    residual = internal_forces(u) - in.f_ext;
+    residual = internal_forces(u, in.t) - in.f_ext;
   }
   // The residual may converge from the second iteration on, and in a pass after the first
   // (a new pairing or new statuses) already at its start: a hook that gives its residual
@@ -312,7 +325,7 @@ void StaticSolver::newton_step(Instant& in, Vector& u, int iter, Vector& residua
   const Constraints& cons = in.cons;
   if (!matrix_.constant()) {
     Stopwatch watch(stats_.assemble_seconds);
-    matrix_.refresh(u);  // a tangent that follows u: K_ff at this iterate
+    if (!matrix_.refresh(u)) throw integration_failure(in.t);  // a tangent that follows u: K_ff at this iterate
   }
   static const std::vector<int> no_equations;
   static const std::vector<Elimination> no_eliminations;

@@ -71,6 +71,13 @@ class StaticSolver {
   /// (assembled once per Dirichlet set, factorisations kept); one that is not constant is
   /// assembled again at each Newton iteration that solves.
   void set_tangent(TangentSource* tangent) { given_tangent_ = tangent; }
+  /// The behaviours of the model's cells for the next runs (borrowed; built on this solver's
+  /// model), or null (the default): the model's linear elasticity. When every behaviour is
+  /// linear nothing changes (the elastic tangent, assembled once per Dirichlet set); otherwise
+  /// each run integrates them (make_behaviour_tangent), commits their states when a step
+  /// converges, restores them when it is subdivided, and its results carry them. A nonlinear
+  /// behaviour on a shared model or a mesh in parts is refused (DeckError, SharedBehaviour).
+  void set_behaviours(const CellBehaviours* behaviours) { behaviours_ = behaviours; }
   void set_part(const MeshPart* part, const MeshPart* numbered = nullptr) {
     part_ = part;
     hook_part_ = numbered;
@@ -141,8 +148,12 @@ class StaticSolver {
   /// Whether this run shares the model among the ranks of an MPI run (see distributed_).
   bool shares_model() const;
   /// The internal forces at u: K u for a constant tangent (stiffness_times), else the tangent
-  /// source's, completed over the ranks.
-  Vector internal_forces(const Vector& u) const;
+  /// source's, completed over the ranks. Throws ConvergenceError (BehaviourIntegration) when a
+  /// behaviour's integration failed at u (t: the instant, for the message).
+  Vector internal_forces(const Vector& u, double t) const;
+  /// The tangent of the run: the given one, the behaviours' (refused on a shared model or a
+  /// mesh in parts), or the elastic stiffness.
+  void choose_tangent();
   /// K u over the whole numbering (summed over the ranks when the model is shared).
   Vector stiffness_times(const Vector& u) const;
   /// A solve failure explained by the elastic stiffness (FailureDiagnosis); K_ff restored first.
@@ -155,6 +166,8 @@ class StaticSolver {
   /// Where K comes from: the tangent given (set_tangent), or the linear elastic one of the run.
   TangentSource* given_tangent_ = nullptr;
   std::unique_ptr<TangentSource> elastic_tangent_;
+  const CellBehaviours* behaviours_ = nullptr;  ///< set_behaviours
+  std::unique_ptr<TangentSource> behaviour_tangent_;  ///< of the run, when a behaviour is nonlinear
   TangentSource* tangent_ = nullptr;
   /// The model shared among the ranks of an MPI run (several ranks, a backend named by the
   /// deck that takes a distributed system: MUMPS unless told not to share, or PETSc). The

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "engine/assembly/point_fields.hpp"
+
 namespace lunaster::engine {
 
 namespace {
@@ -48,6 +50,10 @@ ResultStep StepResults::step(int index, double inst, const Vector& u, bool initi
   step.nume_ordre = index;
   step.inst = inst;
   NodalField& depl = step.nodal["DEPL"] = displacement(u);
+  if (points_) {
+    step.elga["SIEF_ELGA"] = stresses_at_points(*points_model_, *points_);
+    step.elga["VARI_ELGA"] = variables_at_points(*points_model_, *points_);
+  }
   if (!hook_) return step;
   // In parts the hook's nodes are the whole surfaces' part's: its fields are written on those
   // and kept on the part's nodes (the ones beyond are other ranks' and theirs to give).

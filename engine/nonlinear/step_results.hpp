@@ -6,6 +6,8 @@
 #include "engine/assembly/dof_map.hpp"
 #include "engine/fields/fields.hpp"
 #include "engine/contact/contact_hook.hpp"
+#include "engine/fe/fe_model.hpp"
+#include "engine/material/material_states.hpp"
 #include "engine/solver/linear_solver.hpp"
 
 namespace lunaster::engine {
@@ -16,6 +18,13 @@ class StepResults {
   /// contact surfaces, of `hook_nodes` >= model_nodes nodes: the hook writes its fields on
   /// those, and the fields keep the model's). `hook` may be null. All are borrowed for the run.
   StepResults(const DofMap& dofs, int model_nodes, const ContactHook* hook, int hook_nodes);
+  /// The integration points' history of `model` (borrowed for the run; null: none, the
+  /// default): each step then carries the stresses (SIEF_ELGA) and the internal variables
+  /// (VARI_ELGA) of the states' trial slot, the step's converged end once committed.
+  void set_points(const FeModel* model, const MaterialStates* states) {
+    points_model_ = model;
+    points_ = states;
+  }
   /// Step `index` at instant `inst` from the unknowns u; `initial`: the state before any
   /// pairing (the hook writes its initial fields).
   ResultStep step(int index, double inst, const Vector& u, bool initial) const;
@@ -27,6 +36,8 @@ class StepResults {
   const ContactHook* hook_;
   int hook_nodes_;
   std::vector<int> components_;  ///< of the displacement field, in the DOF map's order
+  const FeModel* points_model_ = nullptr;
+  const MaterialStates* points_ = nullptr;
 };
 
 }  // namespace lunaster::engine

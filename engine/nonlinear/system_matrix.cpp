@@ -72,35 +72,35 @@ void SystemMatrix::clear() {
   elastic_.c = SparseMatrix();
 }
 
-void SystemMatrix::assemble(TangentSource& tangent, const Vector& u, const std::vector<int>& constrained,
+bool SystemMatrix::assemble(TangentSource& tangent, const Vector& u, const std::vector<int>& constrained,
                             bool distributed) {
   tangent_ = &tangent;
   distributed_ = distributed;
   SparseMatrix k;
-  tangent.assemble(u, &k, nullptr);
+  if (!tangent.assemble(u, &k, nullptr)) return false;
   split_matrix(k, constrained, elastic_);
   elastic_.symmetric = !distributed;  // a rank holds only its own nodes' columns
+  return true;
 }
 
 bool SystemMatrix::refresh(const Vector& u) {
-  if (constant()) return false;
+  if (constant()) return true;
   restore();
   const std::vector<int> constrained = elastic_.constrained;
   elastic_.ff = SparseMatrix();
   elastic_.c = SparseMatrix();
-  assemble(*tangent_, u, constrained, distributed_);
-  // New values: a new generation (new key); K_ff's storage is new, its contact positions with it.
+  const bool assembled = assemble(*tangent_, u, constrained, distributed_);
+  // New values (or none, when an integration failed: the next refresh assembles them): a new
+  // generation (new key); K_ff's storage is new, its contact positions with it.
   ++cache_.elastic_generation;
   cache_.contact_version = -3;
   cache_.contact_only.clear();
   ghost_nodes_.clear();  // the columns at the eliminated equations' nodes, K's of before
-  return true;
+  return assembled;
 }
 
-Vector SystemMatrix::internal_forces(const Vector& u) const {
-  Vector f;
-  tangent_->assemble(u, nullptr, &f);
-  return f;
+bool SystemMatrix::internal_forces(const Vector& u, Vector& f_int) const {
+  return tangent_->assemble(u, nullptr, &f_int);
 }
 
 Vector SystemMatrix::times(const Vector& u, const RankLayout& layout, const LinearSolver* holder) const {

@@ -23,15 +23,17 @@ class SystemMatrix {
   void clear();
   /// K from `tangent` (borrowed for the run) at u, split by the Dirichlet set `constrained`
   /// (the same at every instant); `distributed`: this rank holds only its own nodes' columns.
-  void assemble(TangentSource& tangent, const Vector& u, const std::vector<int>& constrained, bool distributed);
+  /// Returns false when a behaviour's integration failed (TangentSource::assemble).
+  bool assemble(TangentSource& tangent, const Vector& u, const std::vector<int>& constrained, bool distributed);
   /// A tangent that is not constant: K assembled again at u (the same split), so that the
   /// next update builds its system from it (new values key, new contact positions). Nothing
-  /// for a constant one. Returns whether K changed.
+  /// for a constant one. Returns false when a behaviour's integration failed at u.
   bool refresh(const Vector& u);
   /// Whether the tangent is constant (K and its factorisations kept for the run).
   bool constant() const { return tangent_ == nullptr || tangent_->constant(); }
-  /// The internal forces at u from a tangent that is not constant (this rank's share).
-  Vector internal_forces(const Vector& u) const;
+  /// The internal forces at u from a tangent that is not constant (this rank's share) into
+  /// `f_int`; false when a behaviour's integration failed at u.
+  bool internal_forces(const Vector& u, Vector& f_int) const;
 
   /// K split: K_ff (numbered as Constraints::free_index), the constrained columns. Between
   /// updates (or after restore) ff is K_ff itself.

@@ -7,7 +7,9 @@
 #include "engine/core/error.hpp"
 #include "engine/fe/fe_model.hpp"
 #include "engine/mesh/mesh.hpp"
+#include "engine/nonlinear/tangent_source.hpp"
 #include "tests/unit/fe/axis_past_the_axis.hpp"
+#include "tests/unit/fe/hardening_bar.hpp"
 
 namespace {
 
@@ -93,6 +95,47 @@ TEST(FailureKeywords, AnAxisymmetricCellIsAnAxisOne) {
     EXPECT_NE(e.message().find("cell M1 (axisymmetric): integration point at radius"), std::string::npos) << e.message();
     lunaster::cmd::say_in_keywords(e);
     EXPECT_NE(e.message().find("cell M1 (AXIS): integration point at radius"), std::string::npos) << e.message();
+  }
+}
+
+TEST(FailureKeywords, BehaviourFailuresNameTheStepSplitAndTheLayouts) {
+  // The driver's own errors (tangent_source.hpp): a failed integration points to the step's
+  // subdivision; a nonlinear behaviour on a shared model or a mesh in parts to the settings that
+  // keep the model whole.
+  using namespace lunaster::engine;
+  ConvergenceError failed = integration_failure(2.0);
+  EXPECT_EQ(text(failed).find("SUBD"), std::string::npos) << text(failed);
+  lunaster::cmd::say_in_keywords(failed);
+  EXPECT_NE(text(failed).find("(DEFI_LIST_INST), or let the step be subdivided (ECHEC SUBD_NIVEAU, SUBD_PAS)"),
+            std::string::npos)
+      << text(failed);
+
+  Mesh mesh;
+  for (const auto& [x, y] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}}) mesh.add_node(x, y, 0.0);
+  mesh.add_cell(CellType::Quad4, {0, 1, 2, 3});
+  mesh.detect_dimension();
+  FeModel model;
+  model.mesh = &mesh;
+  model.dim = 2;
+  model.materials = {ElasticMaterial{hardening_bar::kE, 0.0, 0.0}};
+  model.modelisation = {Modelisation::PlaneStrain};
+  model.material = {0};
+  const DofMap dofs(mesh, {0}, 2);
+  CellBehaviours behaviours(model);
+  EXPECT_EQ(make_behaviour_tangent(behaviours, dofs, RankLayout::Kind::Shared), nullptr) << "linear: the elastic path";
+  behaviours.assign({0}, std::make_shared<hardening_bar::HardeningBar>());
+  EXPECT_NE(make_behaviour_tangent(behaviours, dofs, RankLayout::Kind::Whole), nullptr);
+  for (const auto kind : {RankLayout::Kind::Shared, RankLayout::Kind::InParts}) {
+    try {
+      make_behaviour_tangent(behaviours, dofs, kind);
+      FAIL() << "expected a DeckError";
+    } catch (lunaster::DeckError& e) {
+      EXPECT_EQ(text(e).find("COMPORTEMENT"), std::string::npos) << text(e);
+      lunaster::cmd::say_in_keywords(e);
+      EXPECT_NE(text(e).find(kind == RankLayout::Kind::Shared ? "MATR_DISTRIBUEE='OUI'" : "PARTITIONNEUR"),
+                std::string::npos)
+          << text(e);
+    }
   }
 }
 

@@ -1,9 +1,10 @@
 // A nonlinear behaviour added through the behaviour interface alone, solved by a Newton loop
 // that sees only the Tangent (internal force, tangent, commit, restore) and a sparse LU.
 //
-// The law (this file only): the xx component follows a 1D plasticity with the nonlinear isotropic
-// hardening R(p) = sy + Q (1 - exp(-b p)), return mapping solved by a local Newton, consistent
-// tangent E R'/(E + R'); yy and xy are linear (E, E/2: no Poisson coupling), zz carries no stress.
+// The law (hardening_bar.hpp, shared with the driver's test in tests/unit/nonlinear): the xx
+// component follows a 1D plasticity with the nonlinear isotropic hardening
+// R(p) = sy + Q (1 - exp(-b p)), return mapping solved by a local Newton, consistent tangent
+// E R'/(E + R'); yy and xy are linear (E, E/2: no Poisson coupling), zz carries no stress.
 // Internal variables EPSPEQ (p) and EPSPXX (the plastic xx strain).
 //
 // The problem: the unit square (distorted interior nodes, QUAD4, plane strain), u_x = 0 on x = 0,
@@ -20,8 +21,6 @@
 #include <filesystem>
 #include <tuple>
 
-#include <med.h>
-
 #include "engine/assembly/assembly.hpp"
 #include "engine/assembly/point_fields.hpp"
 #include "engine/io/med_writer.hpp"
@@ -29,70 +28,14 @@
 #include "engine/material/behaviour.hpp"
 #include "engine/material/cell_behaviours.hpp"
 #include "fe_test_util.hpp"
+#include "hardening_bar.hpp"
+#include "med_elga.hpp"
 #include "newton_test_util.hpp"
 
 namespace lunaster::engine {
 namespace {
 
-constexpr double kE = 200e3, kSy = 200.0, kQ = 100.0, kB = 20.0;
-
-class HardeningBar final : public Behaviour {
- public:
-  bool is_linear() const override { return false; }
-  const std::vector<std::string>& variable_names() const override { return names_; }
-  IntegrationStatus integrate(const PointInput& in, PointOutput& out) const override {
-    const double p0 = in.variables_start[0], ep0 = in.variables_start[1];
-    const double trial = kE * (in.strain_end(0) - ep0);
-    double p = p0, ep = ep0, sxx = trial, et = kE;
-    // Plastic when the trial stress is outside the surface by more than its round-off: a point
-    // left on the surface by the last converged step (|trial| = R(p0) to a few ulps) starts the
-    // next step elastic at every point, not elastic or plastic with the sign of its round-off.
-    if (std::abs(trial) - radius(p0) > 1e-12 * radius(p0)) {
-      const double sign = trial > 0 ? 1.0 : -1.0;
-      double dp = 0.0;
-      for (int it = 0;; ++it) {  // g(dp) = |trial| - E dp - R(p0 + dp) = 0, g' = -(E + R')
-        const double g = std::abs(trial) - kE * dp - radius(p0 + dp);
-        if (std::abs(g) <= 1e-14 * std::abs(trial)) break;  // |g| at the round-off of |trial|
-        if (it == 50) return IntegrationStatus::Failed;
-        dp += g / (kE + slope(p0 + dp));
-      }
-      p = p0 + dp;
-      ep = ep0 + sign * dp;
-      sxx = trial - sign * kE * dp;
-      et = kE * slope(p) / (kE + slope(p));
-    }
-    out.variables_end[0] = p;
-    out.variables_end[1] = ep;
-    out.stress = TensorVector::Zero(4);
-    out.stress(0) = sxx;
-    out.stress(1) = kE * in.strain_end(1);
-    out.stress(3) = 0.5 * kE * in.strain_end(3);
-    if (out.want_tangent) {
-      out.tangent = TangentMatrix::Zero(4, 4);
-      out.tangent(0, 0) = et;
-      out.tangent(1, 1) = kE;
-      out.tangent(3, 3) = 0.5 * kE;
-    }
-    return IntegrationStatus::Ok;
-  }
-  static double radius(double p) { return kSy + kQ * (1.0 - std::exp(-kB * p)); }
-  static double slope(double p) { return kQ * kB * std::exp(-kB * p); }
-
- private:
-  std::vector<std::string> names_{"EPSPEQ", "EPSPXX"};
-};
-
-/// Cumulated plastic strain on the yield surface at stress t (uniaxial, monotonic).
-double exact_p(double t) { return t <= kSy ? 0.0 : -std::log(1.0 - (t - kSy) / kQ) / kB; }
-
-/// Newton's asymptotic constant on sigma(eps) = t along the hardening branch, relative residuals:
-/// t |sigma''| / (2 sigma'^2), with sigma' = E R' / (E + R') and sigma'' = E^3 R'' / (E + R')^3
-/// (d eps = d sigma / E + dp, R'' = -b R').
-double rate_constant(double t) {
-  const double p = exact_p(t), r1 = HardeningBar::slope(p), r2 = -kB * r1;
-  const double s1 = kE * r1 / (kE + r1), s2 = kE * kE * kE * r2 / ((kE + r1) * (kE + r1) * (kE + r1));
-  return t * std::abs(s2) / (2.0 * s1 * s1);
-}
+using namespace hardening_bar;
 
 struct Bar {
   static constexpr int kCells = 4;
@@ -229,38 +172,22 @@ TEST(ToyPlasticity, InternalVariablesReachTheResultFileAsVariElga) {
   steps[0].elga["SIEF_ELGA"] = stresses_at_points(bar.model, tangent.states());
   EXPECT_EQ(steps[0].elga["VARI_ELGA"].components, (std::vector<std::string>{"V1", "V2"}));
   EXPECT_EQ(bar.behaviours->of(0).variable_names(), (std::vector<std::string>{"EPSPEQ", "EPSPXX"}));
-  Mesh& mesh = bar.block.mesh();
-  mesh.name = "BAR";
-  const std::string dir = std::string(LUNASTER_BINARY_DIR) + "/test-scratch/vari_elga";
-  std::filesystem::create_directories(dir);
-  const std::string path = dir + "/bar.med";
-  write_med(path, mesh, {{"RESU", &steps}});
+  const std::string path = test::write_bar_result(bar.block.mesh(), steps, "vari_elga");
 
-  const med_idt fid = MEDfileOpen(path.c_str(), MED_ACC_RDONLY);
-  ASSERT_GE(fid, 0);
   const int n_cells = static_cast<int>(bar.model.volume_cells().size());
   for (const auto& [field, column, expected] :
        {std::tuple<const char*, int, double>{"RESU____VARI_ELGA", 0, exact_p(270.0)},
         std::tuple<const char*, int, double>{"RESU____VARI_ELGA", 1, exact_p(270.0)},
         std::tuple<const char*, int, double>{"RESU____SIEF_ELGA", 0, 270.0}}) {
-    char profile[MED_NAME_SIZE + 1] = "", localization[MED_NAME_SIZE + 1] = "";
-    med_int profile_size = 0, n_points = 0;
-    const med_int n = MEDfieldnValueWithProfile(fid, field, 1, MED_NO_IT, MED_CELL, MED_QUAD4, 1,
-                                                MED_COMPACT_STMODE, profile, &profile_size, localization, &n_points);
-    ASSERT_EQ(n, n_cells) << field;
-    ASSERT_EQ(n_points, 4) << field;
-    EXPECT_STREQ(localization, "QUAD4_4_POINTS");
     const int nc = std::string(field).find("VARI") != std::string::npos ? 2 : 4;
-    std::vector<med_float> values(static_cast<size_t>(n) * n_points * nc);
-    ASSERT_GE(MEDfieldValueWithProfileRd(fid, field, 1, MED_NO_IT, MED_CELL, MED_QUAD4, MED_COMPACT_STMODE, profile,
-                                         MED_FULL_INTERLACE, MED_ALL_CONSTITUENT,
-                                         reinterpret_cast<unsigned char*>(values.data())),
-              0);
-    for (size_t r = 0; r < values.size() / nc; ++r)
-      test::expect_close(column == 1 ? std::abs(values[r * nc + column]) : values[r * nc + column], expected, 1e-10,
-                         1e-14, field);
+    const test::Quad4Elga read = test::read_quad4_elga(path, field, 1, nc);
+    ASSERT_EQ(read.n_cells, n_cells) << field;
+    ASSERT_EQ(read.n_points, 4) << field;
+    EXPECT_EQ(read.localization, "QUAD4_4_POINTS");
+    for (size_t r = 0; r < read.values.size() / nc; ++r)
+      test::expect_close(column == 1 ? std::abs(read.values[r * nc + column]) : read.values[r * nc + column], expected,
+                         1e-10, 1e-14, field);
   }
-  MEDfileClose(fid);
 }
 
 }  // namespace
