@@ -5,7 +5,8 @@
 -- iteration: judged again on the start (zero gap, zero pressure) they all opened, and the upper block
 -- was held by nothing. code_aster's SSNP121S (COEF_PENA_CONT = 1e16) tests the same.
 -- Reference: analytical, uniform stress -1e5 Pa in both blocks: LAGS_C = -1e5 Pa on AB, DY = -0.05 m
--- on AB (the penetration p / COEF_PENA_CONT = 1e-7 m is below the 1 % tolerance). Units SI.
+-- on AB (the penetration p / COEF_PENA_CONT = 1e-7 m is below the 1 % tolerance), SIEF_NOEU SIYY = -1e5
+-- Pa at the corners and on the interface. Units SI.
 DEBUT()
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'ssnp121a.med' }
 MO = AFFE_MODELE{ MAILLAGE = MA,
@@ -26,6 +27,8 @@ RESU = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CHMAT, CONTACT = CONT,
                       COMPORTEMENT = _F{ RELATION = 'ELAS' },
                       INCREMENT = _F{ LIST_INST = L_INST },
                       CONVERGENCE = _F{ ITER_GLOB_MAXI = 40 } }
+-- The stresses of the behaviour at the cells' nodes and their nodal means (with ELAS, SIGM's).
+RESU = CALC_CHAMP{ reuse = RESU, RESULTAT = RESU, CONTRAINTE = { 'SIEF_ELNO', 'SIEF_NOEU' } }
 -- VALE_CALC: lunaster's own values from a real run (non-regression, relative 1e-6).
 local calc = {
   A = { DY = -5.000010379e-02, LAGS_C = -1.000001277e+05 },
@@ -38,6 +41,13 @@ for _, point in ipairs({ 'A', 'O', 'B' }) do
                             REFERENCE = 'ANALYTIQUE', VALE_REFE = -0.05, PRECISION = 1.0e-2 }
   checks[#checks + 1] = _F{ RESULTAT = RESU, NUME_ORDRE = 1, NOM_CHAM = 'DEPL', GROUP_NO = point, NOM_CMP = 'LAGS_C', VALE_CALC = calc[point].LAGS_C,
                             REFERENCE = 'ANALYTIQUE', VALE_REFE = -1.0e5, PRECISION = 1.0e-2 }
+end
+local siyy = { A = -1.000000766e+05, O = -1.000000476e+05, B = -1.000000766e+05, C = -1.000000000e+05,
+               H = -1.000000050e+05 }
+for _, point in ipairs({ 'A', 'O', 'B', 'C', 'H' }) do  -- uniform -1e5 Pa through both blocks
+  checks[#checks + 1] = _F{ RESULTAT = RESU, NUME_ORDRE = 1, NOM_CHAM = 'SIEF_NOEU', GROUP_NO = point, NOM_CMP = 'SIYY',
+                            VALE_CALC = siyy[point],
+                            REFERENCE = 'ANALYTIQUE', VALE_REFE = -1.0e5, PRECISION = 1.0e-3 }
 end
 TEST_RESU{ RESU = checks }
 FIN()
