@@ -33,6 +33,19 @@ const CommandSpec& debut_spec() {
                           "commands are not macros)")
            .into_values({"OUI", "NON"})
            .legacy(),
+       factor("MESURE_TEMPS",
+              {integer("NIVE_DETAIL", "0: no report; 1: at the end of each STAT_NON_LINE or MECA_NON_LINE, its wall "
+                                      "time and that of its main phases (assembly, contact, factorisation, solve); "
+                                      "2: also its counts (instants, Newton iterations, factorisations, contact "
+                                      "passes, refinement steps); 3 (code_aster's times of every time step) is "
+                                      "refused: lunaster measures whole commands")
+                   .into_values({0LL, 1LL, 2LL, 3LL})
+                   .def(1LL),
+               text("MOYENNE", "OUI: under mpirun, each time as its mean and standard deviation over the ranks "
+                               "(NON: rank 0's)")
+                   .into_values({"OUI", "NON"})
+                   .def("NON")},
+              "Report of the time the nonlinear commands took (without MESURE_TEMPS, none)"),
        text("IGNORE_ALARM", "code_aster alarm identifiers to silence, accepted and ignored (lunaster's warnings "
                             "have no identifiers)")
            .many()

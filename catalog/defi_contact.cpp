@@ -36,13 +36,26 @@ Keyword continuous_zone() {
 
 Keyword discrete_zone() {
   std::vector<Keyword> children = zone_surfaces();
-  children.push_back(text("ALGO_CONT", "Contact algorithm: active set with Lagrange multipliers or penalty")
-                         .into_values({"CONTRAINTE", "PENALISATION"})
+  children.push_back(text("ALGO_CONT", "Contact algorithm: active set with Lagrange multipliers or penalty; GCP "
+                                       "(code_aster's projected conjugate gradient on the contact pressures) is "
+                                       "refused: lunaster does not have it, CONTRAINTE solves the same problem exactly")
+                         .into_values({"CONTRAINTE", "PENALISATION", "GCP"})
                          .def("CONTRAINTE"));
   std::vector<Block> blocks = {
       Block{"ALGO_CONT", {"PENALISATION"}, {real("E_N", "Normal penalty stiffness (Pa/m)").required().above(0.0)}, {}},
   };
   return factor("ZONE", children, "One contact zone (slave/master pair)").required().occurs(1, -1).with_blocks(blocks);
+}
+
+/// A setting of code_aster's ALGO_CONT='GCP' (its convergence, iterations, line search and
+/// preconditioner): known by name, refused with GCP itself.
+Keyword gcp_keyword(const std::string& name, bool is_real) {
+  const std::string what = "code_aster's setting of ALGO_CONT='GCP', the projected conjugate gradient lunaster does "
+                           "not have: refused (ALGO_CONT='CONTRAINTE' solves the same contact problem exactly)";
+  if (is_real) return real(name, what);
+  if (name == "RECH_LINEAIRE") return text(name, what).into_values({"ADMISSIBLE", "NON_ADMISSIBLE"});
+  if (name == "PRE_COND") return text(name, what).into_values({"DIRICHLET", "SANS"});
+  return integer(name, what);
 }
 
 }  // namespace
@@ -68,7 +81,9 @@ const CommandSpec& defi_contact_spec() {
       {Block{"FORMULATION", {"CONTINUE"}, {common::algo_reso_cont(false), continuous_zone()}, {}},
        Block{"FORMULATION",
              {"DISCRETE"},
-             {common::algo_reso_cont(true), common::iter_cont_mult(), discrete_zone()},
+             {common::algo_reso_cont(true), common::iter_cont_mult(), discrete_zone(), gcp_keyword("RESI_ABSO", true),
+              gcp_keyword("ITER_GCP_MAXI", false), gcp_keyword("RECH_LINEAIRE", false),
+              gcp_keyword("PRE_COND", false), gcp_keyword("COEF_RESI", true), gcp_keyword("ITER_PRE_MAXI", false)},
              {at_most_one({"ITER_CONT_MAXI", "ITER_CONT_MULT"})}}});
   return spec;
 }

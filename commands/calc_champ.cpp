@@ -1,4 +1,4 @@
-// CALC_CHAMP: stresses (SIGM_ELNO, SIGM_NOEU), equivalent stresses (SIEQ_*) and nodal
+// CALC_CHAMP: stresses (SIGM_ELNO, SIGM_NOEU, SIEF_ELNO, SIEF_NOEU), equivalent stresses (SIEQ_*) and nodal
 // forces (FORC_NODA, REAC_NODA) from DEPL.
 #include <algorithm>
 #include <memory>
@@ -98,10 +98,16 @@ ConceptPtr calc_champ(const Args& args, Session& session) {
         throw args.error("FORCE", "loads of RESULTAT defined at instant " + std::to_string(step.inst), err.message());
       }
     }
-    const bool stresses = want("SIGM_ELNO") || want("SIGM_NOEU") || want("SIEQ_ELNO") || want("SIEQ_NOEU");
+    const bool stresses = want("SIGM_ELNO") || want("SIGM_NOEU") || want("SIEQ_ELNO") || want("SIEQ_NOEU") ||
+                          want("SIEF_ELNO") || want("SIEF_NOEU");
     if (!stresses) continue;
     engine::ElnoField sigm = engine::compute_sigm_elno(model, dofs, u, cell_rank);
     if (want("SIGM_NOEU")) step.nodal["SIGM_NOEU"] = to_noeu(sigm);
+    // The stresses of the behaviour (SIEF): with linear elasticity, the stresses of the displacement.
+    if (want("SIEF_ELNO") || want("SIEF_NOEU")) {
+      if (want("SIEF_NOEU")) step.nodal["SIEF_NOEU"] = to_noeu(sigm);
+      step.elno["SIEF_ELNO"] = sigm;
+    }
     if (want("SIEQ_ELNO") || want("SIEQ_NOEU")) {
       engine::ElnoField sieq = engine::compute_sieq_elno(sigm);
       if (want("SIEQ_NOEU")) step.nodal["SIEQ_NOEU"] = to_noeu(sieq);

@@ -5,6 +5,7 @@
 
 #include "catalog/args.hpp"
 #include "commands/session.hpp"
+#include "engine/nonlinear/newton_options.hpp"
 
 namespace lunaster::cmd {
 
@@ -19,6 +20,8 @@ inline std::string number_text(double x) {
 }
 
 ConceptPtr debut(const Args& args, Session& session);
+/// DEBUT MESURE_TEMPS's report of a nonlinear command that took `wall_seconds` (nothing at level 0).
+void report_times(Session& session, const engine::SolverStats& stats, double wall_seconds);
 ConceptPtr fin(const Args& args, Session& session);
 ConceptPtr lire_maillage(const Args& args, Session& session);
 ConceptPtr defi_group(const Args& args, Session& session);

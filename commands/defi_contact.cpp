@@ -15,6 +15,17 @@ ConceptPtr defi_contact(const Args& args, Session& session) {
     throw args.error("LISSAGE", "'NON' (each master cell's own normal)", "'" + args.text("LISSAGE") + "'",
                      {"lunaster does not smooth the master normals at the nodes; on a plane master surface they "
                       "are the same normal, and LISSAGE = 'NON' (or no LISSAGE) computes the same contact"});
+  // code_aster's projected conjugate gradient (ALGO_CONT='GCP') and its settings: named, refused.
+  for (const auto& zone : args.factors("ZONE"))
+    if (zone.has("ALGO_CONT") && zone.text("ALGO_CONT") == "GCP")
+      throw zone.error("ALGO_CONT", "'CONTRAINTE' or 'PENALISATION' with FORMULATION='DISCRETE'", "'GCP'",
+                       {"lunaster does not have code_aster's projected conjugate gradient on the contact pressures; "
+                        "ALGO_CONT='CONTRAINTE' (the active set) solves the same discrete contact problem exactly, "
+                        "without RESI_ABSO, ITER_GCP_MAXI, RECH_LINEAIRE, PRE_COND, COEF_RESI and ITER_PRE_MAXI"});
+  for (const char* kw : {"RESI_ABSO", "ITER_GCP_MAXI", "RECH_LINEAIRE", "PRE_COND", "COEF_RESI", "ITER_PRE_MAXI"})
+    if (args.has(kw))
+      throw args.error(kw, "no setting of ALGO_CONT='GCP' (which lunaster does not have)", "a value",
+                       {"it sets code_aster's projected conjugate gradient, which no zone asks for"});
   read_contact_loops(args, def);
   for (const auto& zone : args.factors("ZONE")) {
     const std::string algo = zone.has("ALGO_CONT") ? zone.text("ALGO_CONT") : (continuous ? "STANDARD" : "CONTRAINTE");

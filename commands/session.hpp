@@ -65,6 +65,11 @@ class Session {
 
   bool fin_called = false;
 
+  /// DEBUT MESURE_TEMPS: NIVE_DETAIL of the time report after each nonlinear command (0: none),
+  /// and MOYENNE = 'OUI' (each time as its mean and standard deviation over the ranks).
+  int time_report_level = 0;
+  bool time_report_over_ranks = false;
+
   /// Files IMPR_TABLE wrote in this run: a further table on the same file is appended, as on
   /// a code_aster unit.
   std::set<std::filesystem::path> table_files;

@@ -1,5 +1,6 @@
 // STAT_NON_LINE: quasi-static incremental analysis (Newton), with contact.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -276,6 +277,7 @@ void number_relations(std::vector<engine::LinearRelation>& relations, engine::Me
 }
 
 ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_line) {
+  const auto start = std::chrono::steady_clock::now();
   auto result = std::make_shared<EvolNoli>();
   result->modele = args.concept_as<Modele>("MODELE");
   result->cham_mater = args.concept_as<ChamMater>("CHAM_MATER");
@@ -513,6 +515,7 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
   }
   result->stats = solver.stats();
   result->cell_rank = solver.cell_ranks();
+  report_times(session, result->stats, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return result;
 }
 

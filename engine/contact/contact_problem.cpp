@@ -411,6 +411,7 @@ void ContactProblem::init_statuses(const Vector& u, const Log& log) {
   msg << "contact: " << points_.size() << (disc_->nodal() ? " slave nodes, " : " contact points, ") << n_active
       << " initially in contact, " << n_unpaired << " not paired with the master surface";
   log.info(msg.str());
+  u_at_init_ = u;
 }
 
 int ContactProblem::update_statuses(const Vector& u) {
@@ -522,6 +523,10 @@ bool ContactProblem::settle(const Vector& u, const Log& log) {
 }
 
 void ContactProblem::update_statuses_in_newton(const Vector& u) {
+  if (u_at_init_.size() > 0) {
+    if (u_at_init_.size() == u.size() && u == u_at_init_) return;
+    u_at_init_.resize(0);
+  }
   if (statuses_in_newton())
     for (auto& p : points_) p.active = p.paired && law_->status(multiplier(u, p), p.gap.value(u), rho(p.zone));
 }

@@ -141,6 +141,10 @@ class ContactProblem final : public ContactHook {
   std::vector<std::vector<CellMotion>> motions_;               ///< per zone, per master cell
   std::vector<std::vector<char>> motion_known_;                ///< motions_ computed this pairing
   bool first_step_ = true;
+  /// The iterate CONTACT_INIT set the statuses at, until Newton moves away from it: statuses
+  /// updated inside Newton are judged on Newton's iterates, as code_aster does after each
+  /// iteration, not on the start they were just set at (empty: none pending).
+  Vector u_at_init_;
   bool allow_condensation_ = true;
   long pattern_version_ = 0;
   int n_status_iter_ = 0, n_geom_iter_ = 0, n_pairings_ = 0;
