@@ -1,11 +1,13 @@
 -- A unit cube (one HEXA8, 3D) in uniaxial tension past yield, then unloaded, with von Mises
 -- plasticity: RELATION = 'VMIS_ISOT_LINE' (ECRO_LINE) and, on a second run, 'VMIS_ISOT_TRAC'
--- (a TRACTION curve with PROL_DROITE = 'LINEAIRE', loaded past its last point).
+-- (a TRACTION curve with PROL_DROITE = 'LINEAIRE', loaded past its last point); then one QUAD4 in
+-- plane stress (C_PLAN) along the first history, RESI_INTE_RELA and ITER_INTE_MAXI given.
 -- Purpose: STAT_NON_LINE COMPORTEMENT builds the von Mises law from each cell's DEFI_MATERIAU and
 --          drives it through Newton: stresses (SIEF_ELGA), the cumulated plastic strain (VARI_ELGA
 --          V1) and the indicator of the step (V2) at loaded, yielding and unloaded instants.
 -- Problem: u_x = 0 on LEFT, u_y = 0 on FRONT, u_z = 0 on BOTTOM, u_z = eps(t) on TOP (side 1):
---          a homogeneous uniaxial stress SIZZ, every Gauss point in the same state.
+--          a homogeneous uniaxial stress SIZZ, every Gauss point in the same state (in C_PLAN: SIYY,
+--          u_y = eps(t) on TOP, DX on RIGHT the lateral strain likewise).
 -- Reference: analytical, uniaxial closed form. With the curve sigma = f(eps) on loading (ECRO_LINE:
 --          f = E eps below SY / E, SY + ET (eps - SY / E) above; TRACTION: the curve, its slope
 --          extended past the last point), eps_max the largest strain so far:
@@ -22,6 +24,13 @@ MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'meshes/unit_hexa8.med' }
 MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = '3D' } }
 CH = AFFE_CHAR_MECA{ MODELE = MO, DDL_IMPO = { _F{ GROUP_NO = 'LEFT', DX = 0.0 }, _F{ GROUP_NO = 'FRONT', DY = 0.0 },
                                                _F{ GROUP_NO = 'BOTTOM', DZ = 0.0 }, _F{ GROUP_NO = 'TOP', DZ = 1.0 } } }
+-- The same uniaxial stress in plane stress (one QUAD4, C_PLAN, SIYY along y): the law's local
+-- iteration on the zz strain, its tolerance and iteration limit given by RESI_INTE_RELA and
+-- ITER_INTE_MAXI.
+MA2 = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'meshes/unit_quad4.med' }
+MO2 = AFFE_MODELE{ MAILLAGE = MA2, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'C_PLAN' } }
+CH2 = AFFE_CHAR_MECA{ MODELE = MO2, DDL_IMPO = { _F{ GROUP_NO = 'LEFT', DX = 0.0 }, _F{ GROUP_NO = 'BOTTOM', DY = 0.0 },
+                                                 _F{ GROUP_NO = 'TOP', DY = 1.0 } } }
 
 -- The uniaxial answer at strain history `path` (instant -> strain) for the loading curve f.
 local function closed_form(f, eps, eps_max)
@@ -31,7 +40,7 @@ local function closed_form(f, eps, eps_max)
   return sig, p, -NU * sig / E - p / 2.0
 end
 
-local function run(material, relation, strains, f, calc)
+local function run(material, relation, strains, f, calc, plane)
   local times = {}
   local vale = {}
   for i, eps in ipairs(strains) do
@@ -41,9 +50,15 @@ local function run(material, relation, strains, f, calc)
   end
   local EPS = DEFI_FONCTION{ NOM_PARA = 'INST', VALE = vale }
   local L = DEFI_LIST_REEL{ VALE = times }
-  local CM = AFFE_MATERIAU{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', MATER = material } }
-  local R = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CM, EXCIT = _F{ CHARGE = CH, FONC_MULT = EPS },
-                           COMPORTEMENT = _F{ RELATION = relation, TOUT = 'OUI', DEFORMATION = 'PETIT' },
+  local mesh, model, load, axial = MA, MO, CH, 'SIZZ'
+  local behaviour = _F{ RELATION = relation, TOUT = 'OUI', DEFORMATION = 'PETIT' }
+  if plane then
+    mesh, model, load, axial = MA2, MO2, CH2, 'SIYY'
+    behaviour = _F{ RELATION = relation, TOUT = 'OUI', RESI_INTE_RELA = 1.0e-13, ITER_INTE_MAXI = 20 }
+  end
+  local CM = AFFE_MATERIAU{ MAILLAGE = mesh, AFFE = _F{ TOUT = 'OUI', MATER = material } }
+  local R = STAT_NON_LINE{ MODELE = model, CHAM_MATER = CM, EXCIT = _F{ CHARGE = load, FONC_MULT = EPS },
+                           COMPORTEMENT = behaviour,
                            CONVERGENCE = _F{ RESI_GLOB_RELA = 1.0e-12 }, INCREMENT = _F{ LIST_INST = L } }
   local checks = {}
   local eps_max = 0.0
@@ -64,7 +79,7 @@ local function run(material, relation, strains, f, calc)
                                 VALE_REFE = refe, VALE_CALC = value, PRECISION = 1.0e-10 }
       end
       for _, kind in ipairs({ 'MIN', 'MAX' }) do
-        check(SIEF, 'SIZZ', kind, sig, c[1])
+        check(SIEF, axial, kind, sig, c[1])
         check(VARI, 'V1', kind, p, c[2])
         check(VARI, 'V2', kind, yielding and 1.0 or 0.0, yielding and 1.0 or 0.0)
         checks[#checks + 1] = _F{ RESULTAT = R, INST = t, NOM_CHAM = 'DEPL', NOM_CMP = 'DX', TYPE_TEST = kind,
@@ -114,4 +129,13 @@ run(MAT_T, 'VMIS_ISOT_TRAC', { 0.0, 0.012, 0.010, 0.02 },
       [2] = { -1.560000000e+02, 1.078000000e-02, -5.156000000e-03 },
       [3] = { 2.600000000e+02, 1.870000000e-02, -9.740000000e-03 },
     })
+-- Plane stress, linear hardening: the first history.
+run(MAT_L, 'VMIS_ISOT_LINE', { 0.0, 0.5 * SY / E, 0.003, 0.01, 0.01 - 1.5 * s3 / E, 0.0095 },
+    f_line, {
+      [1] = { 1.000000000e+02, 0.000000000e+00, -1.500000000e-04 },
+      [2] = { 2.040000000e+02, 1.980000000e-03, -1.296000000e-03 },
+      [3] = { 2.180000000e+02, 8.910000000e-03, -4.782000000e-03 },
+      [4] = { -1.090000000e+02, 8.910000000e-03, -4.291500000e-03 },
+      [5] = { 1.180000000e+02, 8.910000000e-03, -4.632000000e-03 },
+    }, true)
 FIN()
