@@ -28,8 +28,23 @@ Keyword elim_lagr(const std::vector<std::string>& names, const std::string& def)
 
 Keyword behaviour(const std::string& name, const std::string& doc) {
   return factor(name,
-                {text("RELATION", "Constitutive law (only linear elasticity)").into_values({"ELAS"}).def("ELAS"),
-                 text("DEFORMATION", "Strain measure (only small strains)").into_values({"PETIT"}).def("PETIT"),
+                {text("RELATION", "Constitutive law: linear elasticity, or von Mises plasticity with isotropic "
+                                  "hardening, linear (the material's ECRO_LINE) or from a traction curve (its TRACTION)")
+                     .into_values({"ELAS", "VMIS_ISOT_LINE", "VMIS_ISOT_TRAC"})
+                     .def("ELAS"),
+                 text("DEFORMATION", "Strain measure: only PETIT (small strains) is built; the others are refused "
+                                     "with the reason")
+                     .into_values({"PETIT", "PETIT_REAC", "GROT_GDEP", "SIMO_MIEHE", "GDEF_LOG"})
+                     .def("PETIT"),
+                 real("RESI_INTE_RELA", "Plane stress (C_PLAN) von Mises laws: the local iteration on the zz strain "
+                                        "converges when |sigma_zz| is below this fraction of the stress scale "
+                                        "(default: 1e-12, tighter than code_aster's 1e-6); other cases integrate "
+                                        "in closed form and do not read it")
+                     .range(0.0, std::nullopt),
+                 integer("ITER_INTE_MAXI", "Plane stress (C_PLAN) von Mises laws: iterations of that local "
+                                           "iteration before the step fails (and is subdivided where DEFI_LIST_INST "
+                                           "allows; default 100)")
+                     .range(1, std::nullopt),
                  common::tout("Apply to every cell"), common::group_ma("Cell groups with this behaviour")},
                 doc)
       .occurs(0, -1)

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <memory>
 #include <set>
 #include <unordered_map>
@@ -17,6 +18,9 @@
 #include "engine/contact/contact_factory.hpp"
 #include "engine/assembly/halo.hpp"
 #include "engine/io/med_writer.hpp"
+#include "engine/material/cell_behaviours.hpp"
+#include "engine/material/elasticity.hpp"
+#include "engine/material/von_mises.hpp"
 #include "engine/nonlinear/relations_hook.hpp"
 #include "engine/parallel/mpi_runtime.hpp"
 
@@ -80,15 +84,63 @@ void save_converged_steps(const std::vector<engine::ResultStep>& steps, const en
   }
 }
 
-/// COMPORTEMENT / COMP_ELAS: every cell is elastic (the only behaviour); the cells each
-/// occurrence names must exist in the model's mesh all the same.
-void check_behaviour(const Args& args, const engine::Mesh& mesh) {
+/// COMPORTEMENT / COMP_ELAS: each occurrence's RELATION on its cells (TOUT / GROUP_MA; unknown
+/// or empty groups are errors), built from each cell's DEFI_MATERIAU. Null when every relation
+/// is ELAS: the solver keeps the model's linear elasticity (its elastic tangent path).
+std::unique_ptr<engine::CellBehaviours> read_behaviours(const Args& args, const engine::FeModel& model,
+                                                        const ChamMater& cham_mater) {
+  std::unique_ptr<engine::CellBehaviours> behaviours;
+  const std::vector<int> volume = model.volume_cells();
+  std::vector<char> is_volume(model.mesh->n_cells(), 0);
+  for (int c : volume) is_volume[c] = 1;
   for (const char* kw : {"COMP_ELAS", "COMPORTEMENT"})
     for (const auto& occ : args.declares(kw) ? args.factors(kw) : std::vector<Args>{}) {
-      if (occ.text("RELATION") != "ELAS")
-        throw occ.error("RELATION", "'ELAS' (the only behaviour lunaster implements)", "'" + occ.text("RELATION") + "'");
-      select_cells(occ, mesh);  // TOUT / GROUP_MA: unknown or empty groups are errors
+      const std::string deformation = occ.text("DEFORMATION");
+      if (deformation != "PETIT")
+        throw occ.error("DEFORMATION", "'PETIT' (small strains, the one strain measure lunaster builds)",
+                        "'" + deformation + "'",
+                        {deformation == "GROT_GDEP" ? "large rotations (Green-Lagrange strain, second Piola-Kirchhoff "
+                                                      "stress) are not built yet: the deck cannot run in lunaster"
+                                                    : "'" + deformation + "' is not built in lunaster; 'PETIT' is "
+                                                      "right while strains and rotations stay small"});
+      const std::vector<int> cells = select_cells(occ, *model.mesh);
+      const std::string relation = occ.text("RELATION");
+      std::map<int, std::vector<int>> cells_of_material;  // the occurrence's volume cells per material
+      for (int c : cells)
+        if (is_volume[c] && model.material[c] >= 0) cells_of_material[model.material[c]].push_back(c);
+      if (relation == "ELAS") {
+        if (behaviours)  // an earlier occurrence's plasticity on these cells gives way to elasticity
+          for (const auto& [m, its_cells] : cells_of_material)
+            behaviours->assign(its_cells, std::make_shared<engine::Elasticity>(model.materials[m]));
+        continue;
+      }
+      engine::PlaneStressIteration local;
+      if (occ.has("RESI_INTE_RELA")) local.tolerance = occ.real("RESI_INTE_RELA");
+      if (occ.has("ITER_INTE_MAXI")) local.max_iterations = static_cast<int>(occ.integer("ITER_INTE_MAXI"));
+      for (const auto& [m, its_cells] : cells_of_material) {
+        const Mater& mater = *cham_mater.maters.at(static_cast<size_t>(m));
+        const std::string name = "'" + mater.user_name + "'";
+        std::shared_ptr<const engine::Behaviour> law;
+        if (relation == "VMIS_ISOT_LINE") {
+          if (!mater.ecro_line)
+            throw occ.error("RELATION", "a material with ECRO_LINE on the cells of 'VMIS_ISOT_LINE'",
+                            "'VMIS_ISOT_LINE' on the material " + name + " without ECRO_LINE",
+                            {"add ECRO_LINE = _F{ D_SIGM_EPSI = ..., SY = ... } to the DEFI_MATERIAU of " + name});
+          law = std::make_shared<engine::VonMises>(mater.elas, *mater.ecro_line, local);
+        } else {  // VMIS_ISOT_TRAC
+          if (!mater.traction)
+            throw occ.error("RELATION", "a material with TRACTION on the cells of 'VMIS_ISOT_TRAC'",
+                            "'VMIS_ISOT_TRAC' on the material " + name + " without TRACTION",
+                            {"add TRACTION = _F{ SIGM = <the curve> } to the DEFI_MATERIAU of " + name});
+          engine::ElasticMaterial elastic = mater.elas;
+          elastic.young = mater.traction->young;  // the curve's first point sets E, ELAS gives NU
+          law = std::make_shared<engine::VonMises>(elastic, mater.traction->hardening, local);
+        }
+        if (!behaviours) behaviours = std::make_unique<engine::CellBehaviours>(model);
+        behaviours->assign(its_cells, law);
+      }
     }
+  return behaviours;
 }
 
 /// SOLVEUR METHODE='PETSC': the Krylov method and its preconditioner, by code_aster's names.
@@ -281,8 +333,8 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
   auto result = std::make_shared<EvolNoli>();
   result->modele = args.concept_as<Modele>("MODELE");
   result->cham_mater = args.concept_as<ChamMater>("CHAM_MATER");
-  check_behaviour(args, *result->modele->maillage->mesh);
   const engine::FeModel model = build_fe_model(*result->modele, *result->cham_mater, args, "CHAM_MATER");
+  const std::unique_ptr<engine::CellBehaviours> behaviours = read_behaviours(args, model, *result->cham_mater);
 
   engine::MechanicalLoads loads;
   const engine::ContactDefinition* contact = nullptr;
@@ -489,6 +541,7 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
     agree_over_ranks(nullptr);
     solver.set_part(part.get(), numbered.get());
   }
+  if (behaviours) solver.set_behaviours(behaviours.get());
   {
     Session::Timer timer(session, "solve");
     try {

@@ -3,7 +3,7 @@
 -- Purpose: DEFI_MATERIAU reads and checks ECRO_LINE and TRACTION (D_SIGM_EPSI below E, a curve
 --          that does not soften; errors/ holds the refusals); RELATION = 'ELAS' uses ELAS alone, as
 --          code_aster's ELAS does, so the solution is Hooke's. The von Mises relations that use the
---          hardening (VMIS_ISOT_LINE, VMIS_ISOT_TRAC) are issue 56's next part.
+--          hardening (VMIS_ISOT_LINE, VMIS_ISOT_TRAC) are checked in vmis_isot_line_bar.lua.
 -- Problem: the unit square (one QUAD4, plane stress), u_x = 0 on the left, u_y = 0 at the bottom,
 --          u_y = 0.8 SY / E on the top: uniaxial stress SIYY = 0.8 SY, lateral strain -NU 0.8 SY / E.
 -- Reference: analytical (Hooke's law in plane stress; one bilinear cell holds the uniform field).

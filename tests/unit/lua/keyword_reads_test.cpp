@@ -46,9 +46,6 @@ const std::map<std::string, std::string> kValidatorOnly = {
     {"DEFI_LIST_INST/DEFI_LIST/METHODE", "only 'MANUEL': the instants are given by LIST_INST"},
     {"DEFI_LIST_INST/ECHEC/EVENEMENT", "only 'ERREUR': a failed step is the one event handled"},
     {"DEFI_LIST_INST/ECHEC/SUBD_METHODE", "only 'MANUEL': a failed step is cut into SUBD_PAS equal steps"},
-    {"STAT_NON_LINE/COMPORTEMENT/DEFORMATION", "only 'PETIT': small strains"},
-    {"STAT_NON_LINE/COMP_ELAS/DEFORMATION", "only 'PETIT': small strains"},
-    {"MECA_NON_LINE/COMPORTEMENT/DEFORMATION", "only 'PETIT': small strains"},
 };
 
 /// Keywords accepted so that code_aster decks run, without effect in lunaster (their catalogue
