@@ -7,7 +7,8 @@
 //   stretch, the Cauchy stress s (lambda + 2 mu) E along it and lambda E / s across, reached at
 //   Newton's quadratic rate, whose constant is the scalar problem's;
 // - the tangent (material and geometric parts) is the derivative of the internal force, by
-//   central differences at a strained and rotated state, elastic and von Mises plastic.
+//   central differences at a strained and rotated state, elastic and von Mises plastic;
+// - an axisymmetric ring stretched radially (the hoop stretch u_r / R) gives its closed form.
 // Uniform strains are linear fields, which isoparametric cells hold exactly, and uniform
 // stresses are balanced exactly by their nodal forces: the discrete solutions are the closed
 // forms, to the Newton tolerance.
@@ -393,6 +394,51 @@ TEST(LargeRotations, AnInvertedCellFailsTheStepAndPlaneStressIsRefused) {
   EXPECT_FALSE(tangent.assemble(block.displacement([](const Eigen::Vector3d& x) { return Eigen::Vector3d(-x); }),
                                 nullptr, &f_int));
   EXPECT_THROW(Block(Case{"QUAD4 plane stress", CellType::Quad4, Modelisation::PlaneStress}), DeckError);
+}
+
+}  // namespace lunaster::engine::green_lagrange_test
+
+namespace lunaster::engine::green_lagrange_test {
+
+// An axisymmetric ring R in [1, 2], Z in [0, 1] (QUAD4, interior nodes distorted), the axial
+// displacement held everywhere and u_r = (s - 1) R imposed on R = 1 and R = 2: the hoop stretch
+// u_r / R equals the radial one, F = diag(s, 1, s) (rr, zz, tt), E_rr = E_tt = (s^2 - 1) / 2 = e.
+// The uniform S (S_rr = S_tt = 2 (lambda + mu) e, S_zz = 2 lambda e) is in equilibrium
+// (P_rr = P_tt, so dP_rr/dR + (P_rr - P_tt) / R = 0), and its nodal forces vanish at the interior
+// nodes exactly (they integrate d(R N_a)/dR, a polynomial 2x2 Gauss points hold): the discrete
+// solution is u_r = (s - 1) R. Cauchy: J = s^2, sigma_rr = sigma_tt = S_rr, sigma_zz = S_zz / s^2.
+TEST(LargeRotations, AxisymmetricHoopStretchGivesTheClosedForm) {
+  const double s = 1.1, e = 0.5 * (s * s - 1.0);
+  Block block(Case{"QUAD4 axisymmetric", CellType::Quad4, Modelisation::Axisymmetric}, Kinematics::TotalLagrangian,
+              nullptr, 1.0);
+  Tangent tangent(*block.behaviours, *block.dofs);
+  Vector u = Vector::Zero(block.dofs->n_dofs());
+  std::vector<char> fixed(block.dofs->n_dofs(), 0);
+  for (int v = 0; v < block.mesh().n_nodes(); ++v) {
+    const double r = block.node(v)(0);
+    fixed[block.dofs->dof(v, 1)] = 1;
+    if (r == 1.0 || r == 2.0) {
+      fixed[block.dofs->dof(v, 0)] = 1;
+      u(block.dofs->dof(v, 0)) = (s - 1.0) * r;
+    }
+  }
+  const test::NewtonLog log =
+      test::newton_step(tangent, test::free_equations(fixed), Vector::Zero(block.dofs->n_dofs()), kE, u, 1e-13);
+  ASSERT_TRUE(log.converged);
+  for (int v = 0; v < block.mesh().n_nodes(); ++v)
+    test::expect_close(u(block.dofs->dof(v, 0)), (s - 1.0) * block.node(v)(0), 1e-10, 1e-13, "u_r");
+  const double srr = 2.0 * (kLambda + kMu) * e, szz = 2.0 * kLambda * e;
+  const std::vector<double> pk2{srr, szz, srr, 0.0}, cauchy_exact{srr, szz / (s * s), srr, 0.0};
+  const ElgaField cauchy = stresses_at_points(*block.behaviours, *block.dofs, u, tangent.states());
+  for (int cell : block.model.volume_cells())
+    for (int q = 0; q < tangent.states().n_points(cell); ++q)
+      for (int i = 0; i < 4; ++i) {
+        test::expect_close(tangent.states().stress(MaterialStates::Slot::End, cell, q)[i], pk2[i], 1e-10, 1e-10 * srr,
+                           "second Piola-Kirchhoff stress");
+        test::expect_close(cauchy.values[(static_cast<size_t>(cauchy.cell_offsets[cell]) + q) * 4 + i], cauchy_exact[i],
+                           1e-10, 1e-10 * srr, "Cauchy stress " + cauchy.components[i]);
+      }
+  std::printf("  hoop stretch %g: Cauchy rr = tt = %.8g, zz = %.8g\n", s, srr, szz / (s * s));
 }
 
 }  // namespace lunaster::engine::green_lagrange_test
