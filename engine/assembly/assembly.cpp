@@ -43,6 +43,18 @@ void with_cell(const FeModel& model, const DofMap& dofs, int cell, F&& f) {
   });
 }
 
+/// with_cell under the cell's kinematics in `behaviours` (small strain or total Lagrangian).
+template <class F>
+void with_cell(const CellBehaviours& behaviours, const DofMap& dofs, int cell, F&& f) {
+  const FeModel& model = behaviours.model();
+  kernels::with_kinematics(model, behaviours.kinematics(cell), cell, [&](auto& kin) {
+    using Kin = std::decay_t<decltype(kin)>;
+    int eq[Kin::kDofs];
+    cell_equations<Kin::kNodes, Kin::kDim>(*model.mesh, dofs, cell, eq);
+    f(kin, static_cast<const int*>(eq));
+  });
+}
+
 /// Element stiffness K_e = sum_q B^T D B w_q from the cell's behaviour at rest (thickness 1
 /// in 2D; AXIS: per radian, weight r = x).
 template <class Kin>
@@ -212,7 +224,7 @@ bool assemble_internal_force(const CellBehaviours& behaviours, const DofMap& dof
   bool ok = true;
   for (size_t i = 0; i < cells.size() && ok; ++i) {
     const int cell = cells[i];
-    with_cell(model, dofs, cell, [&](auto& kin, const int* eq) {
+    with_cell(behaviours, dofs, cell, [&](auto& kin, const int* eq) {
       using Kin = std::decay_t<decltype(kin)>;
       constexpr int NN = Kin::kNodes, DIM = Kin::kDim, ND = Kin::kDofs;
       Eigen::Matrix<double, ND, 1> ue, fe;

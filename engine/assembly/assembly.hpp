@@ -49,7 +49,9 @@ MaterialStates make_material_states(const CellBehaviours& behaviours);
 
 /// The model's internal force f_int = sum_e f_e and tangent K_t = sum_e K_e at displacement `u`,
 /// every point integrated by its cell's behaviour from `states`' step start to the strain of `u`
-/// (small strain); the states' trial slot (end of step) is written. Each of `f_int` (n_dofs) and
+/// under the cell's kinematics (CellBehaviours::kinematics: small strain, or total Lagrangian with
+/// the Green-Lagrange strain, the second Piola-Kirchhoff stress in the states and the geometric
+/// stiffness in k_t); the states' trial slot (end of step) is written. Each of `f_int` (n_dofs) and
 /// `k_t` (n_dofs x n_dofs, the pattern of assemble_stiffness_matrix) is computed when given.
 /// Returns false when a point's integration failed (the step is to be subdivided; the outputs
 /// and the trial slot are then incomplete).

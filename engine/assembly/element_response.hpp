@@ -3,9 +3,12 @@
 /// integrated at each point of the cell's kinematics, giving the element's internal force
 /// f_e = sum_q w_q B^T sigma, its tangent K_e = sum_q w_q B^T D_t B and the points' stresses.
 /// The one element loop of the linear stiffness, the internal forces, the stresses and the
-/// nonlinear tangent.
+/// nonlinear tangent. Under the total Lagrangian kinematics B = B(u_e), sigma is the second
+/// Piola-Kirchhoff stress S, K_e adds the geometric part sum_q w_q G^T S G and the points'
+/// stresses are Cauchy's.
 #include <Eigen/Core>
 
+#include "engine/assembly/green_lagrange.hpp"
 #include "engine/assembly/small_strain.hpp"
 #include "engine/material/behaviour.hpp"
 #include "engine/material/cell_behaviours.hpp"
@@ -30,6 +33,13 @@ decltype(auto) with_small_strain(const FeModel& model, int cell, F&& f) {
   });
 }
 
+/// Calls f(kinematics) with the kinematics `kinematics` of a volume cell of `model`.
+template <class F>
+decltype(auto) with_kinematics(const FeModel& model, Kinematics kinematics, int cell, F&& f) {
+  if (kinematics == Kinematics::TotalLagrangian) return with_green_lagrange(model, cell, f);
+  return with_small_strain(model, cell, f);
+}
+
 /// What to compute for one cell. Without `ue` the strain is zero (the tangent at rest);
 /// without `states` the step starts from a zero state and nothing is stored.
 template <class Kin>
@@ -44,7 +54,8 @@ struct CellRequest {
 
 /// Integrates `behaviour` over the points of one cell. A linear behaviour's tangent is taken at
 /// the first point only (Behaviour::is_linear: the same at every point). Returns Failed at the
-/// first point whose integration failed (the outputs are then incomplete).
+/// first point whose integration failed or, under large rotations, whose volume ratio det F is
+/// below kMinVolumeRatio (the outputs are then incomplete).
 template <class Kin>
 IntegrationStatus cell_response(const Behaviour& behaviour, Modelisation hypothesis, int cell, Kin& kin,
                                 const CellRequest<Kin>& req) {
@@ -64,8 +75,15 @@ IntegrationStatus cell_response(const Behaviour& behaviour, Modelisation hypothe
   if (req.point_stresses) req.point_stresses->resize(kin.n_points(), nt);
   MaterialStates* st = req.states;
   for (int q = 0; q < kin.n_points(); ++q) {
-    const double w = kin.point(q, b);
-    const typename Kin::Rows e = req.ue ? typename Kin::Rows(b * *req.ue) : Kin::Rows::Zero();
+    double w;
+    typename Kin::Rows e;
+    if constexpr (Kin::kLinear) {
+      w = kin.point(q, b);
+      e = req.ue ? typename Kin::Rows(b * *req.ue) : Kin::Rows::Zero();
+    } else {
+      w = req.ue ? kin.point(q, *req.ue, b, e) : kin.point(q, CellRequest<Kin>::Dofs::Zero(), b, e);
+      if (!(kin.volume_ratio() >= kMinVolumeRatio)) return IntegrationStatus::Failed;
+    }
     Kin::to_tensor(e, in.strain_end);
     if (st) {
       in.strain_start = Eigen::Map<const Eigen::VectorXd>(st->strain(Slot::Start, cell, q), nt);
@@ -82,12 +100,19 @@ IntegrationStatus cell_response(const Behaviour& behaviour, Modelisation hypothe
       Eigen::Map<Eigen::VectorXd>(st->strain(Slot::End, cell, q), nt) = in.strain_end;
       Eigen::Map<Eigen::VectorXd>(st->stress(Slot::End, cell, q), nt) = out.stress;
     }
-    if (req.point_stresses) req.point_stresses->row(q) = out.stress.transpose();
+    if (req.point_stresses) {
+      if constexpr (Kin::kLinear) {
+        req.point_stresses->row(q) = out.stress.transpose();
+      } else {
+        req.point_stresses->row(q) = kin.cauchy(out.stress).transpose();
+      }
+    }
     if (req.fe) req.fe->noalias() += w * (b.transpose() * Kin::from_tensor(out.stress));
     if (req.ke) {
       if (out.want_tangent) d = Kin::from_tangent(out.tangent), have_d = true;
       db.noalias() = w * (d * b);
       req.ke->noalias() += b.transpose() * db;
+      if constexpr (!Kin::kLinear) kin.add_geometric(out.stress, w, *req.ke);
     }
   }
   return IntegrationStatus::Ok;

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <string>
 
+#include "engine/assembly/green_lagrange.hpp"
 #include "engine/core/error.hpp"
+#include "engine/material/cell_behaviours.hpp"
 #include "engine/fe/quadrature.hpp"
 #include "engine/fe/reference_element.hpp"
 #include "engine/fe/shape.hpp"
@@ -60,6 +62,34 @@ ElgaField stresses_at_points(const FeModel& model, const MaterialStates& states)
     const double* s = states.stress(MaterialStates::Slot::End, c, q);
     std::copy(s, s + nt, out);
   });
+}
+
+ElgaField stresses_at_points(const CellBehaviours& behaviours, const DofMap& dofs, const Vector& u,
+                             const MaterialStates& states) {
+  const FeModel& model = behaviours.model();
+  ElgaField f = stresses_at_points(model, states);
+  const int nc = f.n_components();
+  for (int c : model.volume_cells()) {
+    if (behaviours.kinematics(c) != Kinematics::TotalLagrangian || states.n_points(c) == 0) continue;
+    kernels::with_green_lagrange(model, c, [&](auto& kin) {
+      using Kin = std::decay_t<decltype(kin)>;
+      constexpr int NN = Kin::kNodes, DIM = Kin::kDim;
+      typename Kin::Dofs ue;
+      const int* nodes = model.mesh->cell(c);
+      for (int a = 0; a < NN; ++a)
+        for (int k = 0; k < DIM; ++k) ue(DIM * a + k) = u(dofs.dof(nodes[a], k));
+      typename Kin::BMatrix b;
+      typename Kin::Rows e;
+      for (int q = 0; q < kin.n_points(); ++q) {
+        kin.point(q, ue, b, e);
+        double* out = &f.values[(static_cast<size_t>(f.cell_offsets[c]) + q) * nc];
+        const TensorVector pk2 = Eigen::Map<const Eigen::VectorXd>(out, nc);
+        const TensorVector sigma = kin.cauchy(pk2);
+        std::copy(sigma.data(), sigma.data() + nc, out);
+      }
+    });
+  }
+  return f;
 }
 
 ElgaField variables_at_points(const FeModel& model, const MaterialStates& states) {

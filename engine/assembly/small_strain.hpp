@@ -18,6 +18,8 @@ class SmallStrain {
  public:
   static_assert(DIM == 3 || DIM == 2, "2D or 3D cells");
   static_assert(!AXIS || DIM == 2, "axisymmetric cells are 2D");
+  /// strain = B u_e, B independent of u_e (the element loop's small-strain path).
+  static constexpr bool kLinear = true;
   static constexpr int kNodes = NN, kDim = DIM, kDofs = NN * DIM;
   static constexpr int kRows = DIM == 3 ? 6 : (AXIS ? kVoigtAxis : 3);
   using Coordinates = Eigen::Matrix<double, NN, DIM>;

@@ -30,18 +30,28 @@ void CellBehaviours::assign(const std::vector<int>& cells, std::shared_ptr<const
 
 const Behaviour& CellBehaviours::of(int cell) const {
   const Behaviour* b = cell < static_cast<int>(of_cell_.size()) ? of_cell_[cell] : nullptr;
-  if (!b) {
-    const Mesh& mesh = *model_->mesh;
-    const std::string name = cell < static_cast<int>(mesh.cell_names.size()) ? mesh.cell_names[cell]
-                                                                                : "#" + std::to_string(cell + 1);
-    throw DeckError("cell " + name + " carries an element but no material");
-  }
+  if (!b) throw DeckError("cell " + cell_name(cell) + " carries an element but no material");
   return *b;
+}
+
+std::string CellBehaviours::cell_name(int cell) const {
+  const Mesh& mesh = *model_->mesh;
+  return cell < static_cast<int>(mesh.cell_names.size()) ? mesh.cell_names[cell] : "#" + std::to_string(cell + 1);
+}
+
+void CellBehaviours::set_kinematics(const std::vector<int>& cells, Kinematics kinematics) {
+  kinematics_.resize(of_cell_.size(), Kinematics::SmallStrain);
+  for (int c : cells) {
+    // The thickness stretch of a plane stress cell is its behaviour's, unknown to the kinematics.
+    if (kinematics == Kinematics::TotalLagrangian && model_->modelisation.at(c) == Modelisation::PlaneStress)
+      throw DeckError("cell " + cell_name(c) + ": large rotations (total Lagrangian) are not available in plane stress");
+    kinematics_.at(c) = kinematics;
+  }
 }
 
 bool CellBehaviours::all_linear() const {
   for (int c : model_->volume_cells())
-    if (of_cell_[c] && !of_cell_[c]->is_linear()) return false;
+    if ((of_cell_[c] && !of_cell_[c]->is_linear()) || kinematics(c) != Kinematics::SmallStrain) return false;
   return true;
 }
 
