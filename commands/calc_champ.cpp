@@ -57,6 +57,15 @@ ConceptPtr calc_champ(const Args& args, Session& session) {
     if (args.has(kw))
       for (const auto& c : args.texts(kw)) wanted.push_back(c);
   auto want = [&](const char* name) { return std::find(wanted.begin(), wanted.end(), name) != wanted.end(); };
+  if (resu->large_rotations)
+    for (const char* name : {"SIGM_ELNO", "SIGM_NOEU", "SIEQ_ELNO", "SIEQ_NOEU", "SIEF_ELNO", "SIEF_NOEU"})
+      if (want(name))
+        throw args.error(std::string(name).rfind("SIEQ", 0) == 0 ? "CRITERES" : "CONTRAINTE",
+                         "a result in small strains (DEFORMATION = 'PETIT')",
+                         "'" + std::string(name) + "' on a result with DEFORMATION = 'GROT_GDEP'",
+                         {"CALC_CHAMP computes these stresses from the displacement in small strains, wrong under "
+                          "large rotations; the result's SIEF_ELGA holds the Cauchy stresses (CREA_CHAMP "
+                          "OPERATION = 'EXTR' reads them)"});
   const engine::FeModel model = build_fe_model(*resu->modele, *resu->cham_mater, args, "RESULTAT");
   const engine::DofMap dofs(*model.mesh, model.volume_cells(), model.dim);
   const std::vector<size_t> chosen = calc_steps(args, *resu);

@@ -145,6 +145,9 @@ struct EvolNoli : Concept {
   /// With a model shared among MPI ranks: per mesh cell, the rank that held it (CALC_CHAMP
   /// computes each cell there); empty otherwise.
   std::vector<int> cell_rank;
+  /// Some cells in large rotations (DEFORMATION='GROT_GDEP'): CALC_CHAMP's stresses from the
+  /// displacement would be small strain's, so it refuses them.
+  bool large_rotations = false;
   std::string type_name() const override { return "evol_noli"; }
   bool in_parts() const override { return modele && modele->in_parts(); }
 };

@@ -86,7 +86,9 @@ void save_converged_steps(const std::vector<engine::ResultStep>& steps, const en
 
 /// COMPORTEMENT / COMP_ELAS: each occurrence's RELATION on its cells (TOUT / GROUP_MA; unknown
 /// or empty groups are errors), built from each cell's DEFI_MATERIAU. Null when every relation
-/// is ELAS: the solver keeps the model's linear elasticity (its elastic tangent path).
+/// is ELAS under DEFORMATION='PETIT': the solver keeps the model's linear elasticity (its elastic
+/// tangent path). DEFORMATION='GROT_GDEP': the occurrence's cells in large rotations (total
+/// Lagrangian; ELAS is then Saint-Venant-Kirchhoff, as code_aster).
 std::unique_ptr<engine::CellBehaviours> read_behaviours(const Args& args, const engine::FeModel& model,
                                                         const ChamMater& cham_mater) {
   std::unique_ptr<engine::CellBehaviours> behaviours;
@@ -96,18 +98,34 @@ std::unique_ptr<engine::CellBehaviours> read_behaviours(const Args& args, const 
   for (const char* kw : {"COMP_ELAS", "COMPORTEMENT"})
     for (const auto& occ : args.declares(kw) ? args.factors(kw) : std::vector<Args>{}) {
       const std::string deformation = occ.text("DEFORMATION");
-      if (deformation != "PETIT")
-        throw occ.error("DEFORMATION", "'PETIT' (small strains, the one strain measure lunaster builds)",
+      if (deformation != "PETIT" && deformation != "GROT_GDEP")
+        throw occ.error("DEFORMATION", "'PETIT' (small strains) or 'GROT_GDEP' (large rotations)",
                         "'" + deformation + "'",
-                        {deformation == "GROT_GDEP" ? "large rotations (Green-Lagrange strain, second Piola-Kirchhoff "
-                                                      "stress) are not built yet: the deck cannot run in lunaster"
-                                                    : "'" + deformation + "' is not built in lunaster; 'PETIT' is "
-                                                      "right while strains and rotations stay small"});
+                        {"'" + deformation + "' is not built in lunaster; 'PETIT' is right while strains and rotations "
+                         "stay small, 'GROT_GDEP' while strains stay small under any rotation"});
+      const bool large = deformation == "GROT_GDEP";
       const std::vector<int> cells = select_cells(occ, *model.mesh);
       const std::string relation = occ.text("RELATION");
       std::map<int, std::vector<int>> cells_of_material;  // the occurrence's volume cells per material
+      std::vector<int> its_volume;
       for (int c : cells)
-        if (is_volume[c] && model.material[c] >= 0) cells_of_material[model.material[c]].push_back(c);
+        if (is_volume[c] && model.material[c] >= 0) {
+          cells_of_material[model.material[c]].push_back(c);
+          its_volume.push_back(c);
+        }
+      if (large) {
+        for (int c : its_volume)
+          if (model.modelisation[c] == engine::Modelisation::PlaneStress)
+            throw occ.error("DEFORMATION", "'PETIT' on the cells of a C_PLAN model",
+                            "'GROT_GDEP' on the C_PLAN cell " + model.mesh->cell_names[c],
+                            {"large rotations are not built in plane stress (the thickness stretch is unknown to "
+                             "them): model the part in D_PLAN or 3D, or keep DEFORMATION = 'PETIT'"});
+        // Saint-Venant-Kirchhoff for ELAS: the model's elasticity, on the Green-Lagrange strain.
+        if (!behaviours) behaviours = std::make_unique<engine::CellBehaviours>(model);
+      }
+      if (behaviours)
+        behaviours->set_kinematics(its_volume, large ? engine::Kinematics::TotalLagrangian
+                                                     : engine::Kinematics::SmallStrain);
       if (relation == "ELAS") {
         if (behaviours)  // an earlier occurrence's plasticity on these cells gives way to elasticity
           for (const auto& [m, its_cells] : cells_of_material)
@@ -566,6 +584,12 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
       throw;
     }
   }
+  result->large_rotations = behaviours && !behaviours->all_linear() &&
+                            [&] {
+                              for (int c : model.volume_cells())
+                                if (behaviours->kinematics(c) != engine::Kinematics::SmallStrain) return true;
+                              return false;
+                            }();
   result->stats = solver.stats();
   result->cell_rank = solver.cell_ranks();
   report_times(session, result->stats, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

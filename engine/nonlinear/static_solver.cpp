@@ -72,7 +72,7 @@ std::vector<ResultStep> StaticSolver::step_through(const std::vector<double>& in
   steps_.clear();
   results_ = std::make_unique<StepResults>(dofs_, model_.mesh->n_nodes(), contact_,
                                           in_parts_ && hook_part_ ? hook_part_->mesh.n_nodes() : model_.mesh->n_nodes());
-  if (tangent_->states()) results_->set_points(&model_, tangent_->states());
+  if (tangent_->states()) results_->set_points(&model_, tangent_->states(), behaviour_tangent_ ? behaviours_ : nullptr);
   steps_.push_back(results_->step(0, instants[0], u, true));
   const TimeStepper stepper(options_.subdivide_levels, options_.subdivide_parts, contact_, tangent_, log_);
   const TimeStepper::Solve solve = [this](double t, Vector& v) { solve_instant(t, v); };

@@ -51,7 +51,8 @@ ResultStep StepResults::step(int index, double inst, const Vector& u, bool initi
   step.inst = inst;
   NodalField& depl = step.nodal["DEPL"] = displacement(u);
   if (points_) {
-    step.elga["SIEF_ELGA"] = stresses_at_points(*points_model_, *points_);
+    step.elga["SIEF_ELGA"] = points_behaviours_ ? stresses_at_points(*points_behaviours_, dofs_, u, *points_)
+                                                : stresses_at_points(*points_model_, *points_);
     step.elga["VARI_ELGA"] = variables_at_points(*points_model_, *points_);
   }
   if (!hook_) return step;

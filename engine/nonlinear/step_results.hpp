@@ -7,6 +7,7 @@
 #include "engine/fields/fields.hpp"
 #include "engine/contact/contact_hook.hpp"
 #include "engine/fe/fe_model.hpp"
+#include "engine/material/cell_behaviours.hpp"
 #include "engine/material/material_states.hpp"
 #include "engine/solver/linear_solver.hpp"
 
@@ -21,9 +22,13 @@ class StepResults {
   /// The integration points' history of `model` (borrowed for the run; null: none, the
   /// default): each step then carries the stresses (SIEF_ELGA) and the internal variables
   /// (VARI_ELGA) of the states' trial slot, the step's converged end once committed.
-  void set_points(const FeModel* model, const MaterialStates* states) {
+  /// `behaviours` (may be null: all small strain) gives each cell's kinematics: the stresses of
+  /// a total Lagrangian cell are then stored as Cauchy's (its states hold the second
+  /// Piola-Kirchhoff stress).
+  void set_points(const FeModel* model, const MaterialStates* states, const CellBehaviours* behaviours = nullptr) {
     points_model_ = model;
     points_ = states;
+    points_behaviours_ = behaviours;
   }
   /// Step `index` at instant `inst` from the unknowns u; `initial`: the state before any
   /// pairing (the hook writes its initial fields).
@@ -38,6 +43,7 @@ class StepResults {
   std::vector<int> components_;  ///< of the displacement field, in the DOF map's order
   const FeModel* points_model_ = nullptr;
   const MaterialStates* points_ = nullptr;
+  const CellBehaviours* points_behaviours_ = nullptr;
 };
 
 }  // namespace lunaster::engine

@@ -1,6 +1,6 @@
 -- Must-fail deck: DEFORMATION = 'SIMO_MIEHE' is code_aster's but not built in lunaster:
 -- refused with the reason, also under RELATION = 'ELAS'.
--- EXPECT_ERROR: deformation_simo_miehe_not_built\.lua:13: STAT_NON_LINE: COMPORTEMENT\[1\]\.DEFORMATION: expected 'PETIT' \(small strains, the one strain measure lunaster builds\), got 'SIMO_MIEHE'
+-- EXPECT_ERROR: deformation_simo_miehe_not_built\.lua:13: STAT_NON_LINE: COMPORTEMENT\[1\]\.DEFORMATION: expected 'PETIT' \(small strains\) or 'GROT_GDEP' \(large rotations\), got 'SIMO_MIEHE'
 -- EXPECT_STATUS: 2
 DEBUT()
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = '../meshes/unit_quad4.med' }
