@@ -161,7 +161,9 @@ FAILING = {"errors/contact_step_no_subdivision": "a solve that fails to converge
 # of testcases/, and `errors` checks that mpirun refuses these with the reason, once.
 SERIAL_ONLY = {"vmis_isot_line_bar": "von Mises plasticity (COMPORTEMENT VMIS_ISOT_LINE, VMIS_ISOT_TRAC): the "
                                      "driver assembles a nonlinear behaviour on a whole model only, and refuses a "
-                                     "model shared among ranks"}
+                                     "model shared among ranks",
+               "grot_gdep_stretch": "large rotations (COMPORTEMENT DEFORMATION='GROT_GDEP'): a nonlinear response, "
+                                    "refused on a model shared among ranks as above"}
 
 
 def suite_decks(full):
