@@ -41,7 +41,10 @@ local function closed_form(f, eps, eps_max)
   return sig, p, -NU * sig / E - p / 2.0
 end
 
-local function run(material, relation, strains, f, calc, plane)
+-- `variant`: nil, or 'meca' (MECA_NON_LINE, code_aster 17's spelling, with the integration
+-- options at the law's own values) or 'comp_elas' (STAT_NON_LINE's older COMP_ELAS); the same
+-- solve whatever the spelling.
+local function run(material, relation, strains, f, calc, plane, variant)
   local times = {}
   local vale = {}
   for i, eps in ipairs(strains) do
@@ -58,9 +61,17 @@ local function run(material, relation, strains, f, calc, plane)
     behaviour = _F{ RELATION = relation, TOUT = 'OUI', RESI_INTE_RELA = 1.0e-13, ITER_INTE_MAXI = 20 }
   end
   local CM = AFFE_MATERIAU{ MAILLAGE = mesh, AFFE = _F{ TOUT = 'OUI', MATER = material } }
-  local R = STAT_NON_LINE{ MODELE = model, CHAM_MATER = CM, EXCIT = _F{ CHARGE = load, FONC_MULT = EPS },
-                           COMPORTEMENT = behaviour,
-                           CONVERGENCE = _F{ RESI_GLOB_RELA = 1.0e-12 }, INCREMENT = _F{ LIST_INST = L } }
+  local solve = { MODELE = model, CHAM_MATER = CM, EXCIT = _F{ CHARGE = load, FONC_MULT = EPS },
+                  CONVERGENCE = _F{ RESI_GLOB_RELA = 1.0e-12 }, INCREMENT = _F{ LIST_INST = L } }
+  local R
+  if variant == 'meca' then
+    behaviour = _F{ RELATION = relation, TOUT = 'OUI', RESI_INTE_RELA = 1.0e-12, ITER_INTE_MAXI = 100 }
+    solve.COMPORTEMENT = behaviour
+    R = MECA_NON_LINE(solve)
+  else
+    solve[variant == 'comp_elas' and 'COMP_ELAS' or 'COMPORTEMENT'] = behaviour
+    R = STAT_NON_LINE(solve)
+  end
   local checks = {}
   local eps_max = 0.0
   for i, eps in ipairs(strains) do
@@ -110,7 +121,8 @@ local CALC_L = {
 run(MAT_L, 'VMIS_ISOT_LINE', HISTORY_L, f_line, CALC_L)
 
 -- A traction curve (E = SY / eps_1 from its first point), loaded on its second segment, unloaded,
--- then reloaded past its last point (PROL_DROITE = 'LINEAIRE': the last slope goes on).
+-- then reloaded past its last point (PROL_DROITE = 'LINEAIRE': the last slope goes on); solved by
+-- MECA_NON_LINE.
 local EPS_T = { SY / E, 0.005, 0.015 }
 local SIG_T = { SY, 230.0, 250.0 }
 local function f_trac(eps)
@@ -131,7 +143,7 @@ run(MAT_T, 'VMIS_ISOT_TRAC', { 0.0, 0.012, 0.010, 0.02 },
       [1] = { 2.440000000e+02, 1.078000000e-02, -5.756000000e-03 },
       [2] = { -1.560000000e+02, 1.078000000e-02, -5.156000000e-03 },
       [3] = { 2.600000000e+02, 1.870000000e-02, -9.740000000e-03 },
-    })
--- Plane stress, linear hardening: the first history.
-run(MAT_L, 'VMIS_ISOT_LINE', HISTORY_L, f_line, CALC_L, true)
+    }, false, 'meca')
+-- Plane stress, linear hardening: the first history (STAT_NON_LINE's COMP_ELAS spelling).
+run(MAT_L, 'VMIS_ISOT_LINE', HISTORY_L, f_line, CALC_L, true, 'comp_elas')
 FIN()
