@@ -346,22 +346,21 @@ void number_relations(std::vector<engine::LinearRelation>& relations, engine::Me
     for (auto& t : r.terms) t.node = local.at(t.node);
 }
 
-ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_line) {
-  const auto start = std::chrono::steady_clock::now();
-  auto result = std::make_shared<EvolNoli>();
-  result->modele = args.concept_as<Modele>("MODELE");
-  result->cham_mater = args.concept_as<ChamMater>("CHAM_MATER");
-  const engine::FeModel model = build_fe_model(*result->modele, *result->cham_mater, args, "CHAM_MATER");
-  const std::unique_ptr<engine::CellBehaviours> behaviours = read_behaviours(args, model, *result->cham_mater);
-
+/// EXCIT's loads, each with its multiplier (FONC_MULT, a function of INST alone), and the
+/// contact definition a load carries (at most one), with the keyword path that gave it.
+struct ExcitLoads {
   engine::MechanicalLoads loads;
   const engine::ContactDefinition* contact = nullptr;
   std::string contact_source;
+};
+
+ExcitLoads read_excit(const Args& args, const engine::FeModel& model, const std::shared_ptr<Modele>& modele) {
+  ExcitLoads out;
   for (const auto& excit : args.factors("EXCIT")) {
     auto charge = excit.concept_as<CharMeca>("CHARGE");
-    if (charge->modele != result->modele)
+    if (charge->modele != modele)
       throw excit.error("CHARGE", "a load defined on MODELE", "'" + charge->user_name + "' defined on another model");
-    const int index = static_cast<int>(loads.multipliers.size());
+    const int index = static_cast<int>(out.loads.multipliers.size());
     if (excit.has("FONC_MULT")) {
       auto f = excit.concept_as<RealFunction>("FONC_MULT");
       if (std::dynamic_pointer_cast<Formule>(f) && f->parameters() != std::vector<std::string>{"INST"})
@@ -369,13 +368,13 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
                           "a FORMULE of " + std::to_string(f->parameters().size()) + " parameter(s), the first '" +
                               f->parameters().front() + "'",
                           {"write the multiplier as FORMULE(VALE=..., NOM_PARA='INST')"});
-      loads.multipliers.push_back([f](double t) { return f->evaluate({t}); });
+      out.loads.multipliers.push_back([f](double t) { return f->evaluate({t}); });
     } else {
-      loads.multipliers.push_back([](double) { return 1.0; });
+      out.loads.multipliers.push_back([](double) { return 1.0; });
     }
-    for (auto d : charge->dirichlet) { d.load = index; loads.dirichlet.push_back(d); }
-    for (auto p : charge->pressures) { p.load = index; loads.pressures.push_back(p); }
-    for (auto f : charge->forces) { f.load = index; loads.forces.push_back(f); }
+    for (auto d : charge->dirichlet) { d.load = index; out.loads.dirichlet.push_back(d); }
+    for (auto p : charge->pressures) { p.load = index; out.loads.pressures.push_back(p); }
+    for (auto f : charge->forces) { f.load = index; out.loads.forces.push_back(f); }
     for (auto d : charge->distributed) {
       // PESANTEUR weighs each cell with its material's RHO: said here, where the materials meet the
       // load (on a mesh in parts the ranks agree, the cell being on one part only).
@@ -389,22 +388,37 @@ ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_
                               {"add RHO = ... to the material's ELAS"});
         }
       };
-      if (d.per_mass && result->modele->in_parts()) agreed(weighed);
+      if (d.per_mass && modele->in_parts()) agreed(weighed);
       else if (d.per_mass) weighed();
       d.load = index;
-      loads.distributed.push_back(d);
+      out.loads.distributed.push_back(d);
     }
     for (auto r : charge->relations) {
       r.load = index;
       r.label += charge->user_name.empty() ? " of " + excit.path("CHARGE") : " of CHARGE '" + charge->user_name + "'";
-      loads.relations.push_back(r);
+      out.loads.relations.push_back(r);
     }
     if (charge->has_contact) {
-      if (contact) throw excit.error("CHARGE", "a single contact definition", "a second one in '" + charge->user_name + "'");
-      contact = &charge->contact;
-      contact_source = excit.path("CHARGE");
+      if (out.contact) throw excit.error("CHARGE", "a single contact definition", "a second one in '" + charge->user_name + "'");
+      out.contact = &charge->contact;
+      out.contact_source = excit.path("CHARGE");
     }
   }
+  return out;
+}
+
+ConceptPtr nonlinear_analysis(const Args& args, Session& session, bool meca_non_line) {
+  const auto start = std::chrono::steady_clock::now();
+  auto result = std::make_shared<EvolNoli>();
+  result->modele = args.concept_as<Modele>("MODELE");
+  result->cham_mater = args.concept_as<ChamMater>("CHAM_MATER");
+  const engine::FeModel model = build_fe_model(*result->modele, *result->cham_mater, args, "CHAM_MATER");
+  const std::unique_ptr<engine::CellBehaviours> behaviours = read_behaviours(args, model, *result->cham_mater);
+
+  ExcitLoads excit_loads = read_excit(args, model, result->modele);
+  engine::MechanicalLoads& loads = excit_loads.loads;
+  const engine::ContactDefinition*& contact = excit_loads.contact;
+  const std::string& contact_source = excit_loads.contact_source;
   std::shared_ptr<CharContact> defi_contact;
   if (meca_non_line ? !args.factors("CONTACT").empty() : args.has("CONTACT")) {
     if (contact) throw args.error("CONTACT", "a single contact definition", "one here and one in " + contact_source);
