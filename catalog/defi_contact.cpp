@@ -17,6 +17,42 @@ std::vector<Keyword> zone_surfaces() {
               .def(0.5)};
 }
 
+/// A zone's friction keywords (read with FROTTEMENT='COULOMB' only; DEFI_CONTACT refuses them
+/// otherwise).
+Keyword coulomb() {
+  return real("COULOMB", "Coulomb's friction coefficient mu of the zone (FROTTEMENT='COULOMB'): the tangential "
+                         "traction is at most mu times the contact pressure")
+      .range(0.0, std::nullopt);
+}
+
+std::vector<Keyword> continuous_friction() {
+  return {coulomb(),
+          text("ALGO_FROT", "Friction algorithm: STANDARD (semi-multipliers LAGS_F1[, LAGS_F2], |LAGS_F| <= 1 the "
+                            "tangential traction over mu p: sticking points do not slip at all) or PENALISATION (an "
+                            "elastic slip t / COEF_PENA_FROT while sticking). Default STANDARD")
+              .into_values({"STANDARD", "PENALISATION"}),
+          real("COEF_FROT", "ALGO_FROT='STANDARD': augmentation c of the friction semi-multipliers (1/m; a point "
+                            "sticks while |LAGS_F + c slip| <= 1). Changes the iterations, not the solution. "
+                            "Default 100")
+              .above(0.0),
+          real("COEF_PENA_FROT", "ALGO_FROT='PENALISATION': tangential penalty (Pa/m), the traction per slip while "
+                                 "sticking; required there")
+              .above(0.0),
+          real("SEUIL_INIT", "code_aster's initial Tresca threshold of its friction fixed point: refused, lunaster "
+                             "solves Coulomb's law within Newton (ALGO_RESO_FROT='NEWTON') and needs none")};
+}
+
+std::vector<Keyword> discrete_friction() {
+  return {coulomb(),
+          real("E_T", "Tangential penalty stiffness of each slave node (N/m; FROTTEMENT='COULOMB', required): "
+                      "a node sticks while its tangential force is below mu times its normal force, with an "
+                      "elastic slip force / E_T")
+              .above(0.0),
+          text("ALGO_FROT", "Friction algorithm of the discrete formulation: PENALISATION only").into_values({"PENALISATION"}),
+          real("COEF_MATR_FROT", "code_aster's factor on its symmetric friction matrix while the residual is "
+                                 "above 1e-3: refused, lunaster's friction tangent is consistent (unsymmetric)")};
+}
+
 Keyword continuous_zone() {
   std::vector<Keyword> children = zone_surfaces();
   children.push_back(text("ALGO_CONT", "Contact algorithm: augmented Lagrangian or penalty")
@@ -26,6 +62,7 @@ Keyword continuous_zone() {
   children.push_back(text("CONTACT_INIT", "Initial contact status: all active, none, or where already interpenetrating")
                          .into_values({"OUI", "NON", "INTERPENETRE"})
                          .def("INTERPENETRE"));
+  for (auto& kw : continuous_friction()) children.push_back(kw);
   std::vector<Block> blocks = {
       Block{"ALGO_CONT", {"STANDARD"}, {real("COEF_CONT", "Augmentation coefficient rho of the contact Lagrangian").def(100.0).above(0.0)}, {}},
       Block{"ALGO_CONT", {"PENALISATION"}, {real("COEF_PENA_CONT", "Normal penalty coefficient").required().above(0.0)}, {}},
@@ -41,6 +78,7 @@ Keyword discrete_zone() {
                                        "refused: lunaster does not have it, CONTRAINTE solves the same problem exactly")
                          .into_values({"CONTRAINTE", "PENALISATION", "GCP"})
                          .def("CONTRAINTE"));
+  for (auto& kw : discrete_friction()) children.push_back(kw);
   std::vector<Block> blocks = {
       Block{"ALGO_CONT", {"PENALISATION"}, {real("E_N", "Normal penalty stiffness (Pa/m)").required().above(0.0)}, {}},
   };
@@ -66,7 +104,10 @@ const CommandSpec& defi_contact_spec() {
       text("FORMULATION", "Discrete (node-to-segment) or continuous (augmented Lagrangian) formulation")
           .into_values({"DISCRETE", "CONTINUE"})
           .def("DISCRETE"),
-      text("FROTTEMENT", "Friction (only frictionless contact is supported)").into_values({"SANS"}).def("SANS"),
+      text("FROTTEMENT", "Friction: SANS (frictionless) or COULOMB (Coulomb's law, each zone's COULOMB; CONTINUE: "
+                         "ALGO_FROT, COEF_FROT or COEF_PENA_FROT; DISCRETE: ALGO_CONT='PENALISATION' and E_T)")
+          .into_values({"SANS", "COULOMB"})
+          .def("SANS"),
       text("LISSAGE",
            "Smoothing of the master normals: NON takes each master cell's own normal at the projection of a "
            "slave point, as lunaster does. OUI (normals averaged at the master nodes and interpolated) is "
@@ -77,8 +118,20 @@ const CommandSpec& defi_contact_spec() {
   for (auto& kw : common::contact_loop_keywords()) keywords.push_back(kw);
   keywords.push_back(common::info());
   static const CommandSpec spec = make_command(
-      "DEFI_CONTACT", "char_contact", "Define frictionless contact zones (pass to STAT_NON_LINE CONTACT)", keywords, {},
-      {Block{"FORMULATION", {"CONTINUE"}, {common::algo_reso_cont(false), continuous_zone()}, {}},
+      "DEFI_CONTACT", "char_contact", "Define contact zones, frictionless or with Coulomb friction (pass to STAT_NON_LINE CONTACT)", keywords, {},
+      {Block{"FORMULATION",
+             {"CONTINUE"},
+             {common::algo_reso_cont(false), continuous_zone(),
+              text("ALGO_RESO_FROT", "Friction loop (FROTTEMENT='COULOMB'): NEWTON, Coulomb's law within Newton "
+                                     "(statuses stick/slip and slip directions updated at each iteration, a "
+                                     "consistent unsymmetric tangent). POINT_FIXE (code_aster's fixed point on the "
+                                     "Tresca threshold) is refused: Newton solves the same law")
+                  .into_values({"NEWTON", "POINT_FIXE"}),
+              real("RESI_FROT", "code_aster's tolerance of its friction fixed point: refused, the friction "
+                                "conditions are in Newton's residual (RESI_GLOB_RELA / RESI_GLOB_MAXI judge them)"),
+              integer("ITER_FROT_MAXI", "code_aster's iteration limit of its friction fixed point: refused, as "
+                                        "RESI_FROT")},
+             {}},
        Block{"FORMULATION",
              {"DISCRETE"},
              {common::algo_reso_cont(true), common::iter_cont_mult(), discrete_zone(), gcp_keyword("RESI_ABSO", true),

@@ -5,6 +5,89 @@
 
 namespace lunaster::cmd {
 
+namespace {
+
+bool given(const catalog::Args& a, const char* kw) { return a.declares(kw) && a.has(kw); }
+
+/// FROTTEMENT='COULOMB': each zone's coefficient and algorithm (the same algorithm in every
+/// zone); without it, no friction keyword.
+void read_friction(const Args& args, bool continuous, engine::ContactDefinition& def) {
+  const bool friction = args.text("FROTTEMENT") == "COULOMB";
+  const auto zones = args.factors("ZONE");
+  static const char* const zone_keywords[] = {"COULOMB", "ALGO_FROT", "COEF_FROT", "COEF_PENA_FROT", "E_T",
+                                              "SEUIL_INIT", "COEF_MATR_FROT"};
+  if (!friction) {
+    for (const auto& zone : zones)
+      for (const char* kw : zone_keywords)
+        if (given(zone, kw))
+          throw zone.error(kw, "no friction keyword with FROTTEMENT='SANS'", "a value",
+                           {"FROTTEMENT='COULOMB' asks for Coulomb friction; without it the contact is frictionless"});
+    for (const char* kw : {"ALGO_RESO_FROT", "RESI_FROT", "ITER_FROT_MAXI"})
+      if (given(args, kw))
+        throw args.error(kw, "no friction keyword with FROTTEMENT='SANS'", "a value",
+                         {"FROTTEMENT='COULOMB' asks for Coulomb friction"});
+    return;
+  }
+  if (given(args, "ALGO_RESO_FROT") && args.text("ALGO_RESO_FROT") != "NEWTON")
+    throw args.error("ALGO_RESO_FROT", "'NEWTON'", "'" + args.text("ALGO_RESO_FROT") + "'",
+                     {"lunaster solves Coulomb's law within Newton (stick/slip and slip directions at every "
+                      "iteration, a consistent tangent); code_aster's fixed point on the Tresca threshold converges "
+                      "to the same solution, so ALGO_RESO_FROT='NEWTON' (or none) computes the same contact"});
+  for (const char* kw : {"RESI_FROT", "ITER_FROT_MAXI"})
+    if (given(args, kw))
+      throw args.error(kw, "no setting of the friction fixed point", "a value",
+                       {"with ALGO_RESO_FROT='NEWTON' Coulomb's conditions are part of Newton's residual, which "
+                        "RESI_GLOB_RELA / RESI_GLOB_MAXI and ITER_GLOB_MAXI judge; remove the keyword"});
+  using engine::FrictionEnforcement;
+  for (size_t z = 0; z < zones.size(); ++z) {
+    const auto& zone = zones[z];
+    engine::ContactZone& cz = def.zones[z];
+    if (!given(zone, "COULOMB"))
+      throw zone.error("COULOMB", "the friction coefficient mu (>= 0) with FROTTEMENT='COULOMB'", "none");
+    cz.mu = zone.real("COULOMB");
+    for (const char* kw : {"SEUIL_INIT", "COEF_MATR_FROT"})
+      if (given(zone, kw))
+        throw zone.error(kw, "no such setting", "a value",
+                         {std::string(kw) == "SEUIL_INIT"
+                              ? "it starts code_aster's fixed point on the Tresca threshold; lunaster solves Coulomb's "
+                                "law within Newton from the first iteration and needs no initial threshold"
+                              : "it scales code_aster's symmetric approximation of the friction matrix; lunaster "
+                                "assembles the consistent (unsymmetric) tangent, which needs no factor"});
+    FrictionEnforcement how;
+    if (continuous) {
+      const std::string algo = given(zone, "ALGO_FROT") ? zone.text("ALGO_FROT") : "STANDARD";
+      how = algo == "PENALISATION" ? FrictionEnforcement::Penalty : FrictionEnforcement::AugmentedLagrangian;
+      if (how == FrictionEnforcement::Penalty) {
+        if (!given(zone, "COEF_PENA_FROT"))
+          throw zone.error("COEF_PENA_FROT", "the tangential penalty (Pa/m) with ALGO_FROT='PENALISATION'", "none");
+        if (given(zone, "COEF_FROT"))
+          throw zone.error("COEF_FROT", "no COEF_FROT with ALGO_FROT='PENALISATION' (COEF_PENA_FROT)", "a value");
+        cz.coef_frot = zone.real("COEF_PENA_FROT");
+      } else {
+        if (given(zone, "COEF_PENA_FROT"))
+          throw zone.error("COEF_PENA_FROT", "no COEF_PENA_FROT with ALGO_FROT='STANDARD' (COEF_FROT)", "a value");
+        cz.coef_frot = given(zone, "COEF_FROT") ? zone.real("COEF_FROT") : 100.0;
+      }
+    } else {
+      // code_aster (CONTACT3_3): friction is allowed only with a penalised normal contact.
+      if (def.method != engine::ContactMethod::DiscretePenalty)
+        throw zone.error("ALGO_CONT", "'PENALISATION' with FROTTEMENT='COULOMB' and FORMULATION='DISCRETE'",
+                         "'" + (given(zone, "ALGO_CONT") ? zone.text("ALGO_CONT") : std::string("CONTRAINTE")) + "'",
+                         {"as in code_aster, discrete friction is penalised (E_T) and needs a penalised normal "
+                          "contact (E_N); FORMULATION='CONTINUE' has exact friction (ALGO_FROT='STANDARD')"});
+      if (!given(zone, "E_T"))
+        throw zone.error("E_T", "the tangential penalty stiffness (N/m) with FROTTEMENT='COULOMB'", "none");
+      how = FrictionEnforcement::Penalty;
+      cz.coef_frot = zone.real("E_T");
+    }
+    if (z > 0 && how != def.friction)
+      throw zone.error("ALGO_FROT", "the same friction algorithm in every zone", "another one than zone 1's");
+    def.friction = how;
+  }
+}
+
+}  // namespace
+
 ConceptPtr defi_contact(const Args& args, Session& session) {
   auto result = std::make_shared<CharContact>();
   result->modele = args.concept_as<Modele>("MODELE");
@@ -44,6 +127,7 @@ ConceptPtr defi_contact(const Args& args, Session& session) {
     def.method = method;
     def.zones.push_back(read_contact_zone(zone, *mo.maillage->mesh, mo.dim, method));
   }
+  read_friction(args, continuous, def);
   // On a mesh in parts the surfaces are checked whole.
   warn_contact_surfaces(args.factors("ZONE"), contact_surfaces(def, mo), *mo.maillage, session, true);
   return result;

@@ -62,17 +62,43 @@ double smallest_edge(const Mesh& mesh, const std::vector<int>& cells) {
   return h;
 }
 
-std::vector<std::string> contact_state_components(int dim, bool pressure) {
+std::vector<std::string> contact_state_components(int dim, bool pressure, bool friction) {
   std::vector<std::string> cmps = {"CONT", "JEU", "RN", "RNX", "RNY"};
   if (dim == 3) cmps.push_back("RNZ");
   if (pressure) cmps.push_back("PRES");
+  if (!friction) return cmps;
+  for (const char* c : {"GLIX", "GLIY", "GLI"}) cmps.push_back(c);
+  for (const char* prefix : {"RTA", "RTG", "R"}) {
+    const std::string p = prefix;
+    cmps.push_back(p + "X"), cmps.push_back(p + "Y");
+    if (dim == 3) cmps.push_back(p + "Z");
+  }
+  cmps.push_back("R");
   return cmps;
 }
 
-NodalField nodal_contact_field(const std::vector<NodalContactState>& states, int n_nodes, int dim) {
-  const std::vector<std::string> cmps = contact_state_components(dim, true);
+void set_friction_components(NodalField& field, int node, int dim, int status, const double* slip,
+                             const double* tangential, const double* normal) {
+  const int first = field.n_components() - (3 + 3 * dim + 1);
+  field.set(node, 0, status);
+  field.set(node, first, slip[0]);
+  field.set(node, first + 1, dim == 3 ? slip[1] : 0.0);
+  field.set(node, first + 2, std::sqrt(slip[0] * slip[0] + (dim == 3 ? slip[1] * slip[1] : 0.0)));
+  const int stick = first + 3, slide = stick + dim, whole = slide + dim;
+  double r2 = 0.0;
+  for (int k = 0; k < dim; ++k) {
+    field.set(node, (status == 2 ? slide : stick) + k, tangential[k]);
+    const double r = normal[k] + tangential[k];
+    field.set(node, whole + k, r);
+    r2 += r * r;
+  }
+  field.set(node, whole + dim, std::sqrt(r2));
+}
+
+NodalField nodal_contact_field(const std::vector<NodalContactState>& states, int n_nodes, int dim, bool friction) {
+  const std::vector<std::string> cmps = contact_state_components(dim, true, friction);
   NodalField field(cmps, n_nodes);
-  const int pres = static_cast<int>(cmps.size()) - 1;
+  const int pres = 3 + dim;
   for (const auto& s : states) {
     const double* f = s.force;
     field.set(s.node, 0, s.active ? 1.0 : 0.0);
@@ -80,6 +106,7 @@ NodalField nodal_contact_field(const std::vector<NodalContactState>& states, int
     field.set(s.node, 2, std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]));
     for (int k = 0; k < dim; ++k) field.set(s.node, 3 + k, f[k]);
     field.set(s.node, pres, s.pressure);
+    if (friction) set_friction_components(field, s.node, dim, s.active ? s.status : 0, s.slip, s.tangential, s.force);
   }
   return field;
 }

@@ -50,6 +50,13 @@ inline constexpr ContactMethod ContactMethod::MortarLagrange{ContactDiscretisati
 inline constexpr ContactMethod ContactMethod::MortarPenalty{ContactDiscretisation::MortarSegments,
                                                             ContactEnforcement::Penalty};
 
+/// How Coulomb friction is enforced at the points of a point discretisation (coulomb_law.hpp).
+enum class FrictionEnforcement {
+  None,                 ///< frictionless (FROTTEMENT='SANS')
+  AugmentedLagrangian,  ///< LAGS_F1[, LAGS_F2] semi-multipliers, stick exact (CONTINUE, ALGO_FROT='STANDARD')
+  Penalty,              ///< an elastic stick stiffness with history (CONTINUE ALGO_FROT='PENALISATION'; DISCRETE E_T)
+};
+
 enum class IntegrationScheme { Auto, Gauss, Simpson, NewtonCotes, Nodes };
 enum class ContactInit { No, Yes, Interpenetrated };
 enum class FixedPointOrNewton { FixedPoint, Newton };
@@ -69,6 +76,11 @@ struct ContactZone {
   double tole_proj_ext = 0.5;    ///< TOLE_PROJ_EXT: accepted projection distance outside a master cell (reference units)
   double dist_mait = 0.0;        ///< DIST_MAIT: thickness added to the master surface (m, mortar)
   double dist_escl = 0.0;        ///< DIST_ESCL: thickness added to the slave surface (m, mortar)
+  // ---- Coulomb friction (ContactDefinition::friction) ----
+  double mu = 0.0;               ///< COULOMB: the friction coefficient (>= 0)
+  /// COEF_FROT (augmented Lagrangian, 1/m: the slip that reaches the slip bound times it is
+  /// one) or the stick stiffness (penalty: COEF_PENA_FROT, Pa/m; discrete E_T, N/m per node).
+  double coef_frot = 100.0;
   std::string slave_group, master_group;  ///< mesh group names, for messages (may be empty)
 };
 
@@ -86,6 +98,7 @@ struct ContactDefinition {
   int iter_geom_maxi = 10;
   int nb_iter_geom = 2;      ///< with REAC_GEOM='CONTROLE'
   double resi_geom = 0.01;
+  FrictionEnforcement friction = FrictionEnforcement::None;  ///< FROTTEMENT='COULOMB' and its ALGO_FROT
   double modulus = 0.0;      ///< largest Young's modulus of the model (Pa; scales mortar's complementarity constant)
   /// AXIS model (2D, x = r): every surface measure is r dl per radian, as the AXIS elements'
   /// (integration-point and mortar weights, nodal tributary areas), so contact pressures stay

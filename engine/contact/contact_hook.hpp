@@ -143,6 +143,9 @@ class ContactHook {
   /// State at the start of a step, and its restoration (step subdivision).
   virtual ContactSnapshot snapshot() const { return {}; }
   virtual void restore(const ContactSnapshot& /*state*/) {}
+  /// A step converged at u: the contact history (friction's statuses and tractions) at its end
+  /// becomes the next step's start. Called before the step's results are written.
+  virtual void commit_step(const Vector& /*u*/) {}
 };
 
 }  // namespace lunaster::engine

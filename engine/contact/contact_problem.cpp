@@ -8,6 +8,7 @@
 #include <Eigen/SparseCholesky>
 
 #include "engine/contact/compatibility.hpp"
+#include "engine/contact/coulomb_law.hpp"
 #include "engine/contact/surface_element.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/memory.hpp"
@@ -59,6 +60,22 @@ ContactProblem::ContactProblem(const ContactDefinition& definition, const Mesh& 
   }
   if (law_->has_multipliers()) multiplier_nodes_.assign(mult.begin(), mult.end());
   geometry_nodes_.assign(geometry.begin(), geometry.end());
+  if (def_.friction != FrictionEnforcement::None) {
+    friction_ = make_coulomb_law(*law_, def_.friction, def_.method.how == ContactEnforcement::Springs);
+    friction_components_ = friction_->multipliers(dim_);
+    for (size_t z = 0; z < def_.zones.size(); ++z) {
+      const ContactZone& zone = def_.zones[z];
+      if (!(zone.mu >= 0.0) || !std::isfinite(zone.mu) || !(zone.coef_frot > 0.0) || !std::isfinite(zone.coef_frot))
+        throw DeckError("contact zone " + std::to_string(z + 1) + ": friction needs a coefficient >= 0 and a " +
+                        "tangential coefficient > 0, got " + std::to_string(zone.mu) + " and " +
+                        std::to_string(zone.coef_frot));
+      mu_.push_back(zone.mu);
+      coef_t_.push_back(zone.coef_frot);
+    }
+    states_.resize(points_.size());
+    if (!friction_components_.empty() && multiplier_nodes_.empty())
+      multiplier_nodes_.assign(mult.begin(), mult.end());
+  }
 }
 
 void ContactProblem::set_dirichlet(const std::vector<DirichletValue>& dirichlet) {
@@ -73,13 +90,26 @@ std::vector<LinearRelation> ContactProblem::take_relations(const std::function<b
 }
 
 void ContactProblem::add_dofs(DofMap& dofs) {
-  for (int node : multiplier_nodes_) multiplier_eqs_.push_back(dofs.add(node, LAGS_C));
+  if (law_->has_multipliers())
+    for (int node : multiplier_nodes_) multiplier_eqs_.push_back(dofs.add(node, LAGS_C));
+  for (int component : friction_components_)
+    if (component != LAGS_C)
+      for (int node : multiplier_nodes_) dofs.add(node, component);
   relations_.add_dofs(dofs, imposed_);
   dofs_ = dofs;
 }
 
+double ContactProblem::interpolate(const Vector& u, const ContactPoint& p, int component) const {
+  double value = 0.0;
+  for (int a = 0; a < p.n_slave; ++a) {
+    const int eq = dofs_.dof(p.slave_nodes[a], component);
+    if (eq >= 0) value += p.phi[a] * u[eq];
+  }
+  return value;
+}
+
 double ContactProblem::multiplier(const Vector& u, const ContactPoint& p) const {
-  if (multiplier_nodes_.empty()) return 0.0;
+  if (multiplier_nodes_.empty() || !law_->has_multipliers()) return 0.0;
   double lambda = 0.0;
   for (int a = 0; a < p.n_slave; ++a) {
     const int eq = dofs_.dof(p.slave_nodes[a], LAGS_C);
@@ -107,7 +137,7 @@ bool ContactProblem::statuses_in_newton() const {
 }
 
 bool ContactProblem::coupled() const {
-  if (multiplier_nodes_.empty()) return false;
+  if (multiplier_nodes_.empty() || !law_->has_multipliers()) return false;
   if (!allow_condensation_) return true;
   for (const auto& p : points_)
     if (p.paired && p.active && law_->coefficients(p, rho(p.zone)).alpha != 0.0) return true;
@@ -152,13 +182,16 @@ std::array<bool, 3> ContactProblem::displacement_components() const {
 }
 
 MatrixKind ContactProblem::matrix_kind() const {
-  if (!law_->symmetric()) return MatrixKind::General;
+  if (!law_->symmetric() || (friction_ && !friction_->symmetric())) return MatrixKind::General;
   if (coupled() || !relations_.empty()) return MatrixKind::SymmetricIndefinite;
   return MatrixKind::SymmetricPositiveDefinite;
 }
 
 void ContactProblem::share_among_ranks(const std::vector<char>& owned_nodes) {
   shared_ = parallel::size() > 1;
+  if (shared_ && friction_)
+    throw DeckError("contact with friction runs on one process: the friction states of the contact points are "
+                    "not shared among the ranks of an MPI run (run it without mpirun)");
   point_rank_.assign(points_.size(), 0);
   if (!shared_) return;
   // The projections go to the ranks in equal consecutive blocks of points, whatever the
@@ -424,6 +457,7 @@ int ContactProblem::update_statuses(const Vector& u) {
 }
 
 void ContactProblem::begin_step(const Vector& u, const Log& log) {
+  u_start_ = u;
   n_status_iter_ = 0;
   n_geom_iter_ = 0;
   n_pairings_ = 0;
@@ -442,7 +476,12 @@ ContactSnapshot ContactProblem::snapshot() const {
   for (const auto& p : points_) s.active.push_back(p.active);
   // Every point's state (status and history) in the hook's own part of the snapshot. The
   // frictionless laws keep their status in the point and no history: at a step's start the
-  // state there is the state at the step's end.
+  // state there is the state at the step's end. Friction keeps its own states (the normal
+  // statuses stay in `active`).
+  if (friction_) {
+    s.pairing = std::make_shared<PointStates::Snapshot>(states_.snapshot());
+    return s;
+  }
   auto states = std::make_shared<PointStates::Snapshot>();
   states->present.resize(points_.size());
   for (size_t i = 0; i < points_.size(); ++i)
@@ -456,8 +495,25 @@ void ContactProblem::restore(const ContactSnapshot& state) {
   if (state.active.size() != points_.size()) return;  // a snapshot of nothing (taken before add_dofs)
   first_step_ = state.first_step;
   const auto* states = static_cast<const PointStates::Snapshot*>(state.pairing.get());
+  if (friction_) {
+    if (states) states_.restore(*states);
+    for (size_t i = 0; i < points_.size(); ++i) points_[i].active = state.active[i] != 0;
+    return;
+  }
   for (size_t i = 0; i < points_.size(); ++i)
     points_[i].active = states ? states->present[i].status != PointStatus::Open : state.active[i] != 0;
+}
+
+void ContactProblem::commit_step(const Vector& u) {
+  if (!friction_) return;
+  // The states at the converged u (the last evaluation may have been at another iterate).
+  Vector residual = Vector::Zero(u.size());
+  add_frictional_terms(u, nullptr, residual);
+  // The step as its results report it (write_fields comes after the commit).
+  const PointStates::Snapshot before = states_.snapshot();
+  reported_start_ = before.start;
+  reported_u_start_ = u_start_;
+  states_.commit();
 }
 
 bool ContactProblem::settle(const Vector& u, const Log& log) {
@@ -536,6 +592,10 @@ bool ContactProblem::add_residual(const Vector& u, Vector& residual) {
   update_statuses_in_newton(u);
   std::vector<Triplet> relation_terms;  // a few per QUAD8 face: not worth a residual-only path
   relations_.add_to_system(dofs_, u, relation_terms, residual);
+  if (friction_) {
+    add_frictional_terms(u, nullptr, residual);
+    return true;
+  }
   for (const ContactPoint& p : points_) {
     if (p.wjac == 0.0) continue;
     add_point_residual(p, respond(p, multiplier(u, p), p.gap.value(u)), residual);
@@ -555,6 +615,19 @@ PointResponse ContactProblem::respond(const ContactPoint& p, double lambda, doub
   return law_->evaluate(in, start, state);
 }
 
+void ContactProblem::slip_gaps(const ContactPoint& p, LinearGap* slips) const {
+  double t[2][3];
+  tangent_frame(p.normal, dim_, t);
+  const MasterSurface& master = *masters_[p.zone];
+  const int k = master.local_index(p.master_cell);
+  double nm[kMaxSurfaceNodes];
+  surface_shape(master.geometry_type(k), p.xi_master, nm, nullptr, nullptr);
+  const auto& mnodes = master.cell_nodes(k);
+  for (int a = 0; a < dim_ - 1; ++a)
+    slips[a] = make_linear_gap(mesh_.coords, dofs_, dim_, p.slave_nodes, p.phi, p.n_slave, mnodes.data(), nm,
+                               static_cast<int>(mnodes.size()), t[a]);
+}
+
 PointKinematics ContactProblem::kinematics(const ContactPoint& p, const Vector& u, const Vector& u_start,
                                            int n_tangents) const {
   PointKinematics in;
@@ -564,21 +637,81 @@ PointKinematics ContactProblem::kinematics(const ContactPoint& p, const Vector& 
   in.z[0] = multiplier(u, p);
   in.weight = p.wjac;
   in.coefficient = rho(p.zone);
+  if (friction_) {
+    in.mu = mu_[p.zone], in.coefficient_t = coef_t_[p.zone];
+    // The multipliers in the frictional law's order (LAGS_C first when the normal law has it).
+    for (size_t k = 0; k < friction_components_.size(); ++k) in.z[k] = interpolate(u, p, friction_components_[k]);
+  }
   if (n_tangents == 0 || !p.paired) return in;
-  double t[2][3];
-  tangent_frame(p.normal, dim_, t);
-  const MasterSurface& master = *masters_[p.zone];
-  const int k = master.local_index(p.master_cell);
-  double nm[kMaxSurfaceNodes];
-  surface_shape(master.geometry_type(k), p.xi_master, nm, nullptr, nullptr);
-  const auto& mnodes = master.cell_nodes(k);
+  LinearGap slips[2];
+  slip_gaps(p, slips);
   for (int a = 0; a < n_tangents; ++a) {
-    const LinearGap slip = make_linear_gap(mesh_.coords, dofs_, dim_, p.slave_nodes, p.phi, p.n_slave, mnodes.data(),
-                                           nm, static_cast<int>(mnodes.size()), t[a]);
-    in.q[1 + a] = slip.value(u);
-    in.dq_step[1 + a] = in.q[1 + a] - slip.value(u_start);
+    in.q[1 + a] = slips[a].value(u);
+    in.dq_step[1 + a] = in.q[1 + a] - slips[a].value(u_start);
   }
   return in;
+}
+
+void ContactProblem::frictional_point(size_t i, const Vector& u, Vector& residual, LocalTangent* local,
+                                      bool condensed) {
+  const ContactPoint& p = points_[i];
+  const int nt = dim_ - 1;
+  PointKinematics in = kinematics(p, u, u_start_.size() == u.size() ? u_start_ : u, p.paired ? nt : 0);
+  in.n_tangents = nt;  // an unpaired point still holds its semi-multipliers' rows
+  PointState state = states_.present(i);
+  state.status = p.active ? PointStatus::Stick : PointStatus::Open;  // the normal status, the loops' own
+  const PointResponse r = friction_->evaluate(in, states_.start(i), state);
+  states_.present(i) = state;
+  LinearGap slips[2];
+  if (p.paired) slip_gaps(p, slips);
+  const LinearGap* gaps[3] = {&p.gap, &slips[0], &slips[1]};
+  for (int q = 0; q < r.n_q; ++q)
+    if (r.r_q[q] != 0.0) add_gradient(*gaps[q], r.r_q[q], residual);
+  const int n_z = static_cast<int>(friction_components_.size());
+  for (int k = 0; k < n_z; ++k)
+    for (int a = 0; a < p.n_slave; ++a) residual[dofs_.dof(p.slave_nodes[a], friction_components_[k])] += p.phi[a] * r.r_z[k];
+  if (!local) return;
+  // Every entry the pairing allows, zeros included: the pattern follows the pairing only.
+  for (int q = 0; q < r.n_q; ++q)
+    for (int j = 0; j < r.n_q; ++j) local->add_outer(*gaps[q], *gaps[j], r.k_qq[q][j]);
+  int lz[kMaxPointMultipliers][8];
+  double on[kMaxPointMultipliers];
+  for (int k = 0; k < n_z; ++k) {
+    on[k] = condensed && friction_components_[k] == LAGS_C ? 0.0 : 1.0;
+    for (int a = 0; a < p.n_slave; ++a) lz[k][a] = local->index(dofs_.dof(p.slave_nodes[a], friction_components_[k]));
+  }
+  for (int q = 0; q < r.n_q; ++q) {
+    const LinearGap& g = *gaps[q];
+    int lg[LinearGap::kMaxTerms];
+    for (int m = 0; m < g.n; ++m) lg[m] = local->index(g.eq[m]);
+    for (int k = 0; k < n_z; ++k)
+      for (int a = 0; a < p.n_slave; ++a) {
+        const double qz = on[k] * r.k_qz[q][k] * p.phi[a], zq = on[k] * r.k_zq[k][q] * p.phi[a];
+        for (int m = 0; m < g.n; ++m) {
+          local->add_at(lg[m], lz[k][a], qz * g.coef[m]);
+          local->add_at(lz[k][a], lg[m], zq * g.coef[m]);
+        }
+      }
+  }
+  for (int k = 0; k < n_z; ++k)
+    for (int l = 0; l < n_z; ++l)
+      for (int a = 0; a < p.n_slave; ++a)
+        for (int b = 0; b < p.n_slave; ++b)
+          local->add_at(lz[k][a], lz[l][b], on[k] * on[l] * r.k_zz[k][l] * p.phi[a] * p.phi[b]);
+}
+
+void ContactProblem::add_frictional_terms(const Vector& u, std::vector<Triplet>* tangent, Vector& residual) {
+  const bool condensed = !coupled();
+  LocalTangent local;
+  int group = -1;
+  for (size_t i = 0; i < points_.size(); ++i) {
+    const ContactPoint& p = points_[i];
+    const int key = p.slave_cell >= 0 ? p.slave_cell : -2 - static_cast<int>(i);
+    if (tangent && key != group) local.flush(*tangent), group = key;
+    if (p.wjac == 0.0) continue;
+    frictional_point(i, u, residual, tangent && !(shared_ && !touches_mine_[i]) ? &local : nullptr, condensed);
+  }
+  if (tangent) local.flush(*tangent);
 }
 
 void ContactProblem::add_point_residual(const ContactPoint& p, const PointResponse& r, Vector& residual) const {
@@ -591,6 +724,10 @@ void ContactProblem::add_to_system(const Vector& u, std::vector<Triplet>& tangen
   if (def_.geometry_loop == FixedPointOrNewton::Newton) pair(u);
   update_statuses_in_newton(u);
   relations_.add_to_system(dofs_, u, tangent, residual);
+  if (friction_) {
+    add_frictional_terms(u, &tangent, residual);
+    return;
+  }
   const bool condensed = !coupled();
   // The points of a slave cell are consecutive and share their DOFs: their terms are
   // summed per cell and emitted once.
@@ -688,9 +825,55 @@ void ContactProblem::recover(Vector& u) {
   for (int i = 0; i < n_mult; ++i) u[multiplier_eqs_[i]] = r.local[i] >= 0 ? lambda[r.local[i]] : 0.0;
 }
 
+ContactProblem::PointFriction ContactProblem::friction_at(size_t i, const Vector& u) const {
+  const ContactPoint& p = points_[i];
+  PointFriction f;
+  if (!p.paired || p.wjac == 0.0) return f;
+  const int nt = dim_ - 1;
+  // The step that ended at u: from its start (kept by commit_step) to u.
+  const bool committed = reported_start_.size() == points_.size() && reported_u_start_.size() == u.size();
+  const Vector& from = committed ? reported_u_start_ : u_start_.size() == u.size() ? u_start_ : u;
+  PointKinematics in = kinematics(p, u, from, nt);
+  PointState state = states_.present(i);
+  state.status = p.active ? PointStatus::Stick : PointStatus::Open;
+  const PointResponse r = friction_->evaluate(in, committed ? reported_start_[i] : states_.start(i), state);
+  f.status = static_cast<int>(r.status);
+  double t[2][3];
+  tangent_frame(p.normal, dim_, t);
+  for (int a = 0; a < nt; ++a) {
+    f.slip[a] = in.dq_step[1 + a];
+    // The force on the slave from the master: minus the force conjugate to its slip.
+    for (int k = 0; k < 3; ++k) f.tangential[k] -= r.r_q[1 + a] * t[a][k];
+  }
+  return f;
+}
+
+void ContactProblem::report_semi_multipliers(const Vector& u, ResultStep& step) const {
+  // The unknowns LAGS_F1[, LAGS_F2] are tangential tractions (Pa); DEPL reports them as
+  // code_aster's, over the node's bound mu p (p = -LAGS_C): |LAGS_F| <= 1, 1 in slip, 0 where
+  // the node carries no pressure.
+  auto it = step.nodal.find(kDisplacementField);
+  if (it == step.nodal.end() || !law_->has_multipliers()) return;
+  NodalField& depl = it->second;
+  std::vector<int> zone_of(mesh_.n_nodes(), -1);
+  for (const auto& p : points_)
+    for (int a = 0; a < p.n_slave; ++a) zone_of[p.slave_nodes[a]] = p.zone;
+  for (int component : friction_components_) {
+    if (component == LAGS_C) continue;
+    const int column = depl.component_index(component_name(component));
+    if (column < 0) continue;
+    for (int node : multiplier_nodes_) {
+      const double bound = -mu_[zone_of[node]] * u[dofs_.dof(node, LAGS_C)];
+      depl.set(node, column, bound > 0.0 ? u[dofs_.dof(node, component)] / bound : 0.0);
+    }
+  }
+}
+
 void ContactProblem::write_fields(const Vector& u, ResultStep& step) const {
+  if (friction_) report_semi_multipliers(u, step);
   // Nodal contact forces on the slave nodes: f_a = -sum w p phi_a n over the active points.
-  std::vector<double> force(3 * static_cast<size_t>(mesh_.n_nodes()), 0.0);
+  const size_t n_nodes = static_cast<size_t>(mesh_.n_nodes());
+  std::vector<double> force(3 * n_nodes, 0.0);
   for (const auto& p : points_) {
     if (!p.active) continue;
     const double pressure = law_->pressure(p, multiplier(u, p), p.gap.value(u), rho(p.zone));
@@ -698,6 +881,21 @@ void ContactProblem::write_fields(const Vector& u, ResultStep& step) const {
       for (int k = 0; k < 3; ++k)
         force[3 * static_cast<size_t>(p.slave_nodes[a]) + k] -= p.wjac * pressure * p.phi[a] * p.normal[k];
   }
+  // With friction: the tangential forces, and per node the status and slip of the point that
+  // weighs most there (the node's own point for node-to-segment).
+  std::vector<PointFriction> at(friction_ ? points_.size() : 0);
+  std::vector<double> tangential(friction_ ? 3 * n_nodes : 0, 0.0), weight_at(friction_ ? n_nodes : 0, 0.0);
+  std::vector<int> point_of(friction_ ? n_nodes : 0, -1);
+  for (size_t i = 0; i < at.size(); ++i) {
+    const ContactPoint& p = points_[i];
+    at[i] = friction_at(i, u);
+    for (int a = 0; a < p.n_slave; ++a) {
+      const size_t node = static_cast<size_t>(p.slave_nodes[a]);
+      for (int k = 0; k < 3; ++k) tangential[3 * node + k] += p.phi[a] * at[i].tangential[k];
+      if (p.phi[a] > weight_at[node]) weight_at[node] = p.phi[a], point_of[node] = static_cast<int>(i);
+    }
+  }
+  const bool friction = friction_ != nullptr;
   if (disc_->nodal()) {
     // One point per slave node: its status, frozen-pairing gap and pressure.
     std::vector<NodalContactState> states(points_.size());
@@ -709,11 +907,15 @@ void ContactProblem::write_fields(const Vector& u, ResultStep& step) const {
       s.gap = p.paired ? p.gap.value(u) : 0.0;
       for (int k = 0; k < 3; ++k) s.force[k] = force[3 * static_cast<size_t>(s.node) + k];
       s.pressure = p.active ? law_->pressure(p, multiplier(u, p), s.gap, rho(p.zone)) : 0.0;
+      if (!friction) continue;
+      s.status = at[i].status;
+      for (int k = 0; k < 3; ++k) s.tangential[k] = tangential[3 * static_cast<size_t>(s.node) + k];
+      s.slip[0] = at[i].slip[0], s.slip[1] = at[i].slip[1];
     }
-    step.nodal[kContactStateField] = nodal_contact_field(states, mesh_.n_nodes(), dim_);
+    step.nodal[kContactStateField] = nodal_contact_field(states, mesh_.n_nodes(), dim_, friction);
     return;
   }
-  NodalField field(contact_state_components(dim_, false), mesh_.n_nodes());
+  NodalField field(contact_state_components(dim_, false, friction), mesh_.n_nodes());
   auto set_force = [&](int node) {
     const double* f = &force[3 * static_cast<size_t>(node)];
     field.set(node, 2, std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]));
@@ -735,10 +937,17 @@ void ContactProblem::write_fields(const Vector& u, ResultStep& step) const {
     double gap = 0.0;
     if (mp.found)
       for (int k = 0; k < 3; ++k) gap += (xyz[3 * static_cast<size_t>(node) + k] - mp.x[k]) * mp.normal[k];
-    const double lambda = u[dofs_.dof(node, LAGS_C)];
-    field.set(node, 0, mp.found && law_->status(lambda, gap, rho(z)) ? 1.0 : 0.0);
+    const double lambda = law_->has_multipliers() ? u[dofs_.dof(node, LAGS_C)] : 0.0;
+    const bool closed = mp.found && law_->status(lambda, gap, rho(z));
+    field.set(node, 0, closed ? 1.0 : 0.0);
     field.set(node, 1, gap);
     set_force(node);
+    if (!friction) continue;
+    const int i = point_of[node];
+    const double none[2] = {0.0, 0.0};
+    set_friction_components(field, node, dim_, closed && i >= 0 ? std::max(at[i].status, 1) : 0,
+                            i >= 0 ? at[i].slip : none, &tangential[3 * static_cast<size_t>(node)],
+                            &force[3 * static_cast<size_t>(node)]);
   }
   step.nodal[kContactStateField] = std::move(field);
 }

@@ -48,6 +48,7 @@ class ContactProblem final : public ContactHook {
   void write_fields(const Vector& u, ResultStep& step) const override;
   ContactSnapshot snapshot() const override;
   void restore(const ContactSnapshot& state) override;
+  void commit_step(const Vector& u) override;
 
   // ---- inspection (tests, reports) ----
   const std::vector<ContactPoint>& points() const { return points_; }
@@ -56,6 +57,11 @@ class ContactProblem final : public ContactHook {
   const LinearRelations& relations() const { return relations_; }
   /// The law (its `symmetric()` decides whether the system needs an unsymmetric factorisation).
   const ContactLaw& law() const { return *law_; }
+  /// The frictional law on top of it (coulomb_law.hpp), or null without friction.
+  const PointLaw* friction() const { return friction_.get(); }
+  /// Every point's state (status open/stick/slip, the law's history): at the step's start and
+  /// at the last evaluation. Kept with friction only.
+  const PointStates& states() const { return states_; }
   /// What a law reads at point p (point_law.hpp), the pairing frozen: q = its normal gap and
   /// its tangential relative displacement along tangent_frame(normal) (x_slave - x_master),
   /// dq_step their change since `u_start` (the step's start), z its LAGS_C, its weight and
@@ -106,12 +112,39 @@ class ContactProblem final : public ContactHook {
   PointResponse respond(const ContactPoint& p, double lambda, double g) const;
   /// Point p's terms of the residual: its gap gradient and its multiplier rows.
   void add_point_residual(const ContactPoint& p, const PointResponse& r, Vector& residual) const;
+  /// The slip gaps of a paired point: its relative displacement along tangent_frame(normal)
+  /// (dim - 1 of them; x_slave - x_master).
+  void slip_gaps(const ContactPoint& p, LinearGap* slips) const;
+  /// A multiplier component (LAGS_C, LAGS_F1 ...) interpolated at point p.
+  double interpolate(const Vector& u, const ContactPoint& p, int component) const;
+  /// With friction: point i's response at u (its state at the present iterate updated), its
+  /// residual, and with `local` its tangent (LAGS_C entries zero when `condensed`).
+  void frictional_point(size_t i, const Vector& u, Vector& residual, LocalTangent* local, bool condensed);
+  /// With friction, what CONT_NOEU reports of point i at u: its status, the tangential force on
+  /// the slave (N, global axes) and the slip of the step along its tangents.
+  struct PointFriction {
+    int status = 0;
+    double tangential[3] = {0.0, 0.0, 0.0};
+    double slip[2] = {0.0, 0.0};
+  };
+  PointFriction friction_at(size_t i, const Vector& u) const;
+  /// DEPL's LAGS_F1[, LAGS_F2] as code_aster reports them: the traction over mu p.
+  void report_semi_multipliers(const Vector& u, ResultStep& step) const;
+  /// With friction: every point's residual, and with `tangent` every point's tangent.
+  void add_frictional_terms(const Vector& u, std::vector<Triplet>* tangent, Vector& residual);
 
   const ContactDefinition def_;
   const Mesh& mesh_;
   const int dim_;
   std::unique_ptr<Discretisation> disc_;
   std::unique_ptr<ContactLaw> law_;
+  std::unique_ptr<PointLaw> friction_;     ///< Coulomb on law_, or null (coulomb_law.hpp)
+  std::vector<int> friction_components_;   ///< the multipliers friction_ reads, in its order
+  std::vector<double> mu_, coef_t_;        ///< per zone: COULOMB, the tangential coefficient
+  PointStates states_;                     ///< per point, with friction
+  Vector u_start_;                         ///< u at the step's start (the slips are measured from it)
+  std::vector<PointState> reported_start_; ///< the last committed step's start states (its results)
+  Vector reported_u_start_;                ///< and its start u
   std::vector<std::unique_ptr<MasterSurface>> masters_;  ///< one per zone
   std::vector<ContactPoint> points_;
   std::vector<int> multiplier_nodes_;

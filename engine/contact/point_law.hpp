@@ -59,6 +59,8 @@ struct PointKinematics {
   double z[kMaxPointMultipliers] = {};         ///< the multipliers, in the order of `multipliers` (Pa)
   double weight = 0.0;                         ///< the point's weight in the current configuration (m, m^2)
   double coefficient = 0.0;                    ///< the zone's coefficient of the law (rho, E_N ...)
+  double mu = 0.0;                             ///< the zone's friction coefficient (frictional laws)
+  double coefficient_t = 0.0;                  ///< the zone's tangential coefficient (COEF_FROT, E_T ...)
 };
 
 /// What a law returns at a point (n_q = 1 + n_tangents, n_z = the law's multiplier count).

@@ -348,6 +348,9 @@ class RelationsHook final : public ContactHook {
     if (contact_) contact_->write_initial_fields(step);
   }
   ContactSnapshot snapshot() const override { return contact_ ? contact_->snapshot() : ContactSnapshot{}; }
+  void commit_step(const Vector& u) override {
+    if (contact_) contact_->commit_step(u);
+  }
   void restore(const ContactSnapshot& state) override {
     if (contact_) contact_->restore(state);
   }

@@ -39,6 +39,7 @@ class RenumberedHook final : public ContactHook {
   void write_initial_fields(ResultStep& step) const override { inner_.write_initial_fields(step); }
   ContactSnapshot snapshot() const override { return inner_.snapshot(); }
   void restore(const ContactSnapshot& state) override { inner_.restore(state); }
+  void commit_step(const Vector& u) override { inner_.commit_step(to_hook(u)); }
 
  private:
   Vector to_hook(const Vector& v) const;

@@ -79,6 +79,7 @@ std::vector<ResultStep> StaticSolver::step_through(const std::vector<double>& in
   const TimeStepper::Commit commit = [this](double t, const Vector& v) {
     ++stats_.instants;
     tangent_->commit();
+    if (contact_) contact_->commit_step(v);
     steps_.push_back(results_->step(static_cast<int>(steps_.size()), t, v, false));
   };
   for (size_t i = 1; i < instants.size(); ++i) {

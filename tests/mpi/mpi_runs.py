@@ -163,7 +163,9 @@ SERIAL_ONLY = {"vmis_isot_line_bar": "von Mises plasticity (COMPORTEMENT VMIS_IS
                                      "driver assembles a nonlinear behaviour on a whole model only, and refuses a "
                                      "model shared among ranks",
                "grot_gdep_stretch": "large rotations (COMPORTEMENT DEFORMATION='GROT_GDEP'): a nonlinear response, "
-                                    "refused on a model shared among ranks as above"}
+                                    "refused on a model shared among ranks as above",
+               "friction_patch_2d": "Coulomb friction (DEFI_CONTACT FROTTEMENT='COULOMB'): the contact points' "
+                                    "friction states are not shared among ranks, refused there"}
 
 
 def suite_decks(full):

@@ -41,7 +41,6 @@ const std::map<std::string, std::string> kValidatorOnly = {
     {"CALC_CHAMP/TOUT_ORDRE", "only 'OUI': every step, as when neither NUME_ORDRE nor INST is given"},
     {"POST_RELEVE_T/ACTION/TOUT_ORDRE", "only 'OUI': every step, as when neither NUME_ORDRE nor INST is given"},
     {"IMPR_TABLE/FORMAT", "only 'TABLEAU': the one table format (CSV is TABLEAU with SEPARATEUR)"},
-    {"DEFI_CONTACT/FROTTEMENT", "only 'SANS': the contact hooks are frictionless"},
     {"DEFI_FONCTION/INTERPOL", "only 'LIN': functions are piecewise linear"},
     {"DEFI_LIST_INST/DEFI_LIST/METHODE", "only 'MANUEL': the instants are given by LIST_INST"},
     {"DEFI_LIST_INST/ECHEC/EVENEMENT", "only 'ERREUR': a failed step is the one event handled"},

@@ -1,0 +1,8 @@
+-- Must-fail deck: ALGO_FROT='PENALISATION' without COEF_PENA_FROT.
+-- EXPECT_ERROR: friction_penalty_coefficient_missing\.lua:7: DEFI_CONTACT: ZONE\[1\]\.COEF_PENA_FROT: expected the tangential penalty \(Pa/m\) with ALGO_FROT='PENALISATION', got none
+-- EXPECT_STATUS: 2
+DEBUT()
+MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = '../friction_patch_2d.med' }
+MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN' } }
+CONT = DEFI_CONTACT{ MODELE = MO, FORMULATION = 'CONTINUE', FROTTEMENT = 'COULOMB', ZONE = _F{ GROUP_MA_ESCL = 'AB', GROUP_MA_MAIT = 'EF', COULOMB = 0.3, ALGO_FROT = 'PENALISATION' } }
+FIN()
