@@ -33,6 +33,7 @@ const char* kUsage =
     "                   [--name MESH] -o FILE.med\n"
     "      SSNP121 3D: V1 = [0,1]^3, V2 = [0,1]^2x[1,2]; TYPE hexa8|hexa20|penta6|penta15|tetra4|tetra10;\n"
     "      --v3: a third block V3 = [0,1]^2x[2,3] (faces SURBA3 z=2, SURCH3 z=3, nodes A31..A34), meshed apart\n"
+    "      --x-faces: the sides x = 0 and x = 1 of V1 and V2 as face groups X0_V1 X1_V1 X0_V2 X1_V2\n"
     "  lunaster-meshgen --ring TYPE:NTxNR --sleeve TYPE:NTxNR [--radii A,B,C] [--refine K] [--name MESH] -o FILE.med\n"
     "      quarter ring RING (A <= r <= B) fitted in a sleeve SLEEVE (B <= r <= C), meshed independently\n"
     "      (non-matching on r = B when the NT differ); NT cells along the arc, NR through the thickness;\n"
@@ -69,6 +70,7 @@ struct Options {
   bool glued = false;
   bool gibi_names = false;
   bool test_result = false;
+  bool x_faces = false;
 };
 
 Options parse(int argc, char** argv) {
@@ -81,6 +83,8 @@ Options parse(int argc, char** argv) {
       o.gibi_names = true;
     } else if (a == "--test-result") {
       o.test_result = true;
+    } else if (a == "--x-faces") {
+      o.x_faces = true;
     } else if (a == "--distort" && (i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0)) {
       o.values["--distort"] = "0.2";
     } else if (a == "-o" || a == "--upper" || a == "--lower" || a == "--v1" || a == "--v2" || a == "--block" ||
@@ -267,6 +271,7 @@ int run(int argc, char** argv) {
     opt.v2 = refined(get("--v2").empty() ? "hexa20:4" : get("--v2"), 3, refine);
     if (!get("--v3").empty()) opt.v3 = refined(get("--v3"), 3, refine);
     opt.glued = o.glued;
+    opt.x_faces = o.x_faces;
     mesh = tools::make_ssnp121_3d(opt);
   } else if (ring) {
     tools::RingOptions opt;

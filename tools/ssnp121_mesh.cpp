@@ -424,6 +424,10 @@ Mesh make_ssnp121_3d(const Ssnp121Options3d& o) {
   const int p2 = o.glued ? p1 : b.new_pool();
   BlockGeom v1{{0, 0, 0}, {1, 1, 1}, 3, 0.0, "V1", {{"ENCAST", 2, 0.0}, {"SURESC", 2, 1.0}}, p1};
   BlockGeom v2{{0, 0, 1}, {1, 1, 2}, 3, 0.0, "V2", {{"SURMAI", 2, 1.0}, {"SURCHA", 2, 2.0}}, p2};
+  if (o.x_faces) {
+    v1.faces.push_back({"X0_V1", 0, 0.0}), v1.faces.push_back({"X1_V1", 0, 1.0});
+    v2.faces.push_back({"X0_V2", 0, 0.0}), v2.faces.push_back({"X1_V2", 0, 1.0});
+  }
   BlockMesher(b, o.v1, v1).run();
   BlockMesher(b, o.v2, v2).run();
   if (o.v3.n[0] > 0) {

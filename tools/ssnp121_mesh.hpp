@@ -46,6 +46,9 @@ struct Ssnp121Options3d {
   /// A third block V3 = [0,1]^2 x [2,3] on top of V2, meshed apart (n[0] = 0: none).
   BlockCells v3{engine::CellType::Hexa8, {0, 0, 0}};
   bool glued = false;
+  /// Adds the faces x = 0 and x = 1 of V1 and V2 as face groups X0_V1, X1_V1, X0_V2, X1_V2
+  /// (a load on the sides: the frictional patch test's shear).
+  bool x_faces = false;
 };
 
 /// Unit block [0,1]^d for patch tests.

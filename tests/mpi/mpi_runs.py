@@ -165,7 +165,8 @@ SERIAL_ONLY = {"vmis_isot_line_bar": "von Mises plasticity (COMPORTEMENT VMIS_IS
                "grot_gdep_stretch": "large rotations (COMPORTEMENT DEFORMATION='GROT_GDEP'): a nonlinear response, "
                                     "refused on a model shared among ranks as above",
                "friction_patch_2d": "Coulomb friction (DEFI_CONTACT FROTTEMENT='COULOMB'): the contact points' "
-                                    "friction states are not shared among ranks, refused there"}
+                                    "friction states are not shared among ranks, refused there",
+               "friction_patch_3d": "Coulomb friction, as friction_patch_2d"}
 
 
 def suite_decks(full):
