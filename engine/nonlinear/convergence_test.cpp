@@ -25,7 +25,10 @@ ResidualNorms ConvergenceTest::measure(const Constraints& cons, const Vector& re
   // A load step where loads and reactions vanish (a body moving rigidly before contact closes)
   // has no natural reference: fall back to the size of the terms that make up the internal
   // forces, so that round-off counts as converged.
-  denom = std::max(denom, 1e-6 * stiffness_scale_ * layout_.largest_entry(u, owned_eqs));
+  Vector displacements = u;  // the multipliers (Pa) left out
+  for (int eq = 0; eq < static_cast<int>(displacement_.size()) && eq < displacements.size(); ++eq)
+    if (!displacement_[eq]) displacements[eq] = 0.0;
+  denom = std::max(denom, 1e-6 * stiffness_scale_ * layout_.largest_entry(displacements, owned_eqs));
   norms.relative = denom > 0.0 ? norms.absolute / denom : norms.absolute;
   return norms;
 }

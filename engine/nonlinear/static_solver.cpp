@@ -63,7 +63,9 @@ std::vector<ResultStep> StaticSolver::run(const std::vector<double>& instants) {
   k_scale_ = std::max(matrix_.elastic().ff.nonZeros() ? matrix_.elastic().ff.coeffs().cwiseAbs().maxCoeff() : 0.0,
                       matrix_.elastic().c.nonZeros() ? matrix_.elastic().c.coeffs().cwiseAbs().maxCoeff() : 0.0);
   if (distributed_) k_scale_ = parallel::max_over_ranks(k_scale_);
-  convergence_ = std::make_unique<ConvergenceTest>(options_, layout_, k_scale_);
+  std::vector<char> displacement(dofs_.n_dofs());
+  for (int eq = 0; eq < dofs_.n_dofs(); ++eq) displacement[eq] = dofs_.component_of(eq) <= DZ;
+  convergence_ = std::make_unique<ConvergenceTest>(options_, layout_, k_scale_, std::move(displacement));
   return step_through(instants);
 }
 
