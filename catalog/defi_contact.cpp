@@ -27,13 +27,17 @@ Keyword coulomb() {
 
 std::vector<Keyword> continuous_friction() {
   return {coulomb(),
-          text("ALGO_FROT", "Friction algorithm: STANDARD (semi-multipliers LAGS_F1[, LAGS_F2], |LAGS_F| <= 1 the "
-                            "tangential traction over mu p: sticking points do not slip at all) or PENALISATION (an "
-                            "elastic slip t / COEF_PENA_FROT while sticking). Default STANDARD")
+          text("ALGO_FROT", "Friction algorithm: STANDARD (augmented Lagrangian on the tangential tractions, "
+                            "reported as code_aster's semi-multipliers LAGS_F1[, LAGS_F2] = traction / (mu p), |LAGS_F| "
+                            "<= 1: sticking points do not slip at all) or PENALISATION (an elastic slip t / "
+                            "COEF_PENA_FROT while sticking). Default STANDARD")
               .into_values({"STANDARD", "PENALISATION"}),
-          real("COEF_FROT", "ALGO_FROT='STANDARD': augmentation c of the friction semi-multipliers (1/m; a point "
-                            "sticks while |LAGS_F + c slip| <= 1). Changes the iterations, not the solution. "
-                            "Default 100")
+          real("COEF_FROT", "ALGO_FROT='STANDARD': augmentation of the tangential tractions, relative: c = "
+                            "COEF_FROT E / h (E the model's largest Young's modulus, h the zone's smallest slave "
+                            "edge); a point sticks while |lambda_t + c slip| <= mu p. Changes the iterations, not "
+                            "the solution. Default 1e-3 (code_aster's COEF_FROT, 100 by default, scales its "
+                            "normalised semi-multipliers' slip in 1/m: another quantity); from 1e-8 to 1e-2 the "
+                            "frictional patch tests converge, at E / h (1) the 3D one chatters")
               .above(0.0),
           real("COEF_PENA_FROT", "ALGO_FROT='PENALISATION': tangential penalty (Pa/m), the traction per slip while "
                                  "sticking; required there")
@@ -127,10 +131,12 @@ const CommandSpec& defi_contact_spec() {
                                      "consistent unsymmetric tangent). POINT_FIXE (code_aster's fixed point on the "
                                      "Tresca threshold) is refused: Newton solves the same law")
                   .into_values({"NEWTON", "POINT_FIXE"}),
-              real("RESI_FROT", "code_aster's tolerance of its friction fixed point: refused, the friction "
-                                "conditions are in Newton's residual (RESI_GLOB_RELA / RESI_GLOB_MAXI judge them)"),
-              integer("ITER_FROT_MAXI", "code_aster's iteration limit of its friction fixed point: refused, as "
-                                        "RESI_FROT")},
+              real("RESI_FROT", "Friction (FROTTEMENT='COULOMB'): Newton converges only once the contact "
+                                "pressures, the friction bounds, moved over its last iteration by at most this "
+                                "much relative to the largest, besides RESI_GLOB_*. Default 1e-4")
+                  .above(0.0),
+              integer("ITER_FROT_MAXI", "code_aster's iteration limit of its friction fixed point "
+                                        "(ALGO_RESO_FROT='POINT_FIXE'): refused, ITER_GLOB_MAXI bounds Newton")},
              {}},
        Block{"FORMULATION",
              {"DISCRETE"},

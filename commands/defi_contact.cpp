@@ -33,11 +33,12 @@ void read_friction(const Args& args, bool continuous, engine::ContactDefinition&
                      {"lunaster solves Coulomb's law within Newton (stick/slip and slip directions at every "
                       "iteration, a consistent tangent); code_aster's fixed point on the Tresca threshold converges "
                       "to the same solution, so ALGO_RESO_FROT='NEWTON' (or none) computes the same contact"});
-  for (const char* kw : {"RESI_FROT", "ITER_FROT_MAXI"})
-    if (given(args, kw))
-      throw args.error(kw, "no setting of the friction fixed point", "a value",
-                       {"with ALGO_RESO_FROT='NEWTON' Coulomb's conditions are part of Newton's residual, which "
-                        "RESI_GLOB_RELA / RESI_GLOB_MAXI and ITER_GLOB_MAXI judge; remove the keyword"});
+  if (given(args, "ITER_FROT_MAXI"))
+    throw args.error("ITER_FROT_MAXI", "no setting of the friction fixed point", "a value",
+                     {"it bounds code_aster's fixed point on the Tresca threshold (ALGO_RESO_FROT='POINT_FIXE'); with "
+                      "ALGO_RESO_FROT='NEWTON' ITER_GLOB_MAXI bounds the iterations; remove the keyword"});
+  // code_aster's default: Newton goes on until the friction bounds move by less than 1e-4.
+  def.resi_frot = given(args, "RESI_FROT") ? args.real("RESI_FROT") : 1e-4;
   using engine::FrictionEnforcement;
   for (size_t z = 0; z < zones.size(); ++z) {
     const auto& zone = zones[z];
@@ -66,7 +67,10 @@ void read_friction(const Args& args, bool continuous, engine::ContactDefinition&
       } else {
         if (given(zone, "COEF_PENA_FROT"))
           throw zone.error("COEF_PENA_FROT", "no COEF_PENA_FROT with ALGO_FROT='STANDARD' (COEF_FROT)", "a value");
-        cz.coef_frot = given(zone, "COEF_FROT") ? zone.real("COEF_FROT") : 100.0;
+        // Relative to E / h (contact_problem.cpp); 1e-3: the slip direction follows the tractions
+        // (a larger one lets the round-off slip of a sticking point decide it) while the
+        // multipliers' rows stay well scaled (below about 1e-9 a factorisation loses them).
+        cz.coef_frot = given(zone, "COEF_FROT") ? zone.real("COEF_FROT") : 1e-3;
       }
     } else {
       // code_aster (CONTACT3_3): friction is allowed only with a penalised normal contact.

@@ -78,9 +78,9 @@ struct ContactZone {
   double dist_escl = 0.0;        ///< DIST_ESCL: thickness added to the slave surface (m, mortar)
   // ---- Coulomb friction (ContactDefinition::friction) ----
   double mu = 0.0;               ///< COULOMB: the friction coefficient (>= 0)
-  /// COEF_FROT (augmented Lagrangian, 1/m: the slip that reaches the slip bound times it is
-  /// one) or the stick stiffness (penalty: COEF_PENA_FROT, Pa/m; discrete E_T, N/m per node).
-  double coef_frot = 100.0;
+  /// COEF_FROT (augmented Lagrangian: relative, times E / h) or the stick stiffness (penalty:
+  /// COEF_PENA_FROT, Pa/m; discrete E_T, N/m per node).
+  double coef_frot = 1e-3;
   std::string slave_group, master_group;  ///< mesh group names, for messages (may be empty)
 };
 
@@ -99,6 +99,10 @@ struct ContactDefinition {
   int nb_iter_geom = 2;      ///< with REAC_GEOM='CONTROLE'
   double resi_geom = 0.01;
   FrictionEnforcement friction = FrictionEnforcement::None;  ///< FROTTEMENT='COULOMB' and its ALGO_FROT
+  /// With friction: Newton converges only once the contact pressures (the friction bounds) moved
+  /// by at most this much, relative to the largest, over its last iteration (RESI_FROT; <= 0: no
+  /// such test).
+  double resi_frot = 0.0;
   double modulus = 0.0;      ///< largest Young's modulus of the model (Pa; scales mortar's complementarity constant)
   /// AXIS model (2D, x = r): every surface measure is r dl per radian, as the AXIS elements'
   /// (integration-point and mortar weights, nodal tributary areas), so contact pressures stay

@@ -70,7 +70,13 @@ ContactProblem::ContactProblem(const ContactDefinition& definition, const Mesh& 
                         "tangential coefficient > 0, got " + std::to_string(zone.mu) + " and " +
                         std::to_string(zone.coef_frot));
       mu_.push_back(zone.mu);
-      coef_t_.push_back(zone.coef_frot);
+      // The augmented Lagrangian's COEF_FROT is relative, times E / h: a traction per slip of the
+      // order of the stiffness next to the interface. An absolute 100 Pa/m against E = 2e11 Pa
+      // left its multiplier rows 14 orders below the displacements' and a factorisation found
+      // them singular.
+      const double e = def_.modulus > 0.0 ? def_.modulus : 1.0;
+      coef_t_.push_back(def_.friction == FrictionEnforcement::AugmentedLagrangian ? zone.coef_frot * e / min_edge_[z]
+                                                                                 : zone.coef_frot);
     }
     states_.resize(points_.size());
     if (!friction_components_.empty() && multiplier_nodes_.empty())
@@ -458,6 +464,7 @@ int ContactProblem::update_statuses(const Vector& u) {
 
 void ContactProblem::begin_step(const Vector& u, const Log& log) {
   u_start_ = u;
+  bounds_.clear(), u_of_bounds_.resize(0), bound_change_ = 0.0;
   n_status_iter_ = 0;
   n_geom_iter_ = 0;
   n_pairings_ = 0;
@@ -700,7 +707,28 @@ void ContactProblem::frictional_point(size_t i, const Vector& u, Vector& residua
           local->add_at(lz[k][a], lz[l][b], on[k] * on[l] * r.k_zz[k][l] * p.phi[a] * p.phi[b]);
 }
 
+bool ContactProblem::newton_converged() const {
+  return !friction_ || !(def_.resi_frot > 0.0) || bound_change_ <= def_.resi_frot;
+}
+
+void ContactProblem::track_bounds(const Vector& u) {
+  if (u_of_bounds_.size() == u.size() && u == u_of_bounds_) return;  // the same iterate again
+  std::vector<double> bounds(points_.size(), 0.0);
+  double largest = 0.0, change = 0.0;
+  for (size_t i = 0; i < points_.size(); ++i) {
+    const ContactPoint& p = points_[i];
+    if (p.active && p.wjac > 0.0) bounds[i] = -law_->pressure(p, multiplier(u, p), p.gap.value(u), rho(p.zone));
+    largest = std::max(largest, std::abs(bounds[i]));
+  }
+  const bool known = bounds_.size() == bounds.size();
+  for (size_t i = 0; known && i < bounds.size(); ++i) change = std::max(change, std::abs(bounds[i] - bounds_[i]));
+  bound_change_ = known && largest > 0.0 ? change / largest : 0.0;
+  bounds_.swap(bounds);
+  u_of_bounds_ = u;
+}
+
 void ContactProblem::add_frictional_terms(const Vector& u, std::vector<Triplet>* tangent, Vector& residual) {
+  if (def_.resi_frot > 0.0) track_bounds(u);
   const bool condensed = !coupled();
   LocalTangent local;
   int group = -1;

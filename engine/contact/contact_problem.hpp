@@ -40,6 +40,11 @@ class ContactProblem final : public ContactHook {
   void recover(Vector& u) override;
   bool settle(const Vector& u, const Log& log) override;
   MatrixKind matrix_kind() const override;
+  /// With friction and RESI_FROT: false while the friction bounds still move (bound_change()).
+  bool newton_converged() const override;
+  /// The largest change of a point's contact pressure between the last two iterates, over the
+  /// largest pressure (with friction; 0 before two iterates).
+  double bound_change() const { return bound_change_; }
   std::vector<int> surface_equations() const override;
   std::array<bool, 3> displacement_components() const override;
   long pattern_version() const override { return pattern_version_; }
@@ -144,6 +149,11 @@ class ContactProblem final : public ContactHook {
   PointStates states_;                     ///< per point, with friction
   Vector u_start_;                         ///< u at the step's start (the slips are measured from it)
   std::vector<PointState> reported_start_; ///< the last committed step's start states (its results)
+  std::vector<double> bounds_;             ///< per point, its pressure at the last iterate (friction)
+  Vector u_of_bounds_;                     ///< that iterate
+  double bound_change_ = 0.0;
+  /// The pressures at iterate u, and how much they moved since the last iterate.
+  void track_bounds(const Vector& u);
   Vector reported_u_start_;                ///< and its start u
   std::vector<std::unique_ptr<MasterSurface>> masters_;  ///< one per zone
   std::vector<ContactPoint> points_;

@@ -13,8 +13,8 @@
 /// step's start; a positive tangential force on q resists a positive slip.
 ///
 /// - Augmented Lagrangian (CONTINUE, ALGO_FROT='STANDARD', Alart and Curnier's): the multipliers
-///   lambda_t (LAGS_F1[, LAGS_F2], the tangential traction, Pa). With v = lambda_t + c ds (c =
-///   COEF_FROT, Pa/m) and t = P(v) its projection on the disc of radius mu p: r_q,t = w_t t,
+///   lambda_t (LAGS_F1[, LAGS_F2], the tangential traction, Pa). With v = lambda_t + c ds (c, Pa/m:
+///   COEF_FROT E / h) and t = P(v) its projection on the disc of radius mu p: r_q,t = w_t t,
 ///   r_z,t = (w / c)(t - lambda_t). Stick (|v| <= mu p): ds = 0 exactly (the stick block is
 ///   symmetric); slip: lambda_t = mu p v / |v|, the bound along the slip. An open point: r_z,t =
 ///   -(w / c) lambda_t. code_aster's unknowns are the traction over mu p (|LAGS_F| <= 1): the

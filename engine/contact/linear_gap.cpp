@@ -43,9 +43,12 @@ void tangent_frame(const double* n, int dim, double t[2][3]) {
     t[0][0] = -n[1], t[0][1] = n[0], t[0][2] = 0.0;
     return;
   }
+  // The axis least aligned with n; a tie within 1e-6 keeps the lower axis, so that round-off in
+  // a normal along an axis (a flat face tilted by 1e-13) does not swap t1 and t2 between two
+  // pairings, and with them the tangential multipliers' meaning.
   int axis = 0;
   for (int k = 1; k < 3; ++k)
-    if (std::abs(n[k]) < std::abs(n[axis])) axis = k;
+    if (std::abs(n[k]) < std::abs(n[axis]) - 1e-6) axis = k;
   double e[3] = {0.0, 0.0, 0.0};
   e[axis] = 1.0;
   double norm2 = 0.0;

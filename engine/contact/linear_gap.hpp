@@ -50,7 +50,7 @@ LinearGap make_linear_gap(const std::vector<double>& coords, const DofMap& dofs,
 
 /// The tangents of a point's frame from its unit normal n (dim - 1 of them, unit, orthogonal
 /// to n and to each other): in 2D n turned by +90 degrees; in 3D t1 along the axis least
-/// aligned with n, made orthogonal to n, and t2 = n x t1.
+/// aligned with n (the lower one of two within 1e-6), made orthogonal to n, and t2 = n x t1.
 void tangent_frame(const double* normal, int dim, double tangents[2][3]);
 
 /// tangent += factor * a b^T over the DOFs of two gaps (or of one, a = b).
