@@ -325,4 +325,83 @@ Mesh make_hertz(const HertzOptions& o, HertzLayout* layout) {
   return mesh;
 }
 
+namespace {
+
+/// The node order of a cell's mirror image (reversed orientation), as positions in its nodes.
+std::vector<int> mirror_order(CellType t) {
+  switch (t) {
+    case CellType::Seg2: return {1, 0};
+    case CellType::Seg3: return {1, 0, 2};
+    case CellType::Tria3: return {0, 2, 1};
+    case CellType::Tria6: return {0, 2, 1, 5, 4, 3};
+    case CellType::Quad4: return {0, 3, 2, 1};
+    case CellType::Quad8: return {0, 3, 2, 1, 7, 6, 5, 4};
+    default: throw DeckError("meshgen: cannot mirror a " + std::string(engine::cell_info(t).name) + " cell");
+  }
+}
+
+}  // namespace
+
+Mesh mirrored_about_x0(const Mesh& mesh, double tol) {
+  Mesh out = mesh;
+  const int n = mesh.n_nodes();
+  std::vector<int> image(n);
+  for (int i = 0; i < n; ++i) {
+    const double* x = mesh.node(i);
+    image[i] = std::abs(x[0]) <= tol ? i : out.add_node(-x[0], x[1], x[2], "N" + std::to_string(out.n_nodes() + 1));
+  }
+  std::vector<int> cell_image(mesh.n_cells(), -1);
+  std::vector<char> on_axis(mesh.n_cells(), 0);
+  for (int c = 0; c < mesh.n_cells(); ++c) {
+    const int* nodes = mesh.cell(c);
+    bool axis = true;
+    for (int a = 0; a < mesh.cell_n_nodes(c); ++a) axis = axis && image[nodes[a]] == nodes[a];
+    on_axis[c] = axis;
+    if (axis) continue;
+    std::vector<int> mirrored;
+    for (int a : mirror_order(mesh.cell_types[c])) mirrored.push_back(image[nodes[a]]);
+    cell_image[c] = out.add_cell(mesh.cell_types[c], mirrored, "M" + std::to_string(out.n_cells() + 1));
+  }
+  for (const auto& [name, cells] : mesh.cell_groups) {
+    std::vector<int> images;
+    bool all_on_axis = true;
+    for (int c : cells) {
+      all_on_axis = all_on_axis && on_axis[c];
+      if (cell_image[c] >= 0) images.push_back(cell_image[c]);
+    }
+    if (all_on_axis) {
+      out.cell_groups.erase(name);
+      continue;
+    }
+    out.add_to_cell_group(name, images);
+  }
+  for (const auto& [name, nodes] : mesh.node_groups) {
+    std::vector<int> images;
+    for (int i : nodes)
+      if (image[i] != i) images.push_back(image[i]);
+    if (!images.empty()) out.add_to_node_group(name, images);
+  }
+  // The cells on the axis are inside the mirrored body: dropped with their groups, and so are
+  // their nodes' groups made of axis cells alone (AXIS_BALL, AXIS_BLOCK as node groups too).
+  std::vector<int> keep;
+  for (int c = 0; c < out.n_cells(); ++c)
+    if (c >= mesh.n_cells() || !on_axis[c]) keep.push_back(c);
+  if (keep.size() == static_cast<size_t>(out.n_cells())) return out;
+  Mesh kept;
+  kept.dim = out.dim, kept.name = out.name;
+  kept.coords = out.coords, kept.node_names = out.node_names, kept.node_groups = out.node_groups;
+  std::vector<int> renumber(out.n_cells(), -1);
+  for (int c : keep) {
+    renumber[c] = kept.add_cell(out.cell_types[c], std::vector<int>(out.cell(c), out.cell(c) + out.cell_n_nodes(c)),
+                                "M" + std::to_string(kept.n_cells() + 1));
+  }
+  for (const auto& [name, cells] : out.cell_groups) {
+    std::vector<int> moved;
+    for (int c : cells)
+      if (renumber[c] >= 0) moved.push_back(renumber[c]);
+    if (!moved.empty()) kept.add_to_cell_group(name, moved);
+  }
+  return kept;
+}
+
 }  // namespace lunaster::tools

@@ -61,4 +61,10 @@ struct HertzLayout {
 /// would not fit in a body.
 engine::Mesh make_hertz(const HertzOptions& options, HertzLayout* layout = nullptr);
 
+/// A 2D mesh lying in x >= 0 mirrored about x = 0: the nodes on the axis (|x| <= tol) kept once,
+/// the others given an image named on from the last node ("N<n+1>" ...), every cell given its
+/// image in reversed order (counter-clockwise again, boundary cells facing out), every group its
+/// images; the cells on the axis and the groups made of them alone are dropped (inside now).
+engine::Mesh mirrored_about_x0(const engine::Mesh& mesh, double tol);
+
 }  // namespace lunaster::tools

@@ -43,7 +43,7 @@ const char* kUsage =
     "  lunaster-meshgen --block TYPE:N [--distort A] [--rect X0,X1,Y0,Y1] [--name MESH] -o FILE.med\n"
     "      unit square/cube; --distort moves interior vertices by up to A cell sizes (default 0.2 if given without A)\n"
     "      --rect X0,X1,Y0,Y1 (2D types): the rectangle [X0,X1]x[Y0,Y1] instead (axisymmetric sections: x = r)\n"
-    "  lunaster-meshgen --hertz TYPE:N [--radius R] [--box W,H] [--grading G] [--refine K] [--name MESH] -o FILE.med\n"
+    "  lunaster-meshgen --hertz TYPE:N [--radius R] [--box W,H] [--grading G] [--refine K] [--full] [--name MESH] -o FILE.med\n"
     "      Hertz contact: ball of radius R (default 1) resting on a block, touching at O = origin, meshed\n"
     "      independently (non-matching). 2D (TYPE quad4|quad8|tria3|tria6; axisymmetric x = r, y = axis, or a\n"
     "      plane-strain cylinder): BALL = quarter disc x >= 0, y <= R centred at (0,R), BLOCK = [0,W]x[-H,0].\n"
@@ -56,6 +56,8 @@ const char* kUsage =
     "      SYMY_BALL SYMY_BLOCK (y = 0); nodes O_BALL O_BLOCK (contact point), C_BALL (top of the axis),\n"
     "      D_BLOCK (bottom of the axis). Nodes of BLOCK_TOP near O sit at multiples of h0 (the core); list\n"
     "      them with --info FILE --nodes BLOCK_TOP to pick the node nearest a radius\n"
+    "      --full (2D): the whole cylinder on the whole block, the half model mirrored about x = 0 (the\n"
+    "      axis groups dropped, the mirrored nodes named on from the last): a load along x\n"
     "  lunaster-meshgen --info FILE [--nodes GROUP[,GROUP]]    (.med, or .msh for Gmsh)\n"
     "      --nodes also lists the nodes of these groups (node or cell groups): 'node NAME X Y Z'\n"
     "  --test-result adds an analytic result RESU (2 steps, DEPL and SIGM_ELNO) for interop tests\n"
@@ -71,6 +73,7 @@ struct Options {
   bool gibi_names = false;
   bool test_result = false;
   bool x_faces = false;
+  bool full = false;
 };
 
 Options parse(int argc, char** argv) {
@@ -85,6 +88,8 @@ Options parse(int argc, char** argv) {
       o.test_result = true;
     } else if (a == "--x-faces") {
       o.x_faces = true;
+    } else if (a == "--full") {
+      o.full = true;
     } else if (a == "--distort" && (i + 1 >= argc || std::string(argv[i + 1]).rfind("--", 0) == 0)) {
       o.values["--distort"] = "0.2";
     } else if (a == "-o" || a == "--upper" || a == "--lower" || a == "--v1" || a == "--v2" || a == "--block" ||
@@ -249,6 +254,10 @@ int run(int argc, char** argv) {
     if (!get("--grading").empty()) opt.grading = number("--grading", get("--grading"));
     tools::HertzLayout lay;
     mesh = tools::make_hertz(opt, &lay);
+    if (o.full) {
+      if (mesh.dim != 2) throw DeckError("meshgen: --full mirrors a 2D --hertz mesh about x = 0", {kUsage});
+      mesh = tools::mirrored_about_x0(mesh, 1e-9 * opt.radius);
+    }
     std::cout << "hertz: h0 " << lay.h0 << ", ball core " << lay.m_ball << " layers " << lay.layers_ball
               << " growth " << lay.g_ball << ", block core " << lay.m_block[0] << " layers " << lay.layers_block
               << " growth " << lay.g_block[0] << "\n";

@@ -284,6 +284,41 @@ TEST(HertzMesh, AreaAndVolumeMatchTheExactGeometry) {
   }
 }
 
+// --full: the half model mirrored about x = 0. Every cell of either kind positive, every
+// boundary group facing out, the areas doubled, the axis nodes shared (one node per position),
+// the axis groups gone.
+TEST(HertzMesh, MirroredAboutTheAxisIsTheWholeSceneFacingOut) {
+  for (CellType t : {CellType::Quad4, CellType::Quad8, CellType::Tria3, CellType::Tria6}) {
+    const std::string what(cell_info(t).name);
+    const Mesh half = tools::make_hertz(opts(t, 16, 1.2, 1.0, 1.0, 0.8));
+    Mesh m = tools::mirrored_about_x0(half, 1e-9);
+    int on_axis = 0;
+    for (int i = 0; i < half.n_nodes(); ++i) on_axis += std::abs(half.node(i)[0]) <= 1e-9;
+    EXPECT_EQ(m.n_nodes(), 2 * half.n_nodes() - on_axis) << what;
+    EXPECT_TRUE(find_inverted_cells(m).empty()) << what;
+    for (const char* group : {"BALL", "BLOCK"})
+      EXPECT_NEAR(measure(m, group), 2.0 * measure(half, group), 1e-12 * measure(half, group)) << what << " " << group;
+    for (const char* group : {"BALL_SURF", "BALL_TOP", "BLOCK_TOP", "BLOCK_BOTTOM", "BLOCK_SIDE"}) {
+      EXPECT_EQ(m.cell_groups.at(group).size(), 2 * half.cell_groups.at(group).size()) << what << " " << group;
+      std::vector<int> cells = m.cell_groups.at(group);
+      EXPECT_EQ(orient_boundary_outward(m, cells), 0) << what << " " << group;
+    }
+    EXPECT_EQ(m.cell_groups.count("AXIS_BALL") + m.cell_groups.count("AXIS_BLOCK"), 0u) << what;
+    // The axis nodes were not duplicated: the only shared position is still O (O_BALL, O_BLOCK:
+    // the two bodies are meshed apart and touch there).
+    const auto shared_positions = [](const Mesh& mesh) {
+      std::vector<std::pair<double, double>> xy;
+      for (int i = 0; i < mesh.n_nodes(); ++i) xy.emplace_back(mesh.node(i)[0], mesh.node(i)[1]);
+      std::sort(xy.begin(), xy.end());
+      int shared = 0;
+      for (size_t i = 1; i < xy.size(); ++i) shared += xy[i] == xy[i - 1];
+      return shared;
+    };
+    EXPECT_EQ(shared_positions(half), 1) << what;
+    EXPECT_EQ(shared_positions(m), 1) << what;
+  }
+}
+
 TEST(HertzMesh, MedRoundTripKeepsCoordinatesAndGroups) {
   testing::expect_med_round_trip(tools::make_hertz(opts(CellType::Quad8, 20, 1.3)), "hertz");
 }
