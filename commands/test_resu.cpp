@@ -214,6 +214,12 @@ ConceptPtr test_resu(const Args& args, Session& session) {
   for (const auto& occ : args.factors("RESU")) {
     auto resu = occ.concept_as<EvolNoli>("RESULTAT");
     const engine::ResultStep& step = find_step(occ, *resu);
+    if (occ.has("PARA")) {  // 'INST', the only parameter a lunaster result stores per step
+      std::string what = "INST  NUME_ORDRE " + std::to_string(step.nume_ordre);
+      if (occ.has("LEGENDE")) what += "  [" + occ.text("LEGENDE") + "]";
+      report_checks(occ, session, step.inst, what);
+      continue;
+    }
     const Probe p = probe_value(occ, *resu, step);
     std::string what = occ.text("NOM_CHAM") + "  " + p.where + "  " + occ.text("NOM_CMP");
     if (occ.has("LEGENDE")) what += "  [" + occ.text("LEGENDE") + "]";
