@@ -125,12 +125,13 @@ Probe nodal_probe(const Args& occ, const engine::Mesh& mesh, const engine::Nodal
   Probe p;
   if (occ.has("TYPE_TEST")) {
     std::vector<int> nodes;
-    if (occ.has("GROUP_NO") || occ.has("NOEUD") || occ.has("GROUP_MA")) nodes = select_nodes(occ, mesh);
+    const bool group_ma = occ.declares("GROUP_MA") && occ.has("GROUP_MA");  // RESU's; CHAM_NO has none
+    if (occ.has("GROUP_NO") || occ.has("NOEUD") || group_ma) nodes = select_nodes(occ, mesh);
     else for (int n = 0; n < mesh.n_nodes(); ++n) nodes.push_back(n);
     p.value = reduce(occ.text("TYPE_TEST"), nodal_values(occ, f, cmp, nodes));
     p.where = occ.text("TYPE_TEST");
     if (occ.has("GROUP_NO")) p.where += "(" + occ.texts("GROUP_NO").front() + ")";
-    else if (occ.has("GROUP_MA")) p.where += "(" + occ.texts("GROUP_MA").front() + ")";
+    else if (group_ma) p.where += "(" + occ.texts("GROUP_MA").front() + ")";
     return p;
   }
   const std::vector<int> nodes = select_nodes(occ, mesh);
@@ -205,6 +206,9 @@ std::shared_ptr<ChamGd> tested_field(const Args& occ, bool at_nodes) {
     throw occ.error("CHAM_GD", at_nodes ? "a field at nodes (NOEU_*)" : "a field per cell (ELNO_*, ELGA_*)",
                     "'" + field->user_name + "', a field of type " + field->type_cham,
                     {at_nodes ? "test it under CHAM_ELEM" : "test it under CHAM_NO"});
+  if (field->of_functions())
+    throw occ.error("CHAM_GD", "a field of values", "'" + field->user_name + "', a field of functions (" + field->type_cham + ")",
+                    {"evaluate it first: CREA_CHAMP OPERATION='EVAL'"});
   return field;
 }
 
