@@ -53,6 +53,7 @@ Keyword field(bool at_nodes) {
       text("TYPE_TEST", "Reduce the component over the field instead of one point")
           .into_values({"MIN", "MAX", "SOMM", "SOMM_ABS"})};
   std::vector<Rule> rules;
+  std::vector<Block> blocks;
   if (at_nodes) {
     children.push_back(text("NOEUD", "Node tested"));
     children.push_back(text("GROUP_NO", "One-node group tested, or the nodes reduced by TYPE_TEST"));
@@ -61,8 +62,9 @@ Keyword field(bool at_nodes) {
   } else {
     children.push_back(text("MAILLE", "Cell tested"));
     children.push_back(text("NOEUD", "Node of MAILLE tested (ELNO field; an ELGA field is tested by TYPE_TEST)"));
-    rules = {exactly_one({"MAILLE", "TYPE_TEST"}), present_present({"MAILLE", "NOEUD"}),
-             present_absent({"TYPE_TEST", "NOEUD"})};
+    children.push_back(text("GROUP_NO", "One-node group: the node of MAILLE tested, instead of NOEUD"));
+    rules = {exactly_one({"MAILLE", "TYPE_TEST"}), present_absent({"TYPE_TEST", "NOEUD", "GROUP_NO"})};
+    blocks.push_back(Block{"MAILLE", {}, {}, {exactly_one({"NOEUD", "GROUP_NO"})}});
   }
   for (auto& kw : common::test_reference_keywords()) children.push_back(kw);
   for (auto& rule : common::test_reference_rules()) rules.push_back(rule);
@@ -70,7 +72,8 @@ Keyword field(bool at_nodes) {
                 at_nodes ? "One check of a component of a field at nodes"
                          : "One check of a component of a field per cell")
       .occurs(0, -1)
-      .with_rules(rules);
+      .with_rules(rules)
+      .with_blocks(blocks);
 }
 
 }  // namespace

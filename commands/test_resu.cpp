@@ -168,10 +168,20 @@ Probe cell_probe(const Args& occ, const ChamGd& field, const engine::Mesh& mesh)
     throw occ.error("MAILLE", "an ELNO field at a cell's node (an " + field.type_cham + " field is tested by TYPE_TEST)",
                     "'" + cell_name + "'");
   int row = -1;
-  const std::string node_name = occ.text("NOEUD");
+  std::string node_name;
+  if (occ.has("GROUP_NO")) {
+    const auto nodes = node_group(occ, "GROUP_NO", mesh, occ.texts("GROUP_NO").front());
+    if (nodes.size() != 1)
+      throw occ.error("GROUP_NO", "a group of one node", "'" + occ.texts("GROUP_NO").front() + "', of " +
+                                                            std::to_string(nodes.size()) + " nodes");
+    node_name = mesh.node_names[nodes.front()];
+  } else {
+    node_name = occ.text("NOEUD");
+  }
   for (int a = 0; a < mesh.cell_n_nodes(c); ++a)
     if (mesh.node_names[mesh.cell(c)[a]] == node_name) row = a;
-  if (row < 0) throw occ.error("NOEUD", "a node of cell " + cell_name, "'" + node_name + "'");
+  if (row < 0)
+    throw occ.error(occ.has("GROUP_NO") ? "GROUP_NO" : "NOEUD", "a node of cell " + cell_name, "'" + node_name + "'");
   p.where = cell_name + " " + node_name;
   p.value = f.value(c, row, cmp);
   return p;
