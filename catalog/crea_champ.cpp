@@ -45,6 +45,16 @@ Keyword asse() {
       .with_rules({at_least_one({"TOUT", "GROUP_MA", "GROUP_NO", "NOEUD"}), present_present({"NOM_CMP_RESU", "NOM_CMP"})});
 }
 
+/// The field types some operation makes: results' fields (EXTR) and fields built at nodes.
+std::vector<Scalar> field_types() {
+  std::vector<Scalar> out;
+  for (const char* q : {"DEPL", "SIEF", "VARI", "EPSI", "INFC", "TEMP", "NEUT", "GEOM"}) out.push_back("NOEU_" + std::string(q) + "_R");
+  for (const char* where : {"ELNO_", "ELGA_"})
+    for (const char* q : {"SIEF", "VARI", "EPSI"}) out.push_back(std::string(where) + q + "_R");
+  for (const char* q : {"DEPL", "SIEF", "TEMP", "NEUT", "GEOM"}) out.push_back("NOEU_" + std::string(q) + "_F");
+  return out;
+}
+
 Keyword support(const char* name, bool mesh) {
   return mesh ? concept_kw(name, {"maillage"}, "Mesh the field lies on (TOUT: all its nodes)")
               : concept_kw(name, {"modele"}, "Model the field lies on (TOUT: the nodes of its cells)");
@@ -56,6 +66,9 @@ const CommandSpec& crea_champ_spec() {
   const std::string at_nodes_only =
       "lunaster builds fields at nodes (NOEU_*) from constants, functions and other fields; fields per cell "
       "come from results (EXTR)";
+  const std::string per_cell =
+      "a field per cell or integration point built from constants, functions or other fields: lunaster builds "
+      "such fields at nodes (NOEU_*)";
   static const CommandSpec spec = make_command(
       "CREA_CHAMP", "cham_gd",
       "Create a field: taken out of a result at one time step (EXTR; a copy: the result may change afterwards, "
@@ -79,7 +92,16 @@ const CommandSpec& crea_champ_spec() {
             "or ELGA (at each cell's integration points). EXTR: the quantity of the field NOM_CHAM (DEPL for DEPL, "
             "FORC_NODA, REAC_NODA; SIEF for the stresses SIGM_*, SIEF_*, SIEQ_*; VARI for VARI_*; INFC for "
             "CONT_NOEU; GEOM for a mesh's GEOMETRIE), a type that is not the field's is an error. AFFE, ASSE, "
-            "COMB, EVAL: NOEU_ with DEPL, TEMP, NEUT, GEOM or SIEF, _R (reals) or _F (functions, AFFE only)")
+            "COMB, EVAL: NOEU_ with DEPL, TEMP, NEUT, GEOM or SIEF, _R (reals) or _F (functions, AFFE only). "
+            "code_aster's other types (maps CART_*, per-cell ELEM_*, per-cell fields of constants or functions "
+            "ELGA_NEUT_*, ...) are no lunaster field")
+           .into_values(field_types())
+           .refuse("ELGA_NEUT_R", per_cell)
+           .refuse("ELGA_NEUT_F", per_cell)
+           .refuse("ELGA_DEPL_R", per_cell)
+           .refuse("ELGA_GEOM_R", per_cell)
+           .refuse("CART_NEUT_R", per_cell)
+           .refuse("ELEM_CLAC_R", "code_aster's discrete contact statuses per cell: lunaster's are CONT_NOEU (NOEU_INFC_R)")
            .required(),
        common::info()},
       {},

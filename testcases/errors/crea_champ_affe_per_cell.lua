@@ -1,6 +1,7 @@
--- Must-fail deck: CREA_CHAMP AFFE builds fields at nodes; a TYPE_CHAM per cell (ELGA_) is refused.
--- EXPECT_ERROR: crea_champ_affe_per_cell\.lua:6: CREA_CHAMP: TYPE_CHAM: expected a field at nodes, NOEU_<quantity>_R or _F, with OPERATION='AFFE', got 'ELGA_NEUT_R'
--- EXPECT_ERROR: fields per cell \(ELGA_, ELNO_, ELEM_, CART_\) come from results \(EXTR\)
+-- Must-fail deck: CREA_CHAMP builds fields at nodes. A per-cell type of code_aster's
+-- analytical-solution decks (ELGA_NEUT_R) is refused by name with the reason
+-- (crea_champ_affe_result_type.lua: a per-cell type that results give).
+-- EXPECT_ERROR: crea_champ_affe_per_cell\.lua:7: CREA_CHAMP: TYPE_CHAM: expected one of .* \(a field per cell or integration point built from constants, functions or other fields: lunaster builds such fields at nodes \(NOEU_\*\)\), got 'ELGA_NEUT_R'
 -- EXPECT_STATUS: 2
 require('lib.reaction_scene')
 F = CREA_CHAMP{ OPERATION = 'AFFE', TYPE_CHAM = 'ELGA_NEUT_R', MODELE = MO,
