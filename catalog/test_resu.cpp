@@ -25,18 +25,24 @@ Keyword resu() {
       text("NOEUD", "Node tested"),
       text("GROUP_NO", "One-node group tested, or the nodes reduced by TYPE_TEST"),
       text("GROUP_MA", "Cells whose nodes are reduced by TYPE_TEST"),
+      text("MAILLE", "Cell tested, with a field per cell: at its node NOEUD/GROUP_NO (ELNO) or integration point "
+                     "POINT (ELGA)"),
+      integer("POINT", "Integration point of MAILLE tested (1-based, in the order of the cell's scheme; ELGA)")
+          .range(1, std::nullopt),
       text("TYPE_TEST", "Reduce the component over the field instead of one point")
           .into_values({"MIN", "MAX", "SOMM", "SOMM_ABS"}),
   };
   for (auto& kw : common::test_reference_keywords()) children.push_back(kw);
   std::vector<Rule> rules = {exactly_one({"NUME_ORDRE", "INST"}), exactly_one({"NOM_CHAM", "PARA"}),
                              present_present({"NOM_CHAM", "NOM_CMP"}),
-                             present_absent({"PARA", "NOM_CMP", "NOEUD", "GROUP_NO", "GROUP_MA", "TYPE_TEST"}),
+                             present_absent({"PARA", "NOM_CMP", "NOEUD", "GROUP_NO", "GROUP_MA", "TYPE_TEST", "MAILLE"}),
                              at_most_one({"NOEUD", "GROUP_NO", "GROUP_MA"}), present_present({"GROUP_MA", "TYPE_TEST"}),
-                             present_absent({"NOEUD", "TYPE_TEST"})};
+                             present_absent({"NOEUD", "TYPE_TEST"}), present_absent({"MAILLE", "TYPE_TEST", "GROUP_MA"}),
+                             present_present({"POINT", "MAILLE"}), present_absent({"POINT", "NOEUD", "GROUP_NO"})};
   for (auto& rule : common::test_reference_rules()) rules.push_back(rule);
-  // A field's component is tested at one node or reduced over nodes.
-  const std::vector<Block> blocks = {Block{"NOM_CHAM", {}, {}, {at_least_one({"NOEUD", "GROUP_NO", "TYPE_TEST"})}}};
+  // A field's component is tested at one node or point, or reduced over the field.
+  const std::vector<Block> blocks = {
+      Block{"NOM_CHAM", {}, {}, {at_least_one({"NOEUD", "GROUP_NO", "TYPE_TEST", "POINT"})}}};
   return factor("RESU", children, "One check of a result component, or of a parameter of the result (PARA)")
       .occurs(0, -1)
       .with_rules(rules)
@@ -61,10 +67,11 @@ Keyword field(bool at_nodes) {
              present_absent({"NOEUD", "TYPE_TEST"})};
   } else {
     children.push_back(text("MAILLE", "Cell tested"));
-    children.push_back(text("NOEUD", "Node of MAILLE tested (ELNO field; an ELGA field is tested by TYPE_TEST)"));
+    children.push_back(text("NOEUD", "Node of MAILLE tested (ELNO field)"));
     children.push_back(text("GROUP_NO", "One-node group: the node of MAILLE tested, instead of NOEUD"));
-    rules = {exactly_one({"MAILLE", "TYPE_TEST"}), present_absent({"TYPE_TEST", "NOEUD", "GROUP_NO"})};
-    blocks.push_back(Block{"MAILLE", {}, {}, {exactly_one({"NOEUD", "GROUP_NO"})}});
+    children.push_back(integer("POINT", "Integration point of MAILLE tested (1-based; ELGA field)").range(1, std::nullopt));
+    rules = {exactly_one({"MAILLE", "TYPE_TEST"}), present_absent({"TYPE_TEST", "NOEUD", "GROUP_NO", "POINT"})};
+    blocks.push_back(Block{"MAILLE", {}, {}, {exactly_one({"NOEUD", "GROUP_NO", "POINT"})}});
   }
   for (auto& kw : common::test_reference_keywords()) children.push_back(kw);
   for (auto& rule : common::test_reference_rules()) rules.push_back(rule);
