@@ -3,24 +3,23 @@
 -- component), VALE_CALC_I / VALE_REFE_I (an integer column of a table), and a result's field per
 -- cell tested at a cell's node (MAILLE, NOEUD) or integration point (MAILLE, POINT).
 -- Scene: SSNP121's 2D geometry glued (QUAD8, D_PLAN, E = 2e6, NU = 0): CD pushed down by
--- DY = -0.1 m along a ramp over INST 0, 0.5, 1; GH fixed.
--- Reference: analytical. DY on CD is -0.1 m at INST 1 (|DY| = 0.1); SIYY = -1e5 Pa everywhere, over the 2 m
--- width, so REAC_NODA's resultant DY is +2e5 N on GH and -2e5 N on CD (|.| = 2e5 on both); the
--- result stores NUME_ORDRE 0, 1, 2 at INST 0, 0.5, 1. Units SI. Runtime label: fast.
+-- DY = -0.1 m at INST 0.5 and 1; GH fixed.
+-- Reference: analytical. DY on CD is -0.1 m at INST 1 (|DY| = 0.1); SIYY = -1e5 Pa everywhere,
+-- over the 2 m width, so REAC_NODA's resultant DY is +2e5 N on GH and -2e5 N on CD (|.| = 2e5 on
+-- both); the result stores NUME_ORDRE 0, 1, 2 at INST 0, 0.5, 1. Units SI. Runtime label: fast.
 -- errors/check_vale_abs_sign.lua shows the same references without VALE_ABS failing.
 DEBUT()
 -- VMIS_ISOT_LINE far below yield: Hooke's law, with the stresses at integration points (SIEF_ELGA)
 MAT = DEFI_MATERIAU{ ELAS = _F{ E = 2.0e6, NU = 0.0 }, ECRO_LINE = _F{ D_SIGM_EPSI = 1.0e5, SY = 1.0e9 } }
-L_INST = DEFI_LIST_REEL{ DEBUT = 0.0, INTERVALLE = _F{ JUSQU_A = 1.0, NOMBRE = 2 } }
-RAMPE = DEFI_FONCTION{ NOM_PARA = 'INST', VALE = { 0.0, 0.0, 1.0, 1.0 } }
 MA = LIRE_MAILLAGE{ FORMAT = 'MED', FICHIER = 'meshes/glued2d_quad8.med' }
 MO = AFFE_MODELE{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', PHENOMENE = 'MECANIQUE', MODELISATION = 'D_PLAN' } }
-CM = AFFE_MATERIAU{ MAILLAGE = MA, AFFE = _F{ GROUP_MA = { 'PLAQUE1', 'PLAQUE2' }, MATER = MAT } }
-CH = AFFE_CHAR_MECA{ MODELE = MO, DDL_IMPO = { _F{ GROUP_NO = 'CD', DX = 0.0, DY = -0.1 },
-                                               _F{ GROUP_NO = 'GH', DX = 0.0, DY = 0.0 } } }
-RESU = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CM, EXCIT = _F{ CHARGE = CH, FONC_MULT = RAMPE },
+CM = AFFE_MATERIAU{ MAILLAGE = MA, AFFE = _F{ TOUT = 'OUI', MATER = MAT } }
+-- GH held, CD pushed down by 0.1 at every instant (no FONC_MULT: the load's multiplier is 1)
+CH = AFFE_CHAR_MECA{ MODELE = MO, DDL_IMPO = { _F{ GROUP_NO = 'GH', DX = 0.0, DY = 0.0 },
+                                               _F{ GROUP_NO = 'CD', DX = 0.0, DY = -0.1 } } }
+RESU = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CM, EXCIT = _F{ CHARGE = CH },
                       COMPORTEMENT = _F{ RELATION = 'VMIS_ISOT_LINE', TOUT = 'OUI' },
-                      INCREMENT = _F{ LIST_INST = L_INST } }
+                      INCREMENT = _F{ LIST_INST = DEFI_LIST_REEL{ VALE = { 0.0, 0.5, 1.0 } } } }
 RESU = CALC_CHAMP{ reuse = RESU, RESULTAT = RESU, FORCE = 'REAC_NODA', CONTRAINTE = 'SIGM_ELNO' }
 U = CREA_CHAMP{ OPERATION = 'EXTR', TYPE_CHAM = 'NOEU_DEPL_R', NOM_CHAM = 'DEPL', RESULTAT = RESU, INST = 1.0 }
 SG = CREA_CHAMP{ OPERATION = 'EXTR', TYPE_CHAM = 'ELGA_SIEF_R', NOM_CHAM = 'SIEF_ELGA', RESULTAT = RESU, INST = 1.0 }
