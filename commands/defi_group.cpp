@@ -67,14 +67,13 @@ std::array<double, 3> unit(const Args& occ, const std::string& kw, std::array<do
 
 /// PLAN, ENV_SPHERE, ENV_CYLINDRE: the nodes within PRECISION of the surface.
 std::vector<int> geometric_nodes(const Args& occ, const std::string& option, const engine::Mesh& mesh) {
+  if (option == "ENV_CYLINDRE" && mesh.dim != 3)
+    throw occ.error("OPTION", "ENV_CYLINDRE on a 3D mesh", "a 2D mesh", {"in 2D, ENV_SPHERE gives a circle"});
   const auto p = coordinates(occ, "POINT", mesh);
   const double prec = occ.real("PRECISION");
   std::array<double, 3> n{};
   if (option == "PLAN") n = unit(occ, "VECT_NORMALE", coordinates(occ, "VECT_NORMALE", mesh));
-  if (option == "ENV_CYLINDRE") {
-    if (mesh.dim != 3) throw occ.error("OPTION", "ENV_CYLINDRE on a 3D mesh", "a 2D mesh", {"in 2D, ENV_SPHERE gives a circle"});
-    n = unit(occ, "VECT_NORMALE", coordinates(occ, "VECT_NORMALE", mesh, 3));
-  }
+  if (option == "ENV_CYLINDRE") n = unit(occ, "VECT_NORMALE", coordinates(occ, "VECT_NORMALE", mesh, 3));
   std::vector<int> nodes;
   for (int i = 0; i < mesh.n_nodes(); ++i) {
     const double* x = mesh.node(i);

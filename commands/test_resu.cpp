@@ -224,7 +224,7 @@ Probe probe_value(const Args& occ, const EvolNoli& resu, const engine::ResultSte
                     {"stresses need CALC_CHAMP (CONTRAINTE='SIGM_NOEU') first"});
   }
   if (occ.has("MAILLE") || occ.has("POINT"))
-    throw occ.error(occ.has("MAILLE") ? "MAILLE" : "POINT", "a field per cell (ELNO, ELGA) with MAILLE and POINT",
+    throw occ.error(occ.has("MAILLE") ? "MAILLE" : "POINT", "a field per cell (ELNO, ELGA) with MAILLE (at its NOEUD or POINT)",
                     "'" + cham + "', a field at nodes", {"name the node by NOEUD or GROUP_NO"});
   const engine::NodalField& f = nit->second;
   const int cmp = f.component_index(cmp_name);
