@@ -6,24 +6,47 @@ namespace lunaster::catalog {
 namespace {
 
 Keyword resu() {
+  const std::string not_stored =
+      "not stored: a lunaster result keeps fields and instants per NUME_ORDRE, not each step's iterations, "
+      "residuals or pilot parameters";
+  Keyword para = text("PARA", "A parameter of the result at the step instead of a field's component: 'INST', the "
+                              "step's time. code_aster's other parameters (ITER_GLOB, ITER_LINE, RESI_GLOB_RELA, "
+                              "RESI_GLOB_MAXI, ETA_PILOTAGE, CHAR_MINI) are refused by name (IMPR_MESURE gives the run's totals)")
+                     .into_values({"INST"});
+  for (const char* p : {"ITER_GLOB", "ITER_LINE", "RESI_GLOB_RELA", "RESI_GLOB_MAXI", "ETA_PILOTAGE", "CHAR_MINI"})
+    para = para.refuse(p, not_stored);
   std::vector<Keyword> children = {
       concept_kw("RESULTAT", {"evol_noli"}, "Result to test").required(),
       integer("NUME_ORDRE", "Time step number"),
       real("INST", "Time"),
-      text("NOM_CHAM", "Field name, e.g. DEPL, SIGM_NOEU").required(),
-      text("NOM_CMP", "Component, e.g. DY, LAGS_C, SIYY").required(),
+      text("NOM_CHAM", "Field name, e.g. DEPL, SIGM_NOEU"),
+      text("NOM_CMP", "Component, e.g. DY, LAGS_C, SIYY"),
+      para,
       text("NOEUD", "Node tested"),
       text("GROUP_NO", "One-node group tested, or the nodes reduced by TYPE_TEST"),
       text("GROUP_MA", "Cells whose nodes are reduced by TYPE_TEST"),
+      text("MAILLE", "Cell tested, with a field per cell: at its node NOEUD/GROUP_NO (ELNO) or integration point "
+                     "POINT (ELGA)"),
+      integer("POINT", "Integration point of MAILLE tested (1-based, in the order of the cell's scheme; ELGA)")
+          .range(1, std::nullopt),
       text("TYPE_TEST", "Reduce the component over the field instead of one point")
           .into_values({"MIN", "MAX", "SOMM", "SOMM_ABS"}),
   };
   for (auto& kw : common::test_reference_keywords()) children.push_back(kw);
-  std::vector<Rule> rules = {exactly_one({"NUME_ORDRE", "INST"}), at_least_one({"NOEUD", "GROUP_NO", "TYPE_TEST"}),
+  std::vector<Rule> rules = {exactly_one({"NUME_ORDRE", "INST"}), exactly_one({"NOM_CHAM", "PARA"}),
+                             present_present({"NOM_CHAM", "NOM_CMP"}),
+                             present_absent({"PARA", "NOM_CMP", "NOEUD", "GROUP_NO", "GROUP_MA", "TYPE_TEST", "MAILLE"}),
                              at_most_one({"NOEUD", "GROUP_NO", "GROUP_MA"}), present_present({"GROUP_MA", "TYPE_TEST"}),
-                             present_absent({"NOEUD", "TYPE_TEST"})};
+                             present_absent({"NOEUD", "TYPE_TEST"}), present_absent({"MAILLE", "TYPE_TEST", "GROUP_MA"}),
+                             present_present({"POINT", "MAILLE"}), present_absent({"POINT", "NOEUD", "GROUP_NO"})};
   for (auto& rule : common::test_reference_rules()) rules.push_back(rule);
-  return factor("RESU", children, "One check of a result component").occurs(0, -1).with_rules(rules);
+  // A field's component is tested at one node or point, or reduced over the field.
+  const std::vector<Block> blocks = {
+      Block{"NOM_CHAM", {}, {}, {at_least_one({"NOEUD", "GROUP_NO", "TYPE_TEST", "POINT"})}}};
+  return factor("RESU", children, "One check of a result component, or of a parameter of the result (PARA)")
+      .occurs(0, -1)
+      .with_rules(rules)
+      .with_blocks(blocks);
 }
 
 /// CHAM_NO / CHAM_ELEM: one check of a field made by CREA_CHAMP.
@@ -36,6 +59,7 @@ Keyword field(bool at_nodes) {
       text("TYPE_TEST", "Reduce the component over the field instead of one point")
           .into_values({"MIN", "MAX", "SOMM", "SOMM_ABS"})};
   std::vector<Rule> rules;
+  std::vector<Block> blocks;
   if (at_nodes) {
     children.push_back(text("NOEUD", "Node tested"));
     children.push_back(text("GROUP_NO", "One-node group tested, or the nodes reduced by TYPE_TEST"));
@@ -43,9 +67,11 @@ Keyword field(bool at_nodes) {
              present_absent({"NOEUD", "TYPE_TEST"})};
   } else {
     children.push_back(text("MAILLE", "Cell tested"));
-    children.push_back(text("NOEUD", "Node of MAILLE tested (ELNO field; an ELGA field is tested by TYPE_TEST)"));
-    rules = {exactly_one({"MAILLE", "TYPE_TEST"}), present_present({"MAILLE", "NOEUD"}),
-             present_absent({"TYPE_TEST", "NOEUD"})};
+    children.push_back(text("NOEUD", "Node of MAILLE tested (ELNO field)"));
+    children.push_back(text("GROUP_NO", "One-node group: the node of MAILLE tested, instead of NOEUD"));
+    children.push_back(integer("POINT", "Integration point of MAILLE tested (1-based; ELGA field)").range(1, std::nullopt));
+    rules = {exactly_one({"MAILLE", "TYPE_TEST"}), present_absent({"TYPE_TEST", "NOEUD", "GROUP_NO", "POINT"})};
+    blocks.push_back(Block{"MAILLE", {}, {}, {exactly_one({"NOEUD", "GROUP_NO", "POINT"})}});
   }
   for (auto& kw : common::test_reference_keywords()) children.push_back(kw);
   for (auto& rule : common::test_reference_rules()) rules.push_back(rule);
@@ -53,7 +79,8 @@ Keyword field(bool at_nodes) {
                 at_nodes ? "One check of a component of a field at nodes"
                          : "One check of a component of a field per cell")
       .occurs(0, -1)
-      .with_rules(rules);
+      .with_rules(rules)
+      .with_blocks(blocks);
 }
 
 }  // namespace

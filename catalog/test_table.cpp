@@ -39,11 +39,11 @@ const CommandSpec& test_table_spec() {
       text("TYPE_TEST", "Reduce the column over the remaining rows instead of testing one cell")
           .into_values({"SOMM", "SOMM_ABS", "MAX", "MIN"}),
   };
-  for (auto& kw : common::test_reference_keywords()) keywords.push_back(kw);
+  for (auto& kw : common::test_reference_keywords(true)) keywords.push_back(kw);
   keywords.push_back(common::info());
   static const CommandSpec spec =
       make_command("TEST_TABLE", "", "Check one cell (or a reduction of a column) of a table; prints OK/NOOK lines",
-                   keywords, common::test_reference_rules());
+                   keywords, common::test_reference_rules(true));
   return spec;
 }
 

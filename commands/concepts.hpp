@@ -156,14 +156,18 @@ struct EvolNoli : Concept {
 
 namespace lunaster::cmd {
 
-/// CREA_CHAMP: one field on a mesh, a copy of a result's field at one time step.
+/// CREA_CHAMP: one field on a mesh, a copy of a result's field at one time step, or built at
+/// nodes (AFFE, ASSE, COMB, EVAL).
 struct ChamGd : Concept {
   std::shared_ptr<Maillage> maillage;
   std::string type_cham;    ///< code_aster's field type: "NOEU_DEPL_R", "ELNO_SIEF_R", "ELGA_SIEF_R" ...
-  std::string nom_cham;     ///< the result's field it was taken from
-  engine::NodalField nodal; ///< a NOEU_* field
+  std::string nom_cham;     ///< the result's field it was taken from (a built field: its quantity, DEPL ...)
+  engine::NodalField nodal; ///< a NOEU_* field (a NOEU_*_F field: where each function is defined)
   engine::ElgaField cells;  ///< an ELNO_* field (no point layouts) or an ELGA_* field
+  /// A NOEU_*_F field: the function of each node and component, laid out as nodal.values.
+  std::vector<std::shared_ptr<const RealFunction>> functions;
   bool at_nodes() const { return type_cham.rfind("NOEU_", 0) == 0; }
+  bool of_functions() const { return type_cham.size() > 2 && type_cham.compare(type_cham.size() - 2, 2, "_F") == 0; }
   std::string type_name() const override { return "cham_gd"; }
 };
 

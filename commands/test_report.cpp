@@ -25,13 +25,33 @@ double check_difference(double calc, double refe, bool relative, double magnitud
   return scale > 0.0 ? d / scale : d;
 }
 
-void report_checks(const catalog::Args& occ, Session& session, double value, const std::string& what) {
+void report_checks(const catalog::Args& occ, Session& session, double value, const std::string& what_in,
+                   bool integer_value) {
   const bool relative = occ.text("CRITERE") == "RELATIF";
   const double magnitude = occ.has("ORDRE_GRANDEUR") ? occ.real("ORDRE_GRANDEUR") : 0.0;
+  // VALE_ABS='OUI' (code_aster): the absolute values of the computed value and of the
+  // references are compared, and printed.
+  const bool absolute = occ.text("VALE_ABS") == "OUI";
+  const auto shown = [&](double x) { return absolute ? std::abs(x) : x; };
+  const std::string what = absolute ? what_in + "  (absolute values)" : what_in;
+  // VALE_CALC_I / VALE_REFE_I (where declared) give the references of an integer value.
+  const bool with_ints = occ.declares("VALE_CALC_I");
+  const bool calc_i = with_ints && occ.has("VALE_CALC_I"), refe_i = with_ints && occ.has("VALE_REFE_I");
+  const char* calc_kw = calc_i ? "VALE_CALC_I" : "VALE_CALC";
+  const char* refe_kw = refe_i ? "VALE_REFE_I" : "VALE_REFE";
+  if ((calc_i || refe_i) && !integer_value)
+    throw occ.error(calc_i ? calc_kw : refe_kw, std::string(calc_i ? "VALE_CALC" : "VALE_REFE") + " (the value tested is a real)",
+                    "an integer reference");
+  if (occ.has("REFERENCE") && !occ.has(refe_kw))
+    throw occ.error("REFERENCE", "VALE_REFE or VALE_REFE_I with REFERENCE", "neither");
+  const auto reference = [&](const char* kw, bool is_int) {
+    return is_int ? static_cast<double>(occ.integer(kw)) : occ.real(kw);
+  };
+  value = shown(value);
   bool any = false;
-  if (occ.has("VALE_CALC")) {
+  if (occ.has(calc_kw)) {
     any = true;
-    const double refe = occ.real("VALE_CALC");
+    const double refe = shown(reference(calc_kw, calc_i));
     const double tol = occ.real("TOLE_MACHINE");
     const double err = check_difference(value, refe, relative, magnitude);
     const bool ok = err <= tol;
@@ -51,9 +71,9 @@ void report_checks(const catalog::Args& occ, Session& session, double value, con
       }
     }
   }
-  if (occ.has("VALE_REFE")) {
+  if (occ.has(refe_kw)) {
     any = true;
-    const double refe = occ.real("VALE_REFE");
+    const double refe = shown(reference(refe_kw, refe_i));
     const double tol = occ.real("PRECISION");
     const double err = check_difference(value, refe, relative, magnitude);
     const bool ok = err <= tol;
@@ -63,7 +83,7 @@ void report_checks(const catalog::Args& occ, Session& session, double value, con
   char text[64];
   std::snprintf(text, sizeof text, "%.12e", value);
   if (!any) throw occ.error("VALE_CALC", "VALE_CALC and/or VALE_REFE", "neither", {"computed value: " + std::string(text)});
-  if (!occ.has("VALE_CALC")) session.log().always("      computed value (paste as VALE_CALC): " + std::string(text));
+  if (!occ.has(calc_kw)) session.log().always("      computed value (paste as VALE_CALC): " + std::string(text));
 }
 
 }  // namespace lunaster::cmd

@@ -18,7 +18,10 @@ double check_difference(double calc, double refe, bool relative, double magnitud
 
 /// Checks `value` against the reference keywords of `occ` (common::test_reference_keywords),
 /// prints and records one line per check; `what` names the value in the line. DeckError at
-/// VALE_CALC when neither VALE_CALC nor VALE_REFE is given.
-void report_checks(const catalog::Args& occ, Session& session, double value, const std::string& what);
+/// VALE_CALC when neither VALE_CALC nor VALE_REFE is given. With VALE_ABS='OUI' the absolute
+/// values are compared. `integer_value`: the value is an integer (a table's integer column),
+/// tested by VALE_CALC_I / VALE_REFE_I where the occurrence declares them.
+void report_checks(const catalog::Args& occ, Session& session, double value, const std::string& what,
+                   bool integer_value = false);
 
 }  // namespace lunaster::cmd

@@ -125,12 +125,13 @@ Probe nodal_probe(const Args& occ, const engine::Mesh& mesh, const engine::Nodal
   Probe p;
   if (occ.has("TYPE_TEST")) {
     std::vector<int> nodes;
-    if (occ.has("GROUP_NO") || occ.has("NOEUD") || occ.has("GROUP_MA")) nodes = select_nodes(occ, mesh);
+    const bool group_ma = occ.declares("GROUP_MA") && occ.has("GROUP_MA");  // RESU's; CHAM_NO has none
+    if (occ.has("GROUP_NO") || occ.has("NOEUD") || group_ma) nodes = select_nodes(occ, mesh);
     else for (int n = 0; n < mesh.n_nodes(); ++n) nodes.push_back(n);
     p.value = reduce(occ.text("TYPE_TEST"), nodal_values(occ, f, cmp, nodes));
     p.where = occ.text("TYPE_TEST");
     if (occ.has("GROUP_NO")) p.where += "(" + occ.texts("GROUP_NO").front() + ")";
-    else if (occ.has("GROUP_MA")) p.where += "(" + occ.texts("GROUP_MA").front() + ")";
+    else if (group_ma) p.where += "(" + occ.texts("GROUP_MA").front() + ")";
     return p;
   }
   const std::vector<int> nodes = select_nodes(occ, mesh);
@@ -142,17 +143,20 @@ Probe nodal_probe(const Args& occ, const engine::Mesh& mesh, const engine::Nodal
   return p;
 }
 
-/// TEST_RESU CHAM_ELEM: one component of a field per cell, at the node NOEUD of the cell MAILLE
-/// (ELNO), or reduced by TYPE_TEST over every value.
-Probe cell_probe(const Args& occ, const ChamGd& field, const engine::Mesh& mesh) {
-  const engine::ElgaField& f = field.cells;
-  const int cmp = component_column(occ, f.components, field.nom_cham);
+/// One component of a field per cell (TEST_RESU CHAM_ELEM, or RESU of a result's ELNO/ELGA field
+/// `name`): at the node NOEUD (or one-node GROUP_NO) of the cell MAILLE for an ELNO field, at its
+/// integration point POINT (1-based) for an ELGA field, or reduced by TYPE_TEST over every value.
+/// `kw` names the field in messages (CHAM_GD or NOM_CHAM).
+Probe cell_probe(const Args& occ, const engine::ElnoField& f, bool elno, const std::string& name, const char* kw,
+                 const engine::Mesh& mesh) {
+  const int cmp = component_column(occ, f.components, name);
+  const std::string kind = elno ? "ELNO" : "ELGA";
   Probe p;
   if (occ.has("TYPE_TEST")) {
     std::vector<double> values;
     for (size_t row = 0; row * f.components.size() < f.values.size(); ++row)
       values.push_back(f.values[row * f.components.size() + cmp]);
-    if (values.empty()) throw occ.error("CHAM_GD", "a field with values", "an empty " + field.type_cham + " field");
+    if (values.empty()) throw occ.error(kw, "a field with values", "an empty " + kind + " field " + name);
     p.value = reduce(occ.text("TYPE_TEST"), values);
     p.where = occ.text("TYPE_TEST");
     return p;
@@ -162,15 +166,36 @@ Probe cell_probe(const Args& occ, const ChamGd& field, const engine::Mesh& mesh)
   if (cell == mesh.cell_names.end()) throw occ.error("MAILLE", "a cell of the field's mesh", "'" + cell_name + "'");
   const int c = static_cast<int>(cell - mesh.cell_names.begin());
   if (c >= f.n_cells() || f.n_rows(c) == 0)
-    throw occ.error("MAILLE", "a cell carrying " + field.nom_cham, "'" + cell_name + "', which carries none");
-  if (field.type_cham.rfind("ELNO_", 0) != 0)
-    throw occ.error("MAILLE", "an ELNO field at a cell's node (an " + field.type_cham + " field is tested by TYPE_TEST)",
-                    "'" + cell_name + "'");
+    throw occ.error("MAILLE", "a cell carrying " + name, "'" + cell_name + "', which carries none");
+  const bool at_point = occ.declares("POINT") && occ.has("POINT");
+  if (elno == at_point)
+    throw occ.error("MAILLE", elno ? "NOEUD or GROUP_NO with an ELNO field (the value at a node of the cell)"
+                                   : "POINT with an ELGA field (the value at an integration point of the cell)",
+                    "'" + cell_name + "' with " + (at_point ? "POINT" : "a node"));
+  if (at_point) {
+    const long long point = occ.integer("POINT");
+    if (point > f.n_rows(c))
+      throw occ.error("POINT", "an integration point of cell " + cell_name + " (1.." + std::to_string(f.n_rows(c)) + ")",
+                      std::to_string(point));
+    p.where = cell_name + " point " + std::to_string(point);
+    p.value = f.value(c, static_cast<int>(point - 1), cmp);
+    return p;
+  }
   int row = -1;
-  const std::string node_name = occ.text("NOEUD");
+  std::string node_name;
+  if (occ.has("GROUP_NO")) {
+    const auto nodes = node_group(occ, "GROUP_NO", mesh, occ.texts("GROUP_NO").front());
+    if (nodes.size() != 1)
+      throw occ.error("GROUP_NO", "a group of one node", "'" + occ.texts("GROUP_NO").front() + "', of " +
+                                                            std::to_string(nodes.size()) + " nodes");
+    node_name = mesh.node_names[nodes.front()];
+  } else {
+    node_name = occ.text("NOEUD");
+  }
   for (int a = 0; a < mesh.cell_n_nodes(c); ++a)
     if (mesh.node_names[mesh.cell(c)[a]] == node_name) row = a;
-  if (row < 0) throw occ.error("NOEUD", "a node of cell " + cell_name, "'" + node_name + "'");
+  if (row < 0)
+    throw occ.error(occ.has("GROUP_NO") ? "GROUP_NO" : "NOEUD", "a node of cell " + cell_name, "'" + node_name + "'");
   p.where = cell_name + " " + node_name;
   p.value = f.value(c, row, cmp);
   return p;
@@ -182,11 +207,25 @@ Probe probe_value(const Args& occ, const EvolNoli& resu, const engine::ResultSte
   const std::string cmp_name = occ.text("NOM_CMP");
   auto nit = step.nodal.find(cham);
   if (nit == step.nodal.end()) {
+    const auto elno = step.elno.find(cham);
+    const auto elga = step.elga.find(cham);
+    if (elno != step.elno.end() || elga != step.elga.end()) {
+      if (resu.modele->maillage->part)
+        throw occ.error("NOM_CHAM", "a field at nodes (a mesh in parts)", "'" + cham + "', a field per cell",
+                        {"test its nodal counterpart (CALC_CHAMP ..._NOEU)"});
+      if (elno != step.elno.end()) return cell_probe(occ, elno->second, true, cham, "NOM_CHAM", mesh);
+      return cell_probe(occ, elga->second, false, cham, "NOM_CHAM", mesh);
+    }
     std::string have;
     for (const auto& [name, field] : step.nodal) have += (have.empty() ? "" : ", ") + name;
+    for (const auto& [name, field] : step.elno) have += (have.empty() ? "" : ", ") + name;
+    for (const auto& [name, field] : step.elga) have += (have.empty() ? "" : ", ") + name;
     throw occ.error("NOM_CHAM", "a field stored at this step (" + have + ")", "'" + cham + "'",
                     {"stresses need CALC_CHAMP (CONTRAINTE='SIGM_NOEU') first"});
   }
+  if (occ.has("MAILLE") || occ.has("POINT"))
+    throw occ.error(occ.has("MAILLE") ? "MAILLE" : "POINT", "a field per cell (ELNO, ELGA) with MAILLE (at its NOEUD or POINT)",
+                    "'" + cham + "', a field at nodes", {"name the node by NOEUD or GROUP_NO"});
   const engine::NodalField& f = nit->second;
   const int cmp = f.component_index(cmp_name);
   if (cmp < 0) {
@@ -205,6 +244,9 @@ std::shared_ptr<ChamGd> tested_field(const Args& occ, bool at_nodes) {
     throw occ.error("CHAM_GD", at_nodes ? "a field at nodes (NOEU_*)" : "a field per cell (ELNO_*, ELGA_*)",
                     "'" + field->user_name + "', a field of type " + field->type_cham,
                     {at_nodes ? "test it under CHAM_ELEM" : "test it under CHAM_NO"});
+  if (field->of_functions())
+    throw occ.error("CHAM_GD", "a field of values", "'" + field->user_name + "', a field of functions (" + field->type_cham + ")",
+                    {"evaluate it first: CREA_CHAMP OPERATION='EVAL'"});
   return field;
 }
 
@@ -214,6 +256,12 @@ ConceptPtr test_resu(const Args& args, Session& session) {
   for (const auto& occ : args.factors("RESU")) {
     auto resu = occ.concept_as<EvolNoli>("RESULTAT");
     const engine::ResultStep& step = find_step(occ, *resu);
+    if (occ.has("PARA")) {  // 'INST', the only parameter a lunaster result stores per step
+      std::string what = "INST  NUME_ORDRE " + std::to_string(step.nume_ordre);
+      if (occ.has("LEGENDE")) what += "  [" + occ.text("LEGENDE") + "]";
+      report_checks(occ, session, step.inst, what);
+      continue;
+    }
     const Probe p = probe_value(occ, *resu, step);
     std::string what = occ.text("NOM_CHAM") + "  " + p.where + "  " + occ.text("NOM_CMP");
     if (occ.has("LEGENDE")) what += "  [" + occ.text("LEGENDE") + "]";
@@ -229,7 +277,8 @@ ConceptPtr test_resu(const Args& args, Session& session) {
   }
   for (const auto& occ : args.factors("CHAM_ELEM")) {
     const auto field = tested_field(occ, false);
-    const Probe p = cell_probe(occ, *field, *field->maillage->mesh);
+    const Probe p = cell_probe(occ, field->cells, field->type_cham.rfind("ELNO_", 0) == 0, field->nom_cham, "CHAM_GD",
+                               *field->maillage->mesh);
     std::string what = field->nom_cham + "  " + p.where + "  " + occ.text("NOM_CMP");
     if (occ.has("LEGENDE")) what += "  [" + occ.text("LEGENDE") + "]";
     report_checks(occ, session, p.value, what);

@@ -144,7 +144,7 @@ ConceptPtr test_table(const Args& args, Session& session) {
     value = values.front();
   }
   if (args.has("LEGENDE")) what += "  [" + args.text("LEGENDE") + "]";
-  report_checks(args, session, value, what);
+  report_checks(args, session, value, what, column.type == 'I');
   return nullptr;
 }
 

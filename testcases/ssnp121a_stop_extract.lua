@@ -1,6 +1,6 @@
 -- SSNP121 A stopped at an instant of its list, its fields taken out and printed as code_aster's
 -- own SSNP121 decks do: STAT_NON_LINE INCREMENT NUME_INST_FIN, NEWTON REAC_INCR, CONVERGENCE ARRET,
--- CREA_CHAMP OPERATION='EXTR' (tested through TEST_RESU CHAM_NO and CHAM_ELEM), IMPR_RESU MODELE,
+-- CREA_CHAMP OPERATION='EXTR' (tested through TEST_RESU CHAM_NO and CHAM_ELEM, its node by NOEUD or GROUP_NO), IMPR_RESU MODELE,
 -- MAILLAGE and NOM_CMP in FORMAT='RESULTAT'.
 -- Purpose: the list holds 0, 0.5, 1 and 1.5; NUME_INST_FIN = 2 stops the computation at 1 (index 2,
 --          the list's first time being 0), so the result holds NUME_ORDRE 0, 1, 2 (the error deck
@@ -49,5 +49,8 @@ TEST_RESU{ RESU = { _F{ RESULTAT = RESU, INST = 1.0, NOM_CHAM = 'DEPL', GROUP_NO
                          _F{ CHAM_GD = SIELNO, TYPE_TEST = 'MAX', NOM_CMP = 'SIYY', VALE_CALC = -9.978221297e+04,
                              REFERENCE = 'ANALYTIQUE', VALE_REFE = -1.0e5, PRECISION = 1.0e-2 },
                          _F{ CHAM_GD = SIELNO, MAILLE = 'M93', NOEUD = 'N1', NOM_CMP = 'SIYY', LEGENDE = 'corner A', VALE_CALC = -1.000618857e+05,
+                             REFERENCE = 'ANALYTIQUE', VALE_REFE = -1.0e5, PRECISION = 1.0e-2 },
+                         -- the same node named by its one-node group
+                         _F{ CHAM_GD = SIELNO, MAILLE = 'M93', GROUP_NO = 'A', NOM_CMP = 'SIYY', VALE_CALC = -1.000618857e+05,
                              REFERENCE = 'ANALYTIQUE', VALE_REFE = -1.0e5, PRECISION = 1.0e-2 } } }
 FIN()

@@ -70,8 +70,8 @@ Keyword algo_reso_cont(bool discrete) {
       .into_values({"POINT_FIXE", "NEWTON"});
 }
 
-std::vector<Keyword> test_reference_keywords() {
-  return {
+std::vector<Keyword> test_reference_keywords(bool integers) {
+  std::vector<Keyword> out = {
       real("VALE_CALC", "Non-regression value computed by lunaster itself"),
       real("TOLE_MACHINE", "Relative tolerance of the VALE_CALC check").def(1e-6).range(0.0, std::nullopt),
       text("REFERENCE", "Source of VALE_REFE")
@@ -80,12 +80,26 @@ std::vector<Keyword> test_reference_keywords() {
       text("CRITERE", "Relative or absolute comparison").into_values({"RELATIF", "ABSOLU"}).def("RELATIF"),
       real("PRECISION", "Tolerance of the VALE_REFE check").def(1e-3).range(0.0, std::nullopt),
       real("ORDRE_GRANDEUR", "Magnitude of the tested quantity: a RELATIF check divides by it when the reference (VALE_CALC or VALE_REFE) is smaller, as for a value zero in theory").above(0.0),
+      text("VALE_ABS",
+           "'OUI': compare the absolute values, |computed| with |VALE_CALC| and |VALE_REFE| (as code_aster: a "
+           "quantity whose sign depends on a convention, such as an orientation of the normal, or a contact "
+           "pressure of either sign); the check lines print the absolute values")
+          .into_values({"OUI", "NON"})
+          .def("NON"),
       text("LEGENDE", "Free label printed with the check"),
   };
+  if (integers) {
+    out.push_back(integer("VALE_CALC_I", "Non-regression value of an integer parameter (instead of VALE_CALC)"));
+    out.push_back(integer("VALE_REFE_I", "Reference value of an integer parameter (instead of VALE_REFE)"));
+  }
+  return out;
 }
 
-std::vector<Rule> test_reference_rules() {
-  return {together({"VALE_REFE", "REFERENCE"}), at_least_one({"VALE_CALC", "VALE_REFE"})};
+std::vector<Rule> test_reference_rules(bool integers) {
+  if (!integers) return {together({"VALE_REFE", "REFERENCE"}), at_least_one({"VALE_CALC", "VALE_REFE"})};
+  return {present_present({"VALE_REFE", "REFERENCE"}), present_present({"VALE_REFE_I", "REFERENCE"}),
+          at_most_one({"VALE_CALC", "VALE_CALC_I"}), at_most_one({"VALE_REFE", "VALE_REFE_I"}),
+          at_least_one({"VALE_CALC", "VALE_REFE", "VALE_CALC_I", "VALE_REFE_I"})};
 }
 
 }  // namespace lunaster::catalog::common

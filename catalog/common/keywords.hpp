@@ -32,9 +32,10 @@ Keyword algo_reso_cont(bool discrete);
 /// ITER_CONT_MULT of the discrete formulation: status iterations allowed per contact point.
 Keyword iter_cont_mult();
 
-/// The two-tier check keywords of TEST_RESU (VALE_CALC, REFERENCE, VALE_REFE, ...).
-std::vector<Keyword> test_reference_keywords();
-/// Rules tying the reference keywords together.
-std::vector<Rule> test_reference_rules();
+/// The two-tier check keywords of TEST_RESU (VALE_CALC, REFERENCE, VALE_REFE, VALE_ABS ...);
+/// `integers` adds VALE_CALC_I and VALE_REFE_I (an integer value tested: TEST_TABLE).
+std::vector<Keyword> test_reference_keywords(bool integers = false);
+/// Rules tying the reference keywords together (with `integers`, of both kinds).
+std::vector<Rule> test_reference_rules(bool integers = false);
 
 }  // namespace lunaster::catalog::common

@@ -66,6 +66,7 @@ const std::map<std::string, std::string> kCompatibilityOnly = {
     {"AFFE_CHAR_MECA/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
     {"AFFE_MODELE/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
     {"CALC_CHAMP/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
+    {"CREA_CHAMP/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
     {"POST_RELEVE_T/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
     {"TEST_TABLE/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
     {"DEFI_CONTACT/INFO", "code_aster's print level; lunaster's is set for the run (lunaster run -v / -q)"},
