@@ -6,6 +6,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -143,6 +144,9 @@ class ContactHook {
   /// State at the start of a step, and its restoration (step subdivision).
   virtual ContactSnapshot snapshot() const { return {}; }
   virtual void restore(const ContactSnapshot& /*state*/) {}
+  /// What the hook can say of a failed iteration (a singular system, Newton out of iterations):
+  /// e.g. friction's points that all slip, or whose statuses cycled. Empty: nothing.
+  virtual std::vector<std::string> failure_hints() const { return {}; }
   /// A step converged at u: the contact history (friction's statuses and tractions) at its end
   /// becomes the next step's start. Called before the step's results are written.
   virtual void commit_step(const Vector& /*u*/) {}

@@ -465,6 +465,7 @@ int ContactProblem::update_statuses(const Vector& u) {
 void ContactProblem::begin_step(const Vector& u, const Log& log) {
   u_start_ = u;
   bounds_.clear(), u_of_bounds_.resize(0), bound_change_ = 0.0;
+  if (friction_) status_trail_.assign(points_.size(), std::string());
   n_status_iter_ = 0;
   n_geom_iter_ = 0;
   n_pairings_ = 0;
@@ -669,6 +670,11 @@ void ContactProblem::frictional_point(size_t i, const Vector& u, Vector& residua
   state.status = p.active ? PointStatus::Stick : PointStatus::Open;  // the normal status, the loops' own
   const PointResponse r = friction_->evaluate(in, states_.start(i), state);
   states_.present(i) = state;
+  if (status_trail_.size() == points_.size()) {
+    const char letter = "OSG"[static_cast<int>(r.status)];
+    std::string& trail = status_trail_[i];
+    if (trail.empty() || trail.back() != letter) trail.push_back(letter);
+  }
   LinearGap slips[2];
   if (p.paired) slip_gaps(p, slips);
   const LinearGap* gaps[3] = {&p.gap, &slips[0], &slips[1]};
@@ -705,6 +711,47 @@ void ContactProblem::frictional_point(size_t i, const Vector& u, Vector& residua
       for (int a = 0; a < p.n_slave; ++a)
         for (int b = 0; b < p.n_slave; ++b)
           local->add_at(lz[k][a], lz[l][b], on[k] * on[l] * r.k_zz[k][l] * p.phi[a] * p.phi[b]);
+}
+
+std::vector<std::string> ContactProblem::failure_hints() const {
+  std::vector<std::string> hints;
+  if (!friction_) return hints;
+  int closed = 0, slipping = 0;
+  for (size_t i = 0; i < points_.size(); ++i) {
+    if (!points_[i].active) continue;
+    ++closed;
+    slipping += states_.present(i).status == PointStatus::Slip;
+  }
+  if (closed > 0 && slipping == closed)
+    hints.push_back("all " + std::to_string(closed) + " closed contact points slip at the last iterate: Coulomb "
+                    "friction holds at most mu times the normal force, and a larger tangential load lets the body "
+                    "slide with nothing to stop it");
+  // Points whose status went back and forth within the step.
+  static const char* const names[] = {"open", "stick", "slip"};
+  int listed = 0, cycling = 0;
+  std::string list;
+  for (size_t i = 0; i < status_trail_.size(); ++i) {
+    const std::string& trail = status_trail_[i];
+    if (trail.size() < 4) continue;
+    ++cycling;
+    if (listed == 5) continue;
+    const ContactPoint& p = points_[i];
+    int node = p.slave_nodes[0];
+    for (int a = 1; a < p.n_slave; ++a)
+      if (p.phi[a] > p.phi[0]) node = p.slave_nodes[a];
+    std::string sequence;
+    for (size_t k = 0; k < trail.size() && k < 12; ++k)
+      sequence += std::string(k ? ", " : "") + names[std::string("OSG").find(trail[k])];
+    if (trail.size() > 12) sequence += ", ...";
+    list += std::string(listed ? "; " : "") + "at slave node " + node_label(mesh_, node) +
+            (p.slave_cell >= 0 ? " (cell " + cell_label(mesh_, p.slave_cell) + ")" : "") + ": " + sequence;
+    ++listed;
+  }
+  if (cycling > 0)
+    hints.push_back(std::to_string(cycling) + " contact point(s) changed friction status 3 times or more in this "
+                    "step (stick/slip cycling): " + list +
+                    "; smaller load increments, or a smaller augmentation of the friction multipliers, may settle them");
+  return hints;
 }
 
 bool ContactProblem::newton_converged() const {

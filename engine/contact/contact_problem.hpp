@@ -54,6 +54,10 @@ class ContactProblem final : public ContactHook {
   ContactSnapshot snapshot() const override;
   void restore(const ContactSnapshot& state) override;
   void commit_step(const Vector& u) override;
+  /// With friction: whether every closed point slips (the tangential load beyond what friction
+  /// holds), and the points whose status changed three times or more in the step, with their
+  /// sequence (at most five named).
+  std::vector<std::string> failure_hints() const override;
 
   // ---- inspection (tests, reports) ----
   const std::vector<ContactPoint>& points() const { return points_; }
@@ -149,6 +153,7 @@ class ContactProblem final : public ContactHook {
   PointStates states_;                     ///< per point, with friction
   Vector u_start_;                         ///< u at the step's start (the slips are measured from it)
   std::vector<PointState> reported_start_; ///< the last committed step's start states (its results)
+  std::vector<std::string> status_trail_;  ///< per point, its friction statuses in this step ('O', 'S', 'G')
   std::vector<double> bounds_;             ///< per point, its pressure at the last iterate (friction)
   Vector u_of_bounds_;                     ///< that iterate
   double bound_change_ = 0.0;

@@ -351,6 +351,9 @@ class RelationsHook final : public ContactHook {
   void commit_step(const Vector& u) override {
     if (contact_) contact_->commit_step(u);
   }
+  std::vector<std::string> failure_hints() const override {
+    return contact_ ? contact_->failure_hints() : std::vector<std::string>{};
+  }
   void restore(const ContactSnapshot& state) override {
     if (contact_) contact_->restore(state);
   }

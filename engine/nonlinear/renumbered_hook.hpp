@@ -40,6 +40,7 @@ class RenumberedHook final : public ContactHook {
   ContactSnapshot snapshot() const override { return inner_.snapshot(); }
   void restore(const ContactSnapshot& state) override { inner_.restore(state); }
   void commit_step(const Vector& u) override { inner_.commit_step(to_hook(u)); }
+  std::vector<std::string> failure_hints() const override { return inner_.failure_hints(); }
 
  private:
   Vector to_hook(const Vector& v) const;

@@ -146,7 +146,11 @@ SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err
       !distributed_ && !k_ff_holder() && (matrix_.elastic().ff.nonZeros() > 0 || matrix_.elastic().equation.empty());
   if (whole_here) stiffness.k_ff = &matrix_.elastic().ff;
   else stiffness.constrained = matrix_.elastic().constrained;
-  return FailureDiagnosis(model_, options_, contact_ != nullptr).explain(err, t, dofs_, cons.free_index, stiffness);
+  SolveError explained =
+      FailureDiagnosis(model_, options_, contact_ != nullptr).explain(err, t, dofs_, cons.free_index, stiffness);
+  if (contact_)
+    for (const std::string& h : contact_->failure_hints()) explained.add_hint(h);
+  return explained;
 }
 
 /// The system of one Newton iteration, K_ff + contact terms restricted to the free
@@ -248,6 +252,8 @@ void StaticSolver::newton_loop(Instant& in, Vector& u, int fixed_point) {
                        {"last residuals: relative " + sci(in.norms.relative) + ", absolute " +
                             sci(in.norms.absolute) + " N",
                         "loop: Newton (contact/geometry fixed-point pass " + std::to_string(fixed_point) + ")"});
+  if (contact_)
+    for (const std::string& h : contact_->failure_hints()) err.add_hint(h);
   Failure& f = err.failure();
   f.what = Failure::What::NewtonIterations;
   f.limit = options_.iter_glob_maxi;
