@@ -33,6 +33,11 @@ mkdir -p "$m"
 "$gen" --hertz hexa20:80 --grading 1.5 -o "$tc/hertz_sphere_3d.med"
 "$gen" --hertz quad8:160 --grading 1.5 -o "$tc/hertz_sphere_axis.med"
 "$gen" --hertz hexa20:20 --grading 1.5 -o "$tc/meshes/hertz_sphere_3d_coarse.med"
+# Coulomb friction: the frictional patch tests (2D matching blocks, 3D cubes with their sides as
+# groups) and Cattaneo's cylinder (the whole scene: a load along x).
+"$gen" --upper quad4:8 --lower quad4:8 -o "$tc/friction_patch_2d.med"
+"$gen" --v1 hexa8:4x4x4 --v2 hexa8:4x4x4 --x-faces -o "$tc/friction_patch_3d.med"
+"$gen" --hertz quad4:400 --grading 1.1 --full -o "$tc/cattaneo_cylinder.med"
 
 # The README's first deck (testcases/first_deck.lua): a unit square of 4 x 4 QUAD4
 "$gen" --block quad4:4 -o "$tc/first_deck.med"
