@@ -122,10 +122,11 @@ void StaticSolver::choose_tangent() {
 
 Vector StaticSolver::stiffness_times(const Vector& u) const { return matrix_.times(u, layout_, k_ff_holder()); }
 
-Vector StaticSolver::internal_forces(const Vector& u, double t) const {
+Vector StaticSolver::internal_forces(const Vector& u, double t) {
   if (matrix_.constant()) return stiffness_times(u);
   Vector f;
-  if (!matrix_.internal_forces(u, f)) throw integration_failure(t);
+  // K at u from the same integration: the refresh of an iteration that solves keeps it.
+  if (!matrix_.refresh_with_forces(u, f)) throw integration_failure(t);
   layout_.complete(f);
   return f;
 }
