@@ -306,7 +306,9 @@ void StaticSolver::check_bodies_held(const Instant& in, const SystemTerms& terms
     for (const auto& term : e.terms) check.related.push_back(term.first);
   }
   check.geometry = !in_parts_;
+  // (Not a softening tangent's K_ff: Cholesky would stop at a negative pivot, no mechanism.)
   check.factorise = !held_by_relations && !interface_.active() && backend != SolverKind::Cholmod &&
+                    matrix_.positive_definite() &&
                     backend != SolverKind::Petsc && !distributed_ && options_.factor.singularity.digits >= 0;
   const auto k_ff_alone = [&]() -> const SparseMatrix& {
     matrix_.restore();  // K_ff itself, without this iteration's terms
@@ -364,7 +366,9 @@ void StaticSolver::newton_step(Instant& in, Vector& u, int iter, Vector& residua
   } restore_at_end{this};
   // The system of this iteration: the contact law may condense its multipliers out
   // (then it is SPD), and says which kind of matrix is left.
-  const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
+  MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
+  // A softening tangent is not positive definite: symmetric indefinite, never Cholesky.
+  if (kind == MatrixKind::SymmetricPositiveDefinite && !matrix_.positive_definite()) kind = MatrixKind::SymmetricIndefinite;
   // (The interface solver is CHOLMOD's factorisation of K_ff: no other backend is chosen.)
   const SolverKind backend = interface_.active() ? SolverKind::Cholmod : choose_backend(kind);
   check_bodies_held(in, terms, backend);
@@ -484,7 +488,8 @@ void StaticSolver::apply_increment(Instant& in, Vector& du, const RefinedSolve& 
 }
 
 SolverKind StaticSolver::choose_backend(MatrixKind kind) {
-  const LinearSolve::Backend chosen = linear_->choose(kind, stats_.n_free, model_.dim, distributed_);
+  const LinearSolve::Backend chosen =
+      linear_->choose(kind, stats_.n_free, model_.dim, distributed_, matrix_.positive_definite());
   solve_log_.backend(chosen, kind, stats_.n_free);
   return chosen.kind;
 }

@@ -39,6 +39,8 @@ class SystemMatrix {
   bool refresh_with_forces(const Vector& u, Vector& f_int);
   /// Whether the tangent is constant (K and its factorisations kept for the run).
   bool constant() const { return tangent_ == nullptr || tangent_->constant(); }
+  /// Whether K is positive definite (false: a softening behaviour's tangent, TangentSource).
+  bool positive_definite() const { return tangent_ == nullptr || tangent_->positive_definite(); }
 
   /// K split: K_ff (numbered as Constraints::free_index), the constrained columns. Between
   /// updates (or after restore) ff is K_ff itself.
