@@ -41,6 +41,12 @@ class SystemMatrix {
   bool constant() const { return tangent_ == nullptr || tangent_->constant(); }
   /// Whether K is positive definite (false: a softening behaviour's tangent, TangentSource).
   bool positive_definite() const { return tangent_ == nullptr || tangent_->positive_definite(); }
+  /// The kind of the system K + terms whose own kind is `terms`: symmetric indefinite rather
+  /// than SPD when K is not positive definite (a softening tangent: never Cholesky).
+  MatrixKind kind(MatrixKind terms) const {
+    return terms == MatrixKind::SymmetricPositiveDefinite && !positive_definite() ? MatrixKind::SymmetricIndefinite
+                                                                                  : terms;
+  }
 
   /// K split: K_ff (numbered as Constraints::free_index), the constrained columns. Between
   /// updates (or after restore) ff is K_ff itself.
