@@ -17,6 +17,7 @@
 #include "engine/material/cell_behaviours.hpp"
 #include "engine/nonlinear/static_solver.hpp"
 #include "tests/unit/fe/fe_test_util.hpp"
+#include "tests/unit/nonlinear/solver_choice.hpp"
 
 namespace lunaster::engine {
 namespace {
@@ -83,10 +84,7 @@ TEST(IndefiniteTangent, ASofteningTangentIsFactorisedIndefiniteAndSolvedExactly)
 
   for (const bool automatic : {true, false}) {
     SCOPED_TRACE(automatic ? "METHODE AUTO" : "MUMPS");
-    NewtonOptions options;
-    options.resi_glob_rela = 1e-10;
-    options.auto_solver = automatic;
-    if (!automatic) options.solver = SolverKind::Mumps;
+    NewtonOptions options = test::auto_or_mumps(automatic);
     std::vector<MatrixKind> factorised;
     options.observe_factorisation = [&factorised](const SparseMatrix&, MatrixKind kind, const std::vector<int>&) {
       factorised.push_back(kind);
