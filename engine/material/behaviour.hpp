@@ -60,6 +60,10 @@ class Behaviour {
   /// and at every instant, with no internal variables: the tangent is then the stiffness, which
   /// a driver assembles once (per set of constraints) and keeps factorised.
   virtual bool is_linear() const = 0;
+  /// False when the consistent tangent may lose positive definiteness (a softening law): a
+  /// system built from it is then factorised as symmetric indefinite (LDL^T or LU), never by
+  /// Cholesky.
+  virtual bool tangent_positive_definite() const { return true; }
   /// Names of the internal variables, in storage order (e.g. {"EPSPEQ", "INDIPLAS"}).
   virtual const std::vector<std::string>& variable_names() const = 0;
   int n_variables() const { return static_cast<int>(variable_names().size()); }

@@ -55,4 +55,10 @@ bool CellBehaviours::all_linear() const {
   return true;
 }
 
+bool CellBehaviours::tangents_positive_definite() const {
+  for (int c : model_->volume_cells())
+    if (of_cell_[c] && !of_cell_[c]->tangent_positive_definite()) return false;
+  return true;
+}
+
 }  // namespace lunaster::engine

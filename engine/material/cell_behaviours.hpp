@@ -36,6 +36,9 @@ class CellBehaviours {
   /// True when every cell's response is linear in the displacement: its behaviour linear
   /// (Behaviour::is_linear) and its kinematics small strain. The tangent is then the stiffness.
   bool all_linear() const;
+  /// True when every cell's behaviour keeps a positive definite tangent
+  /// (Behaviour::tangent_positive_definite).
+  bool tangents_positive_definite() const;
   const FeModel& model() const { return *model_; }
 
  private:

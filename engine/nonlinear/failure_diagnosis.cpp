@@ -34,6 +34,9 @@ SolveError FailureDiagnosis::explain(const SolveError& err, double t, const DofM
     split_matrix(k, stiffness.constrained, whole);
     return diagnose_singular_system(model_, dofs, free_index, whole.ff, err, t, test(), with_contact_, named);
   }();
+  if (found.failure().what == Failure::What::RigidBodyMode && stiffness.system && stiffness.k_ff &&
+      stiffness.system->rows() == stiffness.k_ff->rows())
+    found = against_contact(found, err, t, dofs, free_index, stiffness, named);
   if (!approximate.empty()) {
     std::vector<std::string> hints;
     for (const auto& a : approximate) hints.push_back(a.hint);
@@ -45,6 +48,25 @@ SolveError FailureDiagnosis::explain(const SolveError& err, double t, const DofM
                    "unscaled: a multiplier's pivot, small in absolute terms, counts as null; let MUMPS scale the "
                    "matrix, or turn the pivot test off");
   return found;
+}
+
+SolveError FailureDiagnosis::against_contact(const SolveError& found, const SolveError& err, double t,
+                                            const DofMap& dofs, const std::vector<int>& free_index,
+                                            const Stiffness& stiffness, const std::string& named) const {
+  const SparseMatrix held =
+      contact_hold_stiffness(dofs, free_index, *stiffness.k_ff, *stiffness.system, stiffness.increment);
+  if (auto still = find_rigid_body_mode(model_, dofs, free_index, held, t, test())) {  // the motion left free
+    still->add_hint("the contact terms of the failed system do not hold it either");
+    return *still;
+  }
+  SolveError contact = diagnose_singular_system(model_, dofs, free_index, held, err, t, test(), true, named);
+  std::vector<std::string> hints{"without its contact terms the stiffness is singular (" + rigid_body_mode_of(found) +
+                                 "), but the contact terms of the failed system hold that body: the trouble is not "
+                                 "its support but the system with the contact terms"};
+  if (contact.hints().size() > 1)  // not its first, that the stiffness alone is regular
+    hints.insert(hints.end(), contact.hints().begin() + 1, contact.hints().end());
+  contact.set_hints(std::move(hints));
+  return contact;
 }
 
 std::vector<FailureDiagnosis::Approximation> FailureDiagnosis::approximations() const {

@@ -23,9 +23,16 @@ class FailureDiagnosis {
     const SparseMatrix* k_ff = nullptr;  ///< the whole K_ff on this process; null: assembled whole for it
     std::vector<int> constrained;        ///< the Dirichlet set K_ff was split by (when assembled here)
     bool on_no_rank = false;             ///< a mesh in parts: no rank holds it, the failure is said as it is
+    /// The failed system with its contact terms (free numbering as K_ff), when K_ff is here:
+    /// a body K_ff alone leaves free is looked for in it too (contact_hold_stiffness). Null: none.
+    const SparseMatrix* system = nullptr;
+    bool increment = false;  ///< `system` is the contact terms alone (the interface solver's)
   };
   /// A solve failure `err` at instant t explained by the elastic stiffness (rigid-body modes, a
-  /// null pivot), with the approximations of the factors the run asked for named first.
+  /// null pivot), with the approximations of the factors the run asked for named first. A
+  /// rigid-body mode of K_ff alone that the contact terms of the failed system hold is not the
+  /// cause: the failure is then the contact's conditioning, and its hints say that contact
+  /// holds that body.
   SolveError explain(const SolveError& err, double t, const DofMap& dofs, const std::vector<int>& free_index,
                      const Stiffness& stiffness) const;
   /// What check_held looks at.
@@ -53,6 +60,12 @@ class FailureDiagnosis {
   /// The approximations of the factors the run asked for (MUMPS's filter, block low rank,
   /// single precision); empty when the factors are exact.
   std::vector<Approximation> approximations() const;
+  /// `found`, a rigid-body mode of K_ff alone, checked against the contact terms of the failed
+  /// system (Stiffness::system): still free, `found` with a hint that contact does not hold it
+  /// either; held, the contact's error instead (diagnose_singular_system on the held stiffness).
+  SolveError against_contact(const SolveError& found, const SolveError& err, double t, const DofMap& dofs,
+                             const std::vector<int>& free_index, const Stiffness& stiffness,
+                             const std::string& named) const;
   const FeModel& model_;
   const NewtonOptions& options_;
   bool with_contact_;

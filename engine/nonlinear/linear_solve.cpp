@@ -33,7 +33,8 @@ constexpr int kLargeSpd3d = 100000;
 
 }  // namespace
 
-LinearSolve::Backend LinearSolve::choose(MatrixKind kind, int n_free, int dim, bool distributed) {
+LinearSolve::Backend LinearSolve::choose(MatrixKind kind, int n_free, int dim, bool distributed,
+                                        bool definite_stiffness) {
   Backend out;
   if (options_.solver == SolverKind::Petsc) return out.kind = SolverKind::Petsc, out;  // iterative: any kind, as asked
   // A large 3D SPD system: a factorisation fills too much. On the 2.8e5-unknown HEXA8/HEXA20
@@ -72,9 +73,10 @@ LinearSolve::Backend LinearSolve::choose(MatrixKind kind, int n_free, int dim, b
   // way. The SSNP121 3D contact benchmark (1.9e4 unknowns): 1.13e10 operations at CHOLMOD's
   // rate against MUMPS's LDL^T of 1.01e10 at its own, the factorisation phase 0.75x; the
   // same scene at 8.4e3 unknowns, 0.1 s against UMFPACK's 2.0 s. Not on a large 3D system,
-  // where CHOLMOD's factor fills too much (above).
-  saddle_ = kind == MatrixKind::SymmetricIndefinite && !parallel::launched_by_mpi() && parallel::size() == 1 &&
-            !distributed && !(dim == 3 && n_free > kLargeSpd3d);
+  // where CHOLMOD's factor fills too much (above), nor on an indefinite displacements' block
+  // (a softening tangent), whose Schur form is not positive definite either.
+  saddle_ = kind == MatrixKind::SymmetricIndefinite && definite_stiffness && !parallel::launched_by_mpi() &&
+            parallel::size() == 1 && !distributed && !(dim == 3 && n_free > kLargeSpd3d);
   out.kind = small ? SolverKind::Umfpack : SolverKind::Mumps;
   out.fallback = out.kind;
   if (!note_said_) out.note = saddle_ ? BackendNote::SaddleSchur : small ? BackendNote::Umfpack : BackendNote::Mumps;

@@ -91,8 +91,10 @@ class LinearSolve {
   LinearSolve(NewtonOptions& options, SolverStats& stats, const Log& log)
       : options_(options), stats_(stats), log_(log) {}
 
-  /// The backend for a system of this kind with n_free unknowns.
-  Backend choose(MatrixKind kind, int n_free, int dim, bool distributed);
+  /// The backend for a system of this kind with n_free unknowns. `definite_stiffness`: the
+  /// displacements' block is positive definite (false: a softening tangent), so that an
+  /// indefinite system may go to the saddle-point backend (Cholesky of that block's Schur form).
+  Backend choose(MatrixKind kind, int n_free, int dim, bool distributed, bool definite_stiffness = true);
   /// The backend of this kind, made the first time (one per kind for the run: each keeps its
   /// analysis while the pattern holds).
   LinearSolver& backend(SolverKind kind, const Events& events);

@@ -205,6 +205,74 @@ std::optional<SolveError> find_unheld_body(const FeModel& model, const DofMap& d
   return std::nullopt;
 }
 
+namespace {
+
+/// Per free equation: a displacement whose column in `system` is a unit diagonal alone (an
+/// equation eliminated by a relation), while K_ff's column has more.
+std::vector<char> eliminated_displacements(const std::vector<char>& displacement, const SparseMatrix& k_ff,
+                                           const SparseMatrix& system) {
+  std::vector<char> out(displacement.size(), 0);
+  for (int j = 0; j < static_cast<int>(displacement.size()); ++j) {
+    if (!displacement[j]) continue;
+    int entries = 0;
+    bool unit = false;
+    for (SparseMatrix::InnerIterator it(system, j); it; ++it)
+      if (it.value() != 0.0) ++entries, unit = it.row() == j && it.value() == 1.0;
+    int stiffness = 0;
+    for (SparseMatrix::InnerIterator it(k_ff, j); it; ++it) stiffness += it.value() != 0.0;
+    out[j] = entries == 1 && unit && stiffness > 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+SparseMatrix contact_hold_stiffness(const DofMap& dofs, const std::vector<int>& free_index, const SparseMatrix& k_ff,
+                                    const SparseMatrix& system, bool increment) {
+  const int n = static_cast<int>(k_ff.cols());
+  LUNASTER_ASSERT(system.rows() == n && system.cols() == n, "contact hold: the system and K_ff differ in size");
+  std::vector<char> displacement(n, 0);
+  for (int eq = 0; eq < dofs.n_dofs(); ++eq)
+    if (free_index[eq] >= 0) displacement[free_index[eq]] = is_displacement(dofs.component_of(eq));
+  const std::vector<char> eliminated = eliminated_displacements(displacement, k_ff, system);
+  const auto kept = [&](int j) { return displacement[j] && !eliminated[j]; };
+  // The contact terms on the displacements, and each multiplier column's couplings to them.
+  const SparseMatrix terms = increment ? system : SparseMatrix(system - k_ff);
+  std::vector<Triplet> on_displacements, couplings;
+  for (int j = 0; j < n; ++j)
+    for (SparseMatrix::InnerIterator it(terms, j); it; ++it) {
+      const int i = static_cast<int>(it.row());
+      if (it.value() == 0.0 || !kept(i)) continue;
+      if (kept(j)) on_displacements.emplace_back(i, j, it.value());
+      else if (!displacement[j]) couplings.emplace_back(j, i, it.value());  // row: the multiplier
+    }
+  SparseMatrix contact(n, n), b(n, n);
+  contact.setFromTriplets(on_displacements.begin(), on_displacements.end());
+  b.setFromTriplets(couplings.begin(), couplings.end());
+  contact += SparseMatrix(b.transpose() * b);
+  double k_largest = 0.0, contact_largest = 0.0;
+  for (int j = 0; j < n; ++j)
+    if (displacement[j]) k_largest = std::max(k_largest, std::abs(k_ff.coeff(j, j)));
+  for (int j = 0; j < n; ++j) contact_largest = std::max(contact_largest, std::abs(contact.coeff(j, j)));
+  SparseMatrix held = k_ff;
+  if (contact_largest > 0.0) held += (k_largest / contact_largest) * contact;
+  std::vector<Triplet> pinned;
+  for (int j = 0; j < n; ++j)
+    if (eliminated[j]) pinned.emplace_back(j, j, k_largest);
+  SparseMatrix pins(n, n);
+  pins.setFromTriplets(pinned.begin(), pinned.end());
+  held += pins;
+  held.makeCompressed();
+  return held;
+}
+
+std::string rigid_body_mode_of(const SolveError& rigid) {
+  // rigid_body_error's message: "the stiffness matrix is singular at instant T: <the mode>".
+  const std::string& message = rigid.message();
+  const size_t colon = message.find(": ");
+  return colon == std::string::npos ? message : message.substr(colon + 2);
+}
+
 SolveError diagnose_singular_system(const FeModel& model, const DofMap& dofs, const std::vector<int>& free_index,
                                     const SparseMatrix& elastic, const SolveError& original, double t,
                                     SingularityTest test, bool contact_terms, const std::string& approximations) {

@@ -2,6 +2,7 @@
 /// Diagnosis of a singular system: which body can move, in which direction,
 /// and what the user can do about it.
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "engine/assembly/dof_map.hpp"
@@ -38,6 +39,21 @@ std::optional<SolveError> find_rigid_body_mode(const FeModel& model, const DofMa
 std::optional<SolveError> find_unheld_body(const FeModel& model, const DofMap& dofs,
                                            const std::vector<int>& free_index, const std::vector<int>& held,
                                            double t);
+
+/// The stiffness that tells whether the contact of a failed system holds the bodies: K_ff's
+/// displacement block (free numbering, as `k_ff`) plus that system's contact terms, scaled so
+/// that their largest diagonal is K_ff's: which motions they restrain counts, not how stiffly
+/// (a penalty far stiffer than the bodies would otherwise be a weak pivot of its own). The
+/// terms are `system` less K_ff on the displacement equations (`system` alone when
+/// `increment`: the interface solver's contact terms), and B^T B for the couplings B of its
+/// multiplier columns to the displacements. A displacement equation whose column in `system`
+/// is a unit diagonal alone (eliminated by a relation) counts as held.
+SparseMatrix contact_hold_stiffness(const DofMap& dofs, const std::vector<int>& free_index, const SparseMatrix& k_ff,
+                                    const SparseMatrix& system, bool increment);
+
+/// What a rigid-body error of find_rigid_body_mode says of the body and its motion ("the body
+/// V2 (8 cells) has a rigid-body mode (free to move along DY, detected at node N3)").
+std::string rigid_body_mode_of(const SolveError& rigid);
 
 /// `contact_terms`: the failed system had contact terms besides K (then, with K regular,
 /// they are blamed; otherwise the solve's accuracy is). `approximations`: how the factors were

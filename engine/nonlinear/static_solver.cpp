@@ -125,10 +125,11 @@ void StaticSolver::choose_tangent() {
 
 Vector StaticSolver::stiffness_times(const Vector& u) const { return matrix_.times(u, layout_, k_ff_holder()); }
 
-Vector StaticSolver::internal_forces(const Vector& u, double t) const {
+Vector StaticSolver::internal_forces(const Vector& u, double t) {
   if (matrix_.constant()) return stiffness_times(u);
   Vector f;
-  if (!matrix_.internal_forces(u, f)) throw integration_failure(t);
+  // K at u from the same integration: the refresh of an iteration that solves keeps it.
+  if (!matrix_.refresh_with_forces(u, f)) throw integration_failure(t);
   layout_.complete(f);
   return f;
 }
@@ -137,14 +138,17 @@ SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err
   // The elastic stiffness explains a failure; a tangent that follows u may just have lost its
   // stiffness at this iterate: a failed iteration, the step subdivided (TimeStepper).
   if (!matrix_.constant()) throw tangent_solve_failure(err, t);
-  matrix_.restore();  // K_ff itself, without this iteration's terms
   FailureDiagnosis::Stiffness stiffness;
+  // The failed system with its contact terms, kept before K_ff's values come back in its storage.
+  const SparseMatrix system = contact_ && matrix_.has_matrix() ? matrix_.matrix() : SparseMatrix();
+  stiffness.increment = matrix_.increment();
+  matrix_.restore();  // K_ff itself, without this iteration's terms
   stiffness.on_no_rank = in_parts_;
   // matrix_.elastic().ff is the whole K_ff unless the model is shared or K_ff went to the backend
   // (also when the backend failed after taking it).
   const bool whole_here =
       !distributed_ && !k_ff_holder() && (matrix_.elastic().ff.nonZeros() > 0 || matrix_.elastic().equation.empty());
-  if (whole_here) stiffness.k_ff = &matrix_.elastic().ff;
+  if (whole_here) stiffness.k_ff = &matrix_.elastic().ff, stiffness.system = system.nonZeros() ? &system : nullptr;
   else stiffness.constrained = matrix_.elastic().constrained;
   SolveError explained =
       FailureDiagnosis(model_, options_, contact_ != nullptr).explain(err, t, dofs_, cons.free_index, stiffness);
@@ -315,6 +319,7 @@ void StaticSolver::check_bodies_held(const Instant& in, const SystemTerms& terms
   }
   check.geometry = !in_parts_;
   check.factorise = !held_by_relations && !interface_.active() && backend != SolverKind::Cholmod &&
+                    matrix_.positive_definite() &&  // a softening K_ff's negative pivot is no mechanism
                     backend != SolverKind::Petsc && !distributed_ && options_.factor.singularity.digits >= 0;
   const auto k_ff_alone = [&]() -> const SparseMatrix& {
     matrix_.restore();  // K_ff itself, without this iteration's terms
@@ -372,7 +377,7 @@ void StaticSolver::newton_step(Instant& in, Vector& u, int iter, Vector& residua
   } restore_at_end{this};
   // The system of this iteration: the contact law may condense its multipliers out
   // (then it is SPD), and says which kind of matrix is left.
-  const MatrixKind kind = contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite;
+  const MatrixKind kind = matrix_.kind(contact_ ? contact_->matrix_kind() : MatrixKind::SymmetricPositiveDefinite);
   // (The interface solver is CHOLMOD's factorisation of K_ff: no other backend is chosen.)
   const SolverKind backend = interface_.active() ? SolverKind::Cholmod : choose_backend(kind);
   check_bodies_held(in, terms, backend);
@@ -492,7 +497,7 @@ void StaticSolver::apply_increment(Instant& in, Vector& du, const RefinedSolve& 
 }
 
 SolverKind StaticSolver::choose_backend(MatrixKind kind) {
-  const LinearSolve::Backend chosen = linear_->choose(kind, stats_.n_free, model_.dim, distributed_);
+  const auto chosen = linear_->choose(kind, stats_.n_free, model_.dim, distributed_, matrix_.positive_definite());
   solve_log_.backend(chosen, kind, stats_.n_free);
   return chosen.kind;
 }

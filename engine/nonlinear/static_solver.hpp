@@ -148,9 +148,10 @@ class StaticSolver {
   /// Whether this run shares the model among the ranks of an MPI run (see distributed_).
   bool shares_model() const;
   /// The internal forces at u: K u for a constant tangent (stiffness_times), else the tangent
-  /// source's, completed over the ranks. Throws ConvergenceError (BehaviourIntegration) when a
-  /// behaviour's integration failed at u (t: the instant, for the message).
-  Vector internal_forces(const Vector& u, double t) const;
+  /// source's, completed over the ranks, with the tangent at u from the same integration.
+  /// Throws ConvergenceError (BehaviourIntegration) when a behaviour's integration failed at u
+  /// (t: the instant, for the message).
+  Vector internal_forces(const Vector& u, double t);
   /// The tangent of the run: the given one, the behaviours' (refused on a shared model or a
   /// mesh in parts), or the elastic stiffness.
   void choose_tangent();

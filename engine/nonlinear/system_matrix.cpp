@@ -73,11 +73,12 @@ void SystemMatrix::clear() {
 }
 
 bool SystemMatrix::assemble(TangentSource& tangent, const Vector& u, const std::vector<int>& constrained,
-                            bool distributed) {
+                            bool distributed, Vector* f_int) {
   tangent_ = &tangent;
   distributed_ = distributed;
+  tangent_at_ = Vector();
   SparseMatrix k;
-  if (!tangent.assemble(u, &k, nullptr)) return false;
+  if (!tangent.assemble(u, &k, f_int)) return false;
   split_matrix(k, constrained, elastic_);
   elastic_.symmetric = !distributed;  // a rank holds only its own nodes' columns
   return true;
@@ -85,11 +86,25 @@ bool SystemMatrix::assemble(TangentSource& tangent, const Vector& u, const std::
 
 bool SystemMatrix::refresh(const Vector& u) {
   if (constant()) return true;
+  // The same u, bit for bit, as the last refresh_with_forces: K is its tangent already.
+  if (tangent_at_.size() == u.size() && std::memcmp(tangent_at_.data(), u.data(), sizeof(double) * u.size()) == 0)
+    return true;
+  return reassemble(u, nullptr);
+}
+
+bool SystemMatrix::refresh_with_forces(const Vector& u, Vector& f_int) {
+  LUNASTER_ASSERT(!constant(), "a constant tangent's internal forces are K u");
+  if (!reassemble(u, &f_int)) return false;
+  tangent_at_ = u;
+  return true;
+}
+
+bool SystemMatrix::reassemble(const Vector& u, Vector* f_int) {
   restore();
   const std::vector<int> constrained = elastic_.constrained;
   elastic_.ff = SparseMatrix();
   elastic_.c = SparseMatrix();
-  const bool assembled = assemble(*tangent_, u, constrained, distributed_);
+  const bool assembled = assemble(*tangent_, u, constrained, distributed_, f_int);
   // New values (or none, when an integration failed: the next refresh assembles them): a new
   // generation (new key); K_ff's storage is new, its contact positions with it.
   ++cache_.elastic_generation;
@@ -97,10 +112,6 @@ bool SystemMatrix::refresh(const Vector& u) {
   cache_.contact_only.clear();
   ghost_nodes_.clear();  // the columns at the eliminated equations' nodes, K's of before
   return assembled;
-}
-
-bool SystemMatrix::internal_forces(const Vector& u, Vector& f_int) const {
-  return tangent_->assemble(u, nullptr, &f_int);
 }
 
 Vector SystemMatrix::times(const Vector& u, const RankLayout& layout, const LinearSolver* holder) const {

@@ -23,17 +23,30 @@ class SystemMatrix {
   void clear();
   /// K from `tangent` (borrowed for the run) at u, split by the Dirichlet set `constrained`
   /// (the same at every instant); `distributed`: this rank holds only its own nodes' columns.
-  /// Returns false when a behaviour's integration failed (TangentSource::assemble).
-  bool assemble(TangentSource& tangent, const Vector& u, const std::vector<int>& constrained, bool distributed);
+  /// With `f_int`, the internal forces at u from the same integration. Returns false when a
+  /// behaviour's integration failed (TangentSource::assemble).
+  bool assemble(TangentSource& tangent, const Vector& u, const std::vector<int>& constrained, bool distributed,
+                Vector* f_int = nullptr);
   /// A tangent that is not constant: K assembled again at u (the same split), so that the
   /// next update builds its system from it (new values key, new contact positions). Nothing
-  /// for a constant one. Returns false when a behaviour's integration failed at u.
+  /// for a constant one, nor when K is already the tangent at u (refresh_with_forces at the
+  /// same u). Returns false when a behaviour's integration failed at u.
   bool refresh(const Vector& u);
+  /// A tangent that is not constant: the refresh at u and the internal forces at u (this rank's
+  /// share) into `f_int`, from one integration of the behaviours (each point returns its stress
+  /// and its tangent together); the next refresh at the same u keeps this K. False when a
+  /// behaviour's integration failed at u.
+  bool refresh_with_forces(const Vector& u, Vector& f_int);
   /// Whether the tangent is constant (K and its factorisations kept for the run).
   bool constant() const { return tangent_ == nullptr || tangent_->constant(); }
-  /// The internal forces at u from a tangent that is not constant (this rank's share) into
-  /// `f_int`; false when a behaviour's integration failed at u.
-  bool internal_forces(const Vector& u, Vector& f_int) const;
+  /// Whether K is positive definite (false: a softening behaviour's tangent, TangentSource).
+  bool positive_definite() const { return tangent_ == nullptr || tangent_->positive_definite(); }
+  /// The kind of the system K + terms whose own kind is `terms`: symmetric indefinite rather
+  /// than SPD when K is not positive definite (a softening tangent: never Cholesky).
+  MatrixKind kind(MatrixKind terms) const {
+    return terms == MatrixKind::SymmetricPositiveDefinite && !positive_definite() ? MatrixKind::SymmetricIndefinite
+                                                                                  : terms;
+  }
 
   /// K split: K_ff (numbered as Constraints::free_index), the constrained columns. Between
   /// updates (or after restore) ff is K_ff itself.
@@ -121,8 +134,13 @@ class SystemMatrix {
                     const std::vector<int>& eliminated);
   /// A shared model: this rank's columns only (the others are empty here).
   bool mine(int j) const { return cache_.owned.empty() || cache_.owned[j]; }
+  /// K (not constant) assembled again at u, with the internal forces into f_int when given.
+  bool reassemble(const Vector& u, Vector* f_int);
   TangentSource* tangent_ = nullptr;
   bool distributed_ = false;
+  /// The displacement K is the tangent at (refresh_with_forces), empty when unknown: kept
+  /// until the next refresh, to skip a second integration at the same u.
+  Vector tangent_at_;
   SplitMatrix elastic_;
   Cache cache_;
   /// With eliminations on a shared model or in parts: the whole columns of K at the eliminated

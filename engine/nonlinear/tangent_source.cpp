@@ -29,8 +29,10 @@ class ElasticTangent final : public TangentSource {
 /// The behaviours' tangent: assembly's Tangent, whose states follow the driver's steps.
 class BehaviourTangent final : public TangentSource {
  public:
-  BehaviourTangent(const CellBehaviours& behaviours, const DofMap& dofs) : tangent_(behaviours, dofs) {}
+  BehaviourTangent(const CellBehaviours& behaviours, const DofMap& dofs)
+      : tangent_(behaviours, dofs), positive_definite_(behaviours.tangents_positive_definite()) {}
   bool constant() const override { return tangent_.constant(); }
+  bool positive_definite() const override { return positive_definite_; }
   bool assemble(const Vector& u, SparseMatrix* k, Vector* f_int) override { return tangent_.assemble(u, k, f_int); }
   void commit() override { tangent_.commit(); }
   void restore() override { tangent_.restore(); }
@@ -38,6 +40,7 @@ class BehaviourTangent final : public TangentSource {
 
  private:
   Tangent tangent_;
+  bool positive_definite_;
 };
 
 }  // namespace

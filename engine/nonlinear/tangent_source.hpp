@@ -21,6 +21,9 @@ class TangentSource {
   /// Dirichlet set, its factorisations are kept, and f_int = K u. False: K and f_int are
   /// assembled again at every Newton iteration that solves.
   virtual bool constant() const = 0;
+  /// False when the tangent may be indefinite (a softening behaviour): the system is then
+  /// factorised as symmetric indefinite, never by Cholesky.
+  virtual bool positive_definite() const { return true; }
   /// The tangent at u into *k and/or the internal forces into *f_int (either may be null), over
   /// the run's numbering (this rank's nodes' columns and entries when the model is shared).
   /// Returns false when a behaviour's integration failed at a point (no admissible state at the

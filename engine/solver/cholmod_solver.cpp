@@ -85,6 +85,18 @@ class CholmodSolver final : public LinearSolver {
     return factor_ && n_ == a.cols() && nnz_ == a.nonZeros() && fingerprint_ == fingerprint;
   }
   [[noreturn]] void fail(int column, const std::string& why);
+  /// The symbolic analysis of m's pattern (its upper view s): the ordering asked for, or AMD on
+  /// the node graph (nested dissection too where AMD fills much), with the sweep plan.
+  void analyse(const SparseMatrix& m, cholmod_sparse& s, std::uint64_t fingerprint);
+  /// METIS on the node graph tried beside AMD's analysis in factor_ (kept_fl, kept_lnz): the one
+  /// with fewer operations kept. Returns the note on the other ("; AMD: ..."), or empty.
+  std::string try_nested_dissection(const SparseMatrix& m, cholmod_sparse& s, double& kept_fl, double& kept_lnz);
+  /// The numeric factorisation on the analysis. False when a pivot CHOLMOD cannot take was gone
+  /// past as asked (MUMPS factorised m instead, past_); SolveError on a failure.
+  bool factorise_numerically(const SparseMatrix& m, cholmod_sparse& s);
+  /// The singularity test of the factor's pivots: a weak one is a SolveError or gone past
+  /// (singular_), as the test says.
+  void test_pivots(const SparseMatrix& m);
 
   mutable cholmod_common common_{};
   cholmod_factor* factor_ = nullptr;
@@ -455,6 +467,115 @@ Vector supernodal_solve(const cholmod_factor* factor, const SweepPlan& plan, con
   return out;
 }
 
+std::string CholmodSolver::try_nested_dissection(const SparseMatrix& m, cholmod_sparse& s, double& kept_fl,
+                                                 double& kept_lnz) {
+  std::string tried;
+  // Where AMD's factorisation of a 3D system (over 40 entries a column) needs over 5e9
+  // operations, or its factor is over 10 times A, nested dissection (METIS on the same
+  // node graph) is tried too and the factor with fewer operations kept: on the SSNP121
+  // mortar 3D benchmark 6.1e9 operations against AMD's 1.5e10, for 0.14 s of METIS.
+  // Below that, METIS costs about what it saves (the elastic 3D benchmark: 2.7e9 against
+  // 4.5e9 for 0.08 s), and on 2D meshes it gains little (6 % of the glued k = 16 mesh's
+  // operations) for more time (0.48 s) than the whole factorisation's analysis.
+  const double fl_amd = common_.fl;
+  if (factor_ && ((three_d_pattern(m) && fl_amd > 5e9) || common_.lnz > 10.0 * static_cast<double>(m.nonZeros()))) {
+    std::vector<int> nd = node_graph_ordering(m, &common_, GraphOrdering::Metis);
+    if (!nd.empty()) {
+      cholmod_factor* other = cholmod_analyze_p(&s, nd.data(), nullptr, 0, &common_);
+      const double fl_nd = common_.fl, lnz_nd = common_.lnz;
+      if (other && fl_nd < fl_amd) {
+        std::swap(factor_, other);
+        ordering_used_ = ordering_name(FactorOrdering::Metis);
+        kept_fl = fl_nd, kept_lnz = lnz_nd;
+        tried = "; AMD: " + analysis_count(fl_amd) + " operations";
+      } else if (other) {
+        tried = "; METIS: " + analysis_count(fl_nd) + " operations";
+      }
+      if (other) cholmod_free_factor(&other, &common_);
+    }
+  }
+  return tried;
+}
+
+void CholmodSolver::analyse(const SparseMatrix& m, cholmod_sparse& s, std::uint64_t fingerprint) {
+  if (factor_) cholmod_free_factor(&factor_, &common_);
+  // The ordering asked for (SOLVEUR RENUM) whatever it costs, else AMD on the node graph.
+  const bool asked = ordering_ != FactorOrdering::Auto;
+  std::vector<int> perm = asked ? given_ordering(m, ordering_) : node_graph_ordering(m, &common_, GraphOrdering::Amd);
+  if (asked && perm.empty()) throw SolveError("CHOLMOD: the " + ordering_name(ordering_) + " ordering failed");
+  double kept_fl = 0.0, kept_lnz = 0.0;  // the analysis of the factor kept
+  std::string tried;                      // the other ordering tried, if any
+  if (perm.empty()) {
+    common_.nmethods = 0;  // CHOLMOD's default strategy (AMD, then METIS if AMD fills badly)
+    factor_ = cholmod_analyze(&s, &common_);
+    ordering_used_ = "CHOLMOD's own";
+  } else {
+    common_.nmethods = 1;
+    common_.method[0].ordering = CHOLMOD_GIVEN;
+    factor_ = cholmod_analyze_p(&s, perm.data(), nullptr, 0, &common_);
+    ordering_used_ = ordering_name(asked ? ordering_ : FactorOrdering::Amd);
+  }
+  kept_fl = common_.fl, kept_lnz = common_.lnz;
+  if (!asked && !perm.empty()) tried = try_nested_dissection(m, s, kept_fl, kept_lnz);
+  if (!factor_ && common_.status == CHOLMOD_OUT_OF_MEMORY)
+    throw SolveError::out_of_memory("CHOLMOD", m.rows(), "symbolic analysis");
+  if (!factor_) fail(-1, "symbolic analysis failed (status " + std::to_string(common_.status) + ")");
+  analysis_note_ = "CHOLMOD analysis, " + ordering_used_ + ": " + analysis_count(kept_fl) + " operations, " +
+                   analysis_count(kept_lnz) + " factor entries" + tried;
+  n_ = m.cols();
+  nnz_ = m.nonZeros();
+  fingerprint_ = fingerprint;
+  plan_ = factor_->is_super ? plan_sweeps(factor_) : SweepPlan{};
+  wide_ = wide_factor(factor_, n_);
+}
+
+bool CholmodSolver::factorise_numerically(const SparseMatrix& m, cholmod_sparse& s) {
+  const int ok = [&] {
+    const WideBlas threads(wide_);
+    return cholmod_factorize(&s, factor_, &common_);
+  }();
+  if (common_.status == CHOLMOD_NOT_POSDEF) {
+    if (!test_.stop && test_.digits >= 0) {
+      past_ = make_linear_solver(SolverKind::Mumps);
+      FactorSettings settings;  // MUMPS's own ordering, the same test
+      settings.singularity = test_;
+      past_->configure(settings);
+      past_->factorize(m, MatrixKind::SymmetricIndefinite);
+      return false;
+    }
+    const auto* perm = static_cast<const int*>(factor_->Perm);
+    const int minor = static_cast<int>(factor_->minor);
+    fail(perm ? perm[minor] : minor, "matrix not positive definite");
+  }
+  if (common_.status == CHOLMOD_OUT_OF_MEMORY) {
+    ready_ = false;
+    throw SolveError::out_of_memory("CHOLMOD", m.rows(), "numeric factorisation");
+  }
+  if (!ok || common_.status < CHOLMOD_OK) fail(-1, "factorisation failed (status " + std::to_string(common_.status) + ")");
+  return true;
+}
+
+void CholmodSolver::test_pivots(const SparseMatrix& m) {
+  singular_ = -1;
+  singular_note_.clear();
+  if (const WeakPivot weak = weak_pivot(factor_, m.diagonal(), test_.pivot_ratio()); weak.column >= 0) {
+    char lost[96];
+    std::snprintf(lost, sizeof lost, "pivot lost %.1f significant digits (more than %d)", weak.digits_lost,
+                  test_.digits);
+    if (test_.stop) {
+      try {
+        fail(weak.column, std::string("numerically singular matrix (") + lost + ")");
+      } catch (SolveError& err) {  // the digits, for a diagnosis
+        err.failure().value = weak.digits_lost;
+        err.failure().limit = test_.digits;
+        throw;
+      }
+    }
+    singular_ = weak.column;
+    singular_note_ = lost;
+  }
+}
+
 void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   failed_ = -1;
   ready_ = false;
@@ -471,103 +592,8 @@ void CholmodSolver::factorize(const SparseMatrix& a, MatrixKind kind) {
   }
   cholmod_sparse s = upper_view(*m, upper_count_);
   const std::uint64_t fingerprint = pattern_fingerprint(*m);
-  if (!same_pattern(*m, fingerprint)) {
-    if (factor_) cholmod_free_factor(&factor_, &common_);
-    // The ordering asked for (SOLVEUR RENUM) whatever it costs, else AMD on the node graph.
-    const bool asked = ordering_ != FactorOrdering::Auto;
-    std::vector<int> perm = asked ? given_ordering(*m, ordering_) : node_graph_ordering(*m, &common_, GraphOrdering::Amd);
-    if (asked && perm.empty()) throw SolveError("CHOLMOD: the " + ordering_name(ordering_) + " ordering failed");
-    double kept_fl = 0.0, kept_lnz = 0.0;  // the analysis of the factor kept
-    std::string tried;                      // the other ordering tried, if any
-    if (perm.empty()) {
-      common_.nmethods = 0;  // CHOLMOD's default strategy (AMD, then METIS if AMD fills badly)
-      factor_ = cholmod_analyze(&s, &common_);
-      ordering_used_ = "CHOLMOD's own";
-    } else {
-      common_.nmethods = 1;
-      common_.method[0].ordering = CHOLMOD_GIVEN;
-      factor_ = cholmod_analyze_p(&s, perm.data(), nullptr, 0, &common_);
-      ordering_used_ = ordering_name(asked ? ordering_ : FactorOrdering::Amd);
-    }
-    kept_fl = common_.fl, kept_lnz = common_.lnz;
-    if (!asked && !perm.empty()) {
-      // Where AMD's factorisation of a 3D system (over 40 entries a column) needs over 5e9
-      // operations, or its factor is over 10 times A, nested dissection (METIS on the same
-      // node graph) is tried too and the factor with fewer operations kept: on the SSNP121
-      // mortar 3D benchmark 6.1e9 operations against AMD's 1.5e10, for 0.14 s of METIS.
-      // Below that, METIS costs about what it saves (the elastic 3D benchmark: 2.7e9 against
-      // 4.5e9 for 0.08 s), and on 2D meshes it gains little (6 % of the glued k = 16 mesh's
-      // operations) for more time (0.48 s) than the whole factorisation's analysis.
-      const double fl_amd = common_.fl;
-      if (factor_ && ((three_d_pattern(*m) && fl_amd > 5e9) || common_.lnz > 10.0 * static_cast<double>(m->nonZeros()))) {
-        std::vector<int> nd = node_graph_ordering(*m, &common_, GraphOrdering::Metis);
-        if (!nd.empty()) {
-          cholmod_factor* other = cholmod_analyze_p(&s, nd.data(), nullptr, 0, &common_);
-          const double fl_nd = common_.fl, lnz_nd = common_.lnz;
-          if (other && fl_nd < fl_amd) {
-            std::swap(factor_, other);
-            ordering_used_ = ordering_name(FactorOrdering::Metis);
-            kept_fl = fl_nd, kept_lnz = lnz_nd;
-            tried = "; AMD: " + analysis_count(fl_amd) + " operations";
-          } else if (other) {
-            tried = "; METIS: " + analysis_count(fl_nd) + " operations";
-          }
-          if (other) cholmod_free_factor(&other, &common_);
-        }
-      }
-    }
-    if (!factor_ && common_.status == CHOLMOD_OUT_OF_MEMORY)
-      throw SolveError::out_of_memory("CHOLMOD", m->rows(), "symbolic analysis");
-    if (!factor_) fail(-1, "symbolic analysis failed (status " + std::to_string(common_.status) + ")");
-    analysis_note_ = "CHOLMOD analysis, " + ordering_used_ + ": " + analysis_count(kept_fl) + " operations, " +
-                     analysis_count(kept_lnz) + " factor entries" + tried;
-    n_ = m->cols();
-    nnz_ = m->nonZeros();
-    fingerprint_ = fingerprint;
-    plan_ = factor_->is_super ? plan_sweeps(factor_) : SweepPlan{};
-    wide_ = wide_factor(factor_, n_);
-  }
-  const int ok = [&] {
-    const WideBlas threads(wide_);
-    return cholmod_factorize(&s, factor_, &common_);
-  }();
-  if (common_.status == CHOLMOD_NOT_POSDEF) {
-    if (!test_.stop && test_.digits >= 0) {
-      past_ = make_linear_solver(SolverKind::Mumps);
-      FactorSettings settings;  // MUMPS's own ordering, the same test
-      settings.singularity = test_;
-      past_->configure(settings);
-      past_->factorize(*m, MatrixKind::SymmetricIndefinite);
-      ready_ = true;
-      return;
-    }
-    const auto* perm = static_cast<const int*>(factor_->Perm);
-    const int minor = static_cast<int>(factor_->minor);
-    fail(perm ? perm[minor] : minor, "matrix not positive definite");
-  }
-  if (common_.status == CHOLMOD_OUT_OF_MEMORY) {
-    ready_ = false;
-    throw SolveError::out_of_memory("CHOLMOD", m->rows(), "numeric factorisation");
-  }
-  if (!ok || common_.status < CHOLMOD_OK) fail(-1, "factorisation failed (status " + std::to_string(common_.status) + ")");
-  singular_ = -1;
-  singular_note_.clear();
-  if (const WeakPivot weak = weak_pivot(factor_, m->diagonal(), test_.pivot_ratio()); weak.column >= 0) {
-    char lost[96];
-    std::snprintf(lost, sizeof lost, "pivot lost %.1f significant digits (more than %d)", weak.digits_lost,
-                  test_.digits);
-    if (test_.stop) {
-      try {
-        fail(weak.column, std::string("numerically singular matrix (") + lost + ")");
-      } catch (SolveError& err) {  // the digits, for a diagnosis
-        err.failure().value = weak.digits_lost;
-        err.failure().limit = test_.digits;
-        throw;
-      }
-    }
-    singular_ = weak.column;
-    singular_note_ = lost;
-  }
+  if (!same_pattern(*m, fingerprint)) analyse(*m, s, fingerprint);
+  if (factorise_numerically(*m, s)) test_pivots(*m);  // false: MUMPS went past a pivot
   ready_ = true;
 }
 
@@ -641,20 +667,26 @@ class CholmodInterfaceSolver final : public InterfaceSolver {
   bool wide_ = false;  ///< two BLAS threads for the factorisations (a 3D-sized factor)
   bool ready_ = false;
   std::string analysis_note_;  ///< the reference's analysis and the interface's dense factorisation
+  /// The order of the reference's analysis, the interface last (CAMD, or METIS on a 3D
+  /// pattern); `from_metis` says which.
+  std::vector<int> interface_last_order(const SparseMatrix& r, cholmod_sparse& view, bool& from_metis);
+  /// The numeric factorisation of the reference (its upper view), a unit diagonal set where
+  /// an interface equation has none (`unit_diagonal`), r's values restored afterwards;
+  /// SolveError (factor_ freed) when it fails or a pivot is weak (a rigid-body mode).
+  void factorise_reference_values(SparseMatrix& r, cholmod_sparse& view, std::vector<int>& unit_diagonal);
+  /// L_II, the trailing m x m block of the factor (n equations), into l_ii_.
+  void copy_interface_block(int n);
+  /// g_ = L_II L_II^T minus the unit diagonals set, its lower triangle.
+  void form_g(const std::vector<int>& unit_diagonal);
   Eigen::Map<const Eigen::MatrixXd> l_ii() const {
     const auto m = static_cast<Eigen::Index>(interface_.size());
     return {l_ii_.data(), m, m};
   }
 };
 
-bool CholmodInterfaceSolver::factorize_reference(SparseMatrix& r, double max_dense_share) {
-  ready_ = false;
-  if (factor_) cholmod_free_factor(&factor_, &common_);
-  std::vector<double>().swap(l_ii_);
-  std::vector<double>().swap(g_);
-  LUNASTER_ASSERT(r.isCompressed() && r.rows() == r.cols(), "interface solver: a square compressed reference");
+std::vector<int> CholmodInterfaceSolver::interface_last_order(const SparseMatrix& r, cholmod_sparse& view,
+                                                              bool& from_metis) {
   const int n = static_cast<int>(r.cols()), m = static_cast<int>(interface_.size());
-  slot_.assign(n, -1);
   // The interface last, the interior before it, both in constrained AMD's order (CAMD on the
   // node graph), except for 3D systems (below). CAMD's order is a postorder of its own
   // elimination tree: CHOLMOD's postorder would interleave the interface with the subtrees
@@ -662,8 +694,6 @@ bool CholmodInterfaceSolver::factorize_reference(SparseMatrix& r, double max_den
   // On the 2D contact benchmark at k = 32 this factor needs 2.1e10 operations, fewer than
   // AMD's for the glued mesh of the same size (2.4e10); AMD's order with the interface moved
   // last needed 3.1e10.
-  std::vector<int> upper_count;
-  cholmod_sparse view = upper_view(r, upper_count);
   std::vector<char> on_interface(n, 0);
   for (int eq : interface_) on_interface[eq] = 1;
   auto interface_last = [&](const std::vector<int>& order) {
@@ -681,8 +711,8 @@ bool CholmodInterfaceSolver::factorize_reference(SparseMatrix& r, double max_den
     perm = node_graph_ordering(r, &common_, GraphOrdering::Metis, &on_interface);
     std::stable_partition(perm.begin(), perm.end(), [&on_interface](int eq) { return !on_interface[eq]; });
   }
-  const bool perm_from_metis = interface_last(perm);
-  if (!perm_from_metis) {
+  from_metis = interface_last(perm);
+  if (!from_metis) {
     perm = node_graph_ordering(r, &common_, GraphOrdering::Amd, &on_interface);
     if (perm.empty()) {
       perm.resize(n);
@@ -693,20 +723,14 @@ bool CholmodInterfaceSolver::factorize_reference(SparseMatrix& r, double max_den
     }
     if (!interface_last(perm)) throw SolveError("CHOLMOD: CAMD did not order the interface last");
   }
-  factor_ = cholmod_analyze_p(&view, perm.data(), nullptr, 0, &common_);
-  if (factor_)
-    analysis_note_ = "CHOLMOD analysis of the reference, " + std::string(perm_from_metis ? "METIS" : "CAMD") +
-                     " with the " + std::to_string(m) + " interface equations last: " + analysis_count(common_.fl) +
-                     " operations, " + analysis_count(common_.lnz) + " factor entries; each contact pass " +
-                     analysis_count(static_cast<double>(m) * m * m / 3.0) + " (dense)";
-  if (factor_ && max_dense_share > 0.0 && static_cast<double>(m) * m * m / 3.0 > max_dense_share * common_.fl) {
-    cholmod_free_factor(&factor_, &common_);
-    return false;
-  }
-  for (int k = n - m; k < n; ++k) slot_[perm[k]] = k - (n - m);
+  return perm;
+}
+
+void CholmodInterfaceSolver::factorise_reference_values(SparseMatrix& r, cholmod_sparse& view,
+                                                        std::vector<int>& unit_diagonal) {
+  const int n = static_cast<int>(r.cols());
   // Unit diagonals where K has none (multipliers), restored below.
   std::vector<std::pair<double*, double>> saved;
-  std::vector<int> unit_diagonal;
   for (int eq : interface_) {
     const int* rows = r.innerIndexPtr() + r.outerIndexPtr()[eq];
     const int* end = r.innerIndexPtr() + r.outerIndexPtr()[eq + 1];
@@ -718,10 +742,6 @@ bool CholmodInterfaceSolver::factorize_reference(SparseMatrix& r, double max_den
   auto restore = [&saved] {
     for (auto& [where, value] : saved) *where = value;
   };
-  // Two BLAS threads for a factor of 3D size, for the factorisation and the dense interface
-  // products below.
-  wide_ = factor_ && wide_factor(factor_, n);
-  const WideBlas threads(wide_);
   const int ok = factor_ ? cholmod_factorize(&view, factor_, &common_) : 0;
   // A pivot that lost more digits than the run allows is a rigid-body mode (the driver's
   // check, which this factorisation replaces): the caller solves without condensing.
@@ -736,7 +756,10 @@ bool CholmodInterfaceSolver::factorize_reference(SparseMatrix& r, double max_den
                      std::to_string(common_.status) + ")");
   }
   restore();
-  plan_ = plan_sweeps(factor_);
+}
+
+void CholmodInterfaceSolver::copy_interface_block(int n) {
+  const int m = static_cast<int>(interface_.size());
   // L_II from the supernodes holding the last m columns.
   const auto* super = static_cast<const int*>(factor_->super);
   const auto* pi = static_cast<const int*>(factor_->pi);
@@ -758,6 +781,11 @@ bool CholmodInterfaceSolver::factorize_reference(SparseMatrix& r, double max_den
       for (int k = c - super[sn]; k < nsrow; ++k) to[ls[pi[sn] + k] - first] = col[k];
     }
   }
+}
+
+void CholmodInterfaceSolver::form_g(const std::vector<int>& unit_diagonal) {
+  const int m = static_cast<int>(interface_.size());
+  const auto mm = static_cast<std::size_t>(m) * static_cast<std::size_t>(m);
   // G = L_II L_II^T - D_II, its lower triangle, a panel of columns of L_II at a time: the
   // panel from column k0 is zero above row k0, so it adds to G's trailing block only
   // (dsyrk: 2.6 times faster than OpenBLAS's dtrmm and the transposed copy it needs, at
@@ -771,6 +799,41 @@ bool CholmodInterfaceSolver::factorize_reference(SparseMatrix& r, double max_den
                 g_.data() + at, m);
   }
   for (int eq : unit_diagonal) g_[static_cast<std::size_t>(slot_[eq]) * (m + 1)] -= 1.0;
+}
+
+bool CholmodInterfaceSolver::factorize_reference(SparseMatrix& r, double max_dense_share) {
+  ready_ = false;
+  if (factor_) cholmod_free_factor(&factor_, &common_);
+  std::vector<double>().swap(l_ii_);
+  std::vector<double>().swap(g_);
+  LUNASTER_ASSERT(r.isCompressed() && r.rows() == r.cols(), "interface solver: a square compressed reference");
+  const int n = static_cast<int>(r.cols()), m = static_cast<int>(interface_.size());
+  slot_.assign(n, -1);
+  // The interface last, the interior before it (interface_last_order).
+  std::vector<int> upper_count;
+  cholmod_sparse view = upper_view(r, upper_count);
+  bool from_metis = false;
+  std::vector<int> perm = interface_last_order(r, view, from_metis);
+  factor_ = cholmod_analyze_p(&view, perm.data(), nullptr, 0, &common_);
+  if (factor_)
+    analysis_note_ = "CHOLMOD analysis of the reference, " + std::string(from_metis ? "METIS" : "CAMD") +
+                     " with the " + std::to_string(m) + " interface equations last: " + analysis_count(common_.fl) +
+                     " operations, " + analysis_count(common_.lnz) + " factor entries; each contact pass " +
+                     analysis_count(static_cast<double>(m) * m * m / 3.0) + " (dense)";
+  if (factor_ && max_dense_share > 0.0 && static_cast<double>(m) * m * m / 3.0 > max_dense_share * common_.fl) {
+    cholmod_free_factor(&factor_, &common_);
+    return false;
+  }
+  for (int k = n - m; k < n; ++k) slot_[perm[k]] = k - (n - m);
+  // Two BLAS threads for a factor of 3D size, for the factorisation and the dense interface
+  // products below.
+  wide_ = factor_ && wide_factor(factor_, n);
+  const WideBlas threads(wide_);
+  std::vector<int> unit_diagonal;
+  factorise_reference_values(r, view, unit_diagonal);
+  plan_ = plan_sweeps(factor_);
+  copy_interface_block(n);
+  form_g(unit_diagonal);
   return true;
 }
 

@@ -164,6 +164,27 @@ class MumpsSolver final : public LinearSolver {
     const WideBlas threads(wide_);
     mumps_call(&id_);
   }
+  /// MUMPS's SYM for a matrix of this kind: the kind's own, or the factorisation asked for where
+  /// the matrix allows it (DeckError where it does not); an SPD matrix whose null pivots are to
+  /// be gone past is factorised as symmetric indefinite.
+  int symmetry(MatrixKind kind) const;
+  /// The entries handed to MUMPS for SYM = sym, 1-based (a symmetric kind's upper triangle; in
+  /// parts the owned columns, numbered across the ranks), filtered when asked.
+  void gather_entries(const SparseMatrix& a, int sym, std::vector<MUMPS_INT>& irn, std::vector<MUMPS_INT>& jcn,
+                      std::vector<Real>& val);
+  /// A new instance (job -1) for SYM = sym with the run's controls: outputs silenced, working
+  /// space, preprocessing, block low rank.
+  void initialise(int sym);
+  /// ICNTL(7) (and PERM_IN) for the next analysis of `a`, n equations.
+  void choose_ordering(const SparseMatrix& a, int sym, long long n);
+  /// The ordering `give` computed on the host and given to MUMPS (ICNTL(7) = 1, PERM_IN); a failed
+  /// one asked for is a SolveError, the automatic choice then left to MUMPS. Collective.
+  void give_ordering(const SparseMatrix& a, FactorOrdering give);
+  /// A new instance, its analysis (job 1) of the entries in irn_, jcn_, val_, then the numeric
+  /// factorisation if the analysis went well.
+  void analyse(const SparseMatrix& a, int sym, long long n);
+  /// The null pivots of the last factorisation: gone past as asked (singular_), or SolveError.
+  void check_null_pivots();
   void choose_memory();
   void filter_entries(const SparseMatrix& a, std::vector<MUMPS_INT>& irn, std::vector<MUMPS_INT>& jcn,
                       std::vector<Real>& val);
@@ -327,9 +348,7 @@ void MumpsSolver<Id>::filter_entries(const SparseMatrix& a, std::vector<MUMPS_IN
 }
 
 template <class Id>
-void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
-  failed_ = -1;
-  LUNASTER_ASSERT(a.rows() == a.cols(), "MUMPS: matrix is not square");
+int MumpsSolver<Id>::symmetry(MatrixKind kind) const {
   int sym = kind == MatrixKind::SymmetricPositiveDefinite ? 1 : (kind == MatrixKind::SymmetricIndefinite ? 2 : 0);
   if (!settings_.by_kind) {  // TYPE_RESOL: the factorisation asked for, where the matrix allows it
     const MatrixKind asked = settings_.factorisation;
@@ -350,8 +369,12 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
   // (its round-off pivot along a free body's motion would move it by 1e13): an SPD system is
   // then factorised as symmetric indefinite.
   if (sym == 1 && !settings_.singularity.stop && settings_.singularity.digits >= 0) sym = 2;
-  std::vector<MUMPS_INT> irn, jcn;
-  std::vector<Real> val;
+  return sym;
+}
+
+template <class Id>
+void MumpsSolver<Id>::gather_entries(const SparseMatrix& a, int sym, std::vector<MUMPS_INT>& irn,
+                                     std::vector<MUMPS_INT>& jcn, std::vector<Real>& val) {
   if (parts_) {
     // The owned columns, numbered across the ranks; a symmetric kind keeps the upper triangle in
     // that numbering, each entry on the one rank owning its column.
@@ -370,6 +393,129 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
     mumps_entries(a, sym, irn, jcn, val);
     if (settings_.filter > 0.0) filter_entries(a, irn, jcn, val);
   }
+}
+
+template <class Id>
+void MumpsSolver<Id>::initialise(int sym) {
+  id_ = Id{};
+  id_.comm_fortran = parallel::fortran_comm_world();
+  id_.par = 1;
+  id_.sym = sym;
+  id_.job = -1;
+  mumps_call(&id_);
+  check("initialisation");
+  initialised_ = true;
+  id_.icntl[0] = -1;  // ICNTL(1..4): silence error, diagnostic, global output and statistics
+  id_.icntl[1] = -1;
+  id_.icntl[2] = -1;
+  id_.icntl[3] = 0;
+  // ICNTL(14): the working space beyond the analysis's estimate (PCENT_PIVOT). MUMPS's own
+  // default unless one was asked for (5.5 on one process: 5 % for SYM = 1, 20 % otherwise).
+  if (settings_.workspace_relaxation > 0) id_.icntl[13] = settings_.workspace_relaxation;
+  // PRETRAITEMENTS = 'SANS': the matrix as assembled, no scaling (ICNTL(8) = 0), no
+  // permutation to a zero-free or heavy diagonal (ICNTL(6) = 0) and no 2x2 pivots chosen
+  // by it (ICNTL(12) = 1). MUMPS's own choices otherwise (77, 7 and 0, its defaults).
+  if (!settings_.preprocessing) id_.icntl[5] = 0, id_.icntl[7] = 0, id_.icntl[11] = 1;
+  // ACCELERATION = 'LR': block low-rank factors, as code_aster sets them with a public MUMPS
+  // (ICNTL(35) = 1, MUMPS's automatic BLR; CNTL(7) the dropping threshold, LOW_RANK_SEUIL;
+  // a negative LOW_RANK_SEUIL asks for the UCFS variant, ICNTL(36) = 1). Fixed at the analysis.
+  set_low_rank(id_, settings_.low_rank);
+}
+
+template <class Id>
+void MumpsSolver<Id>::choose_ordering(const SparseMatrix& a, int sym, long long n) {
+  // ICNTL(7): the fill-reducing ordering. On sparse rows (2D meshes: 18 to 26 entries a row
+  // for QUAD4/QUAD8) AMD beat the automatic choice (PORD's nested dissection: Debian 12's
+  // MUMPS 5.5 is built without METIS and SCOTCH, and says so when asked for them), whose
+  // analysis cost more than it saved: SSNP121 2D contact, k = 16, 1.7 s against 2.0 s; k = 32,
+  // 7.5 s against 8.7 s. On 3D rows (81 and more) nested dissection wins: the 3D HEXA8/HEXA20
+  // contact case took 2.0 s against 3.2 s with AMD. tests/bench/README.md has the runs.
+  double entries = static_cast<double>(val_.size());
+  if (distributed_) parallel::sum_over_ranks(&entries, 1);
+  const double entries_per_row = 2.0 * entries / std::max<double>(1.0, static_cast<double>(n));
+  id_.icntl[6] = sym != 0 && entries_per_row < 40.0 ? 0 : 7;
+  // On 3D rows, nested dissection of the node graph (METIS, the ordering CHOLMOD uses there)
+  // is given instead (ICNTL(7) = 1): fewer operations than PORD on the SSNP121 3D contact
+  // systems (CONTINUE 3D benchmark 1.0e10 against 1.2e10; the refined case 2.03e12 against
+  // 2.43e12). An ordering asked for (RENUM) replaces the choice. METIS, reverse
+  // Cuthill-McKee and the natural order are computed on the host and given (PERM_IN), from
+  // the whole matrix's pattern: a matrix shared among the ranks sends its columns' patterns
+  // to the host for it, as MUMPS's own (sequential) analysis gathers them there.
+  perm_in_.clear();
+  given_ = FactorOrdering::Auto;
+  FactorOrdering give = FactorOrdering::Auto;
+  // A mesh in parts gives no ordering: MUMPS's own (its analysis gathers the pattern itself).
+  if (parts_ && (settings_.ordering == FactorOrdering::Metis || settings_.ordering == FactorOrdering::Rcm ||
+                 settings_.ordering == FactorOrdering::Natural))
+    throw not_in_parts("the " + ordering_name(settings_.ordering) + " ordering, computed from the whole matrix's "
+                       "pattern on one process,",
+                       "choose the AMD, AMF, QAMD or PORD ordering, or the backend's choice");
+  switch (settings_.ordering) {
+    case FactorOrdering::Auto:
+      if (!parts_ && sym != 0 && entries_per_row >= 40.0 && a.rows() >= 10000) give = FactorOrdering::Metis;
+      break;
+    case FactorOrdering::Metis:
+    case FactorOrdering::Rcm:
+    case FactorOrdering::Natural: give = settings_.ordering; break;
+    case FactorOrdering::Amd: id_.icntl[6] = 0; break;
+    case FactorOrdering::Amf: id_.icntl[6] = 2; break;
+    case FactorOrdering::Qamd: id_.icntl[6] = 6; break;
+    case FactorOrdering::Pord: id_.icntl[6] = 4; break;
+  }
+  if (give != FactorOrdering::Auto) give_ordering(a, give);
+}
+
+template <class Id>
+void MumpsSolver<Id>::give_ordering(const SparseMatrix& a, FactorOrdering give) {
+  SparseMatrix compressed;
+  const SparseMatrix* m = &a;
+  if (!a.isCompressed()) compressed = a, compressed.makeCompressed(), m = &compressed;
+  std::vector<int> perm;
+  if (distributed_) perm = shared_matrix_ordering(*m, give);  // collective; empty but on the host
+  else if (parallel::rank() == 0) perm = given_ordering(*m, give);
+  int ok = perm.empty() ? 0 : 1;
+  if (parallel::size() > 1) parallel::broadcast(&ok, 1);  // the host's verdict, on every rank
+  if (ok) {
+    if (parallel::rank() == 0) {
+      perm_in_.resize(perm.size());
+      for (size_t k = 0; k < perm.size(); ++k) perm_in_[perm[k]] = static_cast<MUMPS_INT>(k + 1);
+      id_.perm_in = perm_in_.data();
+    }
+    id_.icntl[6] = 1;
+    given_ = give;
+  } else if (settings_.ordering != FactorOrdering::Auto) {
+    throw SolveError("MUMPS: the " + ordering_name(give) + " ordering failed");
+  }
+}
+
+template <class Id>
+void MumpsSolver<Id>::analyse(const SparseMatrix& a, int sym, long long n) {
+  release();
+  initialise(sym);
+  choose_ordering(a, sym, n);
+  id_.icntl[17] = distributed_ ? 3 : 0;  // ICNTL(18): distributed assembled entries, pattern and values
+  id_.n = static_cast<MUMPS_INT>(n);
+  give_mumps_entries(id_, distributed_, irn_, jcn_, val_);
+  id_.job = 1;  // analysis
+  mumps_call(&id_);
+  // A factorisation estimated at over 5e10 operations (RINFOG(1): the refined 3D CONTINUE
+  // benchmark's 2.0e12) has fronts large enough for two BLAS threads; the CONTINUE 3D
+  // benchmark's (1.0e10) ran no faster on two.
+  wide_ = id_.infog[0] >= 0 && id_.rinfog[0] > 5e10;
+  if (id_.infog[0] >= 0) {
+    choose_memory();
+    factorise_numerically();
+  }
+}
+
+template <class Id>
+void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
+  failed_ = -1;
+  LUNASTER_ASSERT(a.rows() == a.cols(), "MUMPS: matrix is not square");
+  const int sym = symmetry(kind);
+  std::vector<MUMPS_INT> irn, jcn;
+  std::vector<Real> val;
+  gather_entries(a, sym, irn, jcn, val);
   const long long n = n_equations(a);
   // The Newton and contact loops of a step factorise matrices of one pattern again and
   // again: keep MUMPS's analysis (ordering, symbolic factorisation) while it holds.
@@ -380,108 +526,11 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
   irn_.swap(irn);
   jcn_.swap(jcn);
   val_.swap(val);
-  // Where the entries go: the host's centralised arrays, or each rank's own (distributed).
-  auto hand_over = [this] { give_mumps_entries(id_, distributed_, irn_, jcn_, val_); };
   if (same_pattern) {
-    hand_over();
+    give_mumps_entries(id_, distributed_, irn_, jcn_, val_);
     factorise_numerically();  // the analysis kept
   } else {
-    release();
-    id_ = Id{};
-    id_.comm_fortran = parallel::fortran_comm_world();
-    id_.par = 1;
-    id_.sym = sym;
-    id_.job = -1;
-    mumps_call(&id_);
-    check("initialisation");
-    initialised_ = true;
-    id_.icntl[0] = -1;  // ICNTL(1..4): silence error, diagnostic, global output and statistics
-    id_.icntl[1] = -1;
-    id_.icntl[2] = -1;
-    id_.icntl[3] = 0;
-    // ICNTL(14): the working space beyond the analysis's estimate (PCENT_PIVOT). MUMPS's own
-    // default unless one was asked for (5.5 on one process: 5 % for SYM = 1, 20 % otherwise).
-    if (settings_.workspace_relaxation > 0) id_.icntl[13] = settings_.workspace_relaxation;
-    // PRETRAITEMENTS = 'SANS': the matrix as assembled, no scaling (ICNTL(8) = 0), no
-    // permutation to a zero-free or heavy diagonal (ICNTL(6) = 0) and no 2x2 pivots chosen
-    // by it (ICNTL(12) = 1). MUMPS's own choices otherwise (77, 7 and 0, its defaults).
-    if (!settings_.preprocessing) id_.icntl[5] = 0, id_.icntl[7] = 0, id_.icntl[11] = 1;
-    // ACCELERATION = 'LR': block low-rank factors, as code_aster sets them with a public MUMPS
-    // (ICNTL(35) = 1, MUMPS's automatic BLR; CNTL(7) the dropping threshold, LOW_RANK_SEUIL;
-    // a negative LOW_RANK_SEUIL asks for the UCFS variant, ICNTL(36) = 1). Fixed at the analysis.
-    set_low_rank(id_, settings_.low_rank);
-    // ICNTL(7): the fill-reducing ordering. On sparse rows (2D meshes: 18 to 26 entries a row
-    // for QUAD4/QUAD8) AMD beat the automatic choice (PORD's nested dissection: Debian 12's
-    // MUMPS 5.5 is built without METIS and SCOTCH, and says so when asked for them), whose
-    // analysis cost more than it saved: SSNP121 2D contact, k = 16, 1.7 s against 2.0 s; k = 32,
-    // 7.5 s against 8.7 s. On 3D rows (81 and more) nested dissection wins: the 3D HEXA8/HEXA20
-    // contact case took 2.0 s against 3.2 s with AMD. tests/bench/README.md has the runs.
-    double entries = static_cast<double>(val_.size());
-    if (distributed_) parallel::sum_over_ranks(&entries, 1);
-    const double entries_per_row = 2.0 * entries / std::max<double>(1.0, static_cast<double>(n));
-    id_.icntl[6] = sym != 0 && entries_per_row < 40.0 ? 0 : 7;
-    // On 3D rows, nested dissection of the node graph (METIS, the ordering CHOLMOD uses there)
-    // is given instead (ICNTL(7) = 1): fewer operations than PORD on the SSNP121 3D contact
-    // systems (CONTINUE 3D benchmark 1.0e10 against 1.2e10; the refined case 2.03e12 against
-    // 2.43e12). An ordering asked for (RENUM) replaces the choice. METIS, reverse
-    // Cuthill-McKee and the natural order are computed on the host and given (PERM_IN), from
-    // the whole matrix's pattern: a matrix shared among the ranks sends its columns' patterns
-    // to the host for it, as MUMPS's own (sequential) analysis gathers them there.
-    perm_in_.clear();
-    given_ = FactorOrdering::Auto;
-    FactorOrdering give = FactorOrdering::Auto;
-    // A mesh in parts gives no ordering: MUMPS's own (its analysis gathers the pattern itself).
-    if (parts_ && (settings_.ordering == FactorOrdering::Metis || settings_.ordering == FactorOrdering::Rcm ||
-                   settings_.ordering == FactorOrdering::Natural))
-      throw not_in_parts("the " + ordering_name(settings_.ordering) + " ordering, computed from the whole matrix's "
-                         "pattern on one process,",
-                         "choose the AMD, AMF, QAMD or PORD ordering, or the backend's choice");
-    switch (settings_.ordering) {
-      case FactorOrdering::Auto:
-        if (!parts_ && sym != 0 && entries_per_row >= 40.0 && a.rows() >= 10000) give = FactorOrdering::Metis;
-        break;
-      case FactorOrdering::Metis:
-      case FactorOrdering::Rcm:
-      case FactorOrdering::Natural: give = settings_.ordering; break;
-      case FactorOrdering::Amd: id_.icntl[6] = 0; break;
-      case FactorOrdering::Amf: id_.icntl[6] = 2; break;
-      case FactorOrdering::Qamd: id_.icntl[6] = 6; break;
-      case FactorOrdering::Pord: id_.icntl[6] = 4; break;
-    }
-    if (give != FactorOrdering::Auto) {
-      SparseMatrix compressed;
-      const SparseMatrix* m = &a;
-      if (!a.isCompressed()) compressed = a, compressed.makeCompressed(), m = &compressed;
-      std::vector<int> perm;
-      if (distributed_) perm = shared_matrix_ordering(*m, give);  // collective; empty but on the host
-      else if (parallel::rank() == 0) perm = given_ordering(*m, give);
-      int ok = perm.empty() ? 0 : 1;
-      if (parallel::size() > 1) parallel::broadcast(&ok, 1);  // the host's verdict, on every rank
-      if (ok) {
-        if (parallel::rank() == 0) {
-          perm_in_.resize(perm.size());
-          for (size_t k = 0; k < perm.size(); ++k) perm_in_[perm[k]] = static_cast<MUMPS_INT>(k + 1);
-          id_.perm_in = perm_in_.data();
-        }
-        id_.icntl[6] = 1;
-        given_ = give;
-      } else if (settings_.ordering != FactorOrdering::Auto) {
-        throw SolveError("MUMPS: the " + ordering_name(give) + " ordering failed");
-      }
-    }
-    id_.icntl[17] = distributed_ ? 3 : 0;  // ICNTL(18): distributed assembled entries, pattern and values
-    id_.n = static_cast<MUMPS_INT>(n);
-    hand_over();
-    id_.job = 1;  // analysis
-    mumps_call(&id_);
-    // A factorisation estimated at over 5e10 operations (RINFOG(1): the refined 3D CONTINUE
-    // benchmark's 2.0e12) has fronts large enough for two BLAS threads; the CONTINUE 3D
-    // benchmark's (1.0e10) ran no faster on two.
-    wide_ = id_.infog[0] >= 0 && id_.rinfog[0] > 5e10;
-    if (id_.infog[0] >= 0) {
-      choose_memory();
-      factorise_numerically();
-    }
+    analyse(a, sym, n);
   }
   // -8/-9/-14/-15/-17/-20: a workspace sized from the analysis' estimate was too small
   // (off-diagonal pivoting on contact systems grows the factors): factorise again with
@@ -505,6 +554,11 @@ void MumpsSolver<Id>::factorize(const SparseMatrix& a, MatrixKind kind) {
     return;
   }
   check("factorisation");
+  check_null_pivots();
+}
+
+template <class Id>
+void MumpsSolver<Id>::check_null_pivots() {
   singular_ = -1;
   singular_note_.clear();
   if (id_.infog[27] > 0 && !settings_.singularity.stop) {  // INFOG(28): number of null pivots; kept as asked

@@ -184,6 +184,17 @@ class PetscSolver final : public LinearSolver {
   /// factorize(); `taken` (the same matrix as `a`): its storage is released once PETSc has
   /// the matrix, before the preconditioner is built (the largest memory of the set-up).
   void set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* taken);
+  /// A system of this kind the settings cannot solve (a saddle point without a factorisation as
+  /// preconditioner, or under CG; that factorisation on a mesh in parts): the error, thrown.
+  void refuse_unsolvable(MatrixKind kind) const;
+  /// The Krylov method on a_ (ksp_): its type, the unpreconditioned residual test, the monitor.
+  void create_krylov();
+  /// The preconditioner the settings name, set on pc for the system a.
+  void set_preconditioner(PC pc, const SparseMatrix& a, MatrixKind kind);
+  /// BoomerAMG with hypre's settings for 3D problems (options the user named win).
+  void set_boomer(PC pc);
+  /// The single-precision factorisation of a (kept while REAC_PRECOND allows) as a shell.
+  void set_single_precision(PC pc, const SparseMatrix& a, MatrixKind kind);
   /// A whole vector in the system's numbering into a PETSc vector (this rank's rows), and back.
   void to_petsc(const Vector& x, Vec v) const;
   void from_petsc(Vec v, Vector& x) const;
@@ -560,9 +571,7 @@ PetscErrorCode PetscSolver::apply_single_precision(PC pc, Vec x, Vec y) {
   return 0;
 }
 
-void PetscSolver::set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* taken) {
-  LUNASTER_ASSERT(a.rows() == a.cols(), "PETSc: matrix is not square");
-  LUNASTER_ASSERT(!taken || taken == &a, "PETSc: the matrix taken is the one factorised");
+void PetscSolver::refuse_unsolvable(MatrixKind kind) const {
   // Contact multipliers make a saddle point: zero diagonal, indefinite. Only a factorisation
   // preconditions it; multigrid and point relaxations break down, and CG needs SPD.
   const bool factorised_pc = settings_.preconditioner == Settings::Preconditioner::LdltSp;
@@ -581,17 +590,9 @@ void PetscSolver::set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* t
     error.failure().what = Failure::What::NotInParts;  // commands/ names PRE_COND
     throw error;
   }
-  release();
-  if (settings_.preconditioner == Settings::Preconditioner::Boomer) build_hypre_matrix(a, kind);
-  else build_matrix(a, kind);
-  attach_near_null_space();
-  if (!layout_.in_parts()) {  // in parts each rank reads its own rows, nothing is gathered
-    Vec local = nullptr;
-    check(MatCreateVecs(a_, &local, nullptr), "MatCreateVecs");
-    check(VecScatterCreateToAll(local, &scatter_, &gathered_), "VecScatterCreateToAll");
-    VecDestroy(&local);
-  }
+}
 
+void PetscSolver::create_krylov() {
   check(KSPCreate(PETSC_COMM_WORLD, &ksp_), "KSPCreate");
   check(KSPSetOperators(ksp_, a_, a_), "KSPSetOperators");
   switch (settings_.krylov) {
@@ -608,8 +609,81 @@ void PetscSolver::set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* t
   check(KSPSetTolerances(ksp_, settings_.relative_residual, 0.0, 1e100, iteration_limit()), "KSPSetTolerances");
   check(KSPSetInitialGuessNonzero(ksp_, PETSC_FALSE), "KSPSetInitialGuessNonzero");
   check(KSPMonitorSet(ksp_, &PetscSolver::monitor, this, nullptr), "KSPMonitorSet");
-  PC pc = nullptr;
-  check(KSPGetPC(ksp_, &pc), "KSPGetPC");
+}
+
+void PetscSolver::set_boomer(PC pc) {
+  check(PCSetType(pc, PCHYPRE), "PCSetType");
+  check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
+  // hypre's settings for 3D problems (its manual: HMIS coarsening, extended+i interpolation
+  // truncated to 4 entries, one level of aggressive coarsening, strength 0.5). With hypre's
+  // 2D defaults the 2e5-unknown HEXA8 block took 38 s to set up and solve; with these, 5.3 s.
+  // Quadratic cells take strength 0.7: the refined mortar case (HEXA8 and HEXA20) needed 40
+  // CG iterations instead of 91 and half the time, a HEXA20 block 0.85 of the time, while
+  // the HEXA8 block is 1.2 times slower at 0.7.
+  // Smoothing: hypre's Chebyshev polynomial (degree 2, on an estimate of the largest
+  // eigenvalue of D^-1 A) on every level but the coarsest, each way. It is symmetric, as CG
+  // needs, and the same sweep on any number of ranks (hypre's hybrid Gauss-Seidel, Jacobi
+  // between ranks, made the preconditioner indefinite on the refined mortar case with two
+  // ranks). It takes the iterations the l1 Gauss-Seidel sweeps took (40-42 on the refined
+  // mortar case, 23-30 on the HEXA8 and HEXA20 blocks) at about 0.7 of their time: one
+  // process, the refined mortar case 14.3-14.9 s against 19.4-20.0 s, the 3.3e5-unknown
+  // HEXA8 block 5.3-5.8 s against 7.4-8.5 s (tests/bench/README.md).
+  // These go into PETSc's options database, which the run shares: an option the user named
+  // in PETSC_OPTIONS (looked up before this code set any) wins, ours follow each system.
+  const bool relaxation_named = named_by_user("-pc_hypre_boomeramg_relax_type_all");
+  for (const auto& [name, value] :
+       {std::pair<const char*, const char*>{"-pc_hypre_boomeramg_coarsen_type", "HMIS"},
+        {"-pc_hypre_boomeramg_interp_type", "ext+i"},
+        {"-pc_hypre_boomeramg_P_max", "4"},
+        {"-pc_hypre_boomeramg_agg_nl", "1"},
+        {"-pc_hypre_boomeramg_strong_threshold", layout_.quadratic ? "0.7" : "0.5"},
+        {"-pc_hypre_boomeramg_relax_type_down", relaxation_named ? nullptr : "Chebyshev"},
+        {"-pc_hypre_boomeramg_relax_type_up", relaxation_named ? nullptr : "Chebyshev"}}) {
+    if (value && !named_by_user(name)) PetscOptionsSetValue(nullptr, name, value);
+  }
+  if (settings_.history) {  // what this system's V-cycle uses (INFO = 2)
+    auto option = [](const char* name) {
+      char value[64] = "";
+      PetscBool found = PETSC_FALSE;
+      PetscOptionsGetString(nullptr, nullptr, name, value, sizeof value, &found);
+      return std::string(found ? value : "hypre's default");
+    };
+    const std::string smoothing =
+        relaxation_named ? option("-pc_hypre_boomeramg_relax_type_all") + " both ways"
+                         : option("-pc_hypre_boomeramg_relax_type_down") + " down, " +
+                               option("-pc_hypre_boomeramg_relax_type_up") + " up";
+    settings_.history("    BoomerAMG: strength threshold " + option("-pc_hypre_boomeramg_strong_threshold") +
+                      ", smoothing " + smoothing);
+  }
+}
+
+void PetscSolver::set_single_precision(PC pc, const SparseMatrix& a, MatrixKind kind) {
+  // REAC_PRECOND: the last factorisation serves again while the solves it preconditions
+  // stay within that many iterations (every rank takes the same branch: the iterations
+  // are the KSP's, collective).
+  kept_ = settings_.reac_precond > 0 && single_ && !renew_ && single_n_ == a.rows();
+  renewed_ = false;
+  if (!kept_) {
+    single_ = std::make_unique<SinglePrecisionFactor>();
+    single_->factorize(a, kind, layout_.distributed(), settings_.workspace_relaxation, settings_.low_rank);
+    single_n_ = a.rows();
+  }
+  source_ = &a, kind_ = kind;
+  // A kept factorisation has REAC_PRECOND iterations to converge: beyond, this matrix would
+  // be factorised for the next solve anyway, and it is factorised for this one at once
+  // (code_aster waits for NMAX_ITER: 100 iterations lost on each contact pass that
+  // changes the statuses, where a single-precision solve on fresh factors takes 2 to 5).
+  if (kept_)
+    check(KSPSetTolerances(ksp_, settings_.relative_residual, 0.0, 1e100,
+                           std::min(iteration_limit(), settings_.reac_precond)),
+          "KSPSetTolerances");
+  check(PCSetType(pc, PCSHELL), "PCSetType");
+  check(PCShellSetContext(pc, this), "PCShellSetContext");
+  check(PCShellSetApply(pc, &PetscSolver::apply_single_precision), "PCShellSetApply");
+  check(PCShellSetName(pc, preconditioner_label().c_str()), "PCShellSetName");
+}
+
+void PetscSolver::set_preconditioner(PC pc, const SparseMatrix& a, MatrixKind kind) {
   switch (settings_.preconditioner) {
     case Settings::Preconditioner::Gamg:
       check(PCSetType(pc, PCGAMG), "PCSetType");
@@ -632,81 +706,32 @@ void PetscSolver::set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* t
                                           {"-mg_levels_pc_type", "jacobi"}})
           if (!named_by_user(name)) PetscOptionsSetValue(nullptr, name, value);
       break;
-    case Settings::Preconditioner::Boomer: {
-      check(PCSetType(pc, PCHYPRE), "PCSetType");
-      check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
-      // hypre's settings for 3D problems (its manual: HMIS coarsening, extended+i interpolation
-      // truncated to 4 entries, one level of aggressive coarsening, strength 0.5). With hypre's
-      // 2D defaults the 2e5-unknown HEXA8 block took 38 s to set up and solve; with these, 5.3 s.
-      // Quadratic cells take strength 0.7: the refined mortar case (HEXA8 and HEXA20) needed 40
-      // CG iterations instead of 91 and half the time, a HEXA20 block 0.85 of the time, while
-      // the HEXA8 block is 1.2 times slower at 0.7.
-      // Smoothing: hypre's Chebyshev polynomial (degree 2, on an estimate of the largest
-      // eigenvalue of D^-1 A) on every level but the coarsest, each way. It is symmetric, as CG
-      // needs, and the same sweep on any number of ranks (hypre's hybrid Gauss-Seidel, Jacobi
-      // between ranks, made the preconditioner indefinite on the refined mortar case with two
-      // ranks). It takes the iterations the l1 Gauss-Seidel sweeps took (40-42 on the refined
-      // mortar case, 23-30 on the HEXA8 and HEXA20 blocks) at about 0.7 of their time: one
-      // process, the refined mortar case 14.3-14.9 s against 19.4-20.0 s, the 3.3e5-unknown
-      // HEXA8 block 5.3-5.8 s against 7.4-8.5 s (tests/bench/README.md).
-      // These go into PETSc's options database, which the run shares: an option the user named
-      // in PETSC_OPTIONS (looked up before this code set any) wins, ours follow each system.
-      const bool relaxation_named = named_by_user("-pc_hypre_boomeramg_relax_type_all");
-      for (const auto& [name, value] :
-           {std::pair<const char*, const char*>{"-pc_hypre_boomeramg_coarsen_type", "HMIS"},
-            {"-pc_hypre_boomeramg_interp_type", "ext+i"},
-            {"-pc_hypre_boomeramg_P_max", "4"},
-            {"-pc_hypre_boomeramg_agg_nl", "1"},
-            {"-pc_hypre_boomeramg_strong_threshold", layout_.quadratic ? "0.7" : "0.5"},
-            {"-pc_hypre_boomeramg_relax_type_down", relaxation_named ? nullptr : "Chebyshev"},
-            {"-pc_hypre_boomeramg_relax_type_up", relaxation_named ? nullptr : "Chebyshev"}}) {
-        if (value && !named_by_user(name)) PetscOptionsSetValue(nullptr, name, value);
-      }
-      if (settings_.history) {  // what this system's V-cycle uses (INFO = 2)
-        auto option = [](const char* name) {
-          char value[64] = "";
-          PetscBool found = PETSC_FALSE;
-          PetscOptionsGetString(nullptr, nullptr, name, value, sizeof value, &found);
-          return std::string(found ? value : "hypre's default");
-        };
-        const std::string smoothing =
-            relaxation_named ? option("-pc_hypre_boomeramg_relax_type_all") + " both ways"
-                             : option("-pc_hypre_boomeramg_relax_type_down") + " down, " +
-                                   option("-pc_hypre_boomeramg_relax_type_up") + " up";
-        settings_.history("    BoomerAMG: strength threshold " + option("-pc_hypre_boomeramg_strong_threshold") +
-                          ", smoothing " + smoothing);
-      }
-      break;
-    }
-    case Settings::Preconditioner::LdltSp:
-      // REAC_PRECOND: the last factorisation serves again while the solves it preconditions
-      // stay within that many iterations (every rank takes the same branch: the iterations
-      // are the KSP's, collective).
-      kept_ = settings_.reac_precond > 0 && single_ && !renew_ && single_n_ == a.rows();
-      renewed_ = false;
-      if (!kept_) {
-        single_ = std::make_unique<SinglePrecisionFactor>();
-        single_->factorize(a, kind, layout_.distributed(), settings_.workspace_relaxation, settings_.low_rank);
-        single_n_ = a.rows();
-      }
-      source_ = &a, kind_ = kind;
-      // A kept factorisation has REAC_PRECOND iterations to converge: beyond, this matrix would
-      // be factorised for the next solve anyway, and it is factorised for this one at once
-      // (code_aster waits for NMAX_ITER: 100 iterations lost on each contact pass that
-      // changes the statuses, where a single-precision solve on fresh factors takes 2 to 5).
-      if (kept_)
-        check(KSPSetTolerances(ksp_, settings_.relative_residual, 0.0, 1e100,
-                               std::min(iteration_limit(), settings_.reac_precond)),
-              "KSPSetTolerances");
-      check(PCSetType(pc, PCSHELL), "PCSetType");
-      check(PCShellSetContext(pc, this), "PCShellSetContext");
-      check(PCShellSetApply(pc, &PetscSolver::apply_single_precision), "PCShellSetApply");
-      check(PCShellSetName(pc, preconditioner_label().c_str()), "PCShellSetName");
-      break;
+    case Settings::Preconditioner::Boomer: set_boomer(pc); break;
+    case Settings::Preconditioner::LdltSp: set_single_precision(pc, a, kind); break;
     case Settings::Preconditioner::Jacobi: check(PCSetType(pc, PCJACOBI), "PCSetType"); break;
     case Settings::Preconditioner::Sor: check(PCSetType(pc, PCSOR), "PCSetType"); break;
     case Settings::Preconditioner::None: check(PCSetType(pc, PCNONE), "PCSetType"); break;
   }
+}
+
+void PetscSolver::set_up(const SparseMatrix& a, MatrixKind kind, SparseMatrix* taken) {
+  LUNASTER_ASSERT(a.rows() == a.cols(), "PETSc: matrix is not square");
+  LUNASTER_ASSERT(!taken || taken == &a, "PETSc: the matrix taken is the one factorised");
+  refuse_unsolvable(kind);
+  release();
+  if (settings_.preconditioner == Settings::Preconditioner::Boomer) build_hypre_matrix(a, kind);
+  else build_matrix(a, kind);
+  attach_near_null_space();
+  if (!layout_.in_parts()) {  // in parts each rank reads its own rows, nothing is gathered
+    Vec local = nullptr;
+    check(MatCreateVecs(a_, &local, nullptr), "MatCreateVecs");
+    check(VecScatterCreateToAll(local, &scatter_, &gathered_), "VecScatterCreateToAll");
+    VecDestroy(&local);
+  }
+  create_krylov();
+  PC pc = nullptr;
+  check(KSPGetPC(ksp_, &pc), "KSPGetPC");
+  set_preconditioner(pc, a, kind);
   if (taken) {  // PETSc and the preconditioner hold what they need of it now
     SparseMatrix empty(a.rows(), a.cols());
     taken->swap(empty);

@@ -10,6 +10,7 @@
 // r_{k+1} ~ C r_k^2 with C = t |sigma''| / (2 sigma'^2) at the solution (rate_constant).
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -48,6 +49,21 @@ class ShortStepBar final : public Behaviour {
  private:
   HardeningBar law_;
   double max_increment_;
+};
+
+/// The hardening bar's law counting its integrations: with the tangent asked, and without.
+class CountingBar final : public Behaviour {
+ public:
+  bool is_linear() const override { return false; }
+  const std::vector<std::string>& variable_names() const override { return law_.variable_names(); }
+  IntegrationStatus integrate(const PointInput& in, PointOutput& out) const override {
+    ++(out.want_tangent ? with_tangent : without_tangent);
+    return law_.integrate(in, out);
+  }
+  mutable std::atomic<long> with_tangent{0}, without_tangent{0};
+
+ private:
+  HardeningBar law_;
 };
 
 /// The bar, its loads (traction = the multiplier `traction` of the instant) and its behaviours.
@@ -174,6 +190,24 @@ TEST(BehaviourDriver, NewtonConvergesAtTheLawsRateToTheExactSolution) {
     EXPECT_GE(rated, 1);
     EXPECT_NEAR(last, c, 0.05 * c) << "the asymptotic rate";
   }
+}
+
+TEST(BehaviourDriver, EachNewtonIterationIntegratesEachPointOnce) {
+  // The residual and the tangent of an iteration come from one integration of each point (its
+  // stress and its tangent together): the tangent at rest once, then one integration per
+  // Newton iteration logged (those that solve and the one that converges), all with the tangent.
+  const std::map<double, double> traction{{0.0, 0.0}, {1.0, 150.0}, {2.0, 250.0}, {3.0, 290.0}};
+  auto law = std::make_shared<CountingBar>();
+  DrivenBar bar([&](double t) { return traction.at(t); }, law);
+  const Outcome r = solve(bar, {0.0, 1.0, 2.0, 3.0}, tight());
+  ASSERT_FALSE(r.failed) << r.error << "\n" << r.log;
+  long iterations = 0;
+  for (const auto& instant : logged_residuals(r.log)) iterations += static_cast<long>(instant.second.size());
+  ASSERT_GE(iterations, 8) << r.log;  // the plastic steps iterate
+  const long points = 4 * kCells * kCells;
+  EXPECT_EQ(law->with_tangent.load(), points * (1 + iterations));
+  EXPECT_EQ(law->without_tangent.load(), 0);
+  expect_exact(bar, r.steps.back(), 290.0);
 }
 
 TEST(BehaviourDriver, AStepWithoutEquilibriumIsSubdividedFromTheRestoredStates) {

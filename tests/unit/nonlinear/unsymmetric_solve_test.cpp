@@ -17,6 +17,7 @@
 #include "engine/nonlinear/linear_solve.hpp"
 #include "engine/nonlinear/static_solver.hpp"
 #include "tests/unit/fe/fe_test_util.hpp"
+#include "tests/unit/nonlinear/solver_choice.hpp"
 
 namespace lunaster::engine {
 namespace {
@@ -159,10 +160,7 @@ TEST(UnsymmetricSolve, TheDriverSolvesAnUnsymmetricContactTangentWhole) {
 
   for (const bool automatic : {true, false}) {
     SCOPED_TRACE(automatic ? "METHODE AUTO" : "MUMPS");
-    NewtonOptions options;
-    options.resi_glob_rela = 1e-10;
-    options.auto_solver = automatic;
-    if (!automatic) options.solver = SolverKind::Mumps;
+    NewtonOptions options = test::auto_or_mumps(automatic);
     SkewSpring spring(corner, k, c);
     std::ostringstream sink;
     Log log(sink, 1);
