@@ -139,8 +139,11 @@ SolveError StaticSolver::diagnose(const Constraints& cons, const SolveError& err
   // stiffness at this iterate: a failed iteration, the step subdivided (TimeStepper).
   if (!matrix_.constant()) throw tangent_solve_failure(err, t);
   FailureDiagnosis::Stiffness stiffness;
-  // The failed system with its contact terms, kept before K_ff's values come back in its storage.
-  const SparseMatrix system = contact_ && matrix_.has_matrix() ? matrix_.matrix() : SparseMatrix();
+  // The failed system with its contact terms, kept before K_ff's values come back in its storage
+  // (symmetric contact terms only: an unsymmetric one, friction's, has no stiffness to add).
+  const SparseMatrix system = contact_ && matrix_.has_matrix() && contact_->matrix_kind() != MatrixKind::General
+                                  ? matrix_.matrix()
+                                  : SparseMatrix();
   stiffness.increment = matrix_.increment();
   matrix_.restore();  // K_ff itself, without this iteration's terms
   stiffness.on_no_rank = in_parts_;
