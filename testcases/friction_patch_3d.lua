@@ -39,29 +39,10 @@ R1 = DEFI_FONCTION{ NOM_PARA = 'INST', VALE = { 0.0, 0.0, 1.0, 1.0, 2.0, 1.0 } }
 R2 = DEFI_FONCTION{ NOM_PARA = 'INST', VALE = { 0.0, 0.0, 1.0, 0.0, 2.0, 1.0 } }
 R3 = DEFI_FONCTION{ NOM_PARA = 'INST', VALE = { 0.0, 0.0, 1.0, 0.0, 1.1, 1.0, 2.0, 1.0 } }
 
-local function run(formulation, zone_keywords, case)
-  local zone = { GROUP_MA_ESCL = 'SURESC', GROUP_MA_MAIT = 'SURMAI', COULOMB = mu }
-  for k, v in pairs(zone_keywords) do zone[k] = v end
-  local cont = DEFI_CONTACT{ MODELE = MO, FORMULATION = formulation, FROTTEMENT = 'COULOMB', ZONE = _F(zone) }
-  local excit = { _F{ CHARGE = FIX }, _F{ CHARGE = formulation == 'DISCRETE' and TOP or PRESS, FONC_MULT = R1 } }
-  if case == 'slip' then
-    excit[3] = _F{ CHARGE = PUSH, FONC_MULT = R2 }
-    excit[4] = _F{ CHARGE = SLIDE, FONC_MULT = R3 }
-  else
-    excit[3] = _F{ CHARGE = HOLD, FONC_MULT = R2 }
-  end
-  local resu = STAT_NON_LINE{ MODELE = MO, CHAM_MATER = CHMAT, CONTACT = cont, EXCIT = excit,
-                              INCREMENT = _F{ LIST_INST = L_INST },
-                              CONVERGENCE = _F{ RESI_GLOB_RELA = 1e-9, ITER_GLOB_MAXI = 30 } }
-  resu = CALC_CHAMP{ reuse = resu, RESULTAT = resu, CONTRAINTE = 'SIGM_NOEU', FORCE = 'REAC_NODA' }
-  local tab = POST_RELEVE_T{ ACTION = _F{ INTITULE = 'SURCHA', RESULTAT = resu, NOM_CHAM = 'REAC_NODA', GROUP_NO = 'SURCHA',
-                                          RESULTANTE = { 'DX', 'DZ' }, OPERATION = 'EXTRACTION', NUME_ORDRE = 4 } }
-  return resu, tab
-end
-local function check(resu, field, node, cmp, refe, calc, tol, crit)
-  return _F{ RESULTAT = resu, NUME_ORDRE = 4, NOM_CHAM = field, GROUP_NO = node, NOM_CMP = cmp, VALE_CALC = calc,
-             REFERENCE = 'ANALYTIQUE', VALE_REFE = refe, PRECISION = tol, CRITERE = crit }
-end
+local run, check = require('lib.friction_patch').runner{
+  MO = MO, CHMAT = CHMAT, FIX = FIX, PRESS = PRESS, TOP = TOP, PUSH = PUSH, SLIDE = SLIDE, HOLD = HOLD,
+  R1 = R1, R2 = R2, R3 = R3, L_INST = L_INST, LAST = 4, SLAVE = 'SURESC', MASTER = 'SURMAI', MU = mu,
+  TOP_GROUP = 'SURCHA', REACTIONS = { 'DX', 'DZ' } }
 
 STD_SLIP, T_STD_SLIP = run('CONTINUE', {}, 'slip')
 STD_STICK, T_STD_STICK = run('CONTINUE', {}, 'stick')

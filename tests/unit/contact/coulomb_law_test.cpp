@@ -13,6 +13,7 @@
 
 #include "engine/assembly/dof_map.hpp"
 #include "engine/contact/coulomb_law.hpp"
+#include "point_law_unknowns.hpp"
 
 namespace coulomb_law_test {
 
@@ -55,19 +56,9 @@ PointKinematics at(int dim, const Case& c, int n_z, double g, const std::vector<
   return in;
 }
 
-double residual(const PointResponse& r, int row) { return row < r.n_q ? r.r_q[row] : r.r_z[row - r.n_q]; }
-double tangent(const PointResponse& r, int row, int col) {
-  if (row < r.n_q) return col < r.n_q ? r.k_qq[row][col] : r.k_qz[row][col - r.n_q];
-  return col < r.n_q ? r.k_zq[row - r.n_q][col] : r.k_zz[row - r.n_q][col - r.n_q];
-}
-void perturb(PointKinematics& in, int n_q, int i, double h) {
-  if (i < n_q) {
-    in.q[i] += h;
-    in.dq_step[i] += h;
-  } else {
-    in.z[i - n_q] += h;
-  }
-}
+double residual(const PointResponse& r, int row) { return point_law_unknowns::residual(r, r.n_q, row); }
+double tangent(const PointResponse& r, int row, int col) { return point_law_unknowns::tangent(r, r.n_q, row, col); }
+using point_law_unknowns::perturb;
 
 PointResponse evaluate(const PointLaw& law, const PointKinematics& in, const PointState& start, bool closed) {
   PointState state;

@@ -11,6 +11,7 @@
 
 #include "engine/assembly/dof_map.hpp"
 #include "engine/contact/point_law.hpp"
+#include "point_law_unknowns.hpp"
 
 namespace {
 
@@ -105,23 +106,9 @@ PointKinematics kinematics(int dim, double g, double lambda, const std::vector<d
   return in;
 }
 
-// Unknown i of the point: q_0..q_{nq-1}, then z_0..; perturbing q moves dq_step alike (the
-// step's start is fixed).
-void perturb(PointKinematics& in, int n_q, int i, double h) {
-  if (i < n_q) {
-    in.q[i] += h;
-    in.dq_step[i] += h;
-  } else {
-    in.z[i - n_q] += h;
-  }
-}
-
-double residual(const PointResponse& r, int n_q, int row) { return row < n_q ? r.r_q[row] : r.r_z[row - n_q]; }
-
-double tangent(const PointResponse& r, int n_q, int row, int col) {
-  if (row < n_q) return col < n_q ? r.k_qq[row][col] : r.k_qz[row][col - n_q];
-  return col < n_q ? r.k_zq[row - n_q][col] : r.k_zz[row - n_q][col - n_q];
-}
+using point_law_unknowns::perturb;
+using point_law_unknowns::residual;
+using point_law_unknowns::tangent;
 
 // The blocks against central differences of the residual, at a point well inside its status
 // (the steps, 1e-7 of each unknown's scale, never cross a status boundary there).
