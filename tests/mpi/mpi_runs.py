@@ -168,7 +168,8 @@ SERIAL_ONLY = {"vmis_isot_line_bar": "von Mises plasticity (COMPORTEMENT VMIS_IS
                                     "friction states are not shared among ranks, refused there",
                "friction_patch_3d": "Coulomb friction, as friction_patch_2d",
                "cattaneo_cylinder": "Coulomb friction, as friction_patch_2d",
-               "friction_sliding_limit": "Coulomb friction, as friction_patch_2d"}
+               "friction_sliding_limit": "Coulomb friction, as friction_patch_2d",
+               "friction_step_subdivision": "Coulomb friction, as friction_patch_2d"}
 
 
 def suite_decks(full):
