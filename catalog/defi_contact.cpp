@@ -14,7 +14,19 @@ std::vector<Keyword> zone_surfaces() {
                "0.5 is a quarter of it): within it the projection is brought back onto the cell's boundary; "
                "beyond it on every master cell the point is not paired (no contact there). 0, or negative as "
                "code_aster spells it: no projection outside a cell is taken. code_aster's default 0.5")
-              .def(0.5)};
+              .def(0.5),
+          text("APPARIEMENT", "Pairing: MAIT_ESCL, each slave point projected on the master surface (what lunaster "
+                              "does). NODAL (each slave node with its nearest master node) is refused")
+              .into_values({"MAIT_ESCL"})
+              .refuse("NODAL", "lunaster pairs a slave point with its projection on the master surface (MAIT_ESCL), "
+                               "not with the nearest master node; on matching meshes the two coincide")
+              .def("MAIT_ESCL"),
+          text("NORMALE", "Normal of the pairing: MAIT, the master surface's (what lunaster does). The slave's "
+                          "(ESCL) or their mean (MAIT_ESCL) are refused")
+              .into_values({"MAIT"})
+              .refuse("ESCL", "lunaster projects along the master surface's normal (NORMALE='MAIT')")
+              .refuse("MAIT_ESCL", "lunaster projects along the master surface's normal (NORMALE='MAIT')")
+              .def("MAIT")};
 }
 
 /// A zone's friction keywords (read with FROTTEMENT='COULOMB' only; DEFI_CONTACT refuses them

@@ -45,6 +45,8 @@ const std::map<std::string, std::string> kValidatorOnly = {
     {"DEFI_LIST_INST/DEFI_LIST/METHODE", "only 'MANUEL': the instants are given by LIST_INST"},
     {"DEFI_LIST_INST/ECHEC/EVENEMENT", "only 'ERREUR': a failed step is the one event handled"},
     {"DEFI_LIST_INST/ECHEC/SUBD_METHODE", "only 'MANUEL': a failed step is cut into SUBD_PAS equal steps"},
+    {"DEFI_CONTACT/ZONE/APPARIEMENT", "only 'MAIT_ESCL': a slave point is paired with its projection on the master"},
+    {"DEFI_CONTACT/ZONE/NORMALE", "only 'MAIT': the projection follows the master surface's normal"},
 };
 
 /// Keywords accepted so that code_aster decks run, without effect in lunaster (their catalogue
