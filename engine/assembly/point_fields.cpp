@@ -46,6 +46,7 @@ ElgaField points_field(const FeModel& model, const MaterialStates& states, std::
       f.layouts.emplace(mesh.cell_types[c], point_layout(mesh.cell_types[c]));
   }
   f.values.assign(static_cast<size_t>(f.cell_offsets.back()) * nc, 0.0);
+  if (nc == 0) return f;  // no component (a behaviour without internal variables): no row to write
   for (int c = 0; c < mesh.n_cells(); ++c)
     for (int q = 0; q < states.n_points(c); ++q) row(c, q, &f.values[(static_cast<size_t>(f.cell_offsets[c]) + q) * nc]);
   return f;
