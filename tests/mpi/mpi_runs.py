@@ -169,7 +169,9 @@ SERIAL_ONLY = {"vmis_isot_line_bar": "von Mises plasticity (COMPORTEMENT VMIS_IS
                "friction_patch_3d": "Coulomb friction, as friction_patch_2d",
                "cattaneo_cylinder": "Coulomb friction, as friction_patch_2d",
                "friction_sliding_limit": "Coulomb friction, as friction_patch_2d",
-               "friction_step_subdivision": "Coulomb friction, as friction_patch_2d"}
+               "friction_step_subdivision": "Coulomb friction, as friction_patch_2d",
+               "test_references": "VMIS_ISOT_LINE (its stresses at integration points, SIEF_ELGA, for TEST_RESU's "
+                                  "per-cell forms): a nonlinear behaviour, refused on a model shared among ranks"}
 
 
 def suite_decks(full):
