@@ -196,6 +196,58 @@ int print_info(const std::string& path, const std::string& node_groups) {
   return 0;
 }
 
+/// The Hertz scene of --hertz TYPE:N with --radius, --box, --grading and --full; prints its layout.
+engine::Mesh hertz_mesh(const Options& o, int refine) {
+  const auto get = [&](const std::string& key) {
+    const auto it = o.values.find(key);
+    return it == o.values.end() ? std::string() : it->second;
+  };
+  engine::Mesh mesh;
+  tools::HertzOptions opt;
+  const std::string spec = get("--hertz");
+  const auto colon = spec.find(':');
+  std::string name = spec.substr(0, colon);
+  std::transform(name.begin(), name.end(), name.begin(), ::toupper);
+  if (colon == std::string::npos || !engine::cell_type_from_name(name, opt.type))
+    throw DeckError("meshgen: --hertz expects TYPE:N (quad4, quad8, tria3, tria6, hexa8, hexa20), got '" + spec + "'");
+  const std::string count = spec.substr(colon + 1);
+  if (count.empty() || count.size() > 6 || count.find_first_not_of("0123456789") != std::string::npos)
+    throw DeckError("meshgen: --hertz: bad cell count in '" + spec + "'");
+  opt.n = std::stoi(count);
+  opt.refine = refine;
+  const auto number = [&](const std::string& key, const std::string& text) {
+    size_t used = 0;
+    double x = 0.0;
+    try {
+      x = std::stod(text, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != text.size()) throw DeckError("meshgen: " + key + " expects a number, got '" + text + "'");
+    return x;
+  };
+  if (!get("--radius").empty()) opt.radius = number("--radius", get("--radius"));
+  opt.width = opt.height = opt.radius;
+  if (!get("--box").empty()) {
+    const std::string box = get("--box");
+    const auto comma = box.find(',');
+    if (comma == std::string::npos) throw DeckError("meshgen: --box expects W,H, got '" + box + "'");
+    opt.width = number("--box", box.substr(0, comma));
+    opt.height = number("--box", box.substr(comma + 1));
+  }
+  if (!get("--grading").empty()) opt.grading = number("--grading", get("--grading"));
+  tools::HertzLayout lay;
+  mesh = tools::make_hertz(opt, &lay);
+  if (o.full) {
+    if (mesh.dim != 2) throw DeckError("meshgen: --full mirrors a 2D --hertz mesh about x = 0", {kUsage});
+    mesh = tools::mirrored_about_x0(mesh, 1e-9 * opt.radius);
+  }
+  std::cout << "hertz: h0 " << lay.h0 << ", ball core " << lay.m_ball << " layers " << lay.layers_ball
+            << " growth " << lay.g_ball << ", block core " << lay.m_block[0] << " layers " << lay.layers_block
+            << " growth " << lay.g_block[0] << "\n";
+  return mesh;
+}
+
 int run(int argc, char** argv) {
   if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     std::cout << kUsage;
@@ -219,48 +271,7 @@ int run(int argc, char** argv) {
     if (!get(key).empty() && !hertz) throw DeckError(std::string("meshgen: ") + key + " needs --hertz", {kUsage});
   engine::Mesh mesh;
   if (hertz) {
-    tools::HertzOptions opt;
-    const std::string spec = get("--hertz");
-    const auto colon = spec.find(':');
-    std::string name = spec.substr(0, colon);
-    std::transform(name.begin(), name.end(), name.begin(), ::toupper);
-    if (colon == std::string::npos || !engine::cell_type_from_name(name, opt.type))
-      throw DeckError("meshgen: --hertz expects TYPE:N (quad4, quad8, tria3, tria6, hexa8, hexa20), got '" + spec + "'");
-    const std::string count = spec.substr(colon + 1);
-    if (count.empty() || count.size() > 6 || count.find_first_not_of("0123456789") != std::string::npos)
-      throw DeckError("meshgen: --hertz: bad cell count in '" + spec + "'");
-    opt.n = std::stoi(count);
-    opt.refine = refine;
-    const auto number = [&](const std::string& key, const std::string& text) {
-      size_t used = 0;
-      double x = 0.0;
-      try {
-        x = std::stod(text, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used == 0 || used != text.size()) throw DeckError("meshgen: " + key + " expects a number, got '" + text + "'");
-      return x;
-    };
-    if (!get("--radius").empty()) opt.radius = number("--radius", get("--radius"));
-    opt.width = opt.height = opt.radius;
-    if (!get("--box").empty()) {
-      const std::string box = get("--box");
-      const auto comma = box.find(',');
-      if (comma == std::string::npos) throw DeckError("meshgen: --box expects W,H, got '" + box + "'");
-      opt.width = number("--box", box.substr(0, comma));
-      opt.height = number("--box", box.substr(comma + 1));
-    }
-    if (!get("--grading").empty()) opt.grading = number("--grading", get("--grading"));
-    tools::HertzLayout lay;
-    mesh = tools::make_hertz(opt, &lay);
-    if (o.full) {
-      if (mesh.dim != 2) throw DeckError("meshgen: --full mirrors a 2D --hertz mesh about x = 0", {kUsage});
-      mesh = tools::mirrored_about_x0(mesh, 1e-9 * opt.radius);
-    }
-    std::cout << "hertz: h0 " << lay.h0 << ", ball core " << lay.m_ball << " layers " << lay.layers_ball
-              << " growth " << lay.g_ball << ", block core " << lay.m_block[0] << " layers " << lay.layers_block
-              << " growth " << lay.g_block[0] << "\n";
+    mesh = hertz_mesh(o, refine);
   } else if (!get("--upper").empty() || !get("--lower").empty()) {
     tools::Ssnp121Options2d opt;
     opt.upper = refined(get("--upper").empty() ? "quad4:12" : get("--upper"), 2, refine);
