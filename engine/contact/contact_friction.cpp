@@ -29,8 +29,9 @@ void ContactProblem::frictional_point(size_t i, const Vector& u, Vector& residua
                                       bool condensed) {
   const ContactPoint& p = points_[i];
   const int nt = dim_ - 1;
-  PointKinematics in = kinematics(p, u, u_start_.size() == u.size() ? u_start_ : u, p.paired ? nt : 0);
-  in.n_tangents = nt;  // an unpaired point still holds its semi-multipliers' rows
+  LinearGap slips[2];  // built once, for the kinematics and the terms
+  PointKinematics in = kinematics(p, u, u_start_.size() == u.size() ? u_start_ : u, p.paired ? nt : 0, slips);
+  in.n_tangents = nt;  // an unpaired point still holds its tangential multipliers' rows
   PointState state = states_.present(i);
   state.status = p.active ? PointStatus::Stick : PointStatus::Open;  // the normal status, the loops' own
   const PointResponse r = friction_->evaluate(in, states_.start(i), state);
@@ -40,8 +41,6 @@ void ContactProblem::frictional_point(size_t i, const Vector& u, Vector& residua
     std::string& trail = status_trail_[i];
     if (trail.empty() || trail.back() != letter) trail.push_back(letter);
   }
-  LinearGap slips[2];
-  if (p.paired) slip_gaps(p, slips);
   const LinearGap* gaps[3] = {&p.gap, &slips[0], &slips[1]};
   for (int q = 0; q < r.n_q; ++q)
     if (r.r_q[q] != 0.0) add_gradient(*gaps[q], r.r_q[q], residual);

@@ -612,7 +612,7 @@ PointResponse ContactProblem::respond(const ContactPoint& p, double lambda, doub
 }
 
 PointKinematics ContactProblem::kinematics(const ContactPoint& p, const Vector& u, const Vector& u_start,
-                                           int n_tangents) const {
+                                           int n_tangents, LinearGap* slips_out) const {
   PointKinematics in;
   in.n_tangents = n_tangents;
   in.q[0] = p.gap.value(u);
@@ -626,7 +626,8 @@ PointKinematics ContactProblem::kinematics(const ContactPoint& p, const Vector& 
     for (size_t k = 0; k < friction_components_.size(); ++k) in.z[k] = interpolate(u, p, friction_components_[k]);
   }
   if (n_tangents == 0 || !p.paired) return in;
-  LinearGap slips[2];
+  LinearGap own[2];
+  LinearGap* slips = slips_out ? slips_out : own;
   slip_gaps(p, slips);
   for (int a = 0; a < n_tangents; ++a) {
     in.q[1 + a] = slips[a].value(u);

@@ -75,7 +75,9 @@ class ContactProblem final : public ContactHook {
   /// its tangential relative displacement along tangent_frame(normal) (x_slave - x_master),
   /// dq_step their change since `u_start` (the step's start), z its LAGS_C, its weight and
   /// the zone's coefficient. `n_tangents`: 0 (the normal gap only) or dim - 1.
-  PointKinematics kinematics(const ContactPoint& p, const Vector& u, const Vector& u_start, int n_tangents) const;
+  /// `slips_out` (dim - 1 of them), when given, receives the slip gaps it built (a paired point).
+  PointKinematics kinematics(const ContactPoint& p, const Vector& u, const Vector& u_start, int n_tangents,
+                             LinearGap* slips_out = nullptr) const;
   /// Pressure interpolated at a point from LAGS_C (0 without multipliers).
   double multiplier(const Vector& u, const ContactPoint& p) const;
   /// Forces the statuses of the paired points (tests).
